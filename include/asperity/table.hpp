@@ -1,0 +1,59 @@
+// A loaded table: the curve sets of one HDF5 file, and curves resolved from them.
+//
+// Opening validates everything (schema, version, shapes, sizes, finite knots) and throws
+// asperity::Error with a message naming the file and the problem. Shapes between grid shapes
+// are resolved once, when the curve is made, by 6-point Lagrange interpolation in ln(shape)
+// of the knot data at corresponding knots; queries on the resulting Curve cost the same as on
+// a grid shape.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "asperity/curve.hpp"
+#include "asperity/layout.hpp"
+#include "asperity/model.hpp"
+
+namespace asperity {
+
+// One (distribution, side) group of a table file, in memory.
+struct CurveSet {
+  Distribution distribution = Distribution::weibull;
+  Side side = Side::tail;
+  std::vector<double> shapes;        // ascending
+  std::vector<SegmentSpec> layout;
+  std::vector<double> knots;         // [shape][order][knot][3]
+  std::vector<double> max_rel_error; // [shape][order], measured by the generator
+
+  int total_knots() const;
+  std::size_t curve_stride() const { return static_cast<std::size_t>(order_count) * total_knots() * 3; }
+  // Throws Error if sizes, ordering or values are inconsistent.
+  void validate(const std::string& context) const;
+};
+
+struct TableData {
+  std::string generator;
+  std::string generator_options;
+  std::vector<CurveSet> sets;
+};
+
+// Reads and validates a table file (HDF5, schema asperity::schema).
+TableData read_table_file(const std::string& path);
+
+class Table {
+ public:
+  explicit Table(TableData data);
+  static Table open(const std::string& path);
+  // ASPERITY_TABLE from the environment if set, else the shipped default table.
+  static Table open_default();
+  static std::string default_path();
+
+  const TableData& data() const noexcept { return data_; }
+  const CurveSet* find(Distribution distribution, Side side) const noexcept;
+  // Throws Error: no such set, shape not finite, or outside the grid. The Gaussian ignores shape.
+  Curve curve(Distribution distribution, Side side, double shape) const;
+
+ private:
+  TableData data_;
+};
+
+}  // namespace asperity

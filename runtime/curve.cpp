@@ -1,0 +1,103 @@
+#include "asperity/curve.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "asperity/detail/quintic_hermite.hpp"
+#include "asperity/error.hpp"
+
+namespace asperity {
+
+Curve::Curve(Distribution distribution, Side side, double shape,
+             const std::vector<SegmentSpec>& layout, const double* knot_data)
+    : distribution_(distribution), side_(side), shape_(shape) {
+  if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
+    throw Error("curve layout must have 1 to 6 segments");
+  segment_count_ = static_cast<int>(layout.size());
+  for (int index = 0; index < segment_count_; ++index) {
+    Segment& segment = segments_[index];
+    segment.map = SegmentMap::make(layout[index], distribution, side, shape);
+    segment.knots = layout[index].knots;
+    segment.first_knot = total_knots_;
+    segment.inv_step = (segment.knots - 1) / (segment.map.u_hi - segment.map.u_lo);
+    total_knots_ += segment.knots;
+  }
+  knots_.assign(knot_data, knot_data + static_cast<std::size_t>(order_count) * total_knots_ * 3);
+  for (int order = 0; order < order_count; ++order)
+    for (int index = 0; index < segment_count_; ++index) {
+      const Segment& segment = segments_[index];
+      const double step = 1 / segment.inv_step;
+      double* knot = &knots_[(static_cast<std::size_t>(order) * total_knots_ + segment.first_knot) * 3];
+      for (int j = 0; j < segment.knots; ++j, knot += 3) {
+        knot[1] *= step;
+        knot[2] *= step * step;
+      }
+    }
+  for (int order = 0; order < order_count; ++order) {
+    const double n = order_of(order);
+    if (side == Side::bounded) series_[order] = bounded_contact_series(shape, n);
+    else if (distribution == Distribution::gaussian) series_[order] = gaussian_tail_series(n);
+    else series_[order] = weibull_tail_series(shape, n);
+  }
+}
+
+double Curve::value(int twice_order, double separation) const noexcept {
+  return std::exp(log_value(twice_order, separation));
+}
+
+double Curve::beyond_table(int twice_order, double separation) const noexcept {
+  const double n = order_of(twice_order);
+  if (side_ == Side::bounded) {
+    if (separation >= 0) return -std::numeric_limits<double>::infinity();
+    return bounded_contact_log(series_[twice_order], shape_, n, separation);
+  }
+  if (distribution_ == Distribution::gaussian)
+    return gaussian_tail_log(series_[twice_order], n, separation);
+  return weibull_tail_log(series_[twice_order], shape_, n, separation);
+}
+
+double Curve::log_value(int twice_order, double separation) const noexcept {
+  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) ||
+      !std::isfinite(separation) || segment_count_ == 0)
+    return std::numeric_limits<double>::quiet_NaN();
+  if (separation > segments_[segment_count_ - 1].map.s_hi) return beyond_table(twice_order, separation);
+
+  const Segment* segment = &segments_[0];
+  while (separation > segment->map.s_hi) ++segment;
+  const SegmentMap& map = segment->map;
+  const double n = order_of(twice_order);
+
+  double u, offset;
+  switch (map.kind) {
+    case SegmentKind::reciprocal:
+      u = map.p0 / separation;
+      offset = n * std::log(-separation);
+      break;
+    case SegmentKind::linear:
+      u = separation;
+      offset = 0;
+      break;
+    case SegmentKind::graded:
+      u = std::cbrt(std::sqrt((separation - map.p0) / (map.p1 - map.p0)));
+      offset = map.exponent_offset ? -std::pow(separation, shape_) : 0;
+      break;
+    case SegmentKind::log_exponent:
+      u = map.u_of_s(separation);
+      offset = -std::exp(u);
+      break;
+    default:  // log_tau
+      u = map.shape * std::log(-separation);
+      offset = (n + map.shape) / map.shape * u;
+      break;
+  }
+  double position = (u - map.u_lo) * segment->inv_step;
+  int interval = static_cast<int>(position);
+  if (interval < 0) interval = 0;
+  if (interval > segment->knots - 2) interval = segment->knots - 2;
+  position -= interval;
+  const double* left =
+      &knots_[(static_cast<std::size_t>(twice_order) * total_knots_ + segment->first_knot + interval) * 3];
+  return offset + detail::quintic_hermite(left, left + 3, position);
+}
+
+}  // namespace asperity

@@ -1,0 +1,145 @@
+#include "asperity/layout.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace asperity {
+
+std::vector<SegmentSpec> default_layout(Distribution distribution, Side side) {
+  if (distribution == Distribution::gaussian)
+    return {{SegmentKind::reciprocal, 33, -10.0, 0.0},
+            {SegmentKind::linear, 257, -10.0, 1.0},
+            {SegmentKind::log_exponent, 257, 1.0, 760.0}};
+  if (side == Side::tail)
+    return {{SegmentKind::reciprocal, 33, -3.0, 0.0},
+            {SegmentKind::linear, 65, -3.0, -0.5},
+            {SegmentKind::graded, 129, 0.0, -0.5},
+            {SegmentKind::graded, 129, 0.0, 0.5},
+            {SegmentKind::log_exponent, 385, 0.5, 760.0}};
+  return {{SegmentKind::reciprocal, 33, -10.0, 0.0},
+          {SegmentKind::log_tau, 1025, 1e-3, 10.0}};
+}
+
+double tail_exponent(Distribution distribution, double shape, double separation) {
+  return distribution == Distribution::gaussian ? 0.5 * separation * separation
+                                                : std::pow(separation, shape);
+}
+
+SegmentMap SegmentMap::make(const SegmentSpec& spec, Distribution distribution, Side side,
+                            double shape) {
+  SegmentMap map{};
+  map.kind = spec.kind;
+  map.distribution = distribution;
+  map.side = side;
+  map.shape = distribution == Distribution::gaussian ? 2.0 : shape;
+  map.p0 = spec.p0;
+  map.p1 = spec.p1;
+  const double inf = std::numeric_limits<double>::infinity();
+  switch (spec.kind) {
+    case SegmentKind::reciprocal:
+      map.u_lo = 0; map.u_hi = 1; map.s_lo = -inf; map.s_hi = spec.p0;
+      break;
+    case SegmentKind::linear:
+      map.u_lo = spec.p0; map.u_hi = spec.p1; map.s_lo = spec.p0; map.s_hi = spec.p1;
+      break;
+    case SegmentKind::graded:
+      map.u_lo = 0; map.u_hi = 1;
+      map.s_lo = std::fmin(spec.p0, spec.p1); map.s_hi = std::fmax(spec.p0, spec.p1);
+      map.exponent_offset = distribution == Distribution::weibull && side == Side::tail &&
+                            spec.p1 > spec.p0 && spec.p0 >= 0;
+      break;
+    case SegmentKind::log_exponent:
+      map.u_lo = std::log(tail_exponent(distribution, map.shape, spec.p0));
+      map.u_hi = std::log(spec.p1);
+      map.s_lo = spec.p0;
+      map.s_hi = distribution == Distribution::gaussian ? std::sqrt(2 * spec.p1)
+                                                        : std::pow(spec.p1, 1 / map.shape);
+      map.exponent_offset = true;
+      break;
+    case SegmentKind::log_tau:
+      map.u_lo = std::log(spec.p0); map.u_hi = map.shape * std::log(spec.p1);
+      map.s_lo = -spec.p1; map.s_hi = -std::pow(spec.p0, 1 / map.shape);
+      break;
+  }
+  return map;
+}
+
+double SegmentMap::u_of_s(double separation) const {
+  switch (kind) {
+    case SegmentKind::reciprocal: return p0 / separation;
+    case SegmentKind::linear: return separation;
+    case SegmentKind::graded: return std::cbrt(std::sqrt((separation - p0) / (p1 - p0)));
+    case SegmentKind::log_exponent:
+      return distribution == Distribution::gaussian
+                 ? 2 * std::log(separation) - 0.69314718055994530942
+                 : shape * std::log(separation);
+    case SegmentKind::log_tau: return shape * std::log(-separation);
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s_du2) const {
+  switch (kind) {
+    case SegmentKind::reciprocal:
+      separation = p0 / u; ds_du = -p0 / (u * u); d2s_du2 = 2 * p0 / (u * u * u);
+      return;
+    case SegmentKind::linear:
+      separation = u; ds_du = 1; d2s_du2 = 0;
+      return;
+    case SegmentKind::graded: {
+      const double span = p1 - p0, u2 = u * u, u4 = u2 * u2;
+      separation = p0 + span * u4 * u2; ds_du = 6 * span * u4 * u; d2s_du2 = 30 * span * u4;
+      return;
+    }
+    case SegmentKind::log_exponent:
+      if (distribution == Distribution::gaussian) {
+        separation = std::sqrt(2 * std::exp(u)); ds_du = separation / 2; d2s_du2 = separation / 4;
+      } else {
+        separation = std::exp(u / shape); ds_du = separation / shape;
+        d2s_du2 = separation / (shape * shape);
+      }
+      return;
+    case SegmentKind::log_tau: {
+      const double distance = std::exp(u / shape);
+      separation = -distance; ds_du = -distance / shape; d2s_du2 = -distance / (shape * shape);
+      return;
+    }
+  }
+}
+
+void SegmentMap::offset(double order, double u, double& value, double& d1, double& d2) const {
+  value = d1 = d2 = 0;
+  switch (kind) {
+    case SegmentKind::reciprocal:
+      value = order * (std::log(-p0) - std::log(u)); d1 = -order / u; d2 = order / (u * u);
+      return;
+    case SegmentKind::linear: return;
+    case SegmentKind::graded:
+      if (exponent_offset) {  // t = (p1 w^6)^a
+        const double power = 6 * shape, scale = std::pow(p1, shape);
+        value = -scale * std::pow(u, power);
+        d1 = -scale * power * std::pow(u, power - 1);
+        d2 = -scale * power * (power - 1) * std::pow(u, power - 2);
+      }
+      return;
+    case SegmentKind::log_exponent:
+      value = d1 = d2 = -std::exp(u);
+      return;
+    case SegmentKind::log_tau:
+      value = (order + shape) / shape * u; d1 = (order + shape) / shape;
+      return;
+  }
+}
+
+double SegmentMap::offset_value(double order, double u) const {
+  switch (kind) {
+    case SegmentKind::reciprocal: return order * (std::log(-p0) - std::log(u));
+    case SegmentKind::linear: return 0;
+    case SegmentKind::graded: return exponent_offset ? -std::pow(p1 * u * u * u * u * u * u, shape) : 0;
+    case SegmentKind::log_exponent: return -std::exp(u);
+    case SegmentKind::log_tau: return (order + shape) / shape * u;
+  }
+  return 0;
+}
+
+}  // namespace asperity

@@ -1,0 +1,130 @@
+#include "generate.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "asperity/error.hpp"
+#include "quadrature.hpp"
+
+namespace asperity::tablegen {
+
+std::string GenerateOptions::describe() const {
+  std::ostringstream text;
+  text.precision(17);
+  text << "shapes=" << shape_min << ":" << shape_max << ":" << shape_log_step << " (log step)"
+       << " sides=" << (tail ? "tail" : "") << (tail && bounded ? "," : "") << (bounded ? "bounded" : "")
+       << " gaussian=" << (gaussian ? "yes" : "no") << " tolerance=" << tolerance
+       << " check_stride=" << check_stride;
+  return text.str();
+}
+
+std::vector<double> shape_grid(const GenerateOptions& options) {
+  if (!(options.shape_min > 0) || !(options.shape_max >= options.shape_min) || !(options.shape_log_step > 0))
+    throw Error("the shape grid needs 0 < LO <= HI and STEP > 0");
+  const double span = std::log(options.shape_max / options.shape_min);
+  const int intervals = std::max(0, static_cast<int>(std::ceil(span / options.shape_log_step - 1e-9)));
+  std::vector<double> shapes;
+  for (int i = 0; i <= intervals; ++i)
+    shapes.push_back(intervals == 0 ? options.shape_min
+                                    : options.shape_min * std::exp(span * i / intervals));
+  shapes.back() = options.shape_max;
+  return shapes;
+}
+
+std::vector<double> measure_curve_error(const Curve& curve, int check_stride) {
+  const CurveId id{curve.distribution(), curve.side(), curve.shape()};
+  std::vector<double> worst(order_count, 0.0);
+  // Sample midpoints in s of a fine uniform-in-u sweep of the curve's range.
+  const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
+  const int samples = 400 / std::max(1, check_stride) + 2;
+  for (int i = 0; i < samples; ++i) {
+    const double fraction = (i + 0.5) / samples;
+    // Spread the samples in a way that sees both s near 0 and the far tail.
+    double separation;
+    if (curve.side() == Side::bounded)
+      separation = -std::exp(std::log(-curve.table_max_separation()) +
+                             fraction * (std::log(-lo) - std::log(-curve.table_max_separation())));
+    else if (fraction < 0.5)
+      separation = lo + (0.0 - lo) * (2 * fraction);
+    else
+      separation = std::exp(std::log(1e-8) + (2 * fraction - 1) * (std::log(hi) - std::log(1e-8)));
+    for (int k = 0; k < order_count; ++k) {
+      const double reference = log_integral(id, order_of(k), separation);
+      const double error = std::fabs(std::expm1(curve.log_value(k, separation) - reference));
+      if (!(error <= worst[k])) worst[k] = std::isnan(error) ? INFINITY : std::max(worst[k], error);
+    }
+  }
+  return worst;
+}
+
+TableData generate_table(const GenerateOptions& options, const std::function<void(int, int)>& progress) {
+  struct Job { std::size_t set; std::size_t shape; };
+  TableData table;
+  table.generator = std::string("asperity tablegen ") + ASPERITY_VERSION_STRING +
+                    " (Boost.odeint runge_kutta_fehlberg78, Boost.Math exp_sinh/tanh_sinh)";
+  table.generator_options = options.describe();
+  const std::vector<double> shapes = shape_grid(options);
+  auto add_set = [&](Distribution distribution, Side side, std::vector<double> set_shapes) {
+    CurveSet set;
+    set.distribution = distribution;
+    set.side = side;
+    set.shapes = std::move(set_shapes);
+    set.layout = default_layout(distribution, side);
+    set.knots.assign(set.shapes.size() * set.curve_stride(), 0.0);
+    set.max_rel_error.assign(set.shapes.size() * order_count, 0.0);
+    table.sets.push_back(std::move(set));
+  };
+  if (options.tail) add_set(Distribution::weibull, Side::tail, shapes);
+  if (options.bounded) add_set(Distribution::weibull, Side::bounded, shapes);
+  if (options.gaussian) add_set(Distribution::gaussian, Side::tail, {2.0});
+  if (table.sets.empty()) throw Error("nothing to generate: choose at least one side or --gaussian");
+
+  std::vector<Job> jobs;
+  for (std::size_t set = 0; set < table.sets.size(); ++set)
+    for (std::size_t shape = 0; shape < table.sets[set].shapes.size(); ++shape) jobs.push_back({set, shape});
+  // The expensive curves first (the far tail of small shapes), so threads finish together.
+  std::atomic<std::size_t> next{0};
+  std::atomic<int> done{0};
+  std::mutex progress_mutex;
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t index = next++;
+      if (index >= jobs.size()) return;
+      try {
+        CurveSet& set = table.sets[jobs[index].set];
+        const double shape = set.shapes[jobs[index].shape];
+        const CurveId id{set.distribution, set.side, shape};
+        const std::vector<double> knots = integrate_curve(id, set.layout, ChainOptions{options.tolerance});
+        std::copy(knots.begin(), knots.end(), set.knots.begin() + jobs[index].shape * set.curve_stride());
+        const Curve curve(set.distribution, set.side, shape, set.layout, knots.data());
+        const std::vector<double> errors = measure_curve_error(curve, options.check_stride);
+        std::copy(errors.begin(), errors.end(), set.max_rel_error.begin() + jobs[index].shape * order_count);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = jobs.size();
+        return;
+      }
+      const int finished = ++done;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        progress(finished, static_cast<int>(jobs.size()));
+      }
+    }
+  };
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::max(1, std::min<int>(threads, static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
+  for (std::thread& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
+  return table;
+}
+
+}  // namespace asperity::tablegen

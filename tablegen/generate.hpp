@@ -1,0 +1,35 @@
+// Building a whole table: every (distribution, side, shape) curve integrated in parallel,
+// read back through the runtime and checked against direct quadrature.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "asperity/table.hpp"
+#include "chain_ode.hpp"
+
+namespace asperity::tablegen {
+
+struct GenerateOptions {
+  double shape_min = 0.5;
+  double shape_max = 20;
+  double shape_log_step = 0.09;  // spacing of the shape grid in ln(shape)
+  bool tail = true;
+  bool bounded = true;
+  bool gaussian = true;
+  double tolerance = 1e-14;
+  int threads = 0;          // 0: hardware concurrency
+  int check_stride = 1;     // check every check_stride-th interval midpoint
+  std::string describe() const;
+};
+
+std::vector<double> shape_grid(const GenerateOptions& options);
+
+// progress(done, total) is called from worker threads, serialized.
+TableData generate_table(const GenerateOptions& options,
+                         const std::function<void(int, int)>& progress = {});
+
+// Max relative error of a curve against direct quadrature at interval midpoints, per order.
+std::vector<double> measure_curve_error(const Curve& curve, int check_stride);
+
+}  // namespace asperity::tablegen

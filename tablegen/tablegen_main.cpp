@@ -1,0 +1,115 @@
+// tablegen: generate an asperity table file.
+//   tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]
+//            [--tolerance REL] [--threads N]
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "asperity/error.hpp"
+#include "generate.hpp"
+#include "table_writer.hpp"
+
+namespace {
+
+const char* usage =
+    "usage: tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]\n"
+    "                [--tolerance REL] [--threads N]\n"
+    "  --shapes LO:HI:STEP  Weibull shape grid, uniform in ln(shape) with spacing at most STEP\n"
+    "                       (default 0.5:20:0.09)\n"
+    "  --sides LIST         Weibull sides to tabulate: tail, bounded, both (default) or none\n"
+    "  --gaussian           include the Gaussian tail side (default); --no-gaussian leaves it out\n"
+    "  --tolerance REL      odeint error tolerance on ln X (default 1e-14)\n"
+    "  --threads N          worker threads (default: all cores)\n";
+
+double parse_number(const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value))
+    throw asperity::Error("tablegen: " + what + " '" + text + "' is not a number");
+  return value;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace asperity;
+  try {
+    tablegen::GenerateOptions options;
+    std::string out;
+    for (int i = 1; i < argc; ++i) {
+      const std::string argument = argv[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= argc) throw Error("tablegen: " + argument + " needs a value");
+        return argv[++i];
+      };
+      if (argument == "--out") out = value();
+      else if (argument == "--shapes") {
+        const std::string spec = value();
+        std::stringstream stream(spec);
+        std::string lo, hi, step;
+        if (!std::getline(stream, lo, ':') || !std::getline(stream, hi, ':') || !std::getline(stream, step) )
+          throw Error("tablegen: --shapes wants LO:HI:STEP, got '" + spec + "'");
+        options.shape_min = parse_number(lo, "shape LO");
+        options.shape_max = parse_number(hi, "shape HI");
+        options.shape_log_step = parse_number(step, "shape STEP");
+        if (!(options.shape_min > 0 && options.shape_max >= options.shape_min && options.shape_log_step > 0))
+          throw Error("tablegen: --shapes needs 0 < LO <= HI and STEP > 0");
+      } else if (argument == "--sides") {
+        const std::string sides = value();
+        options.tail = options.bounded = false;
+        std::stringstream stream(sides);
+        std::string side;
+        while (std::getline(stream, side, ',')) {
+          if (side == "tail") options.tail = true;
+          else if (side == "bounded") options.bounded = true;
+          else if (side == "both") options.tail = options.bounded = true;
+          else if (side != "none") throw Error("tablegen: unknown side '" + side + "' (tail, bounded, both, none)");
+        }
+      } else if (argument == "--gaussian") options.gaussian = true;
+      else if (argument == "--no-gaussian") options.gaussian = false;
+      else if (argument == "--tolerance") {
+        options.tolerance = parse_number(value(), "tolerance");
+        if (!(options.tolerance >= 1e-15 && options.tolerance <= 1e-3))
+          throw Error("tablegen: --tolerance must be between 1e-15 and 1e-3");
+      } else if (argument == "--threads") {
+        options.threads = static_cast<int>(parse_number(value(), "threads"));
+        if (options.threads < 1) throw Error("tablegen: --threads must be at least 1");
+      } else if (argument == "--help" || argument == "-h") {
+        std::cout << usage;
+        return 0;
+      } else throw Error("tablegen: unknown argument '" + argument + "'\n" + usage);
+    }
+    if (out.empty()) throw Error(std::string("tablegen: --out FILE is required\n") + usage);
+
+    const bool terminal = isatty(STDERR_FILENO);
+    const auto start = std::chrono::steady_clock::now();
+    auto progress = [&](int done, int total) {
+      if (!terminal) return;
+      const int width = 40, filled = width * done / total;
+      std::fprintf(stderr, "\r[%s%s] %d/%d curves", std::string(filled, '#').c_str(),
+                   std::string(width - filled, ' ').c_str(), done, total);
+      if (done == total) std::fprintf(stderr, "\n");
+    };
+    const TableData table = tablegen::generate_table(options, progress);
+    tablegen::write_table_file(table, out);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double worst = 0;
+    std::size_t curves = 0;
+    for (const CurveSet& set : table.sets) {
+      curves += set.shapes.size();
+      for (double error : set.max_rel_error) worst = std::max(worst, error);
+    }
+    std::printf("wrote %s: %zu curve sets, %zu shapes x 6 orders, max measured relative error %.3g, %.1f s\n",
+                out.c_str(), table.sets.size(), curves, worst, seconds);
+    return 0;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "%s\n", error.what());
+    return 1;
+  }
+}
