@@ -59,7 +59,7 @@ double sum_series(const Series& series, double variable) noexcept {
 }
 
 double weibull_tail_log(const Series& series, double shape, double order, double separation) noexcept {
-  const double log_s = std::log(separation), t = std::exp(shape * log_s);
+  const double log_s = std::log(separation), t = std::pow(separation, shape);  // one rounding in t
   return -t + order * (1 - shape) * log_s + series.log_constant + std::log(sum_series(series, 1 / t));
 }
 

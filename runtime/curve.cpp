@@ -14,9 +14,10 @@ Curve::Curve(Distribution distribution, Side side, double shape,
   if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
     throw Error("curve layout must have 1 to 6 segments");
   segment_count_ = static_cast<int>(layout.size());
+  const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, distribution, side, shape);
   for (int index = 0; index < segment_count_; ++index) {
     Segment& segment = segments_[index];
-    segment.map = SegmentMap::make(layout[index], distribution, side, shape);
+    segment.map = maps[index];
     segment.knots = layout[index].knots;
     segment.first_knot = total_knots_;
     segment.inv_step = (segment.knots - 1) / (segment.map.u_hi - segment.map.u_lo);
@@ -70,7 +71,7 @@ double Curve::log_value(int twice_order, double separation) const noexcept {
   double u, offset;
   switch (map.kind) {
     case SegmentKind::reciprocal:
-      u = map.p0 / separation;
+      u = std::sqrt(map.p0 / separation);
       offset = n * std::log(-separation);
       break;
     case SegmentKind::linear:
@@ -81,9 +82,19 @@ double Curve::log_value(int twice_order, double separation) const noexcept {
       u = std::cbrt(std::sqrt((separation - map.p0) / (map.p1 - map.p0)));
       offset = map.exponent_offset ? -std::pow(separation, shape_) : 0;
       break;
-    case SegmentKind::log_exponent:
+    case SegmentKind::log_exponent: {
+      const double exponent = tail_exponent(distribution_, map.shape, separation);
+      u = std::log(exponent);
+      offset = -exponent;
+      break;
+    }
+    case SegmentKind::log_distance:
+      u = std::log(-separation);
+      offset = 0;
+      break;
+    case SegmentKind::bounded_far:
       u = map.u_of_s(separation);
-      offset = -std::exp(u);
+      offset = 0;
       break;
     default:  // log_tau
       u = map.shape * std::log(-separation);

@@ -3,21 +3,25 @@
 #include <cmath>
 #include <limits>
 
+#include "asperity/error.hpp"
+
 namespace asperity {
 
 std::vector<SegmentSpec> default_layout(Distribution distribution, Side side) {
   if (distribution == Distribution::gaussian)
-    return {{SegmentKind::reciprocal, 33, -10.0, 0.0},
+    return {{SegmentKind::reciprocal, 33, 0.0, 0.0},
             {SegmentKind::linear, 257, -10.0, 1.0},
             {SegmentKind::log_exponent, 257, 1.0, 760.0}};
   if (side == Side::tail)
-    return {{SegmentKind::reciprocal, 33, -3.0, 0.0},
-            {SegmentKind::linear, 65, -3.0, -0.5},
-            {SegmentKind::graded, 129, 0.0, -0.5},
-            {SegmentKind::graded, 129, 0.0, 0.5},
-            {SegmentKind::log_exponent, 385, 0.5, 760.0}};
-  return {{SegmentKind::reciprocal, 33, -10.0, 0.0},
-          {SegmentKind::log_tau, 1025, 1e-3, 10.0}};
+    return {{SegmentKind::reciprocal, 129, 0.0, 0.0},
+            {SegmentKind::log_distance, 97, -3.0, -0.1},
+            {SegmentKind::graded, 97, 0.0, -0.1},
+            {SegmentKind::graded, 97, 0.0, 0.1},
+            {SegmentKind::log_exponent, 641, 0.1, 760.0}};
+  // Bounded: log_tau to tau = 100 (exp(-tau) negligible beyond), then 10 more units of distance.
+  return {{SegmentKind::reciprocal, 129, 0.0, 0.0},
+          {SegmentKind::bounded_far, 193, 100.0, 10.0},
+          {SegmentKind::log_tau, 257, 0.05, 100.0}};
 }
 
 double tail_exponent(Distribution distribution, double shape, double separation) {
@@ -25,8 +29,8 @@ double tail_exponent(Distribution distribution, double shape, double separation)
                                                 : std::pow(separation, shape);
 }
 
-SegmentMap SegmentMap::make(const SegmentSpec& spec, Distribution distribution, Side side,
-                            double shape) {
+namespace {
+SegmentMap make_map(const SegmentSpec& spec, Distribution distribution, Side side, double shape) {
   SegmentMap map{};
   map.kind = spec.kind;
   map.distribution = distribution;
@@ -36,8 +40,8 @@ SegmentMap SegmentMap::make(const SegmentSpec& spec, Distribution distribution, 
   map.p1 = spec.p1;
   const double inf = std::numeric_limits<double>::infinity();
   switch (spec.kind) {
-    case SegmentKind::reciprocal:
-      map.u_lo = 0; map.u_hi = 1; map.s_lo = -inf; map.s_hi = spec.p0;
+    case SegmentKind::reciprocal:  // anchored by resolve()
+      map.u_lo = 0; map.u_hi = 1; map.s_lo = -inf;
       break;
     case SegmentKind::linear:
       map.u_lo = spec.p0; map.u_hi = spec.p1; map.s_lo = spec.p0; map.s_hi = spec.p1;
@@ -56,32 +60,60 @@ SegmentMap SegmentMap::make(const SegmentSpec& spec, Distribution distribution, 
                                                         : std::pow(spec.p1, 1 / map.shape);
       map.exponent_offset = true;
       break;
-    case SegmentKind::log_tau:
-      map.u_lo = std::log(spec.p0); map.u_hi = map.shape * std::log(spec.p1);
-      map.s_lo = -spec.p1; map.s_hi = -std::pow(spec.p0, 1 / map.shape);
+    case SegmentKind::log_distance:
+      map.u_lo = std::log(-spec.p1); map.u_hi = std::log(-spec.p0);
+      map.s_lo = spec.p0; map.s_hi = spec.p1;
       break;
+    case SegmentKind::log_tau:
+      map.u_lo = std::log(spec.p0); map.u_hi = std::log(spec.p1);
+      map.s_lo = -std::pow(spec.p1, 1 / map.shape); map.s_hi = -std::pow(spec.p0, 1 / map.shape);
+      break;
+    case SegmentKind::bounded_far: {
+      const double start = std::pow(spec.p0, 1 / map.shape);
+      map.u_lo = 0; map.u_hi = 1;
+      map.s_lo = -(start + spec.p1); map.s_hi = -start;
+      break;
+    }
   }
   return map;
+}
+}  // namespace
+
+std::vector<SegmentMap> SegmentMap::resolve(const std::vector<SegmentSpec>& layout, Distribution distribution,
+                                            Side side, double shape) {
+  std::vector<SegmentMap> maps;
+  for (const SegmentSpec& spec : layout) maps.push_back(make_map(spec, distribution, side, shape));
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    if (maps[i].kind == SegmentKind::reciprocal) {
+      if (i + 1 >= maps.size() || !(maps[i + 1].s_lo < 0)) throw Error("a reciprocal segment must precede one at s < 0");
+      maps[i].p0 = maps[i].s_hi = maps[i + 1].s_lo;
+    }
+    if (!(maps[i].u_hi > maps[i].u_lo)) throw Error("a layout segment is empty for this shape");
+    if (i > 0 && std::fabs(maps[i].s_lo - maps[i - 1].s_hi) > 1e-12 * (1 + std::fabs(maps[i].s_lo)))
+      throw Error("layout segments do not meet");
+  }
+  return maps;
 }
 
 double SegmentMap::u_of_s(double separation) const {
   switch (kind) {
-    case SegmentKind::reciprocal: return p0 / separation;
+    case SegmentKind::reciprocal: return std::sqrt(p0 / separation);
     case SegmentKind::linear: return separation;
     case SegmentKind::graded: return std::cbrt(std::sqrt((separation - p0) / (p1 - p0)));
-    case SegmentKind::log_exponent:
-      return distribution == Distribution::gaussian
-                 ? 2 * std::log(separation) - 0.69314718055994530942
-                 : shape * std::log(separation);
+    case SegmentKind::log_exponent:  // t by one pow: a ln s would amplify rounding by a ln s
+      return std::log(tail_exponent(distribution, shape, separation));
     case SegmentKind::log_tau: return shape * std::log(-separation);
+    case SegmentKind::log_distance: return std::log(-separation);
+    case SegmentKind::bounded_far:
+      return std::sqrt(std::log(separation / s_hi) / std::log(s_lo / s_hi));
   }
   return std::numeric_limits<double>::quiet_NaN();
 }
 
 void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s_du2) const {
   switch (kind) {
-    case SegmentKind::reciprocal:
-      separation = p0 / u; ds_du = -p0 / (u * u); d2s_du2 = 2 * p0 / (u * u * u);
+    case SegmentKind::reciprocal:  // s = p0 / u^2
+      separation = p0 / (u * u); ds_du = -2 * p0 / (u * u * u); d2s_du2 = 6 * p0 / (u * u * u * u);
       return;
     case SegmentKind::linear:
       separation = u; ds_du = 1; d2s_du2 = 0;
@@ -99,6 +131,17 @@ void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s
         d2s_du2 = separation / (shape * shape);
       }
       return;
+    case SegmentKind::log_distance: {
+      const double distance = std::exp(u);
+      separation = -distance; ds_du = -distance; d2s_du2 = -distance;
+      return;
+    }
+    case SegmentKind::bounded_far: {
+      const double span = std::log(s_lo / s_hi), distance = -s_hi * std::exp(span * u * u);
+      separation = -distance; ds_du = -distance * 2 * span * u;
+      d2s_du2 = -distance * (2 * span + 4 * span * span * u * u);
+      return;
+    }
     case SegmentKind::log_tau: {
       const double distance = std::exp(u / shape);
       separation = -distance; ds_du = -distance / shape; d2s_du2 = -distance / (shape * shape);
@@ -111,9 +154,11 @@ void SegmentMap::offset(double order, double u, double& value, double& d1, doubl
   value = d1 = d2 = 0;
   switch (kind) {
     case SegmentKind::reciprocal:
-      value = order * (std::log(-p0) - std::log(u)); d1 = -order / u; d2 = order / (u * u);
+      value = order * (std::log(-p0) - 2 * std::log(u)); d1 = -2 * order / u; d2 = 2 * order / (u * u);
       return;
-    case SegmentKind::linear: return;
+    case SegmentKind::linear:
+    case SegmentKind::log_distance:
+    case SegmentKind::bounded_far: return;
     case SegmentKind::graded:
       if (exponent_offset) {  // t = (p1 w^6)^a
         const double power = 6 * shape, scale = std::pow(p1, shape);
@@ -133,8 +178,10 @@ void SegmentMap::offset(double order, double u, double& value, double& d1, doubl
 
 double SegmentMap::offset_value(double order, double u) const {
   switch (kind) {
-    case SegmentKind::reciprocal: return order * (std::log(-p0) - std::log(u));
-    case SegmentKind::linear: return 0;
+    case SegmentKind::reciprocal: return order * (std::log(-p0) - 2 * std::log(u));
+    case SegmentKind::linear:
+    case SegmentKind::log_distance:
+    case SegmentKind::bounded_far: return 0;
     case SegmentKind::graded: return exponent_offset ? -std::pow(p1 * u * u * u * u * u * u, shape) : 0;
     case SegmentKind::log_exponent: return -std::exp(u);
     case SegmentKind::log_tau: return (order + shape) / shape * u;

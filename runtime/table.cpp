@@ -1,12 +1,15 @@
 #include "asperity/table.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
 #include "asperity/error.hpp"
 
 namespace asperity {
+
+double shape_grid_variable(double shape) { return std::log(shape) - 1 / shape; }
 
 int CurveSet::total_knots() const {
   int total = 0;
@@ -17,6 +20,8 @@ int CurveSet::total_knots() const {
 void CurveSet::validate(const std::string& context) const {
   const std::string where = context + " " + to_string(distribution) + "_" + to_string(side) + ": ";
   if (shapes.empty()) throw Error(where + "no shapes");
+  if (!(shape_min >= shapes.front() && shape_max <= shapes.back() && shape_min <= shape_max))
+    throw Error(where + "shape_range is not inside the shape grid");
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     if (!(std::isfinite(shapes[i]) && shapes[i] > 0)) throw Error(where + "a shape is not a positive number");
     if (i > 0 && !(shapes[i] > shapes[i - 1])) throw Error(where + "shapes are not strictly ascending");
@@ -24,9 +29,16 @@ void CurveSet::validate(const std::string& context) const {
   if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
     throw Error(where + "the layout must have 1 to 6 segments");
   if (layout.front().kind != SegmentKind::reciprocal) throw Error(where + "the first segment must be reciprocal");
+  for (double shape : shapes) {
+    try {
+      SegmentMap::resolve(layout, distribution, side, distribution == Distribution::gaussian ? 2.0 : shape);
+    } catch (const Error& error) {
+      throw Error(where + error.what());
+    }
+  }
   for (const SegmentSpec& segment : layout) {
     if (segment.knots < 2 || segment.knots > 1000000) throw Error(where + "a segment has a bad knot count");
-    if (static_cast<int>(segment.kind) < 0 || static_cast<int>(segment.kind) > 4)
+    if (static_cast<int>(segment.kind) < 0 || static_cast<int>(segment.kind) > 6)
       throw Error(where + "unknown segment kind");
     if (!std::isfinite(segment.p0) || !std::isfinite(segment.p1)) throw Error(where + "a segment bound is not finite");
   }
@@ -66,7 +78,7 @@ Curve Table::curve(Distribution distribution, Side side, double shape) const {
     throw Error(std::string("this table has no ") + to_string(distribution) + " " + to_string(side) + " curves");
   }
   if (distribution == Distribution::gaussian) return Curve(distribution, side, 2.0, set->layout, set->knots.data());
-  const double lo = set->shapes.front(), hi = set->shapes.back();
+  const double lo = set->shape_min, hi = set->shape_max;
   if (!std::isfinite(shape) || shape < lo * (1 - 1e-12) || shape > hi * (1 + 1e-12)) {
     std::ostringstream message;
     message << "shape " << shape << " is outside the table's range [" << lo << ", " << hi << "]";
@@ -78,19 +90,22 @@ Curve Table::curve(Distribution distribution, Side side, double shape) const {
     if (std::fabs(shape - set->shapes[i]) <= 1e-12 * shape)
       return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride]);
 
-  // Between grid shapes: Lagrange in ln(shape) over up to 6 neighbours.
+  // Between grid shapes: Lagrange in q over the shape_stencil nearest nodes, centred.
   std::size_t upper = 1;
   while (upper < count - 1 && set->shapes[upper] < shape) ++upper;
-  const std::size_t points = count < 6 ? count : 6;
-  std::size_t first = upper >= 3 ? upper - 3 : 0;
+  const std::size_t points = std::min<std::size_t>(count, shape_stencil);
+  std::size_t first = upper >= points / 2 ? upper - points / 2 : 0;
   if (first + points > count) first = count - points;
   std::vector<double> weights(points);
-  const double x = std::log(shape);
+  const double x = shape_grid_variable(shape);
   for (std::size_t i = 0; i < points; ++i) {
     double weight = 1;
-    const double xi = std::log(set->shapes[first + i]);
+    const double xi = shape_grid_variable(set->shapes[first + i]);
     for (std::size_t j = 0; j < points; ++j)
-      if (j != i) weight *= (x - std::log(set->shapes[first + j])) / (xi - std::log(set->shapes[first + j]));
+      if (j != i) {
+        const double xj = shape_grid_variable(set->shapes[first + j]);
+        weight *= (x - xj) / (xi - xj);
+      }
     weights[i] = weight;
   }
   std::vector<double> blended(stride, 0.0);

@@ -114,6 +114,10 @@ TableData read_table_file(const std::string& path) {
     set.side = group_id.side;
     std::vector<hsize_t> dims;
     set.shapes = reader.dataset<double>(group.get(), schema::set_shapes, H5T_NATIVE_DOUBLE, dims);
+    const auto range = reader.dataset<double>(group.get(), schema::set_shape_range, H5T_NATIVE_DOUBLE, dims);
+    if (range.size() != 2) reader.fail(name + ": shape_range must hold two values");
+    set.shape_min = range[0];
+    set.shape_max = range[1];
     const auto kinds = reader.dataset<int>(group.get(), schema::set_segment_kind, H5T_NATIVE_INT, dims);
     const auto knot_counts = reader.dataset<int>(group.get(), schema::set_segment_knots, H5T_NATIVE_INT, dims);
     const auto p0 = reader.dataset<double>(group.get(), schema::set_segment_p0, H5T_NATIVE_DOUBLE, dims);

@@ -15,28 +15,39 @@ using State = std::array<double, order_count>;
 // Logs of X_-1/2 and X_0 .. X_5/2: log_values[0] is X_-1/2, log_values[1 + k] is twice_order k.
 using Logs = std::array<double, order_count + 1>;
 
-// phi'(z)/phi(z) for the density.
-double density_log_slope(const CurveId& curve, double height) {
-  if (curve.distribution == Distribution::gaussian) return -height;
-  return (curve.shape - 1) / height - curve.shape * std::pow(height, curve.shape - 1);
-}
-
-double log_density(const CurveId& curve, double height) {
-  return curve.distribution == Distribution::gaussian ? gaussian_log_density(height)
-                                                      : weibull_log_density(curve.shape, height);
+// d ln X_0/ds and X_0''/X_0. For the Weibull these come from the closed forms J_0 = exp(-s^a)
+// and K_0 = 1 - exp(-(-s)^a) (not from the state), so the order-0 chain carries no drift.
+void order_zero(const CurveId& curve, double separation, double log_x0, double& slope, double& second_ratio) {
+  if (curve.distribution == Distribution::gaussian) {  // dF_0/ds = -phi(s), F_0'' = s phi(s)
+    slope = -std::exp(gaussian_log_density(separation) - log_x0);
+    second_ratio = -separation * slope;
+    return;
+  }
+  const double a = curve.shape;
+  if (curve.side == Side::tail) {
+    if (separation <= 0) { slope = second_ratio = 0; return; }
+    const double rate = a * std::pow(separation, a - 1);  // d t/ds
+    slope = -rate;
+    second_ratio = rate * rate - a * (a - 1) * std::pow(separation, a - 2);
+    return;
+  }
+  // bounded: ln K_0 = ln(1 - e^-tau), tau = d^a, d = -s
+  const double distance = -separation, tau = std::pow(distance, a);
+  const double rate = a * std::pow(distance, a - 1);   // d tau/dd
+  const double curvature = a * (a - 1) * std::pow(distance, a - 2);
+  const double g1 = 1 / std::expm1(tau);                // d ln K_0/d tau
+  const double g2 = -g1 * (1 + g1);                     // d2 ln K_0/d tau2 = -e^tau/expm1(tau)^2
+  slope = -g1 * rate;                                   // ds = -dd
+  const double log_curvature = g2 * rate * rate + g1 * curvature;
+  second_ratio = log_curvature + slope * slope;         // X''/X = (ln X)'' + (ln X)'^2
 }
 
 // First and second s-derivatives of ln X_n for every order, from the chain
 // dX_n/ds = -n X_(n-1) (X_-1/2 and its slope from quadrature).
 void log_derivatives(const CurveId& curve, double separation, const Logs& logs, double slope_minus_half,
                      std::array<double, order_count>& slope, std::array<double, order_count>& curvature) {
-  const bool bounded = curve.side == Side::bounded;
-  // Order 0: dX_0/ds = -phi(s) on the tail side, -phi(-s) on the bounded side.
-  const double height = bounded ? -separation : separation;
-  const bool no_density = curve.distribution == Distribution::weibull && height <= 0;
-  slope[0] = no_density ? 0.0 : -std::exp(log_density(curve, height) - logs[1]);
-  const double second_ratio0 =
-      no_density ? 0.0 : (bounded ? -1.0 : 1.0) * density_log_slope(curve, height) * slope[0];
+  double second_ratio0;
+  order_zero(curve, separation, logs[1], slope[0], second_ratio0);
   curvature[0] = second_ratio0 - slope[0] * slope[0];
   for (int k = 1; k < order_count; ++k) {
     const double n = order_of(k);
@@ -65,7 +76,7 @@ struct ChainSystem {
       map.offset(order_of(k), u, value, d1, d2);
       offset_rate[k] = d1;
     }
-    if (ds_du == 0) {  // at s = 0 on a graded segment every chain term is multiplied by 0
+    if (ds_du == 0) {  // every chain term is multiplied by ds/du = 0 (s = 0 on a graded segment)
       for (int k = 0; k < order_count; ++k) rate[k] = -offset_rate[k];
       return;
     }
@@ -73,10 +84,8 @@ struct ChainSystem {
     logs[0] = log_integral(curve, -0.5, separation);
     for (int k = 0; k < order_count; ++k) logs[1 + k] = h[k] + map.offset_value(order_of(k), u);
     // Only the slopes are needed here; curvature is computed at the knots.
-    const bool bounded = curve.side == Side::bounded;
-    const double height = bounded ? -separation : separation;
-    const bool no_density = curve.distribution == Distribution::weibull && height <= 0;
-    const double slope0 = no_density ? 0.0 : -std::exp(log_density(curve, height) - logs[1]);
+    double slope0, unused;
+    order_zero(curve, separation, logs[1], slope0, unused);
     rate[0] = slope0 * ds_du - offset_rate[0];
     rate[1] = -0.5 * std::exp(logs[0] - logs[2]) * ds_du - offset_rate[1];
     for (int k = 2; k < order_count; ++k)
@@ -90,7 +99,8 @@ void knot_from_logs(const CurveId& curve, const SegmentMap& map, double u, const
   double separation, ds_du, d2s_du2;
   map.s_of_u(u, separation, ds_du, d2s_du2);
   std::array<double, order_count> slope{}, curvature{};
-  if (ds_du != 0) {
+  const bool at_origin = separation == 0;  // graded segments reach s = 0, where X_-1/2 may be infinite
+  if (!at_origin) {
     const double slope_minus_half = log_slope_minus_half(curve, separation);
     log_derivatives(curve, separation, logs, slope_minus_half, slope, curvature);
   }
@@ -99,8 +109,9 @@ void knot_from_logs(const CurveId& curve, const SegmentMap& map, double u, const
     map.offset(order_of(k), u, offset, d1, d2);
     double* knot = out + k * order_stride;
     knot[0] = logs[1 + k] - offset;
-    knot[1] = ds_du == 0 ? -d1 : slope[k] * ds_du - d1;
-    knot[2] = ds_du == 0 ? -d2 : curvature[k] * ds_du * ds_du + slope[k] * d2s_du2 - d2;
+    // At the origin ds/du and d2s/du2 vanish (graded map), so only the offset remains.
+    knot[1] = at_origin ? -d1 : slope[k] * ds_du - d1;
+    knot[2] = at_origin ? -d2 : curvature[k] * ds_du * ds_du + slope[k] * d2s_du2 - d2;
   }
 }
 
@@ -112,18 +123,16 @@ double knot_u(const SegmentMap& map, int knots, int j) {
 // (s = -inf) the limits from the moments.
 void fill_reciprocal(const CurveId& curve, const SegmentMap& map, int knots, double* data, std::size_t order_stride) {
   const double scale = -map.p0;
-  double mean = 0, second = 1;  // Gaussian: the whole-line moments
-  if (curve.distribution == Distribution::weibull) {
-    mean = weibull_moment(curve.shape, 1);
-    second = weibull_moment(curve.shape, 2);
-  }
+  double mean = 0;  // Gaussian: the whole-line mean
+  if (curve.distribution == Distribution::weibull) mean = weibull_moment(curve.shape, 1);
   const double sign = curve.side == Side::bounded ? -1.0 : 1.0;
   for (int k = 0; k < order_count; ++k) {
     const double n = order_of(k);
     double* knot = data + k * order_stride;
+    // H(u) = ln E[(1 + sign z u^2/scale)^n] = sign n mean u^2/scale + O(u^4)
     knot[0] = 0;
-    knot[1] = sign * n * mean / scale;
-    knot[2] = (n * (n - 1) * second - n * n * mean * mean) / (scale * scale);
+    knot[1] = 0;
+    knot[2] = 2 * sign * n * mean / scale;
   }
   for (int j = 1; j < knots; ++j) {
     const double u = knot_u(map, knots, j);
@@ -136,20 +145,64 @@ void fill_reciprocal(const CurveId& curve, const SegmentMap& map, int knots, dou
   }
 }
 
-Logs seed_logs(const CurveId& curve, double separation) {
-  Logs logs;
-  for (int k = -1; k < order_count; ++k) {
-    const double n = 0.5 * k;
-    double value;
-    if (curve.side == Side::bounded)
-      value = bounded_contact_log(bounded_contact_series(curve.shape, n), curve.shape, n, separation);
-    else if (curve.distribution == Distribution::gaussian)
-      value = gaussian_tail_log(gaussian_tail_series(n), n, separation);
-    else
-      value = weibull_tail_log(weibull_tail_series(curve.shape, n), curve.shape, n, separation);
-    logs[1 + k] = value;
+// H = ln X - offset at the start of the integration, from the series of asperity/asymptotic.hpp.
+// In the far tail the series is written in u = ln t itself (ln X + t without forming s^a - e^u,
+// whose rounding would otherwise offset every curve by ~t eps).
+State seed_state(const CurveId& curve, const SegmentMap& map, double u) {
+  State state;
+  for (int k = 0; k < order_count; ++k) {
+    const double n = order_of(k);
+    if (map.kind == SegmentKind::log_exponent) {
+      const double t = std::exp(u);
+      if (curve.distribution == Distribution::gaussian) {  // ln s = (u + ln 2)/2
+        const Series series = gaussian_tail_series(n);
+        state[k] = -0.91893853320467274178 - (n + 1) * 0.5 * (u + 0.69314718055994530942) + series.log_constant +
+                   std::log(sum_series(series, 1 / (2 * t)));
+      } else {  // ln s = u/a
+        const Series series = weibull_tail_series(curve.shape, n);
+        state[k] = n * (1 / curve.shape - 1) * u + series.log_constant + std::log(sum_series(series, 1 / t));
+      }
+    } else {
+      double separation, ds_du, d2s_du2;
+      map.s_of_u(u, separation, ds_du, d2s_du2);
+      state[k] = bounded_contact_log(bounded_contact_series(curve.shape, n), curve.shape, n, separation) -
+                 map.offset_value(n, u);
+    }
   }
-  return logs;
+  return state;
+}
+
+// Order 0 of the Weibull from its closed form instead of the integrated state, so it carries no
+// drift: on the tail H_0 = ln J_0 + t = 0 exactly (J_0 = exp(-t) for s > 0, 1 for s <= 0); on
+// the bounded side ln K_0 = ln(-expm1(-tau)).
+void fill_order_zero(const CurveId& curve, const std::vector<SegmentMap>& maps,
+                     const std::vector<SegmentSpec>& layout, double* data) {
+  std::size_t knot = 0;
+  for (std::size_t index = 0; index < maps.size(); ++index) {
+    const SegmentMap& map = maps[index];
+    for (int j = 0; j < layout[index].knots; ++j, ++knot) {
+      double* out = data + knot * 3;
+      if (curve.side == Side::tail) {
+        out[0] = out[1] = out[2] = 0;
+        continue;
+      }
+      const double u = knot_u(map, layout[index].knots, j);
+      if (map.kind == SegmentKind::reciprocal && j == 0) {  // s = -inf: K_0 = 1
+        out[0] = out[1] = out[2] = 0;
+        continue;
+      }
+      double separation, ds_du, d2s_du2, offset, d1, d2;
+      map.s_of_u(u, separation, ds_du, d2s_du2);
+      map.offset(0.0, u, offset, d1, d2);
+      const double log_value = std::log(-std::expm1(-std::pow(-separation, curve.shape)));
+      double slope, second_ratio;
+      order_zero(curve, separation, log_value, slope, second_ratio);
+      const double curvature = second_ratio - slope * slope;
+      out[0] = log_value - offset;
+      out[1] = slope * ds_du - d1;
+      out[2] = curvature * ds_du * ds_du + slope * d2s_du2 - d2;
+    }
+  }
 }
 
 }  // namespace
@@ -167,10 +220,11 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
   // Start at the far end of the last segment (smallest values: far tail, or first contact)
   // and integrate toward decreasing separation, where every X_n grows.
   const int last = static_cast<int>(layout.size()) - 1;
+  const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, curve.distribution, curve.side, shape);
   Logs logs{};
   bool have_state = false;
   for (int index = last; index >= 0; --index) {
-    const SegmentMap map = SegmentMap::make(layout[index], curve.distribution, curve.side, shape);
+    const SegmentMap& map = maps[index];
     const int knots = layout[index].knots;
     double* segment_data = data.data() + static_cast<std::size_t>(first[index]) * 3;
     if (map.kind == SegmentKind::reciprocal) {
@@ -187,11 +241,11 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
       knot_index[j] = descending ? knots - 1 - j : j;
       times[j] = knot_u(map, knots, knot_index[j]);
     }
-    double start_s, ds, d2s;
-    map.s_of_u(times[0], start_s, ds, d2s);
-    if (!have_state) logs = seed_logs(curve, start_s);
     State state;
-    for (int k = 0; k < order_count; ++k) state[k] = logs[1 + k] - map.offset_value(order_of(k), times[0]);
+    if (have_state)
+      for (int k = 0; k < order_count; ++k) state[k] = logs[1 + k] - map.offset_value(order_of(k), times[0]);
+    else
+      state = seed_state(curve, map, times[0]);
 
     ChainSystem system{curve, map};
     int observed = 0;
@@ -199,8 +253,7 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
       Logs knot_logs;
       double separation, ds_du, d2s_du2;
       map.s_of_u(u, separation, ds_du, d2s_du2);
-      const bool singular_minus_half = ds_du == 0;  // X_-1/2 may be infinite at s = 0
-      knot_logs[0] = singular_minus_half ? 0.0 : log_integral(curve, -0.5, separation);
+      knot_logs[0] = separation == 0 ? 0.0 : log_integral(curve, -0.5, separation);  // unused at s = 0
       for (int k = 0; k < order_count; ++k) knot_logs[1 + k] = h[k] + map.offset_value(order_of(k), u);
       knot_from_logs(curve, map, u, knot_logs, segment_data + static_cast<std::size_t>(knot_index[observed]) * 3,
                      order_stride);
@@ -214,6 +267,7 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
     if (observed != knots) throw std::runtime_error("odeint did not reach every knot");
     have_state = true;
   }
+  if (curve.distribution == Distribution::weibull) fill_order_zero(curve, maps, layout, data.data());
   for (double value : data)
     if (!std::isfinite(value)) throw std::runtime_error("the chain produced a value that is not finite");
   return data;

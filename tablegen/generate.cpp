@@ -15,39 +15,72 @@ namespace asperity::tablegen {
 std::string GenerateOptions::describe() const {
   std::ostringstream text;
   text.precision(17);
-  text << "shapes=" << shape_min << ":" << shape_max << ":" << shape_log_step << " (log step)"
+  text << "shapes=" << shape_min << ":" << shape_max << ":" << shape_log_step << " (step in ln a - 1/a)"
        << " sides=" << (tail ? "tail" : "") << (tail && bounded ? "," : "") << (bounded ? "bounded" : "")
        << " gaussian=" << (gaussian ? "yes" : "no") << " tolerance=" << tolerance
        << " check_stride=" << check_stride;
   return text.str();
 }
 
+namespace {
+// a with q(a) = ln a - 1/a (q is increasing in a): Newton's method.
+double shape_of_grid_variable(double q) {
+  double a = std::max(0.05, std::exp(q));
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double change = (shape_grid_variable(a) - q) / (1 / a + 1 / (a * a));
+    a = std::max(0.5 * a, a - change);
+    if (std::fabs(change) < 1e-15 * a) break;
+  }
+  return a;
+}
+}  // namespace
+
 std::vector<double> shape_grid(const GenerateOptions& options) {
   if (!(options.shape_min > 0) || !(options.shape_max >= options.shape_min) || !(options.shape_log_step > 0))
     throw Error("the shape grid needs 0 < LO <= HI and STEP > 0");
-  const double span = std::log(options.shape_max / options.shape_min);
-  const int intervals = std::max(0, static_cast<int>(std::ceil(span / options.shape_log_step - 1e-9)));
+  if (options.shape_min == options.shape_max) return {options.shape_min};
+  // Nodes: LO, HI and the paper's shapes 1, 2, 3, 5 between them exactly; between those
+  // anchors uniform in q = ln a - 1/a with spacing at most STEP; shape_stencil/2 nodes more past
+  // each end (with the end spacing) so the interpolation stencil stays centred over [LO, HI].
+  std::vector<double> anchors = {options.shape_min};
+  for (double shape : {1.0, 2.0, 3.0, 5.0})
+    if (shape > options.shape_min && shape < options.shape_max) anchors.push_back(shape);
+  anchors.push_back(options.shape_max);
   std::vector<double> shapes;
-  for (int i = 0; i <= intervals; ++i)
-    shapes.push_back(intervals == 0 ? options.shape_min
-                                    : options.shape_min * std::exp(span * i / intervals));
-  shapes.back() = options.shape_max;
+  const int extra = shape_stencil / 2;
+  double first_step = 0, last_step = 0;
+  for (std::size_t piece = 0; piece + 1 < anchors.size(); ++piece) {
+    const double q_lo = shape_grid_variable(anchors[piece]), q_hi = shape_grid_variable(anchors[piece + 1]);
+    const int intervals = std::max(1, static_cast<int>(std::ceil((q_hi - q_lo) / options.shape_log_step - 1e-9)));
+    const double step = (q_hi - q_lo) / intervals;
+    if (piece == 0) first_step = step;
+    last_step = step;
+    shapes.push_back(anchors[piece]);
+    for (int i = 1; i < intervals; ++i) shapes.push_back(shape_of_grid_variable(q_lo + step * i));
+  }
+  shapes.push_back(anchors.back());
+  std::vector<double> below, above;
+  for (int i = extra; i >= 1; --i)
+    below.push_back(shape_of_grid_variable(shape_grid_variable(options.shape_min) - first_step * i));
+  for (int i = 1; i <= extra; ++i)
+    above.push_back(shape_of_grid_variable(shape_grid_variable(options.shape_max) + last_step * i));
+  shapes.insert(shapes.begin(), below.begin(), below.end());
+  shapes.insert(shapes.end(), above.begin(), above.end());
   return shapes;
 }
 
 std::vector<double> measure_curve_error(const Curve& curve, int check_stride) {
   const CurveId id{curve.distribution(), curve.side(), curve.shape()};
   std::vector<double> worst(order_count, 0.0);
-  // Sample midpoints in s of a fine uniform-in-u sweep of the curve's range.
+  // Samples across the tabulated range: the bounded side uniform in ln(-s); the tail side
+  // uniform in s below 0 and in ln s above (to see both s near 0 and the far tail).
   const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
   const int samples = 400 / std::max(1, check_stride) + 2;
   for (int i = 0; i < samples; ++i) {
     const double fraction = (i + 0.5) / samples;
-    // Spread the samples in a way that sees both s near 0 and the far tail.
     double separation;
     if (curve.side() == Side::bounded)
-      separation = -std::exp(std::log(-curve.table_max_separation()) +
-                             fraction * (std::log(-lo) - std::log(-curve.table_max_separation())));
+      separation = -std::exp(std::log(-hi) + fraction * (std::log(-lo) - std::log(-hi)));
     else if (fraction < 0.5)
       separation = lo + (0.0 - lo) * (2 * fraction);
     else
@@ -55,7 +88,7 @@ std::vector<double> measure_curve_error(const Curve& curve, int check_stride) {
     for (int k = 0; k < order_count; ++k) {
       const double reference = log_integral(id, order_of(k), separation);
       const double error = std::fabs(std::expm1(curve.log_value(k, separation) - reference));
-      if (!(error <= worst[k])) worst[k] = std::isnan(error) ? INFINITY : std::max(worst[k], error);
+      if (!(error <= worst[k])) worst[k] = std::isnan(error) ? INFINITY : error;
     }
   }
   return worst;
@@ -73,6 +106,8 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
     set.distribution = distribution;
     set.side = side;
     set.shapes = std::move(set_shapes);
+    set.shape_min = distribution == Distribution::gaussian ? 2.0 : options.shape_min;
+    set.shape_max = distribution == Distribution::gaussian ? 2.0 : options.shape_max;
     set.layout = default_layout(distribution, side);
     set.knots.assign(set.shapes.size() * set.curve_stride(), 0.0);
     set.max_rel_error.assign(set.shapes.size() * order_count, 0.0);

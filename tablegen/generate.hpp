@@ -13,7 +13,7 @@ namespace asperity::tablegen {
 struct GenerateOptions {
   double shape_min = 0.5;
   double shape_max = 20;
-  double shape_log_step = 0.09;  // spacing of the shape grid in ln(shape)
+  double shape_log_step = 0.075;  // spacing of the shape grid in q = ln(a) - 1/a
   bool tail = true;
   bool bounded = true;
   bool gaussian = true;

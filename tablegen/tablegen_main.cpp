@@ -20,8 +20,9 @@ namespace {
 const char* usage =
     "usage: tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]\n"
     "                [--tolerance REL] [--threads N]\n"
-    "  --shapes LO:HI:STEP  Weibull shape grid, uniform in ln(shape) with spacing at most STEP\n"
-    "                       (default 0.5:20:0.09)\n"
+    "  --shapes LO:HI:STEP  Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5,\n"
+    "                       uniform in q = ln(a) - 1/a between them with spacing at most STEP,\n"
+    "                       six nodes more past each end (default 0.5:20:0.075)\n"
     "  --sides LIST         Weibull sides to tabulate: tail, bounded, both (default) or none\n"
     "  --gaussian           include the Gaussian tail side (default); --no-gaussian leaves it out\n"
     "  --tolerance REL      odeint error tolerance on ln X (default 1e-14)\n"
@@ -103,9 +104,12 @@ int main(int argc, char** argv) {
     std::size_t curves = 0;
     for (const CurveSet& set : table.sets) {
       curves += set.shapes.size();
-      for (double error : set.max_rel_error) worst = std::max(worst, error);
+      for (std::size_t i = 0; i < set.shapes.size(); ++i)
+        if (set.shapes[i] >= set.shape_min && set.shapes[i] <= set.shape_max)
+          for (int k = 0; k < order_count; ++k) worst = std::max(worst, set.max_rel_error[i * order_count + k]);
     }
-    std::printf("wrote %s: %zu curve sets, %zu shapes x 6 orders, max measured relative error %.3g, %.1f s\n",
+    std::printf("wrote %s: %zu curve sets, %zu curves of 6 orders, max relative error against quadrature "
+                "(served shapes) %.3g, %.1f s\n",
                 out.c_str(), table.sets.size(), curves, worst, seconds);
     return 0;
   } catch (const std::exception& error) {

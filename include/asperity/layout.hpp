@@ -5,13 +5,19 @@
 // interpolation variable u, in which the knots are uniform (so a lookup is O(1)), and an
 // analytic offset so that what is stored, H = ln X - offset(u), is smooth and O(1-100):
 //
-//   reciprocal   s <= p0 < 0, u = p0 / s in [0, 1]         offset n ln(-s)   (all touching)
+//   reciprocal   s <= s1 < 0, u = sqrt(s1 / s) in [0, 1]   offset n ln(-s)   (all touching;
+//                s1 is where the next segment starts; u^2 ~ 1/d packs knots toward d = inf,
+//                where heavy tails (a < 1) make H's derivatives grow like the moments)
 //   linear       p0 <= s <= p1, u = s                      offset 0
 //   graded       s = p0 + (p1 - p0) w^6, u = w in [0, 1]   offset -t on the Weibull tail
 //                                                          for s > 0 (else 0)
 //   log_exponent s >= p0 > 0, exponent t <= p1, u = ln t   offset -t      (far tail)
-//   log_tau      tau = (-s)^a in [p0, p1^a], u = ln tau    offset (n + a) ln(-s)
+//   log_tau      tau = (-s)^a in [p0, p1], u = ln tau      offset (n + a) ln(-s)
 //                                                                         (bounded side)
+//   log_distance p0 <= s <= p1 < 0, u = ln(-s)              offset 0
+//   bounded_far  -s = d in [d0, d0 + p1], d0 = p0^(1/a), d = d0 exp(L u^2), u in [0, 1],
+//                L = ln((d0 + p1)/d0), offset 0 (bounded side beyond the bulk: starts where
+//                log_tau ends, knots packed toward d0 where the bulk's edge is near)
 // where t = s^a (Weibull) or s^2/2 (Gaussian). The graded segments cluster knots at s = 0,
 // where the Weibull integrals have the power-law terms s^(n + a) of a density that is
 // singular (a < 1) or flat (a > 1) at the origin.
@@ -23,7 +29,10 @@
 
 namespace asperity {
 
-enum class SegmentKind : int { reciprocal = 0, linear = 1, graded = 2, log_exponent = 3, log_tau = 4 };
+enum class SegmentKind : int {
+  reciprocal = 0, linear = 1, graded = 2, log_exponent = 3, log_tau = 4, log_distance = 5,
+  bounded_far = 6
+};
 
 struct SegmentSpec {
   SegmentKind kind;
@@ -46,8 +55,10 @@ struct SegmentMap {
   double s_lo, s_hi;  // the separations the segment covers (may be infinite)
   bool exponent_offset;  // offset -t (tail side, s > 0)
 
-  static SegmentMap make(const SegmentSpec& spec, Distribution distribution, Side side,
-                         double shape);
+  // All the maps of a layout, in order (the reciprocal segment's anchor is the next
+  // segment's lower end). Throws asperity::Error for a layout that does not tile the axis.
+  static std::vector<SegmentMap> resolve(const std::vector<SegmentSpec>& layout, Distribution distribution,
+                                         Side side, double shape);
   double u_of_s(double separation) const;
   // s(u) with its first and second derivatives.
   void s_of_u(double u, double& separation, double& ds_du, double& d2s_du2) const;

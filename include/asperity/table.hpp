@@ -2,9 +2,9 @@
 //
 // Opening validates everything (schema, version, shapes, sizes, finite knots) and throws
 // asperity::Error with a message naming the file and the problem. Shapes between grid shapes
-// are resolved once, when the curve is made, by 6-point Lagrange interpolation in ln(shape)
-// of the knot data at corresponding knots; queries on the resulting Curve cost the same as on
-// a grid shape.
+// are resolved once, when the curve is made, by 12-point Lagrange interpolation in the grid
+// variable q = ln(a) - 1/a (see shape_grid_variable) of the knot data at corresponding
+// knots; queries on the resulting Curve cost the same as on a grid shape.
 #pragma once
 #include <string>
 #include <vector>
@@ -19,7 +19,8 @@ namespace asperity {
 struct CurveSet {
   Distribution distribution = Distribution::weibull;
   Side side = Side::tail;
-  std::vector<double> shapes;        // ascending
+  std::vector<double> shapes;        // ascending; the grid runs a few nodes past the range
+  double shape_min = 0, shape_max = 0;  // the range served (interpolation stays centred in it)
   std::vector<SegmentSpec> layout;
   std::vector<double> knots;         // [shape][order][knot][3]
   std::vector<double> max_rel_error; // [shape][order], measured by the generator
@@ -35,6 +36,11 @@ struct TableData {
   std::string generator_options;
   std::vector<CurveSet> sets;
 };
+
+// The variable in which shape grids are uniform and shapes are interpolated: q = ln(a) - 1/a.
+// It puts nodes closer at small a, where the integrals depend on a most strongly.
+double shape_grid_variable(double shape);
+inline constexpr int shape_stencil = 12;
 
 // Reads and validates a table file (HDF5, schema asperity::schema).
 TableData read_table_file(const std::string& path);

@@ -5,6 +5,7 @@
 //   /<distribution>_<side>  one group per curve set: weibull_tail, weibull_bounded, gaussian_tail
 //       attributes  distribution, side, definition
 //       shapes          [S]          grid of Weibull shapes, ascending (the Gaussian: one, 2)
+//       shape_range     [2]          the shapes served (the grid extends past it)
 //       orders          [6]          0, 1/2, 1, 3/2, 2, 5/2
 //       segment_kind    [G] int32    asperity::SegmentKind
 //       segment_knots   [G] int32
@@ -29,6 +30,7 @@ inline constexpr const char* attr_side = "side";
 inline constexpr const char* attr_definition = "definition";
 
 inline constexpr const char* set_shapes = "shapes";
+inline constexpr const char* set_shape_range = "shape_range";
 inline constexpr const char* set_orders = "orders";
 inline constexpr const char* set_segment_kind = "segment_kind";
 inline constexpr const char* set_segment_knots = "segment_knots";
@@ -45,10 +47,15 @@ inline constexpr const char* conventions =
     "bounded side: K_n(s) = integral_0^{max(-s,0)} (-s - z)^n phi(z) dz; 0 for s >= 0.\n"
     "Orders n = 0, 1/2, 1, 3/2, 2, 5/2. Separation s from the Weibull origin (Gaussian: from\n"
     "the mean), in units of sigma_s (Gaussian: sigma). dX_n/ds = -n X_(n-1).\n"
-    "Stored: H = ln X - offset(u) and dH/du, d2H/du2 on knots uniform in u per segment;\n"
-    "segment kinds: 0 reciprocal u=p0/s, 1 linear u=s, 2 graded s=p0+(p1-p0)u^6,\n"
-    "3 log_exponent u=ln t (t = s^a or s^2/2, offset -t), 4 log_tau u=ln((-s)^a),\n"
-    "offset (n+a)ln(-s). The reciprocal offset is n ln(-s); graded on the Weibull tail for\n"
-    "s > 0 has offset -s^a.";
+    "Stored: H = ln X - offset(u) and dH/du, d2H/du2 on knots uniform in u per segment.\n"
+    "Segment kinds (p0, p1 from segment_p0/p1; t = s^a, or s^2/2 for the Gaussian):\n"
+    "0 reciprocal   s <= s1 (start of the next segment), u = sqrt(s1/s), offset n ln(-s)\n"
+    "1 linear       p0 <= s <= p1, u = s, offset 0\n"
+    "2 graded       s = p0 + (p1 - p0) u^6, offset -s^a on the Weibull tail for s > 0, else 0\n"
+    "3 log_exponent s >= p0 and t <= p1, u = ln t, offset -t\n"
+    "4 log_tau      tau = (-s)^a in [p0, p1], u = ln tau, offset (n + a) ln(-s)\n"
+    "5 log_distance p0 <= s <= p1 < 0, u = ln(-s), offset 0\n"
+    "6 bounded_far  -s = d0 exp(L u^2), d0 = p0^(1/a), L = ln((d0 + p1)/d0), offset 0\n"
+    "Shapes between grid nodes: Lagrange in q = ln a - 1/a over the 12 nearest nodes.";
 
 }  // namespace asperity::schema

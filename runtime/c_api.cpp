@@ -1,0 +1,128 @@
+// The C API (include/asperity/asperity.h) over the C++ runtime. Exceptions stop here.
+#include "asperity/asperity.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <new>
+#include <string>
+
+#include "asperity/contact.hpp"
+#include "asperity/table.hpp"
+
+struct asperity_table {
+  asperity::Table table;
+};
+struct asperity_curve {
+  asperity::Curve curve;
+};
+
+namespace {
+
+void write_error(char* err, size_t err_size, const char* message) {
+  if (err && err_size > 0) std::snprintf(err, err_size, "%s", message);
+}
+
+const double not_a_number = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+extern "C" {
+
+asperity_table* asperity_table_open(const char* path, char* err, size_t err_size) {
+  try {
+    asperity::Table table = path ? asperity::Table::open(path) : asperity::Table::open_default();
+    return new asperity_table{std::move(table)};
+  } catch (const std::exception& error) {
+    write_error(err, err_size, error.what());
+  } catch (...) {
+    write_error(err, err_size, "asperity_table_open: unknown failure");
+  }
+  return nullptr;
+}
+
+void asperity_table_close(asperity_table* table) { delete table; }
+
+asperity_curve* asperity_curve_open(const asperity_table* table, const char* dist, const char* side, double shape,
+                                    char* err, size_t err_size) {
+  if (!table || !dist || !side) {
+    write_error(err, err_size, "asperity_curve_open: NULL table, dist or side");
+    return nullptr;
+  }
+  asperity::Distribution distribution;
+  asperity::Side which;
+  if (!asperity::parse_distribution(dist, distribution)) {
+    write_error(err, err_size, (std::string("unknown dist '") + dist + "' (weibull or gaussian)").c_str());
+    return nullptr;
+  }
+  if (!asperity::parse_side(side, which)) {
+    write_error(err, err_size, (std::string("unknown side '") + side + "' (tail or bounded)").c_str());
+    return nullptr;
+  }
+  try {
+    return new asperity_curve{table->table.curve(distribution, which, shape)};
+  } catch (const std::exception& error) {
+    write_error(err, err_size, error.what());
+  } catch (...) {
+    write_error(err, err_size, "asperity_curve_open: unknown failure");
+  }
+  return nullptr;
+}
+
+void asperity_curve_close(asperity_curve* curve) { delete curve; }
+
+double asperity_eval(const asperity_curve* curve, int twice_order, double sep) {
+  return curve ? curve->curve.value(twice_order, sep) : not_a_number;
+}
+
+double asperity_eval_log(const asperity_curve* curve, int twice_order, double sep) {
+  return curve ? curve->curve.log_value(twice_order, sep) : not_a_number;
+}
+
+int asperity_eval_batch(const asperity_curve* curve, int twice_order, const double* sep, double* out, size_t n) {
+  if (!curve || (n > 0 && (!sep || !out))) return ASPERITY_BAD_HANDLE;
+  if (twice_order < 0 || twice_order >= asperity::order_count) {
+    for (size_t i = 0; i < n; ++i) out[i] = not_a_number;
+    return ASPERITY_BAD_ORDER;
+  }
+  int status = ASPERITY_OK;
+  for (size_t i = 0; i < n; ++i) {
+    out[i] = curve->curve.value(twice_order, sep[i]);
+    if (!std::isfinite(sep[i])) status = ASPERITY_BAD_SEPARATION;
+  }
+  return status;
+}
+
+int asperity_contact(const asperity_curve* curve, double summit_count, double summit_radius, double height_scale,
+                     double contact_modulus, double sep, asperity_contact_state* out) {
+  if (!curve || !out) return ASPERITY_BAD_HANDLE;
+  asperity::ContactState state;
+  const bool ok = asperity::contact_at(curve->curve, {summit_count, summit_radius, height_scale, contact_modulus},
+                                       sep, state);
+  *out = {state.count, state.area, state.load, state.stiffness, state.stiffness_ratio};
+  if (ok) return ASPERITY_OK;
+  return std::isfinite(sep) ? ASPERITY_BAD_PARAMETER : ASPERITY_BAD_SEPARATION;
+}
+
+double asperity_standardized_from_origin(const asperity_curve* curve, double sep) {
+  return curve ? asperity::standardized_from_origin(curve->curve, sep) : not_a_number;
+}
+
+double asperity_origin_from_standardized(const asperity_curve* curve, double standardized) {
+  return curve ? asperity::origin_from_standardized(curve->curve, standardized) : not_a_number;
+}
+
+const char* asperity_version(void) { return ASPERITY_VERSION_STRING; }
+
+const char* asperity_status_string(int status) {
+  switch (status) {
+    case ASPERITY_OK: return "ok";
+    case ASPERITY_BAD_HANDLE: return "NULL curve, input or output";
+    case ASPERITY_BAD_ORDER: return "twice_order outside 0..5";
+    case ASPERITY_BAD_SEPARATION: return "a separation is NaN or infinite";
+    case ASPERITY_BAD_PARAMETER: return "a physical parameter is not a positive finite number";
+    default: return "unknown status";
+  }
+}
+
+}  // extern "C"

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Set-up on a fresh Debian machine: installs what is missing with apt-get, configures and
+# builds. Safe to run again (it only does what is not done yet).
+#   BUILD_DIR (default build), BUILD_TYPE (default Release), CMAKE_ARGS: passed to CMake.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages="g++ cmake make libboost-dev libhdf5-dev pkg-config libgtest-dev libbenchmark-dev"
+missing=""
+for package in $packages; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing="$missing $package"
+done
+if [ -n "$missing" ]; then
+  echo "installing:$missing" >&2
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing >/dev/null
+fi
+
+build_dir="${BUILD_DIR:-build}"
+# shellcheck disable=SC2086
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-Release}" ${CMAKE_ARGS:-} >/dev/null
+cmake --build "$build_dir" -j"$(nproc)"
