@@ -16,9 +16,11 @@ bool contact_at(const Curve& curve, const Surface& surface, double separation, C
     return false;
   const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
   const double modulus = surface.contact_modulus;
-  const double log_half = curve.log_value(1, separation), log_three_halves = curve.log_value(3, separation);
-  out.count = n * curve.value(0, separation);
-  out.area = M_PI * n * radius * scale * curve.value(2, separation);
+  double logs[order_count];
+  curve.log_values(separation, logs);  // one lookup for all four quantities
+  const double log_half = logs[1], log_three_halves = logs[3];
+  out.count = n * std::exp(logs[0]);
+  out.area = M_PI * n * radius * scale * std::exp(logs[2]);
   out.load = (4.0 / 3.0) * n * modulus * std::sqrt(radius) * scale * std::sqrt(scale) * std::exp(log_three_halves);
   out.stiffness = 2 * n * modulus * std::sqrt(radius * scale) * std::exp(log_half);
   out.stiffness_ratio = std::isinf(log_three_halves) ? nan : 1.5 * std::exp(log_half - log_three_halves);

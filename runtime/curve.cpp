@@ -58,47 +58,62 @@ double Curve::beyond_table(int twice_order, double separation) const noexcept {
 }
 
 double Curve::log_value(int twice_order, double separation) const noexcept {
-  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) ||
-      !std::isfinite(separation) || segment_count_ == 0)
+  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count))
     return std::numeric_limits<double>::quiet_NaN();
-  if (separation > segments_[segment_count_ - 1].map.s_hi) return beyond_table(twice_order, separation);
+  double out;
+  log_values(separation, twice_order, twice_order + 1, &out);
+  return out;
+}
 
+void Curve::log_values(double separation, double out[order_count]) const noexcept {
+  log_values(separation, 0, order_count, out);
+}
+
+// One segment search and one map for every order in [first, last): the cost of several orders
+// is one lookup plus a Hermite step and an offset each.
+void Curve::log_values(double separation, int first, int last, double* out) const noexcept {
+  if (!std::isfinite(separation) || segment_count_ == 0) {
+    for (int k = first; k < last; ++k) out[k - first] = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  if (separation > segments_[segment_count_ - 1].map.s_hi) {
+    for (int k = first; k < last; ++k) out[k - first] = beyond_table(k, separation);
+    return;
+  }
   const Segment* segment = &segments_[0];
   while (separation > segment->map.s_hi) ++segment;
   const SegmentMap& map = segment->map;
-  const double n = order_of(twice_order);
 
-  double u, offset;
+  // u, and the offset as base + per_order * n
+  double u, base = 0, per_order = 0;
   switch (map.kind) {
     case SegmentKind::reciprocal:
       u = std::sqrt(map.p0 / separation);
-      offset = n * std::log(-separation);
+      per_order = std::log(-separation);
       break;
     case SegmentKind::linear:
       u = separation;
-      offset = 0;
       break;
     case SegmentKind::graded:
       u = std::cbrt(std::sqrt((separation - map.p0) / (map.p1 - map.p0)));
-      offset = map.exponent_offset ? -std::pow(separation, shape_) : 0;
+      if (map.exponent_offset) base = -std::pow(separation, shape_);
       break;
     case SegmentKind::log_exponent: {
       const double exponent = tail_exponent(distribution_, map.shape, separation);
       u = std::log(exponent);
-      offset = -exponent;
+      base = -exponent;
       break;
     }
     case SegmentKind::log_distance:
       u = std::log(-separation);
-      offset = 0;
       break;
     case SegmentKind::bounded_far:
       u = map.u_of_s(separation);
-      offset = 0;
       break;
-    default:  // log_tau
+    default:  // log_tau: (n + a) ln d = u + n u / a
       u = map.shape * std::log(-separation);
-      offset = (n + map.shape) / map.shape * u;
+      base = u;
+      per_order = u / map.shape;
       break;
   }
   double position = (u - map.u_lo) * segment->inv_step;
@@ -106,9 +121,10 @@ double Curve::log_value(int twice_order, double separation) const noexcept {
   if (interval < 0) interval = 0;
   if (interval > segment->knots - 2) interval = segment->knots - 2;
   position -= interval;
-  const double* left =
-      &knots_[(static_cast<std::size_t>(twice_order) * total_knots_ + segment->first_knot + interval) * 3];
-  return offset + detail::quintic_hermite(left, left + 3, position);
+  const std::size_t order_stride = static_cast<std::size_t>(total_knots_) * 3;
+  const double* left = &knots_[(static_cast<std::size_t>(segment->first_knot + interval)) * 3 + first * order_stride];
+  for (int k = first; k < last; ++k, left += order_stride)
+    out[k - first] = base + per_order * order_of(k) + detail::quintic_hermite(left, left + 3, position);
 }
 
 }  // namespace asperity

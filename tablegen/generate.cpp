@@ -14,7 +14,7 @@ namespace asperity::tablegen {
 
 std::string GenerateOptions::describe() const {
   std::ostringstream text;
-  text.precision(17);
+  text.precision(12);
   text << "shapes=" << shape_min << ":" << shape_max << ":" << shape_log_step << " (step in ln a - 1/a)"
        << " sides=" << (tail ? "tail" : "") << (tail && bounded ? "," : "") << (bounded ? "bounded" : "")
        << " gaussian=" << (gaussian ? "yes" : "no") << " tolerance=" << tolerance

@@ -30,12 +30,15 @@ class Curve {
   double log_value(int twice_order, double separation) const noexcept;
   // X_n(s); underflows to 0 below ~1e-308 (use log_value there).
   double value(int twice_order, double separation) const noexcept;
+  // ln X_n(s) of all six orders at once (one segment search and one map): out[twice_order].
+  void log_values(double separation, double out[order_count]) const noexcept;
 
   Distribution distribution() const noexcept { return distribution_; }
   Side side() const noexcept { return side_; }
   double shape() const noexcept { return shape_; }
-  // The separations the knots span (outside: exact series, see asymptotic.hpp).
-  double table_min_separation() const noexcept { return segments_[1].map.s_lo; }
+  // The separations the knots span from the end of the all-touching segment (which reaches
+  // -inf) to the start of the series beyond the table (see asymptotic.hpp).
+  double table_min_separation() const noexcept { return segments_[segment_count_ > 1 ? 1 : 0].map.s_lo; }
   double table_max_separation() const noexcept { return segments_[segment_count_ - 1].map.s_hi; }
   std::size_t memory_bytes() const noexcept { return sizeof(*this) + knots_.size() * sizeof(double); }
 
@@ -47,6 +50,7 @@ class Curve {
     int first_knot = 0;
   };
   double beyond_table(int twice_order, double separation) const noexcept;
+  void log_values(double separation, int first, int last, double* out) const noexcept;
 
   Distribution distribution_ = Distribution::weibull;
   Side side_ = Side::tail;

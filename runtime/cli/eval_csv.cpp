@@ -103,7 +103,7 @@ int eval_csv(const Table& table, std::istream& input, std::ostream& output, std:
     std::string row = std::string(to_string(distribution)) + "," + to_string(side) + "," +
                       (distribution == Distribution::gaussian ? fields[2] : number(shape)) + "," + number(separation);
     double logs[order_count];
-    for (int k = 0; k < order_count; ++k) logs[k] = curve.log_value(k, separation);
+    curve.log_values(separation, logs);
     for (int k = 0; k < order_count; ++k) row += "," + number(std::exp(logs[k]));
     for (int k = 0; k < order_count; ++k) row += "," + number(logs[k]);
     output << row << "\n";
