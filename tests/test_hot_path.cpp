@@ -1,0 +1,91 @@
+// The query path allocates nothing and can be hammered from several threads at once on one
+// curve, giving the same answers as a single thread.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "asperity/asperity.h"
+#include "asperity/contact.hpp"
+#include "asperity/table.hpp"
+
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+
+// Count every allocation of the process (the test reads the counter around query loops only).
+void* operator new(std::size_t size) {
+  ++allocations;
+  if (void* memory = std::malloc(size ? size : 1)) return memory;
+  throw std::bad_alloc();
+}
+void operator delete(void* memory) noexcept { std::free(memory); }
+void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
+
+namespace {
+using namespace asperity;
+
+const Table& table() {
+  static const Table instance = Table::open(ASPERITY_TEST_TABLE);
+  return instance;
+}
+
+std::vector<double> separations() {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<double> values(4096);
+  for (double& value : values) value = std::sinh(8 * unit(rng));
+  values[0] = NAN;
+  values[1] = INFINITY;
+  return values;
+}
+
+TEST(HotPath, QueriesDoNotAllocate) {
+  const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.7);
+  const Curve gaussian = table().curve(Distribution::gaussian, Side::tail, 0);
+  asperity_table* c_table = asperity_table_open(ASPERITY_TEST_TABLE, nullptr, 0);
+  asperity_curve* c_curve = asperity_curve_open(c_table, "weibull", "bounded", 1.3, nullptr, 0);
+  ASSERT_NE(c_curve, nullptr);
+  const std::vector<double> inputs = separations();
+  std::vector<double> out(inputs.size());
+  double sum = 0, logs[order_count];
+  ContactState state;
+  const long before = allocations.load();
+  for (double s : inputs) {
+    for (int k = -1; k <= order_count; ++k) sum += curve.log_value(k, s) + gaussian.value(k, s);
+    curve.log_values(s, logs);
+    contact_at(curve, Surface{10, 1e-4, 1e-6, 1e9}, s, state);
+    sum += logs[3] + state.load + asperity_eval(c_curve, 3, s) + asperity_eval_log(c_curve, 1, s);
+  }
+  asperity_eval_batch(c_curve, 2, inputs.data(), out.data(), inputs.size());
+  EXPECT_EQ(allocations.load() - before, 0);
+  EXPECT_TRUE(std::isnan(sum));  // the NaN input went through, by value
+  asperity_curve_close(c_curve);
+  asperity_table_close(c_table);
+}
+
+TEST(HotPath, ManyThreadsOnOneCurve) {
+  const Curve curve = table().curve(Distribution::weibull, Side::bounded, 4.2);
+  const std::vector<double> inputs = separations();
+  std::vector<double> expected(inputs.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i) expected[i] = curve.log_value(3, inputs[i]);
+  std::atomic<long> mismatches{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 50; ++round)
+        for (std::size_t i = t; i < inputs.size(); i += 3) {
+          const double value = curve.log_value(3, inputs[i]);
+          if (!(value == expected[i] || (std::isnan(value) && std::isnan(expected[i])))) ++mismatches;
+        }
+    });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(mismatches.load(), 0);
+}
+
+}  // namespace
