@@ -25,20 +25,27 @@ void write_error(char* err, size_t err_size, const char* message) {
 
 const double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
+// Runs make(); an exception becomes a message in err and a NULL result.
+template <class Make>
+auto guarded(char* err, size_t err_size, const char* where, Make make) -> decltype(make()) {
+  try {
+    return make();
+  } catch (const std::exception& error) {
+    write_error(err, err_size, error.what());
+  } catch (...) {
+    write_error(err, err_size, (std::string(where) + ": unknown failure").c_str());
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 extern "C" {
 
 asperity_table* asperity_table_open(const char* path, char* err, size_t err_size) {
-  try {
-    asperity::Table table = path ? asperity::Table::open(path) : asperity::Table::open_default();
-    return new asperity_table{std::move(table)};
-  } catch (const std::exception& error) {
-    write_error(err, err_size, error.what());
-  } catch (...) {
-    write_error(err, err_size, "asperity_table_open: unknown failure");
-  }
-  return nullptr;
+  return guarded(err, err_size, "asperity_table_open", [&] {
+    return new asperity_table{path ? asperity::Table::open(path) : asperity::Table::open_default()};
+  });
 }
 
 void asperity_table_close(asperity_table* table) { delete table; }
@@ -59,14 +66,8 @@ asperity_curve* asperity_curve_open(const asperity_table* table, const char* dis
     write_error(err, err_size, (std::string("unknown side '") + side + "' (tail or bounded)").c_str());
     return nullptr;
   }
-  try {
-    return new asperity_curve{table->table.curve(distribution, which, shape)};
-  } catch (const std::exception& error) {
-    write_error(err, err_size, error.what());
-  } catch (...) {
-    write_error(err, err_size, "asperity_curve_open: unknown failure");
-  }
-  return nullptr;
+  return guarded(err, err_size, "asperity_curve_open",
+                 [&] { return new asperity_curve{table->table.curve(distribution, which, shape)}; });
 }
 
 void asperity_curve_close(asperity_curve* curve) { delete curve; }
