@@ -72,6 +72,7 @@ SegmentMap make_map(const SegmentSpec& spec, Distribution distribution, Side sid
       const double start = std::pow(spec.p0, 1 / map.shape);
       map.u_lo = 0; map.u_hi = 1;
       map.s_lo = -(start + spec.p1); map.s_hi = -start;
+      map.span = std::log(map.s_lo / map.s_hi);
       break;
     }
   }
@@ -105,7 +106,7 @@ double SegmentMap::u_of_s(double separation) const {
     case SegmentKind::log_tau: return shape * std::log(-separation);
     case SegmentKind::log_distance: return std::log(-separation);
     case SegmentKind::bounded_far:
-      return std::sqrt(std::log(separation / s_hi) / std::log(s_lo / s_hi));
+      return std::sqrt(std::log(separation / s_hi) / span);
   }
   return std::numeric_limits<double>::quiet_NaN();
 }
@@ -137,7 +138,7 @@ void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s
       return;
     }
     case SegmentKind::bounded_far: {
-      const double span = std::log(s_lo / s_hi), distance = -s_hi * std::exp(span * u * u);
+      const double distance = -s_hi * std::exp(span * u * u);
       separation = -distance; ds_du = -distance * 2 * span * u;
       d2s_du2 = -distance * (2 * span + 4 * span * span * u * u);
       return;

@@ -53,6 +53,7 @@ struct SegmentMap {
   double p0, p1;
   double u_lo, u_hi;  // the u range the knots span
   double s_lo, s_hi;  // the separations the segment covers (may be infinite)
+  double span = 0;    // bounded_far: L = ln(s_lo / s_hi), fixed when the map is made
   bool exponent_offset;  // offset -t (tail side, s > 0)
 
   // All the maps of a layout, in order (the reciprocal segment's anchor is the next
