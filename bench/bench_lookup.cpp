@@ -14,6 +14,7 @@
 
 #include "asperity/asperity.h"
 #include "asperity/contact.hpp"
+#include "asperity/detail/fast_math.hpp"
 #include "asperity/table.hpp"
 #include "quadrature.hpp"
 
@@ -70,6 +71,25 @@ void BM_ContactAllFour(benchmark::State& state) {
 }
 BENCHMARK(BM_ContactAllFour);
 
+// The batch path, per instruction set (the same separations, order 3/2).
+void BM_Batch(benchmark::State& state, InstructionSet isa) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError("instruction set not available on this CPU");
+    return;
+  }
+  const Curve& curve = weibull_curve();
+  const std::vector<double>& separations = weibull_separations();
+  std::vector<double> out(query_count);
+  for (auto _ : state) {
+    curve.value_batch(3, separations.data(), out.data(), query_count, isa);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * query_count);
+}
+BENCHMARK_CAPTURE(BM_Batch, generic, InstructionSet::generic);
+BENCHMARK_CAPTURE(BM_Batch, avx2, InstructionSet::avx2);
+BENCHMARK_CAPTURE(BM_Batch, avx512, InstructionSet::avx512);
+
 void BM_BatchCApi(benchmark::State& state) {
   static asperity_table* handle = asperity_table_open(nullptr, nullptr, 0);
   static asperity_curve* curve = asperity_curve_open(handle, "weibull", "tail", 2.0, nullptr, 0);
@@ -82,6 +102,30 @@ void BM_BatchCApi(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * query_count);
 }
 BENCHMARK(BM_BatchCApi);
+
+// Our exp and log (detail/fast_math.hpp) against the library's, which stay the baseline.
+const std::vector<double>& exponents() {
+  static const std::vector<double> values = uniform(-700.0, 700.0, query_count, 4);
+  return values;
+}
+template <double (*function)(double), bool positive_argument>
+void run_elementary(benchmark::State& state) {
+  const std::vector<double>& arguments = exponents();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const double argument = arguments[i++ & (query_count - 1)];
+    benchmark::DoNotOptimize(function(positive_argument ? argument + 701.0 : argument));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+double std_exp(double x) { return std::exp(x); }
+double std_log(double x) { return std::log(x); }
+double our_exp(double x) { return detail::fast_exp(x); }
+double our_log(double x) { return detail::fast_log(x); }
+BENCHMARK(run_elementary<std_exp, false>)->Name("BM_StdExp");
+BENCHMARK(run_elementary<our_exp, false>)->Name("BM_FastExp");
+BENCHMARK(run_elementary<std_log, true>)->Name("BM_StdLog");
+BENCHMARK(run_elementary<our_log, true>)->Name("BM_FastLog");
 
 // The far-tail segment of X_3/2 (a = 2) as knot arrays, for the Boost interpolators. Every
 // method answers the same queries: u = ln(s^a), value = exp(H(u) - t).

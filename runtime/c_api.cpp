@@ -40,6 +40,24 @@ auto guarded(char* err, size_t err_size, const char* where, Make make) -> declty
 
 }  // namespace
 
+namespace {
+int eval_batch(const asperity_curve* curve, int twice_order, const double* sep, double* out, size_t n,
+               bool log_output) {
+  if (!curve || (n > 0 && (!sep || !out))) return ASPERITY_BAD_HANDLE;
+  if (twice_order < 0 || twice_order >= asperity::order_count) {
+    for (size_t i = 0; i < n; ++i) out[i] = not_a_number;
+    return ASPERITY_BAD_ORDER;
+  }
+  // Scan for non-finite separations first: out may alias sep.
+  int status = ASPERITY_OK;
+  for (size_t i = 0; i < n; ++i)
+    if (!std::isfinite(sep[i])) status = ASPERITY_BAD_SEPARATION;
+  if (log_output) curve->curve.log_value_batch(twice_order, sep, out, n);
+  else curve->curve.value_batch(twice_order, sep, out, n);
+  return status;
+}
+}  // namespace
+
 extern "C" {
 
 asperity_table* asperity_table_open(const char* path, char* err, size_t err_size) {
@@ -80,18 +98,13 @@ double asperity_eval_log(const asperity_curve* curve, int twice_order, double se
   return curve ? curve->curve.log_value(twice_order, sep) : not_a_number;
 }
 
+
 int asperity_eval_batch(const asperity_curve* curve, int twice_order, const double* sep, double* out, size_t n) {
-  if (!curve || (n > 0 && (!sep || !out))) return ASPERITY_BAD_HANDLE;
-  if (twice_order < 0 || twice_order >= asperity::order_count) {
-    for (size_t i = 0; i < n; ++i) out[i] = not_a_number;
-    return ASPERITY_BAD_ORDER;
-  }
-  int status = ASPERITY_OK;
-  for (size_t i = 0; i < n; ++i) {
-    out[i] = curve->curve.value(twice_order, sep[i]);
-    if (!std::isfinite(sep[i])) status = ASPERITY_BAD_SEPARATION;
-  }
-  return status;
+  return eval_batch(curve, twice_order, sep, out, n, false);
+}
+
+int asperity_eval_log_batch(const asperity_curve* curve, int twice_order, const double* sep, double* out, size_t n) {
+  return eval_batch(curve, twice_order, sep, out, n, true);
 }
 
 int asperity_contact(const asperity_curve* curve, double summit_count, double summit_radius, double height_scale,

@@ -16,14 +16,16 @@ bool contact_at(const Curve& curve, const Surface& surface, double separation, C
     return false;
   const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
   const double modulus = surface.contact_modulus;
-  double logs[order_count];
-  curve.log_values(separation, logs);  // one lookup for all four quantities
-  const double log_half = logs[1], log_three_halves = logs[3];
-  out.count = n * std::exp(logs[0]);
-  out.area = M_PI * n * radius * scale * std::exp(logs[2]);
-  out.load = (4.0 / 3.0) * n * modulus * std::sqrt(radius) * scale * std::sqrt(scale) * std::exp(log_three_halves);
-  out.stiffness = 2 * n * modulus * std::sqrt(radius * scale) * std::exp(log_half);
-  out.stiffness_ratio = std::isinf(log_three_halves) ? nan : 1.5 * std::exp(log_half - log_three_halves);
+  double logs[4], values[4];
+  curve.contact_orders(separation, logs, values);  // one lookup for orders 0, 1/2, 1, 3/2
+  const double count = values[0], half = values[1], area = values[2], three_halves = values[3];
+  out.count = n * count;
+  out.area = M_PI * n * radius * scale * area;
+  out.load = (4.0 / 3.0) * n * modulus * std::sqrt(radius) * scale * std::sqrt(scale) * three_halves;
+  out.stiffness = 2 * n * modulus * std::sqrt(radius * scale) * half;
+  // the ratio from the logs where X_3/2 underflows (or is exactly 0: no contact, NaN)
+  if (three_halves > 1e-300) out.stiffness_ratio = 1.5 * half / three_halves;
+  else out.stiffness_ratio = std::isinf(logs[3]) ? nan : 1.5 * std::exp(logs[1] - logs[3]);
   return true;
 }
 

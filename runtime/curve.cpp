@@ -5,35 +5,78 @@
 
 #include "asperity/detail/quintic_hermite.hpp"
 #include "asperity/error.hpp"
+#include "kernel/curve_kernel.hpp"
+#include "kernel/kernels.hpp"
 
 namespace asperity {
+namespace {
 
-Curve::Curve(Distribution distribution, Side side, double shape,
-             const std::vector<SegmentSpec>& layout, const double* knot_data)
-    : distribution_(distribution), side_(side), shape_(shape) {
+detail::KernelKind kernel_kind(const SegmentMap& map) {
+  switch (map.kind) {
+    case SegmentKind::reciprocal: return detail::KernelKind::reciprocal;
+    case SegmentKind::linear: return detail::KernelKind::linear;
+    case SegmentKind::graded: return map.exponent_offset ? detail::KernelKind::graded_exponent : detail::KernelKind::graded;
+    case SegmentKind::log_exponent:
+      return map.distribution == Distribution::gaussian ? detail::KernelKind::gaussian_far
+                                                        : detail::KernelKind::weibull_far;
+    case SegmentKind::log_tau: return detail::KernelKind::log_tau;
+    case SegmentKind::log_distance: return detail::KernelKind::log_distance;
+    case SegmentKind::bounded_far: return detail::KernelKind::bounded_far;
+  }
+  throw Error("unknown segment kind");
+}
+
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+Curve::Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
+             const double* knot_data)
+    : distribution_(distribution), side_(side), shape_(shape), kernels_(&detail::kernels_for(InstructionSet::automatic)) {
   if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
     throw Error("curve layout must have 1 to 6 segments");
   segment_count_ = static_cast<int>(layout.size());
   const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, distribution, side, shape);
+  int intervals = 0;
   for (int index = 0; index < segment_count_; ++index) {
-    Segment& segment = segments_[index];
-    segment.map = maps[index];
-    segment.knots = layout[index].knots;
-    segment.first_knot = total_knots_;
-    segment.inv_step = (segment.knots - 1) / (segment.map.u_hi - segment.map.u_lo);
-    total_knots_ += segment.knots;
+    const SegmentMap& map = maps[index];
+    detail::KernelSegment& segment = segments_[index];
+    segment.kind = kernel_kind(map);
+    segment.s_hi = map.s_hi;
+    segment.u_lo = map.u_lo;
+    segment.inv_step = (layout[index].knots - 1) / (map.u_hi - map.u_lo);
+    segment.last_interval = layout[index].knots - 2;
+    segment.p0 = map.p0;
+    segment.inv_range = map.kind == SegmentKind::graded ? 1 / (map.p1 - map.p0) : 0;
+    segment.shape = map.shape;
+    segment.shape_log_p1 = segment.kind == detail::KernelKind::graded_exponent ? map.shape * std::log(map.p1) : 0;
+    segment.inv_span = map.kind == SegmentKind::bounded_far ? 1 / map.span : 0;
+    segment.first_interval = intervals;
+    intervals += layout[index].knots - 1;
   }
-  knots_.assign(knot_data, knot_data + static_cast<std::size_t>(order_count) * total_knots_ * 3);
-  for (int order = 0; order < order_count; ++order)
+  table_min_separation_ = maps[segment_count_ > 1 ? 1 : 0].s_lo;
+  table_max_separation_ = maps[segment_count_ - 1].s_hi;
+
+  // Hermite data (H, dH/du, d2H/du2 at each knot) -> the quintic of each interval in x in [0, 1].
+  order_stride_ = static_cast<std::size_t>(intervals) * 6;
+  coefficients_.resize(order_stride_ * order_count);
+  int total_knots = 0;
+  for (const SegmentSpec& spec : layout) total_knots += spec.knots;
+  for (int order = 0; order < order_count; ++order) {
+    int knot_offset = 0;
     for (int index = 0; index < segment_count_; ++index) {
-      const Segment& segment = segments_[index];
+      const detail::KernelSegment& segment = segments_[index];
       const double step = 1 / segment.inv_step;
-      double* knot = &knots_[(static_cast<std::size_t>(order) * total_knots_ + segment.first_knot) * 3];
-      for (int j = 0; j < segment.knots; ++j, knot += 3) {
-        knot[1] *= step;
-        knot[2] *= step * step;
+      const double* knot = knot_data + (static_cast<std::size_t>(order) * total_knots + knot_offset) * 3;
+      double* out = &coefficients_[order * order_stride_ + static_cast<std::size_t>(segment.first_interval) * 6];
+      for (int j = 0; j + 1 < layout[index].knots; ++j, knot += 3, out += 6) {
+        const double left[3] = {knot[0], knot[1] * step, knot[2] * step * step};
+        const double right[3] = {knot[3], knot[4] * step, knot[5] * step * step};
+        detail::quintic_hermite_coefficients(left, right, out);
       }
+      knot_offset += layout[index].knots;
     }
+  }
   for (int order = 0; order < order_count; ++order) {
     const double n = order_of(order);
     if (side == Side::bounded) series_[order] = bounded_contact_series(shape, n);
@@ -42,95 +85,103 @@ Curve::Curve(Distribution distribution, Side side, double shape,
   }
 }
 
-double Curve::value(int twice_order, double separation) const noexcept {
-  return std::exp(log_value(twice_order, separation));
-}
-
-double Curve::beyond_table(int twice_order, double separation) const noexcept {
+double Curve::log_value_outside(int twice_order, double separation) const noexcept {
+  if (std::isnan(separation) || std::isinf(separation)) return not_a_number;
   const double n = order_of(twice_order);
   if (side_ == Side::bounded) {
     if (separation >= 0) return -std::numeric_limits<double>::infinity();
     return bounded_contact_log(series_[twice_order], shape_, n, separation);
   }
-  if (distribution_ == Distribution::gaussian)
-    return gaussian_tail_log(series_[twice_order], n, separation);
+  if (distribution_ == Distribution::gaussian) return gaussian_tail_log(series_[twice_order], n, separation);
   return weibull_tail_log(series_[twice_order], shape_, n, separation);
 }
 
+// Inside the table: the first segment whose upper end is at or past s (at most six compares).
+const detail::KernelSegment& Curve::segment_of(double separation) const noexcept {
+  const detail::KernelSegment* segment = &segments_[0];
+  while (separation > segment->s_hi) ++segment;
+  return *segment;
+}
+
+namespace {
+// Finite and not beyond the table's last knot (NaN fails both compares).
+inline bool inside_table(double separation, double table_end) noexcept {
+  return separation <= table_end && separation >= -std::numeric_limits<double>::max();
+}
+}  // namespace
+
 double Curve::log_value(int twice_order, double separation) const noexcept {
-  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count))
-    return std::numeric_limits<double>::quiet_NaN();
-  double out;
-  log_values(separation, twice_order, twice_order + 1, &out);
-  return out;
+  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) || segment_count_ == 0)
+    return not_a_number;
+  if (!inside_table(separation, table_max_separation_)) return log_value_outside(twice_order, separation);
+  return detail::log_value_scalar<detail::LibraryMath>(
+      segment_of(separation), &coefficients_[order_stride_ * twice_order], order_of(twice_order), separation);
+}
+
+double Curve::value(int twice_order, double separation) const noexcept {
+  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) || segment_count_ == 0)
+    return not_a_number;
+  if (!inside_table(separation, table_max_separation_)) return std::exp(log_value_outside(twice_order, separation));
+  return std::exp(detail::log_value_scalar<detail::LibraryMath>(
+      segment_of(separation), &coefficients_[order_stride_ * twice_order], order_of(twice_order), separation));
 }
 
 void Curve::log_values(double separation, double out[order_count]) const noexcept {
-  log_values(separation, 0, order_count, out);
+  log_values(separation, 0, order_count - 1, out);
 }
 
-// One segment search and one map for every order in [first, last): the cost of several orders
-// is one lookup plus a Hermite step and an offset each.
+// One segment search and one map for every order asked: the cost of several orders is one
+// lookup plus a Horner step each.
 void Curve::log_values(double separation, int first, int last, double* out) const noexcept {
-  if (!std::isfinite(separation) || segment_count_ == 0) {
-    for (int k = first; k < last; ++k) out[k - first] = std::numeric_limits<double>::quiet_NaN();
+  if (first < 0 || last >= order_count || first > last) return;
+  if (segment_count_ == 0) {
+    for (int k = first; k <= last; ++k) out[k - first] = not_a_number;
     return;
   }
-  if (separation > segments_[segment_count_ - 1].map.s_hi) {
-    for (int k = first; k < last; ++k) out[k - first] = beyond_table(k, separation);
+  if (!inside_table(separation, table_max_separation_)) {
+    for (int k = first; k <= last; ++k) out[k - first] = log_value_outside(k, separation);
     return;
   }
-  const Segment* segment = &segments_[0];
-  while (separation > segment->map.s_hi) ++segment;
-  const SegmentMap& map = segment->map;
+  detail::log_values_scalar<detail::LibraryMath>(segment_of(separation), coefficients_.data(), order_stride_,
+                                                 separation, first, last, out);
+}
 
-  // u, and the offset as base + per_order * n
-  double u, base = 0, per_order = 0;
-  switch (map.kind) {
-    case SegmentKind::reciprocal:
-      u = std::sqrt(map.p0 / separation);
-      per_order = std::log(-separation);
-      break;
-    case SegmentKind::linear:
-      u = separation;
-      break;
-    case SegmentKind::graded:
-      u = std::cbrt(std::sqrt((separation - map.p0) / (map.p1 - map.p0)));
-      if (map.exponent_offset) base = -std::pow(separation, shape_);
-      break;
-    case SegmentKind::log_exponent: {
-      // t = exp(a ln s) instead of pow(s, a): three times faster; the rounding it adds to t,
-      // t (ln t + 1) eps, is below 2e-13 of X wherever X >= 1e-100 (t <= 230).
-      if (distribution_ == Distribution::gaussian) {
-        base = -0.5 * separation * separation;
-        u = std::log(-base);
-      } else {
-        u = map.shape * std::log(separation);
-        base = -std::exp(u);
-      }
-      break;
-    }
-    case SegmentKind::log_distance:
-      u = std::log(-separation);
-      break;
-    case SegmentKind::bounded_far:
-      u = map.u_of_s(separation);
-      break;
-    default:  // log_tau: (n + a) ln d = u + n u / a
-      u = map.shape * std::log(-separation);
-      base = u;
-      per_order = u / map.shape;
-      break;
+void Curve::contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept {
+  log_values(separation, 0, 3, log_out);
+  if (kernels_) kernels_->exp4(log_out, value_out);
+  else
+    for (int k = 0; k < 4; ++k) value_out[k] = not_a_number;
+}
+
+void Curve::value_batch(int twice_order, const double* separations, double* out, std::size_t count,
+                        InstructionSet isa) const noexcept {
+  batch(twice_order, separations, out, count, isa, false);
+}
+
+void Curve::log_value_batch(int twice_order, const double* separations, double* out, std::size_t count,
+                            InstructionSet isa) const noexcept {
+  batch(twice_order, separations, out, count, isa, true);
+}
+
+void Curve::batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
+                  bool log_output) const noexcept {
+  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) || segment_count_ == 0) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = not_a_number;
+    return;
   }
-  double position = (u - map.u_lo) * segment->inv_step;
-  int interval = static_cast<int>(position);
-  if (interval < 0) interval = 0;
-  if (interval > segment->knots - 2) interval = segment->knots - 2;
-  position -= interval;
-  const std::size_t order_stride = static_cast<std::size_t>(total_knots_) * 3;
-  const double* left = &knots_[(static_cast<std::size_t>(segment->first_knot + interval)) * 3 + first * order_stride];
-  for (int k = first; k < last; ++k, left += order_stride)
-    out[k - first] = base + per_order * order_of(k) + detail::quintic_hermite(left, left + 3, position);
+  const detail::Kernels& kernels = isa == InstructionSet::automatic ? *kernels_ : detail::kernels_for(isa);
+  const detail::KernelCurve curve{segments_.data(), segment_count_, coefficients_.data(), order_stride_};
+  int rest[detail::batch_block];
+  double block_separations[detail::batch_block];  // a copy, so that out may alias separations
+  for (std::size_t start = 0; start < count; start += detail::batch_block) {
+    const int block = static_cast<int>(count - start < detail::batch_block ? count - start : detail::batch_block);
+    for (int j = 0; j < block; ++j) block_separations[j] = separations[start + j];
+    const int rest_count = kernels.block(curve, twice_order, block_separations, out + start, block, log_output, rest);
+    for (int r = 0; r < rest_count; ++r) {
+      const double log_value = log_value_outside(twice_order, block_separations[rest[r]]);
+      out[start + rest[r]] = log_output ? log_value : std::exp(log_value);
+    }
+  }
 }
 
 }  // namespace asperity

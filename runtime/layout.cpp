@@ -50,7 +50,7 @@ SegmentMap make_map(const SegmentSpec& spec, Distribution distribution, Side sid
       map.u_lo = 0; map.u_hi = 1;
       map.s_lo = std::fmin(spec.p0, spec.p1); map.s_hi = std::fmax(spec.p0, spec.p1);
       map.exponent_offset = distribution == Distribution::weibull && side == Side::tail &&
-                            spec.p1 > spec.p0 && spec.p0 >= 0;
+                            spec.p1 > 0 && spec.p0 == 0;
       break;
     case SegmentKind::log_exponent:
       map.u_lo = std::log(tail_exponent(distribution, map.shape, spec.p0));

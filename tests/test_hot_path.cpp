@@ -63,6 +63,11 @@ TEST(HotPath, QueriesDoNotAllocate) {
     sum += logs[3] + state.load + asperity_eval(c_curve, 3, s) + asperity_eval_log(c_curve, 1, s);
   }
   asperity_eval_batch(c_curve, 2, inputs.data(), out.data(), inputs.size());
+  asperity_eval_log_batch(c_curve, 5, inputs.data(), out.data(), inputs.size());
+  for (InstructionSet isa : {InstructionSet::generic, InstructionSet::avx2, InstructionSet::avx512}) {
+    curve.value_batch(1, inputs.data(), out.data(), inputs.size(), isa);
+    gaussian.log_value_batch(4, inputs.data(), out.data(), inputs.size(), isa);
+  }
   EXPECT_EQ(allocations.load() - before, 0);
   EXPECT_TRUE(std::isnan(sum));  // the NaN input went through, by value
   asperity_curve_close(c_curve);
@@ -83,6 +88,26 @@ TEST(HotPath, ManyThreadsOnOneCurve) {
           const double value = curve.log_value(3, inputs[i]);
           if (!(value == expected[i] || (std::isnan(value) && std::isnan(expected[i])))) ++mismatches;
         }
+    });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(mismatches.load(), 0);
+}
+
+TEST(HotPath, ManyThreadsBatchOnOneCurve) {
+  const Curve curve = table().curve(Distribution::weibull, Side::tail, 0.8);
+  const std::vector<double> inputs = separations();
+  std::vector<double> expected(inputs.size());
+  curve.log_value_batch(2, inputs.data(), expected.data(), inputs.size());
+  std::atomic<long> mismatches{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&] {
+      std::vector<double> out(inputs.size());
+      for (int round = 0; round < 20; ++round) {
+        curve.log_value_batch(2, inputs.data(), out.data(), inputs.size());
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+          if (!(out[i] == expected[i] || (std::isnan(out[i]) && std::isnan(expected[i])))) ++mismatches;
+      }
     });
   for (std::thread& thread : threads) thread.join();
   EXPECT_EQ(mismatches.load(), 0);

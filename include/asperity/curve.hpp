@@ -2,8 +2,9 @@
 // built, so any number of threads may query it at once.
 //
 // Complexity: a query is O(1): a scan of at most six segment bounds, one map to the
-// segment variable (a log, or a sixth root near s = 0), one quintic Hermite step and one
-// exp. No allocation, no exception, no lock.
+// segment variable (a log, and an exp in the far tail and near s = 0), Horner's rule on the
+// interval's quintic (six coefficients, one cache line) and one exp. The batch functions do
+// the same arithmetic vectorized (runtime/kernel/). No allocation, no exception, no lock.
 // Errors by value: NaN for a NaN or infinite separation or an order outside 0..5;
 // value 0 (log -inf) where the integral is exactly 0 (bounded side, s >= 0).
 #pragma once
@@ -12,10 +13,15 @@
 #include <vector>
 
 #include "asperity/asymptotic.hpp"
+#include "asperity/detail/kernel_segment.hpp"
+#include "asperity/instruction_set.hpp"
 #include "asperity/layout.hpp"
 #include "asperity/model.hpp"
 
 namespace asperity {
+namespace detail {
+struct Kernels;
+}
 
 inline constexpr int max_segments = 6;
 
@@ -32,34 +38,48 @@ class Curve {
   double value(int twice_order, double separation) const noexcept;
   // ln X_n(s) of all six orders at once (one segment search and one map): out[twice_order].
   void log_values(double separation, double out[order_count]) const noexcept;
+  // ln X_n(s) for twice_order = first..last (inclusive): out[twice_order - first].
+  void log_values(double separation, int first_twice_order, int last_twice_order, double* out) const noexcept;
+  // Orders 0, 1/2, 1, 3/2 (count, stiffness, area, load: what contact_at needs), logs and
+  // values, from one lookup and one vector exp.
+  void contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept;
+
+  // The batch path: out[i] = value / log_value(twice_order, separations[i]) for i < count,
+  // vectorized for the widest instruction set this CPU has (or the one named; a set it lacks
+  // falls back to the best it has). Same results as the scalar functions to rounding.
+  // A bad order gives NaN everywhere. out may alias separations.
+  void value_batch(int twice_order, const double* separations, double* out, std::size_t count,
+                   InstructionSet isa = InstructionSet::automatic) const noexcept;
+  void log_value_batch(int twice_order, const double* separations, double* out, std::size_t count,
+                       InstructionSet isa = InstructionSet::automatic) const noexcept;
 
   Distribution distribution() const noexcept { return distribution_; }
   Side side() const noexcept { return side_; }
   double shape() const noexcept { return shape_; }
   // The separations the knots span from the end of the all-touching segment (which reaches
   // -inf) to the start of the series beyond the table (see asymptotic.hpp).
-  double table_min_separation() const noexcept { return segments_[segment_count_ > 1 ? 1 : 0].map.s_lo; }
-  double table_max_separation() const noexcept { return segments_[segment_count_ - 1].map.s_hi; }
-  std::size_t memory_bytes() const noexcept { return sizeof(*this) + knots_.size() * sizeof(double); }
+  double table_min_separation() const noexcept { return table_min_separation_; }
+  double table_max_separation() const noexcept { return table_max_separation_; }
+  std::size_t memory_bytes() const noexcept { return sizeof(*this) + coefficients_.size() * sizeof(double); }
 
  private:
-  struct Segment {
-    SegmentMap map;
-    double inv_step = 0;
-    int knots = 0;
-    int first_knot = 0;
-  };
-  double beyond_table(int twice_order, double separation) const noexcept;
-  void log_values(double separation, int first, int last, double* out) const noexcept;
+  // Where the kernel does not apply: NaN, infinities, and beyond the table (the series).
+  double log_value_outside(int twice_order, double separation) const noexcept;
+  const detail::KernelSegment& segment_of(double separation) const noexcept;
+  void batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
+             bool log_output) const noexcept;
 
   Distribution distribution_ = Distribution::weibull;
   Side side_ = Side::tail;
   double shape_ = 0;
   int segment_count_ = 0;
-  int total_knots_ = 0;
-  std::array<Segment, max_segments> segments_{};
+  double table_min_separation_ = 0;
+  double table_max_separation_ = 0;
+  std::array<detail::KernelSegment, max_segments> segments_{};
+  const detail::Kernels* kernels_ = nullptr;  // the widest instruction set this CPU has
   std::array<Series, order_count> series_{};
-  std::vector<double> knots_;  // [order][knot][3], derivatives scaled by the step
+  std::size_t order_stride_ = 0;       // intervals * 6
+  std::vector<double> coefficients_;   // [order][interval][6]: the quintic in the power basis
 };
 
 }  // namespace asperity

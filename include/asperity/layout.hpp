@@ -10,7 +10,7 @@
 //                where heavy tails (a < 1) make H's derivatives grow like the moments)
 //   linear       p0 <= s <= p1, u = s                      offset 0
 //   graded       s = p0 + (p1 - p0) w^6, u = w in [0, 1]   offset -t on the Weibull tail
-//                                                          for s > 0 (else 0)
+//                                                          for p0 = 0 < p1 (else 0)
 //   log_exponent s >= p0 > 0, exponent t <= p1, u = ln t   offset -t      (far tail)
 //   log_tau      tau = (-s)^a in [p0, p1], u = ln tau      offset (n + a) ln(-s)
 //                                                                         (bounded side)

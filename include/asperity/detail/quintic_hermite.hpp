@@ -5,6 +5,19 @@
 
 namespace asperity::detail {
 
+// The same interpolant in the power basis of x: out[j] is the coefficient of x^j. The runtime
+// stores these per interval (Horner's rule then needs six loads and five multiply-adds).
+inline void quintic_hermite_coefficients(const double* left, const double* right, double out[6]) noexcept {
+  const double f0 = left[0], g0 = left[1], k0 = left[2];
+  const double a = right[0] - f0 - g0 - 0.5 * k0, b = right[1] - g0 - k0, c = right[2] - k0;
+  out[0] = f0;
+  out[1] = g0;
+  out[2] = 0.5 * k0;
+  out[3] = 10 * a - 4 * b + 0.5 * c;
+  out[4] = -15 * a + 7 * b - c;
+  out[5] = 6 * a - 3 * b + 0.5 * c;
+}
+
 // x in [0, 1] is the position inside the interval; left and right point at {f, h f', h^2 f''}.
 inline double quintic_hermite(const double* left, const double* right, double x) noexcept {
   const double f0 = left[0], g0 = left[1], k0 = left[2];
