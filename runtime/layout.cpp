@@ -1,5 +1,6 @@
 #include "asperity/layout.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -22,6 +23,17 @@ std::vector<SegmentSpec> default_layout(Distribution distribution, Side side) {
   return {{SegmentKind::reciprocal, 129, 0.0, 0.0},
           {SegmentKind::bounded_far, 193, 100.0, 10.0},
           {SegmentKind::log_tau, 257, 0.05, 100.0}};
+}
+
+std::vector<SegmentSpec> scale_knot_density(const std::vector<SegmentSpec>& layout, double density) {
+  if (!(density > 0) || !std::isfinite(density)) throw Error("knot density must be positive and finite");
+  std::vector<SegmentSpec> scaled = layout;
+  for (SegmentSpec& spec : scaled) {
+    const double intervals = std::round(density * (spec.knots - 1));
+    if (intervals > 1e6) throw Error("knot density too large");
+    spec.knots = 1 + std::max(2, static_cast<int>(intervals));
+  }
+  return scaled;
 }
 
 double tail_exponent(Distribution distribution, double shape, double separation) {

@@ -19,6 +19,7 @@ std::string GenerateOptions::describe() const {
        << " sides=" << (tail ? "tail" : "") << (tail && bounded ? "," : "") << (bounded ? "bounded" : "")
        << " gaussian=" << (gaussian ? "yes" : "no") << " tolerance=" << tolerance
        << " check_stride=" << check_stride;
+  if (knot_density != 1) text << " knot_density=" << knot_density;
   return text.str();
 }
 
@@ -108,7 +109,7 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
     set.shapes = std::move(set_shapes);
     set.shape_min = distribution == Distribution::gaussian ? 2.0 : options.shape_min;
     set.shape_max = distribution == Distribution::gaussian ? 2.0 : options.shape_max;
-    set.layout = default_layout(distribution, side);
+    set.layout = scale_knot_density(default_layout(distribution, side), options.knot_density);
     set.knots.assign(set.shapes.size() * set.curve_stride(), 0.0);
     set.max_rel_error.assign(set.shapes.size() * order_count, 0.0);
     table.sets.push_back(std::move(set));

@@ -18,6 +18,7 @@ struct GenerateOptions {
   bool bounded = true;
   bool gaussian = true;
   double tolerance = 1e-14;
+  double knot_density = 1;  // knots per segment relative to the default layout (docs/speed-vs-error.md)
   int threads = 0;          // 0: hardware concurrency
   int check_stride = 1;     // check every check_stride-th interval midpoint
   std::string describe() const;

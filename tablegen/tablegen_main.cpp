@@ -1,6 +1,6 @@
 // tablegen: generate an asperity table file.
 //   tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]
-//            [--tolerance REL] [--threads N]
+//            [--tolerance REL] [--density F] [--threads N]
 #include <unistd.h>
 
 #include <chrono>
@@ -19,13 +19,16 @@ namespace {
 
 const char* usage =
     "usage: tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]\n"
-    "                [--tolerance REL] [--threads N]\n"
+    "                [--tolerance REL] [--density F] [--threads N]\n"
     "  --shapes LO:HI:STEP  Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5,\n"
     "                       uniform in q = ln(a) - 1/a between them with spacing at most STEP,\n"
     "                       six nodes more past each end (default 0.5:20:0.075)\n"
     "  --sides LIST         Weibull sides to tabulate: tail, bounded, both (default) or none\n"
     "  --gaussian           include the Gaussian tail side (default); --no-gaussian leaves it out\n"
     "  --tolerance REL      odeint error tolerance on ln X (default 1e-14)\n"
+    "  --density F          knots per segment relative to the default layout (default 1): 0.25 gives\n"
+    "                       ~1e-8 worst-case error at a quarter of the memory, 2 gives ~1e-13\n"
+    "                       (measured: docs/speed-vs-error.md)\n"
     "  --threads N          worker threads (default: all cores)\n";
 
 double parse_number(const std::string& text, const std::string& what) {
@@ -78,6 +81,10 @@ int main(int argc, char** argv) {
         options.tolerance = parse_number(value(), "tolerance");
         if (!(options.tolerance >= 1e-15 && options.tolerance <= 1e-3))
           throw Error("tablegen: --tolerance must be between 1e-15 and 1e-3");
+      } else if (argument == "--density") {
+        options.knot_density = parse_number(value(), "density");
+        if (!(options.knot_density >= 0.05 && options.knot_density <= 8))
+          throw Error("tablegen: --density must be between 0.05 and 8");
       } else if (argument == "--threads") {
         options.threads = static_cast<int>(parse_number(value(), "threads"));
         if (options.threads < 1) throw Error("tablegen: --threads must be at least 1");

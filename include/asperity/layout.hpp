@@ -44,6 +44,11 @@ struct SegmentSpec {
 // The default layouts (knot counts chosen by measurement, see docs/accuracy.md).
 std::vector<SegmentSpec> default_layout(Distribution distribution, Side side);
 
+// The same layout with every segment's knot count scaled by `density` (knots - 1 intervals
+// become round(density * (knots - 1)), at least 2): a cheaper table for a stated error, or a
+// denser one. Throws asperity::Error for a density that is not positive and finite.
+std::vector<SegmentSpec> scale_knot_density(const std::vector<SegmentSpec>& layout, double density);
+
 // Map a segment to its variable for one curve (distribution, side, shape).
 struct SegmentMap {
   SegmentKind kind;

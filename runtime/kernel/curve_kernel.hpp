@@ -187,20 +187,24 @@ static inline void run_segment_of_kind(const KernelSegment& segment, const doubl
 // returns how many were not (NaN, infinite, beyond the table), their indices in `rest`.
 static inline int evaluate_block(const KernelCurve& curve, int twice_order, const double* separations, double* out,
                                  int count, bool log_output, int* rest) noexcept {
-  constexpr double largest = 1.7976931348623157e308;
+  constexpr double largest = 1.7976931348623157e308, inf = __builtin_inf();
   BatchScratch scratch[6];  // one per segment (at most six)
   int counts[6] = {0, 0, 0, 0, 0, 0};
   int rest_count = 0;
   const int last = curve.segment_count - 1;
   const double table_end = curve.segments[last].s_hi;
+  // The segment of a separation is the number of segment ends below it: five compares with
+  // the unused ends at +inf, no data-dependent branch (random separations would mispredict).
+  double ends[5];
+  for (int k = 0; k < 5; ++k) ends[k] = k < last ? curve.segments[k].s_hi : inf;
   for (int j = 0; j < count; ++j) {
     const double separation = separations[j];
     if (!(separation <= table_end && separation >= -largest)) {
       rest[rest_count++] = j;
       continue;
     }
-    int segment = 0;  // branch-free: random separations would mispredict a search loop
-    for (int k = 0; k < last; ++k) segment += separation > curve.segments[k].s_hi;
+    const int segment = (separation > ends[0]) + (separation > ends[1]) + (separation > ends[2]) +
+                        (separation > ends[3]) + (separation > ends[4]);
     BatchScratch& bucket = scratch[segment];
     bucket.separations[counts[segment]] = separation;
     bucket.indices[counts[segment]++] = j;

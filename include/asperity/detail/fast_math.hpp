@@ -47,27 +47,57 @@ static ASPERITY_ALWAYS_INLINE double exp2_of_integer(double integer) noexcept {
   return double_of(biased << 52);
 }
 
-// e^x: x = n ln2 + r with |r| <= ln2 / 2 (Cody-Waite, ln2 split so n ln2_hi is exact),
-// e^r by its degree-13 Taylor polynomial (truncation below 1e-17 of e^r) in Estrin form,
-// 2^n applied as two factors so that subnormal results need no branch.
+// 2^(j/128), j = 0..127, as a double and the rest (hi + lo carries ~64 bits), computed at
+// compile time by the Taylor series of e^(j ln2 / 128) in long double.
+struct Exp2Table {
+  double hi[128];
+  double lo[128];
+};
+constexpr Exp2Table make_exp2_table() {
+  Exp2Table table{};
+  constexpr long double ln2 = 0.693147180559945309417232121458176568L;
+  for (int j = 0; j < 128; ++j) {
+    const long double x = j * ln2 / 128;
+    long double term = 1, sum = 1;
+    for (int k = 1; k < 30; ++k) {
+      term *= x / k;
+      sum += term;
+    }
+    table.hi[j] = static_cast<double>(sum);
+    table.lo[j] = static_cast<double>(sum - table.hi[j]);
+  }
+  return table;
+}
+static constexpr Exp2Table exp2_table = make_exp2_table();
+
+// e^x: x = (128 m + j) ln2 / 128 + r with |r| <= ln2 / 256 (Cody-Waite, ln2 / 128 split so
+// that k ln2_hi / 128 is exact), e^x = 2^m 2^(j/128) e^r, e^r by its degree-5 Taylor polynomial
+// (truncation below 6e-19), 2^m applied as two factors so subnormal results need no branch.
+// The table is what keeps the dependency chain short (a scalar call is latency-bound).
 static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept {
-  constexpr double log2e = 1.4426950408889634;
-  constexpr double ln2_hi = 6.93147180369123816490e-01;  // 32 significant bits (fdlibm's split)
-  constexpr double ln2_lo = 1.90821492927058770002e-10;
-  const double clamped = x < -746.0 ? -746.0 : (x > 710.0 ? 710.0 : x);
-  const double n = (clamped * log2e + round_shifter) - round_shifter;
-  const double r = (clamped - n * ln2_hi) - n * ln2_lo;
-  const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-  // 1 + (r + r^2 q(r)): the large terms added last, so the roundings stay near 1 ulp
-  const double p23 = 1.0 / 2 + r * (1.0 / 6), p45 = 1.0 / 24 + r * (1.0 / 120);
-  const double p67 = 1.0 / 720 + r * (1.0 / 5040), p89 = 1.0 / 40320 + r * (1.0 / 362880);
-  const double p1011 = 1.0 / 3628800 + r * (1.0 / 39916800);
-  const double p1213 = 1.0 / 479001600 + r * (1.0 / 6227020800);
-  const double tail = r2 * ((p23 + r2 * p45) + r4 * (p67 + r2 * p89) + r8 * (p1011 + r2 * p1213));
-  const double poly = 1.0 + (r + tail);
-  const double half = (n * 0.5 + round_shifter) - round_shifter;  // n = half + (n - half)
-  const double result = poly * exp2_of_integer(half) * exp2_of_integer(n - half);
-  return x != x ? x : result;
+  constexpr double scaled_log2e = 184.66496523378731;          // 128 / ln 2
+  constexpr double ln2_hi = 6.93147180369123816490e-01 / 128;  // 32 significant bits: k ln2_hi exact
+  constexpr double ln2_lo = 1.90821492927058770002e-10 / 128;
+  const double shifted = x * scaled_log2e + round_shifter;
+  const double k = shifted - round_shifter;  // an integer for |x| < 2^44 (garbage beyond: masked below)
+  const std::int64_t index = static_cast<std::int64_t>(bits_of(shifted) & 127);  // signed: what gathers take
+  const double r = (x - k * ln2_hi) - k * ln2_lo;
+  const double r2 = r * r;
+  // e^r - 1 = r + r^2 (1/2 + r/6 + r^2 (1/24 + r/120)); 2^(j/128) e^r = hi + (hi (e^r - 1) + lo)
+  const double expm1 = r + r2 * ((0.5 + r * (1.0 / 6)) + r2 * (1.0 / 24 + r * (1.0 / 120)));
+  const double hi = exp2_table.hi[index];
+  const double scale = hi + (hi * expm1 + exp2_table.lo[index]);
+  const double m = (k - (double_of(static_cast<std::uint64_t>(index) | 0x4330000000000000ULL) - 4503599627370496.0)) *
+                   (1.0 / 128);
+  const double half = (m * 0.5 + round_shifter) - round_shifter;  // m = half + (m - half)
+  const double result = scale * exp2_of_integer(half) * exp2_of_integer(m - half);
+  // Out of range by bit masks, not selects: with a select the compiler computes the in-range
+  // path under a condition, and a conditional table load stops vectorization. Between -746 and
+  // 710 the arithmetic itself gives 0, the subnormals and inf.
+  const std::uint64_t too_big = 0 - static_cast<std::uint64_t>(x > 710.0);
+  const std::uint64_t too_small = 0 - static_cast<std::uint64_t>(x < -746.0);
+  const std::uint64_t not_a_number = 0 - static_cast<std::uint64_t>(x != x);
+  return double_of((bits_of(result) & ~(too_big | too_small)) | (too_big & 0x7ff0000000000000ULL) | not_a_number);
 }
 
 // ln x: x = 2^e m with m in [sqrt(1/2), sqrt(2)), ln m = f - (f^2/2 - s (f^2/2 + R(s^2)))
