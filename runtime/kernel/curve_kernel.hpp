@@ -13,6 +13,10 @@
 #include "asperity/detail/fast_math.hpp"
 #include "asperity/detail/kernel_segment.hpp"
 
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
+
 namespace asperity::detail {
 
 // The elementary functions, as a policy: the batch loops use the inline, vectorizable
@@ -147,29 +151,35 @@ struct KernelCurve {
 inline constexpr int batch_block = 256;
 
 struct BatchScratch {
-  double separations[batch_block];
+  // 16 spare entries: the AVX-512 sort stores whole vectors past the last entry it keeps
+  double separations[batch_block + 16];
   double results[batch_block];
-  int indices[batch_block];
+  int indices[batch_block + 16];
 };
 
-template <KernelKind kind, bool log_output>
-static inline void run_segment(const KernelSegment& segment_in, const double* order_coefficients, double order,
-                               const double* separations, double* results, int count) noexcept {
+// Not inlined, and with restrict: the promise that the results do not overlap the
+// coefficients is what lets the compiler gather the coefficients in vectors.
+template <KernelKind kind, bool log_output, class Math>
+__attribute__((noinline)) static void run_segment(const KernelSegment& segment_in,
+                                                  const double* __restrict order_coefficients, double order,
+                                                  const double* __restrict separations, double* __restrict results,
+                                                  int count) noexcept {
   // A local copy: the compiler can then keep the segment's constants in registers.
   const KernelSegment segment = segment_in;
   for (int m = 0; m < count; ++m) {
-    const double log_value = log_value_in<kind, FastMath>(segment, order_coefficients, order, separations[m]);
-    results[m] = log_output ? log_value : fast_exp(log_value);
+    const double log_value = log_value_in<kind, Math>(segment, order_coefficients, order, separations[m]);
+    results[m] = log_output ? log_value : Math::exp(log_value);
   }
 }
 
-template <bool log_output>
+template <bool log_output, class Math>
 static inline void run_segment_of_kind(const KernelSegment& segment, const double* order_coefficients, double order,
                                        const double* separations, double* results, int count) noexcept {
   switch (segment.kind) {
 #define ASPERITY_KERNEL_CASE(name)                                                                                     \
   case KernelKind::name:                                                                                              \
-    return run_segment<KernelKind::name, log_output>(segment, order_coefficients, order, separations, results, count);
+    return run_segment<KernelKind::name, log_output, Math>(segment, order_coefficients, order, separations, results, \
+                                                           count);
     ASPERITY_KERNEL_CASE(reciprocal)
     ASPERITY_KERNEL_CASE(linear)
     ASPERITY_KERNEL_CASE(graded)
@@ -185,6 +195,7 @@ static inline void run_segment_of_kind(const KernelSegment& segment, const doubl
 
 // One block (count <= batch_block). Writes ln X or X for every query inside the table and
 // returns how many were not (NaN, infinite, beyond the table), their indices in `rest`.
+template <class Math>
 static inline int evaluate_block(const KernelCurve& curve, int twice_order, const double* separations, double* out,
                                  int count, bool log_output, int* rest) noexcept {
   constexpr double largest = 1.7976931348623157e308, inf = __builtin_inf();
@@ -197,6 +208,50 @@ static inline int evaluate_block(const KernelCurve& curve, int twice_order, cons
   // the unused ends at +inf, no data-dependent branch (random separations would mispredict).
   double ends[5];
   for (int k = 0; k < 5; ++k) ends[k] = k < last ? curve.segments[k].s_hi : inf;
+#if defined(__AVX512F__)
+  // Sorting by segment with vector compress, 16 queries a step: a counting sort's
+  // count[segment]++ would chain every query through a store and a reload.
+  alignas(64) int segment_of[batch_block + 16];
+  for (int j = 0; j < count; ++j) {
+    const double separation = separations[j];
+    const bool inside = separation <= table_end && separation >= -largest;
+    const int segment = (separation > ends[0]) + (separation > ends[1]) + (separation > ends[2]) +
+                        (separation > ends[3]) + (separation > ends[4]);
+    segment_of[j] = inside ? segment : 6;
+  }
+  for (int j = count; j < batch_block + 16; ++j) segment_of[j] = 7;  // matches nothing
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  for (int segment = 0; segment <= last + 1; ++segment) {
+    const bool is_rest = segment == last + 1;
+    const __m512i wanted = _mm512_set1_epi32(is_rest ? 6 : segment);
+    int* indices = is_rest ? rest : scratch[segment].indices;
+    double* kept = scratch[is_rest ? 0 : segment].separations;
+    int kept_count = 0;
+    for (int j = 0; j < count; j += 16) {
+      const __mmask16 match = _mm512_cmpeq_epi32_mask(_mm512_load_si512(segment_of + j), wanted);
+      if (match == 0) continue;
+      const int matched = __builtin_popcount(match);
+      const __m512i index = _mm512_maskz_compress_epi32(match, _mm512_add_epi32(lane, _mm512_set1_epi32(j)));
+      if (is_rest) {  // rest has room for batch_block entries only: store exactly what matched
+        _mm512_mask_compressstoreu_epi32(indices + kept_count, match, _mm512_add_epi32(lane, _mm512_set1_epi32(j)));
+      } else {
+        _mm512_storeu_si512(indices + kept_count, index);
+        const __mmask8 low = static_cast<__mmask8>(match), high = static_cast<__mmask8>(match >> 8);
+        const int remaining = count - j;  // load only what exists
+        const __mmask8 load_low = remaining >= 8 ? 0xff : static_cast<__mmask8>((1u << remaining) - 1);
+        const __mmask8 load_high =
+            remaining >= 16 ? 0xff : remaining <= 8 ? 0 : static_cast<__mmask8>((1u << (remaining - 8)) - 1);
+        const __m512d first = _mm512_maskz_compress_pd(low, _mm512_maskz_loadu_pd(load_low, separations + j));
+        const __m512d second = _mm512_maskz_compress_pd(high, _mm512_maskz_loadu_pd(load_high, separations + j + 8));
+        _mm512_storeu_pd(kept + kept_count, first);
+        _mm512_storeu_pd(kept + kept_count + __builtin_popcount(low), second);
+      }
+      kept_count += matched;
+    }
+    if (is_rest) rest_count = kept_count;
+    else counts[segment] = kept_count;
+  }
+#else
   for (int j = 0; j < count; ++j) {
     const double separation = separations[j];
     if (!(separation <= table_end && separation >= -largest)) {
@@ -209,6 +264,7 @@ static inline int evaluate_block(const KernelCurve& curve, int twice_order, cons
     bucket.separations[counts[segment]] = separation;
     bucket.indices[counts[segment]++] = j;
   }
+#endif
   const double* order_coefficients = curve.coefficients + curve.order_stride * static_cast<std::size_t>(twice_order);
   const double order = 0.5 * twice_order;
   for (int segment = 0; segment <= last; ++segment) {
@@ -216,10 +272,10 @@ static inline int evaluate_block(const KernelCurve& curve, int twice_order, cons
     const int segment_count = counts[segment];
     if (segment_count == 0) continue;
     if (log_output)
-      run_segment_of_kind<true>(curve.segments[segment], order_coefficients, order, bucket.separations,
+      run_segment_of_kind<true, Math>(curve.segments[segment], order_coefficients, order, bucket.separations,
                                 bucket.results, segment_count);
     else
-      run_segment_of_kind<false>(curve.segments[segment], order_coefficients, order, bucket.separations,
+      run_segment_of_kind<false, Math>(curve.segments[segment], order_coefficients, order, bucket.separations,
                                  bucket.results, segment_count);
     for (int m = 0; m < segment_count; ++m) out[bucket.indices[m]] = bucket.results[m];
   }

@@ -10,7 +10,7 @@ void exp4(const double* logs, double* out) noexcept {
 
 int block(const KernelCurve& curve, int twice_order, const double* separations, double* out, int count,
           bool log_output, int* rest) noexcept {
-  return evaluate_block(curve, twice_order, separations, out, count, log_output, rest);
+  return evaluate_block<FastMath>(curve, twice_order, separations, out, count, log_output, rest);
 }
 
 }  // namespace
