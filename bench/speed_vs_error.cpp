@@ -242,6 +242,7 @@ void run(benchmark::State& state, const Method* method, const std::vector<double
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  benchmark::AddCustomContext("instruction_set", to_string(best_instruction_set()));
   // Weibull a = 2 load over the whole table (all-touching to the far tail); the Gaussian
   // F_5/2 over the lubrication range h in [0, 4), where the curve fit is meant to hold.
   const Study studies[] = {

@@ -54,6 +54,8 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
     segment.first_interval = intervals;
     intervals += layout[index].knots - 1;
   }
+  for (int k = 0; k < max_segments - 1; ++k)
+    segment_ends_[k] = k < segment_count_ - 1 ? segments_[k].s_hi : std::numeric_limits<double>::infinity();
   table_min_separation_ = maps[segment_count_ > 1 ? 1 : 0].s_lo;
   table_max_separation_ = maps[segment_count_ - 1].s_hi;
 
@@ -96,11 +98,13 @@ double Curve::log_value_outside(int twice_order, double separation) const noexce
   return weibull_tail_log(series_[twice_order], shape_, n, separation);
 }
 
-// Inside the table: the first segment whose upper end is at or past s (at most six compares).
+// Inside the table: the number of segment ends below s (unused ends are +inf), without a
+// data-dependent branch: a search loop mispredicts on separations that jump between segments.
 const detail::KernelSegment& Curve::segment_of(double separation) const noexcept {
-  const detail::KernelSegment* segment = &segments_[0];
-  while (separation > segment->s_hi) ++segment;
-  return *segment;
+  const int index = (separation > segment_ends_[0]) + (separation > segment_ends_[1]) +
+                    (separation > segment_ends_[2]) + (separation > segment_ends_[3]) +
+                    (separation > segment_ends_[4]);
+  return segments_[index];
 }
 
 namespace {

@@ -76,6 +76,7 @@ class Curve {
   double table_min_separation_ = 0;
   double table_max_separation_ = 0;
   std::array<detail::KernelSegment, max_segments> segments_{};
+  std::array<double, max_segments - 1> segment_ends_{};  // s_hi of all but the last, +inf padded
   const detail::Kernels* kernels_ = nullptr;  // the widest instruction set this CPU has
   std::array<Series, order_count> series_{};
   std::size_t order_stride_ = 0;       // intervals * 6
