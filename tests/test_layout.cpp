@@ -76,3 +76,24 @@ TEST(Layout, RejectsLayoutsThatDoNotTile) {
 }
 
 }  // namespace
+
+namespace {
+TEST(Layout, KnotDensityScalesIntervalsAndRejectsNonsense) {
+  const std::vector<asperity::SegmentSpec> base = asperity::default_layout(asperity::Distribution::weibull,
+                                                                           asperity::Side::tail);
+  const auto half = asperity::scale_knot_density(base, 0.5);
+  const auto tiny = asperity::scale_knot_density(base, 1e-3);
+  const auto same = asperity::scale_knot_density(base, 1.0);
+  for (std::size_t i = 0; i < base.size(); ++i) {
+    EXPECT_EQ(half[i].knots - 1, (base[i].knots - 1) / 2);
+    EXPECT_EQ(tiny[i].knots, 3);  // at least two intervals
+    EXPECT_EQ(same[i].knots, base[i].knots);
+    EXPECT_EQ(half[i].kind, base[i].kind);
+    EXPECT_EQ(half[i].p0, base[i].p0);
+  }
+  EXPECT_THROW(asperity::scale_knot_density(base, 0.0), asperity::Error);
+  EXPECT_THROW(asperity::scale_knot_density(base, -1.0), asperity::Error);
+  EXPECT_THROW(asperity::scale_knot_density(base, std::nan("")), asperity::Error);
+  EXPECT_THROW(asperity::scale_knot_density(base, 1e9), asperity::Error);
+}
+}  // namespace
