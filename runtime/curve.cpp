@@ -22,6 +22,7 @@ detail::KernelKind kernel_kind(const SegmentMap& map) {
     case SegmentKind::log_tau: return detail::KernelKind::log_tau;
     case SegmentKind::log_distance: return detail::KernelKind::log_distance;
     case SegmentKind::bounded_far: return detail::KernelKind::bounded_far;
+    case SegmentKind::gaussian_linear: return detail::KernelKind::gaussian_linear;
   }
   throw Error("unknown segment kind");
 }

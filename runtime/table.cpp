@@ -38,7 +38,7 @@ void CurveSet::validate(const std::string& context) const {
   }
   for (const SegmentSpec& segment : layout) {
     if (segment.knots < 2 || segment.knots > 1000000) throw Error(where + "a segment has a bad knot count");
-    if (static_cast<int>(segment.kind) < 0 || static_cast<int>(segment.kind) > 6)
+    if (static_cast<int>(segment.kind) < 0 || static_cast<int>(segment.kind) >= segment_kind_count)
       throw Error(where + "unknown segment kind");
     if (!std::isfinite(segment.p0) || !std::isfinite(segment.p1)) throw Error(where + "a segment bound is not finite");
   }

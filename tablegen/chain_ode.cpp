@@ -162,6 +162,10 @@ State seed_state(const CurveId& curve, const SegmentMap& map, double u) {
         const Series series = weibull_tail_series(curve.shape, n);
         state[k] = n * (1 / curve.shape - 1) * u + series.log_constant + std::log(sum_series(series, 1 / t));
       }
+    } else if (map.kind == SegmentKind::gaussian_linear) {  // at s^2/2 = 760, the Watson series
+      double separation, ds_du, d2s_du2;
+      map.s_of_u(u, separation, ds_du, d2s_du2);
+      state[k] = gaussian_tail_log(gaussian_tail_series(n), n, separation) - map.offset_value(n, u);
     } else {
       double separation, ds_du, d2s_du2;
       map.s_of_u(u, separation, ds_du, d2s_du2);

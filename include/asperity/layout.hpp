@@ -18,6 +18,8 @@
 //   bounded_far  -s = d in [d0, d0 + p1], d0 = p0^(1/a), d = d0 exp(L u^2), u in [0, 1],
 //                L = ln((d0 + p1)/d0), offset 0 (bounded side beyond the bulk: starts where
 //                log_tau ends, knots packed toward d0 where the bulk's edge is near)
+//   gaussian_linear p0 <= s <= p1, u = s                   offset -s^2/2  (the Gaussian from
+//                all-touching to the far tail in one segment: no log in the map, one exp)
 // where t = s^a (Weibull) or s^2/2 (Gaussian). The graded segments cluster knots at s = 0,
 // where the Weibull integrals have the power-law terms s^(n + a) of a density that is
 // singular (a < 1) or flat (a > 1) at the origin.
@@ -31,8 +33,9 @@ namespace asperity {
 
 enum class SegmentKind : int {
   reciprocal = 0, linear = 1, graded = 2, log_exponent = 3, log_tau = 4, log_distance = 5,
-  bounded_far = 6
+  bounded_far = 6, gaussian_linear = 7
 };
+inline constexpr int segment_kind_count = 8;
 
 struct SegmentSpec {
   SegmentKind kind;

@@ -56,6 +56,7 @@ inline constexpr const char* conventions =
     "4 log_tau      tau = (-s)^a in [p0, p1], u = ln tau, offset (n + a) ln(-s)\n"
     "5 log_distance p0 <= s <= p1 < 0, u = ln(-s), offset 0\n"
     "6 bounded_far  -s = d0 exp(L u^2), d0 = p0^(1/a), L = ln((d0 + p1)/d0), offset 0\n"
+    "7 gaussian_linear p0 <= s <= p1, u = s, offset -s^2/2 (Gaussian only)\n"
     "Shapes between grid nodes: Lagrange in q = ln a - 1/a over the 12 nearest nodes.";
 
 }  // namespace asperity::schema

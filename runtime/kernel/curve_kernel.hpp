@@ -48,6 +48,8 @@ static ASPERITY_ALWAYS_INLINE MappedSeparation map_separation(const KernelSegmen
     return {__builtin_sqrt(segment.p0 / separation), 0.0, Math::log(-separation)};
   } else if constexpr (kind == KernelKind::linear) {
     return {separation, 0.0, 0.0};
+  } else if constexpr (kind == KernelKind::gaussian_linear) {  // u = s, offset -s^2/2: no log, no exp
+    return {separation, -0.5 * separation * separation, 0.0};
   } else if constexpr (kind == KernelKind::graded || kind == KernelKind::graded_exponent) {
     // u = ((s - p0) / (p1 - p0))^(1/6); offset -s^a on the tail side past s = 0
     const double log_ratio = Math::log((separation - segment.p0) * segment.inv_range);
@@ -108,6 +110,7 @@ static inline double log_value_scalar(const KernelSegment& segment, const double
     ASPERITY_KERNEL_CASE(log_tau)
     ASPERITY_KERNEL_CASE(log_distance)
     ASPERITY_KERNEL_CASE(bounded_far)
+    ASPERITY_KERNEL_CASE(gaussian_linear)
 #undef ASPERITY_KERNEL_CASE
   }
   return __builtin_nan("");
@@ -131,6 +134,7 @@ static inline void log_values_scalar(const KernelSegment& segment, const double*
     ASPERITY_KERNEL_CASE(log_tau)
     ASPERITY_KERNEL_CASE(log_distance)
     ASPERITY_KERNEL_CASE(bounded_far)
+    ASPERITY_KERNEL_CASE(gaussian_linear)
 #undef ASPERITY_KERNEL_CASE
   }
   for (int k = first; k <= last; ++k)
@@ -192,6 +196,7 @@ static inline void run_segment_of_kind(const KernelSegment& segment, const doubl
     ASPERITY_KERNEL_CASE(log_tau)
     ASPERITY_KERNEL_CASE(log_distance)
     ASPERITY_KERNEL_CASE(bounded_far)
+    ASPERITY_KERNEL_CASE(gaussian_linear)
 #undef ASPERITY_KERNEL_CASE
   }
 }

@@ -8,7 +8,8 @@ namespace asperity::detail {
 
 // The segment kinds of layout.hpp, with the far tail split by distribution (its map differs).
 enum class KernelKind : int {
-  reciprocal, linear, graded, graded_exponent, weibull_far, gaussian_far, log_tau, log_distance, bounded_far
+  reciprocal, linear, graded, graded_exponent, weibull_far, gaussian_far, log_tau, log_distance, bounded_far,
+  gaussian_linear
 };
 
 struct KernelSegment {
