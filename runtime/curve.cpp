@@ -101,7 +101,7 @@ double Curve::log_value_outside(int twice_order, double separation) const noexce
 
 // Inside the table: the number of segment ends below s (unused ends are +inf), without a
 // data-dependent branch: a search loop mispredicts on separations that jump between segments.
-const detail::KernelSegment& Curve::segment_of(double separation) const noexcept {
+ASPERITY_ALWAYS_INLINE const detail::KernelSegment& Curve::segment_of(double separation) const noexcept {
   const int index = (separation > segment_ends_[0]) + (separation > segment_ends_[1]) +
                     (separation > segment_ends_[2]) + (separation > segment_ends_[3]) +
                     (separation > segment_ends_[4]);
