@@ -32,8 +32,10 @@ constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
 Curve::Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
-             const double* knot_data)
-    : distribution_(distribution), side_(side), shape_(shape), kernels_(&detail::kernels_for(InstructionSet::automatic)) {
+             const double* knot_data, unsigned order_mask)
+    : distribution_(distribution), side_(side), shape_(shape), kernels_(&detail::kernels_for(InstructionSet::automatic)),
+      order_mask_(order_mask & all_orders) {
+  if (order_mask_ == 0) throw Error("a curve needs at least one order");
   if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
     throw Error("curve layout must have 1 to 6 segments");
   segment_count_ = static_cast<int>(layout.size());
@@ -52,6 +54,7 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
     segment.shape = map.shape;
     segment.shape_log_p1 = segment.kind == detail::KernelKind::graded_exponent ? map.shape * std::log(map.p1) : 0;
     segment.inv_span = map.kind == SegmentKind::bounded_far ? 1 / map.span : 0;
+    segment.inv_power = 1 / map.power;
     segment.first_interval = intervals;
     intervals += layout[index].knots - 1;
   }
@@ -61,17 +64,21 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
   table_max_separation_ = maps[segment_count_ - 1].s_hi;
 
   // Hermite data (H, dH/du, d2H/du2 at each knot) -> the quintic of each interval in x in [0, 1].
-  order_stride_ = static_cast<std::size_t>(intervals) * 6;
-  coefficients_.resize(order_stride_ * order_count);
+  const std::size_t order_stride = static_cast<std::size_t>(intervals) * 6;
+  std::ptrdiff_t held = 0;
+  for (int order = 0; order < order_count; ++order)
+    order_offset_[order] = has_order(order) ? static_cast<std::ptrdiff_t>(order_stride) * held++ : -1;
+  coefficients_.resize(order_stride * static_cast<std::size_t>(held));
   int total_knots = 0;
   for (const SegmentSpec& spec : layout) total_knots += spec.knots;
   for (int order = 0; order < order_count; ++order) {
+    if (!has_order(order)) continue;
     int knot_offset = 0;
     for (int index = 0; index < segment_count_; ++index) {
       const detail::KernelSegment& segment = segments_[index];
       const double step = 1 / segment.inv_step;
       const double* knot = knot_data + (static_cast<std::size_t>(order) * total_knots + knot_offset) * 3;
-      double* out = &coefficients_[order * order_stride_ + static_cast<std::size_t>(segment.first_interval) * 6];
+      double* out = &coefficients_[order_offset_[order] + static_cast<std::ptrdiff_t>(segment.first_interval) * 6];
       for (int j = 0; j + 1 < layout[index].knots; ++j, knot += 3, out += 6) {
         const double left[3] = {knot[0], knot[1] * step, knot[2] * step * step};
         const double right[3] = {knot[3], knot[4] * step, knot[5] * step * step};
@@ -116,19 +123,17 @@ inline bool inside_table(double separation, double table_end) noexcept {
 }  // namespace
 
 double Curve::log_value(int twice_order, double separation) const noexcept {
-  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) || segment_count_ == 0)
-    return not_a_number;
+  if (!has_order(twice_order) || segment_count_ == 0) return not_a_number;
   if (!inside_table(separation, table_max_separation_)) return log_value_outside(twice_order, separation);
-  return detail::log_value_scalar<detail::LibraryMath>(
-      segment_of(separation), &coefficients_[order_stride_ * twice_order], order_of(twice_order), separation);
+  return detail::log_value_scalar<detail::LibraryMath>(segment_of(separation), order_coefficients(twice_order),
+                                                       order_of(twice_order), separation);
 }
 
 double Curve::value(int twice_order, double separation) const noexcept {
-  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) || segment_count_ == 0)
-    return not_a_number;
+  if (!has_order(twice_order) || segment_count_ == 0) return not_a_number;
   if (!inside_table(separation, table_max_separation_)) return std::exp(log_value_outside(twice_order, separation));
-  return std::exp(detail::log_value_scalar<detail::LibraryMath>(
-      segment_of(separation), &coefficients_[order_stride_ * twice_order], order_of(twice_order), separation));
+  return std::exp(detail::log_value_scalar<detail::LibraryMath>(segment_of(separation), order_coefficients(twice_order),
+                                                                order_of(twice_order), separation));
 }
 
 void Curve::log_values(double separation, double out[order_count]) const noexcept {
@@ -144,11 +149,12 @@ void Curve::log_values(double separation, int first, int last, double* out) cons
     return;
   }
   if (!inside_table(separation, table_max_separation_)) {
-    for (int k = first; k <= last; ++k) out[k - first] = log_value_outside(k, separation);
+    for (int k = first; k <= last; ++k) out[k - first] = has_order(k) ? log_value_outside(k, separation) : not_a_number;
     return;
   }
-  detail::log_values_scalar<detail::LibraryMath>(segment_of(separation), coefficients_.data(), order_stride_,
-                                                 separation, first, last, out);
+  const double* pointers[order_count];
+  for (int k = 0; k < order_count; ++k) pointers[k] = order_coefficients(k);
+  detail::log_values_scalar<detail::LibraryMath>(segment_of(separation), pointers, separation, first, last, out);
 }
 
 void Curve::contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept {
@@ -170,12 +176,12 @@ void Curve::log_value_batch(int twice_order, const double* separations, double* 
 
 void Curve::batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
                   bool log_output) const noexcept {
-  if (static_cast<unsigned>(twice_order) >= static_cast<unsigned>(order_count) || segment_count_ == 0) {
+  if (!has_order(twice_order) || segment_count_ == 0) {
     for (std::size_t i = 0; i < count; ++i) out[i] = not_a_number;
     return;
   }
   const detail::Kernels& kernels = isa == InstructionSet::automatic ? *kernels_ : detail::kernels_for(isa);
-  const detail::KernelCurve curve{segments_.data(), segment_count_, coefficients_.data(), order_stride_};
+  const detail::KernelCurve curve{segments_.data(), segment_count_, order_coefficients(twice_order)};
   int rest[detail::batch_block];
   double block_separations[detail::batch_block];  // a copy, so that out may alias separations
   for (std::size_t start = 0; start < count; start += detail::batch_block) {

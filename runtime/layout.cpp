@@ -68,6 +68,7 @@ SegmentMap make_map(const SegmentSpec& spec, Distribution distribution, Side sid
       map.s_lo = std::fmin(spec.p0, spec.p1); map.s_hi = std::fmax(spec.p0, spec.p1);
       map.exponent_offset = distribution == Distribution::weibull && side == Side::tail &&
                             spec.p1 > 0 && spec.p0 == 0;
+      if (distribution == Distribution::weibull) map.power = std::max(6.0, std::ceil(2 / shape - 1e-9));
       break;
     case SegmentKind::log_exponent:
       map.u_lo = std::log(tail_exponent(distribution, map.shape, spec.p0));
@@ -122,7 +123,9 @@ double SegmentMap::u_of_s(double separation) const {
     case SegmentKind::reciprocal: return std::sqrt(p0 / separation);
     case SegmentKind::linear:
     case SegmentKind::gaussian_linear: return separation;
-    case SegmentKind::graded: return std::cbrt(std::sqrt((separation - p0) / (p1 - p0)));
+    case SegmentKind::graded:
+      return power == 6 ? std::cbrt(std::sqrt((separation - p0) / (p1 - p0)))
+                        : std::pow((separation - p0) / (p1 - p0), 1 / power);
     case SegmentKind::log_exponent:  // t by one pow: a ln s would amplify rounding by a ln s
       return std::log(tail_exponent(distribution, shape, separation));
     case SegmentKind::log_tau: return shape * std::log(-separation);
@@ -143,8 +146,15 @@ void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s
       separation = u; ds_du = 1; d2s_du2 = 0;
       return;
     case SegmentKind::graded: {
-      const double span = p1 - p0, u2 = u * u, u4 = u2 * u2;
-      separation = p0 + span * u4 * u2; ds_du = 6 * span * u4 * u; d2s_du2 = 30 * span * u4;
+      const double span = p1 - p0;
+      if (power == 6) {
+        const double u2 = u * u, u4 = u2 * u2;
+        separation = p0 + span * u4 * u2; ds_du = 6 * span * u4 * u; d2s_du2 = 30 * span * u4;
+      } else {
+        separation = p0 + span * std::pow(u, power);
+        ds_du = power * span * std::pow(u, power - 1);
+        d2s_du2 = power * (power - 1) * span * std::pow(u, power - 2);
+      }
       return;
     }
     case SegmentKind::log_exponent:
@@ -184,11 +194,11 @@ void SegmentMap::offset(double order, double u, double& value, double& d1, doubl
     case SegmentKind::log_distance:
     case SegmentKind::bounded_far: return;
     case SegmentKind::graded:
-      if (exponent_offset) {  // t = (p1 w^6)^a
-        const double power = 6 * shape, scale = std::pow(p1, shape);
-        value = -scale * std::pow(u, power);
-        d1 = -scale * power * std::pow(u, power - 1);
-        d2 = -scale * power * (power - 1) * std::pow(u, power - 2);
+      if (exponent_offset) {  // t = (p1 w^power)^a
+        const double exponent = power * shape, scale = std::pow(p1, shape);
+        value = -scale * std::pow(u, exponent);
+        d1 = -scale * exponent * std::pow(u, exponent - 1);
+        d2 = exponent == 2 ? -scale * 2 : -scale * exponent * (exponent - 1) * std::pow(u, exponent - 2);
       }
       return;
     case SegmentKind::log_exponent:
@@ -209,7 +219,9 @@ double SegmentMap::offset_value(double order, double u) const {
     case SegmentKind::linear:
     case SegmentKind::log_distance:
     case SegmentKind::bounded_far: return 0;
-    case SegmentKind::graded: return exponent_offset ? -std::pow(p1 * u * u * u * u * u * u, shape) : 0;
+    case SegmentKind::graded:
+      if (!exponent_offset) return 0;
+      return power == 6 ? -std::pow(p1 * u * u * u * u * u * u, shape) : -std::pow(p1 * std::pow(u, power), shape);
     case SegmentKind::log_exponent: return -std::exp(u);
     case SegmentKind::log_tau: return (order + shape) / shape * u;
     case SegmentKind::gaussian_linear: return -0.5 * u * u;

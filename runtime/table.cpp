@@ -70,14 +70,24 @@ const CurveSet* Table::find(Distribution distribution, Side side) const noexcept
   return nullptr;
 }
 
-Curve Table::curve(Distribution distribution, Side side, double shape) const {
+Curve Table::curve(Distribution distribution, Side side, double shape, unsigned order_mask) const {
   const CurveSet* set = find(distribution, side);
   if (!set) {
     if (distribution == Distribution::gaussian && side == Side::bounded)
       throw Error("the Gaussian has no bounded side (its heights are unbounded)");
     throw Error(std::string("this table has no ") + to_string(distribution) + " " + to_string(side) + " curves");
   }
-  if (distribution == Distribution::gaussian) return Curve(distribution, side, 2.0, set->layout, set->knots.data());
+  if (distribution == Distribution::gaussian) return Curve(distribution, side, 2.0, set->layout, set->knots.data(), order_mask);
+  if (data_.exact_shapes && std::none_of(set->shapes.begin(), set->shapes.end(), [&](double node) {
+        return std::fabs(shape - node) <= 1e-12 * shape;
+      })) {
+    std::ostringstream message;
+    message << "this scene table serves only its own " << to_string(distribution) << " " << to_string(side)
+            << " shapes (";
+    for (std::size_t i = 0; i < set->shapes.size(); ++i) message << (i ? ", " : "") << set->shapes[i];
+    message << "), exactly; asked for " << shape;
+    throw Error(message.str());
+  }
   const double lo = set->shape_min, hi = set->shape_max;
   if (!std::isfinite(shape) || shape < lo * (1 - 1e-12) || shape > hi * (1 + 1e-12)) {
     std::ostringstream message;
@@ -88,7 +98,7 @@ Curve Table::curve(Distribution distribution, Side side, double shape) const {
   // A grid shape: its knots as they are.
   for (std::size_t i = 0; i < count; ++i)
     if (std::fabs(shape - set->shapes[i]) <= 1e-12 * shape)
-      return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride]);
+      return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride], order_mask);
 
   // Between grid shapes: Lagrange in q over the shape_stencil nearest nodes, centred.
   std::size_t upper = 1;
@@ -113,7 +123,7 @@ Curve Table::curve(Distribution distribution, Side side, double shape) const {
     const double* source = &set->knots[(first + i) * stride];
     for (std::size_t k = 0; k < stride; ++k) blended[k] += weights[i] * source[k];
   }
-  return Curve(distribution, side, shape, set->layout, blended.data());
+  return Curve(distribution, side, shape, set->layout, blended.data(), order_mask);
 }
 
 }  // namespace asperity

@@ -102,6 +102,8 @@ TableData read_table_file(const std::string& path) {
   TableData data;
   data.generator = reader.string_attribute(file.get(), schema::attr_generator);
   data.generator_options = reader.string_attribute(file.get(), schema::attr_generator_options);
+  if (H5Aexists(file.get(), schema::attr_exact_shapes) > 0)
+    data.exact_shapes = reader.int_attribute(file.get(), schema::attr_exact_shapes) != 0;
   const struct { Distribution distribution; Side side; } groups[] = {
       {Distribution::weibull, Side::tail}, {Distribution::weibull, Side::bounded}, {Distribution::gaussian, Side::tail}};
   for (const auto& group_id : groups) {

@@ -264,7 +264,9 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
       logs = knot_logs;
       ++observed;
     };
-    const double step = (times[1] - times[0]) * 0.25;
+    // a small first step: for large shapes the chain is stiff near the far tail (rates ~ a s^(a-1)),
+    // and an over-long first step can be accepted on an error estimate that is already unstable
+    const double step = (times[1] - times[0]) * 1e-3;
     auto stepper = odeint::make_controlled(options.tolerance, options.tolerance,
                                            odeint::runge_kutta_fehlberg78<State>());
     odeint::integrate_times(stepper, system, state, times.begin(), times.end(), step, observer);
@@ -272,8 +274,17 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
     have_state = true;
   }
   if (curve.distribution == Distribution::weibull) fill_order_zero(curve, maps, layout, data.data());
-  for (double value : data)
-    if (!std::isfinite(value)) throw std::runtime_error("the chain produced a value that is not finite");
+  for (std::size_t i = 0; i < data.size(); ++i)
+    if (!std::isfinite(data[i])) {
+      // where: order, knot (counted over all segments), component (H, dH/du, d2H/du2)
+      const std::size_t component = i % 3, knot = (i / 3) % static_cast<std::size_t>(total), order = i / order_stride;
+      std::size_t segment = 0;
+      while (segment + 1 < layout.size() && knot >= static_cast<std::size_t>(first[segment + 1])) ++segment;
+      throw std::runtime_error("the chain produced a value that is not finite (shape " + std::to_string(shape) +
+                               ", order " + std::to_string(order_of(static_cast<int>(order))) + ", segment " +
+                               std::to_string(segment) + ", knot " + std::to_string(knot - first[segment]) +
+                               ", component " + std::to_string(component) + ")");
+    }
   return data;
 }
 

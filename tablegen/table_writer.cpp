@@ -66,6 +66,7 @@ void write_contents(hid_t file, const TableData& table) {
   write_string_attribute(file, schema::attr_generator, table.generator);
   write_string_attribute(file, schema::attr_generator_options, table.generator_options);
   write_string_attribute(file, schema::attr_conventions, schema::conventions);
+  if (table.exact_shapes) write_int_attribute(file, schema::attr_exact_shapes, 1);
   for (const CurveSet& set : table.sets) {
     set.validate("generated");
     const std::string name = std::string(to_string(set.distribution)) + "_" + to_string(set.side);

@@ -1,6 +1,7 @@
 // tablegen: generate an asperity table file.
 //   tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]
 //            [--tolerance REL] [--density F] [--threads N]
+//   tablegen --scene SCENE.toml --out FILE [--threads N]
 #include <unistd.h>
 
 #include <chrono>
@@ -12,7 +13,9 @@
 #include <string>
 
 #include "asperity/error.hpp"
+#include "asperity/scene.hpp"
 #include "generate.hpp"
+#include "scene_table.hpp"
 #include "table_writer.hpp"
 
 namespace {
@@ -20,6 +23,9 @@ namespace {
 const char* usage =
     "usage: tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]\n"
     "                [--tolerance REL] [--density F] [--threads N]\n"
+    "       tablegen --scene SCENE.toml --out FILE [--threads N]\n"
+    "  --scene SCENE        a table for one scene's curves only (docs/scenes.md): exact shapes,\n"
+    "                       knots where the scene needs them, each curve's error measured and stored\n"
     "  --shapes LO:HI:STEP  Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5,\n"
     "                       uniform in q = ln(a) - 1/a between them with spacing at most STEP,\n"
     "                       six nodes more past each end (default 0.5:20:0.075)\n"
@@ -45,7 +51,7 @@ int main(int argc, char** argv) {
   using namespace asperity;
   try {
     tablegen::GenerateOptions options;
-    std::string out;
+    std::string out, scene_path;
     for (int i = 1; i < argc; ++i) {
       const std::string argument = argv[i];
       auto value = [&]() -> std::string {
@@ -53,6 +59,7 @@ int main(int argc, char** argv) {
         return argv[++i];
       };
       if (argument == "--out") out = value();
+      else if (argument == "--scene") scene_path = value();
       else if (argument == "--shapes") {
         const std::string spec = value();
         std::stringstream stream(spec);
@@ -95,8 +102,33 @@ int main(int argc, char** argv) {
     }
     if (out.empty()) throw Error(std::string("tablegen: --out FILE is required\n") + usage);
 
-    const bool terminal = isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
+    if (!scene_path.empty()) {
+      const Scene scene = read_scene_file(scene_path);
+      const tablegen::SceneResult result = tablegen::generate_scene_table(scene, options.threads);
+      tablegen::write_table_file(result.table, out);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::printf("%-16s %-8s %-8s %7s %-14s %-24s %9s %9s %6s %8s\n", "curve", "dist", "side", "shape", "orders",
+                  "separations", "asked", "achieved", "knots", "memory");
+      std::size_t bytes = 0;
+      for (const tablegen::SceneCurveReport& report : result.curves) {
+        std::string orders;
+        for (int twice_order : report.curve.twice_orders)
+          orders += (orders.empty() ? "" : ",") + std::string(twice_order % 2 ? std::to_string(twice_order) + "/2"
+                                                                              : std::to_string(twice_order / 2));
+        char range[64];
+        std::snprintf(range, sizeof range, "[%.4g, %.4g]", report.separation_min, report.separation_max);
+        std::printf("%-16s %-8s %-8s %7.4g %-14s %-24s %9.2g %9.2g %6d %5.1f KiB\n",
+                    report.curve.name.empty() ? "-" : report.curve.name.c_str(), to_string(report.curve.distribution),
+                    to_string(report.curve.side), report.curve.shape, orders.c_str(), range,
+                    report.curve.max_rel_error, report.achieved_error, report.knots, report.memory_bytes / 1024.0);
+        bytes += report.memory_bytes;
+      }
+      std::printf("wrote %s: %zu curves, %.1f KiB in memory, %.2f s\n", out.c_str(), result.curves.size(),
+                  bytes / 1024.0, seconds);
+      return 0;
+    }
+    const bool terminal = isatty(STDERR_FILENO);
     auto progress = [&](int done, int total) {
       if (!terminal) return;
       const int width = 40, filled = width * done / total;

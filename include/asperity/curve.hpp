@@ -28,9 +28,12 @@ inline constexpr int max_segments = 6;
 class Curve {
  public:
   Curve() = default;
-  // Builds a curve from knot data [order][knot][3] (H, dH/du, d2H/du2) laid out by `layout`.
+  // Builds a curve from knot data [order][knot][3] (H, dH/du, d2H/du2) laid out by `layout`,
+  // keeping the orders whose bit (1 << twice_order) is set in order_mask: a curve of fewer
+  // orders takes proportionally less memory, and answers NaN for the others.
+  static constexpr unsigned all_orders = (1u << order_count) - 1;
   Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
-        const double* knot_data);
+        const double* knot_data, unsigned order_mask = all_orders);
 
   // ln X_n(s), twice_order = 2n in 0..5, s in the origin convention of MODEL.md.
   double log_value(int twice_order, double separation) const noexcept;
@@ -54,6 +57,10 @@ class Curve {
                        InstructionSet isa = InstructionSet::automatic) const noexcept;
 
   Distribution distribution() const noexcept { return distribution_; }
+  unsigned order_mask() const noexcept { return order_mask_; }
+  bool has_order(int twice_order) const noexcept {
+    return static_cast<unsigned>(twice_order) < static_cast<unsigned>(order_count) && (order_mask_ >> twice_order & 1u);
+  }
   Side side() const noexcept { return side_; }
   double shape() const noexcept { return shape_; }
   // The separations the knots span from the end of the all-touching segment (which reaches
@@ -79,8 +86,12 @@ class Curve {
   std::array<double, max_segments - 1> segment_ends_{};  // s_hi of all but the last, +inf padded
   const detail::Kernels* kernels_ = nullptr;  // the widest instruction set this CPU has
   std::array<Series, order_count> series_{};
-  std::size_t order_stride_ = 0;       // intervals * 6
-  std::vector<double> coefficients_;   // [order][interval][6]: the quintic in the power basis
+  const double* order_coefficients(int twice_order) const noexcept {
+    return order_offset_[twice_order] < 0 ? nullptr : coefficients_.data() + order_offset_[twice_order];
+  }
+  unsigned order_mask_ = 0;
+  std::array<std::ptrdiff_t, order_count> order_offset_{};  // into coefficients_, -1: not held
+  std::vector<double> coefficients_;   // [held order][interval][6]: the quintic in the power basis
 };
 
 }  // namespace asperity

@@ -10,6 +10,7 @@
 //                where heavy tails (a < 1) make H's derivatives grow like the moments)
 //   linear       p0 <= s <= p1, u = s                      offset 0
 //   graded       s = p0 + (p1 - p0) w^6, u = w in [0, 1]   offset -t on the Weibull tail
+//                (w^ceil(2/a) for a < 1/3)
 //                                                          for p0 = 0 < p1 (else 0)
 //   log_exponent s >= p0 > 0, exponent t <= p1, u = ln t   offset -t      (far tail)
 //   log_tau      tau = (-s)^a in [p0, p1], u = ln tau      offset (n + a) ln(-s)
@@ -62,6 +63,8 @@ struct SegmentMap {
   double u_lo, u_hi;  // the u range the knots span
   double s_lo, s_hi;  // the separations the segment covers (may be infinite)
   double span = 0;    // bounded_far: L = ln(s_lo / s_hi), fixed when the map is made
+  double power = 6;   // graded: s = p0 + (p1 - p0) u^power; 6, or ceil(2/a) for a < 1/3 so that
+                      // the offset -s^a = -(p1 u^power)^a keeps a finite second derivative at u = 0
   bool exponent_offset;  // offset -t (tail side, s > 0)
 
   // All the maps of a layout, in order (the reciprocal segment's anchor is the next

@@ -34,6 +34,7 @@ struct CurveSet {
 struct TableData {
   std::string generator;
   std::string generator_options;
+  bool exact_shapes = false;  // a scene table: only its own shapes, never interpolated
   std::vector<CurveSet> sets;
 };
 
@@ -56,7 +57,8 @@ class Table {
   const TableData& data() const noexcept { return data_; }
   const CurveSet* find(Distribution distribution, Side side) const noexcept;
   // Throws Error: no such set, shape not finite, or outside the grid. The Gaussian ignores shape.
-  Curve curve(Distribution distribution, Side side, double shape) const;
+  // order_mask (bit 1 << twice_order) keeps only the orders a program needs (less memory).
+  Curve curve(Distribution distribution, Side side, double shape, unsigned order_mask = Curve::all_orders) const;
 
  private:
   TableData data_;

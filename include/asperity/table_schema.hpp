@@ -1,7 +1,9 @@
 // The HDF5 table schema, defined once for the writer (tablegen) and the reader (runtime).
 //
 //   /                       attributes: schema, schema_version, generator, generator_options,
-//                                       conventions (plain text, readable with h5dump)
+//                                       conventions (plain text, readable with h5dump),
+//                                       exact_shapes (int, optional: 1 in a scene table, whose
+//                                       shapes are served exactly and never interpolated)
 //   /<distribution>_<side>  one group per curve set: weibull_tail, weibull_bounded, gaussian_tail
 //       attributes  distribution, side, definition
 //       shapes          [S]          grid of Weibull shapes, ascending (the Gaussian: one, 2)
@@ -25,6 +27,7 @@ inline constexpr const char* attr_schema_version = "schema_version";
 inline constexpr const char* attr_generator = "generator";
 inline constexpr const char* attr_generator_options = "generator_options";
 inline constexpr const char* attr_conventions = "conventions";
+inline constexpr const char* attr_exact_shapes = "exact_shapes";
 inline constexpr const char* attr_distribution = "distribution";
 inline constexpr const char* attr_side = "side";
 inline constexpr const char* attr_definition = "definition";

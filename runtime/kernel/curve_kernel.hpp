@@ -51,9 +51,9 @@ static ASPERITY_ALWAYS_INLINE MappedSeparation map_separation(const KernelSegmen
   } else if constexpr (kind == KernelKind::gaussian_linear) {  // u = s, offset -s^2/2: no log, no exp
     return {separation, -0.5 * separation * separation, 0.0};
   } else if constexpr (kind == KernelKind::graded || kind == KernelKind::graded_exponent) {
-    // u = ((s - p0) / (p1 - p0))^(1/6); offset -s^a on the tail side past s = 0
+    // u = ((s - p0) / (p1 - p0))^(1/power); offset -s^a on the tail side past s = 0
     const double log_ratio = Math::log((separation - segment.p0) * segment.inv_range);
-    const double u = Math::exp(log_ratio * (1.0 / 6.0));
+    const double u = Math::exp(log_ratio * segment.inv_power);
     if constexpr (kind == KernelKind::graded) return {u, 0.0, 0.0};
     else return {u, -Math::exp(segment.shape * log_ratio + segment.shape_log_p1), 0.0};
   } else if constexpr (kind == KernelKind::weibull_far) {  // u = ln t, t = s^a, offset -t
@@ -120,10 +120,11 @@ static ASPERITY_ALWAYS_INLINE double log_value_scalar(const KernelSegment& segme
 }
 
 // Several orders at one separation: one map, one Horner step per order.
+// order_coefficients[k]: order k's coefficients, or null for an order the curve does not hold (NaN).
 template <class Math>
-static ASPERITY_ALWAYS_INLINE void log_values_scalar(const KernelSegment& segment, const double* coefficients,
-                                     std::size_t order_stride, double separation, int first, int last,
-                                     double* out) noexcept {
+static ASPERITY_ALWAYS_INLINE void log_values_scalar(const KernelSegment& segment,
+                                                    const double* const* order_coefficients, double separation,
+                                                    int first, int last, double* out) noexcept {
   MappedSeparation mapped{0.0, 0.0, 0.0};
   switch (segment.kind) {
 #define ASPERITY_KERNEL_CASE(name) \
@@ -141,8 +142,9 @@ static ASPERITY_ALWAYS_INLINE void log_values_scalar(const KernelSegment& segmen
 #undef ASPERITY_KERNEL_CASE
   }
   for (int k = first; k <= last; ++k)
-    out[k - first] = mapped.base + mapped.per_order * (0.5 * k) +
-                     interpolate(segment, coefficients + order_stride * static_cast<std::size_t>(k), mapped.u);
+    out[k - first] = order_coefficients[k] ? mapped.base + mapped.per_order * (0.5 * k) +
+                                                 interpolate(segment, order_coefficients[k], mapped.u)
+                                           : __builtin_nan("");
 }
 
 // ---- the batch path ----
@@ -150,8 +152,7 @@ static ASPERITY_ALWAYS_INLINE void log_values_scalar(const KernelSegment& segmen
 struct KernelCurve {
   const KernelSegment* segments;
   int segment_count;
-  const double* coefficients;  // [order][interval][6]
-  std::size_t order_stride;    // intervals * 6
+  const double* coefficients;  // the order's [interval][6]
 };
 
 // Queries are taken a block at a time: sorted by segment into compact arrays (one scalar
@@ -276,7 +277,7 @@ static inline int evaluate_block(const KernelCurve& curve, int twice_order, cons
     bucket.indices[counts[segment]++] = j;
   }
 #endif
-  const double* order_coefficients = curve.coefficients + curve.order_stride * static_cast<std::size_t>(twice_order);
+  const double* order_coefficients = curve.coefficients;
   const double order = 0.5 * twice_order;
   for (int segment = 0; segment <= last; ++segment) {
     BatchScratch& bucket = scratch[segment];

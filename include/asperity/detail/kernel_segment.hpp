@@ -22,6 +22,7 @@ struct KernelSegment {
   double shape = 0;           // Weibull a (weibull_far, graded_exponent, log_tau)
   double shape_log_p1 = 0;    // graded_exponent: a ln p1, so that s^a = exp(a ln(s / p1) + a ln p1)
   double inv_span = 0;        // bounded_far: 1 / ln(s_lo / s_hi)
+  double inv_power = 1.0 / 6; // graded: u = ((s - p0) / (p1 - p0))^inv_power
   KernelKind kind = KernelKind::linear;
   int first_interval = 0;     // index of the segment's first interval in the curve's coefficients
 };

@@ -1,0 +1,76 @@
+#include "asperity/scene_curves.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "asperity/error.hpp"
+
+namespace asperity {
+namespace {
+constexpr double between_grid_bound = 1e-9;  // docs/accuracy.md, tests/test_accuracy.cpp
+}
+
+double separation_at_load(const Curve& curve, double load) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!curve.has_order(3) || !(load > 0) || !std::isfinite(load)) return nan;
+  const double target = std::log(load);
+  auto above = [&](double separation) { return curve.log_value(3, separation) > target; };
+  double lo = -1, hi = curve.side() == Side::bounded ? -1e-300 : 1;
+  for (int i = 0; !above(lo); ++i) {
+    if (i > 1100) return nan;
+    lo *= 2;
+  }
+  for (int i = 0; above(hi); ++i) {
+    if (i > 2000 || curve.side() == Side::bounded) return nan;
+    hi = hi < 1 ? 1 : hi * 1.5;
+  }
+  for (int i = 0; i < 200 && hi - lo > 4 * std::numeric_limits<double>::epsilon() * std::fabs(lo + hi); ++i) {
+    const double middle = 0.5 * (lo + hi);
+    (above(middle) ? lo : hi) = middle;
+  }
+  return 0.5 * (lo + hi);
+}
+
+std::vector<SceneCurveView> serve_scene(const Table& table, const Scene& scene) {
+  std::vector<SceneCurveView> views;
+  for (const SceneCurve& spec : scene.curves) {
+    unsigned mask = 0;
+    for (int twice_order : spec.twice_orders) mask |= 1u << twice_order;
+    const std::string label = spec.name.empty() ? "curve at line " + std::to_string(spec.line) : "curve '" + spec.name + "'";
+    const CurveSet* set = table.find(spec.distribution, spec.side);
+    if (!set) throw Error("scene " + scene.source + ": the table has no " + to_string(spec.distribution) + " " +
+                          to_string(spec.side) + " curves (" + label + ")");
+    // by_load needs X_3/2 even when the scene does not ask for it
+    Curve curve = table.curve(spec.distribution, spec.side, spec.shape, spec.by_load ? mask | 1u << 3 : mask);
+    SceneCurveView view{spec, curve, spec.range_min, spec.range_max, between_grid_bound};
+    if (spec.by_load) {
+      view.separation_min = separation_at_load(curve, spec.range_max);
+      view.separation_max = separation_at_load(curve, spec.range_min);
+      if (std::isnan(view.separation_min) || std::isnan(view.separation_max))
+        throw Error("scene " + scene.source + ": " + label + ": its load range is not reached on this curve");
+      if (!(mask >> 3 & 1u)) view.curve = table.curve(spec.distribution, spec.side, spec.shape, mask);
+    }
+    for (std::size_t i = 0; i < set->shapes.size(); ++i)
+      if (std::fabs(set->shapes[i] - spec.shape) <= 1e-12 * spec.shape || spec.distribution == Distribution::gaussian) {
+        double stored = 0;
+        if (!set->max_rel_error.empty())
+          for (int twice_order : spec.twice_orders)
+            stored = std::max(stored, set->max_rel_error[i * order_count + twice_order]);
+        view.error_bound = stored;
+        break;
+      }
+    if (view.error_bound > spec.max_rel_error) {
+      std::ostringstream message;
+      message << "scene " << scene.source << ": " << label << " asks for " << spec.max_rel_error
+              << " but this table guarantees " << view.error_bound
+              << " at that shape: generate a scene table (tablegen --scene)";
+      throw Error(message.str());
+    }
+    views.push_back(std::move(view));
+  }
+  return views;
+}
+
+}  // namespace asperity

@@ -1,0 +1,354 @@
+#include "scene_table.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "asperity/curve.hpp"
+#include "asperity/detail/quintic_hermite.hpp"
+#include "asperity/error.hpp"
+#include "chain_ode.hpp"
+#include "quadrature.hpp"
+
+namespace asperity::tablegen {
+
+double separation_at_load(Distribution distribution, Side side, double shape, double load) {
+  const CurveId id{distribution, side, shape};
+  const double target = std::log(load);
+  // ln X_3/2 falls as s grows (and is -inf on the bounded side from s = 0 on)
+  auto excess = [&](double separation) { return log_integral(id, 1.5, separation) - target; };
+  double lo = -1, hi = side == Side::bounded ? -1e-300 : 1;
+  for (int i = 0; excess(lo) < 0; ++i) {
+    if (i > 60) throw Error("scene: a load is larger than X_3/2 reaches");
+    lo *= 2;
+  }
+  for (int i = 0; excess(hi) > 0; ++i) {
+    if (i > 200 || side == Side::bounded) throw Error("scene: a load is smaller than X_3/2 reaches");
+    hi = hi < 1 ? 1 : hi * 1.5;
+  }
+  boost::uintmax_t iterations = 200;
+  const auto bracket = boost::math::tools::toms748_solve(excess, lo, hi, boost::math::tools::eps_tolerance<double>(50),
+                                                        iterations);
+  return 0.5 * (bracket.first + bracket.second);
+}
+
+namespace {
+
+struct Requirement {  // one scene curve, on its shape's data
+  std::size_t report;  // index in the result's curves
+  std::vector<int> twice_orders;
+  double separation_min, separation_max;
+  double tolerance;
+};
+
+struct Shape {
+  double shape;
+  std::vector<Requirement> requirements;
+  std::vector<double> fine;  // knot data on the fine layout
+};
+
+struct Group {
+  Distribution distribution;
+  Side side;
+  std::vector<Shape> shapes;  // ascending
+};
+
+bool overlaps(double a_lo, double a_hi, double b_lo, double b_hi) { return a_hi >= b_lo && a_lo <= b_hi; }
+
+double group_tolerance(const Group& group) {
+  double tolerance = 1;
+  for (const Shape& shape : group.shapes)
+    for (const Requirement& requirement : shape.requirements) tolerance = std::min(tolerance, requirement.tolerance);
+  return tolerance;
+}
+
+// Runs job(i) for i < count on `threads` threads; the first exception is rethrown.
+template <class Job>
+void parallel_for(std::size_t count, int threads, Job job) {
+  std::size_t next = 0;
+  std::mutex mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (;;) {
+      std::size_t index;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (failure || next >= count) return;
+        index = next++;
+      }
+      try {
+        job(index);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  const int count_threads = std::max(1, std::min<int>(threads, static_cast<int>(count)));
+  for (int i = 0; i < count_threads; ++i) pool.emplace_back(worker);
+  for (std::thread& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+// The largest error in H of the quintic through every factor-th fine knot of a segment, at the
+// fine knots it drops, where a requirement asks (its orders, its separations).
+double thinning_error(const Shape& shape, const SegmentMap& map, int first_knot, int knots, int total_knots,
+                      int factor) {
+  double worst = 0;
+  const double fine_step = (map.u_hi - map.u_lo) / (knots - 1), coarse_step = fine_step * factor;
+  auto separation_at = [&](int j) {
+    double separation, unused1, unused2;
+    map.s_of_u(map.u_lo + fine_step * j, separation, unused1, unused2);
+    return separation;
+  };
+  for (const Requirement& requirement : shape.requirements)
+    for (int twice_order : requirement.twice_orders) {
+      const double* data = &shape.fine[(static_cast<std::size_t>(twice_order) * total_knots + first_knot) * 3];
+      for (int start = 0; start + factor <= knots - 1; start += factor) {
+        const double s_a = separation_at(start), s_b = separation_at(start + factor);
+        if (!overlaps(std::min(s_a, s_b), std::max(s_a, s_b), requirement.separation_min, requirement.separation_max))
+          continue;
+        const double* left_knot = data + start * 3;
+        const double* right_knot = data + (start + factor) * 3;
+        const double left[3] = {left_knot[0], left_knot[1] * coarse_step, left_knot[2] * coarse_step * coarse_step};
+        const double right[3] = {right_knot[0], right_knot[1] * coarse_step, right_knot[2] * coarse_step * coarse_step};
+        for (int m = 1; m < factor; ++m) {
+          const double separation = separation_at(start + m);
+          if (separation < requirement.separation_min || separation > requirement.separation_max) continue;
+          const double x = static_cast<double>(m) / factor;
+          const double error = std::fabs(detail::quintic_hermite(left, right, x) - data[(start + m) * 3]);
+          worst = std::max(worst, std::isnan(error) ? 1.0 : error);
+        }
+      }
+    }
+  return worst;
+}
+
+std::vector<double> thin(const std::vector<double>& fine, const std::vector<SegmentSpec>& fine_layout,
+                         const std::vector<int>& factors) {
+  int fine_total = 0, coarse_total = 0;
+  for (std::size_t i = 0; i < fine_layout.size(); ++i) {
+    fine_total += fine_layout[i].knots;
+    coarse_total += (fine_layout[i].knots - 1) / factors[i] + 1;
+  }
+  std::vector<double> coarse(static_cast<std::size_t>(order_count) * coarse_total * 3);
+  for (int order = 0; order < order_count; ++order) {
+    int fine_first = 0, coarse_index = 0;
+    for (std::size_t i = 0; i < fine_layout.size(); ++i) {
+      for (int j = 0; j < fine_layout[i].knots; j += factors[i], ++coarse_index)
+        for (int c = 0; c < 3; ++c)
+          coarse[(static_cast<std::size_t>(order) * coarse_total + coarse_index) * 3 + c] =
+              fine[(static_cast<std::size_t>(order) * fine_total + fine_first + j) * 3 + c];
+      fine_first += fine_layout[i].knots;
+    }
+  }
+  return coarse;
+}
+
+// Checks a thinned curve against quadrature across each requirement's range. Returns the
+// error per order (all six, at the same points) and marks the segments where a requested
+// order failed.
+std::vector<double> verify(const Group& group, const Shape& shape, const std::vector<SegmentSpec>& layout,
+                           const std::vector<double>& data, std::vector<char>& failed_segments,
+                           std::vector<double>& requirement_error) {
+  const Curve curve(group.distribution, group.side, shape.shape, layout, data.data());
+  const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, group.distribution, group.side, shape.shape);
+  const CurveId id{group.distribution, group.side, shape.shape};
+  std::vector<double> errors(order_count, 0.0);
+  requirement_error.assign(shape.requirements.size(), 0.0);
+  std::mt19937_64 rng(97);
+  for (std::size_t r = 0; r < shape.requirements.size(); ++r) {
+    const Requirement& requirement = shape.requirements[r];
+    std::vector<double> points;
+    const int uniform_points = 96;
+    for (int i = 0; i <= uniform_points; ++i)
+      points.push_back(requirement.separation_min +
+                       (requirement.separation_max - requirement.separation_min) * i / uniform_points);
+    std::uniform_real_distribution<double> pick(requirement.separation_min, requirement.separation_max);
+    for (int i = 0; i < 64; ++i) points.push_back(pick(rng));
+    for (double separation : points) {
+      std::size_t segment = 0;
+      while (segment + 1 < maps.size() && separation > maps[segment].s_hi) ++segment;
+      for (int twice_order = 0; twice_order < order_count; ++twice_order) {
+        const double reference = log_integral(id, order_of(twice_order), separation);
+        const double value = curve.log_value(twice_order, separation);
+        double error;
+        if (std::isinf(reference) && reference < 0) error = value == reference ? 0 : 1;
+        else error = std::fabs(std::expm1(value - reference));
+        if (std::isnan(error)) error = 1;
+        errors[twice_order] = std::max(errors[twice_order], error);
+        const bool requested = std::find(requirement.twice_orders.begin(), requirement.twice_orders.end(),
+                                         twice_order) != requirement.twice_orders.end();
+        if (!requested) continue;
+        requirement_error[r] = std::max(requirement_error[r], error);
+        if (error > requirement.tolerance) failed_segments[segment] = 1;
+      }
+    }
+  }
+  return errors;
+}
+
+}  // namespace
+
+SceneResult generate_scene_table(const Scene& scene, int threads) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  SceneResult result;
+  // Resolve the ranges and group the curves by (distribution, side) and exact shape.
+  std::vector<Group> groups;
+  for (const SceneCurve& curve : scene.curves) {
+    SceneCurveReport report;
+    report.curve = curve;
+    if (curve.by_load) {
+      report.separation_min = separation_at_load(curve.distribution, curve.side, curve.shape, curve.range_max);
+      report.separation_max = separation_at_load(curve.distribution, curve.side, curve.shape, curve.range_min);
+    } else {
+      report.separation_min = curve.range_min;
+      report.separation_max = curve.range_max;
+    }
+    // the bounded side is 0 from s = 0 on: nothing to tabulate there
+    if (curve.side == Side::bounded) report.separation_max = std::min(report.separation_max, -1e-12);
+    result.curves.push_back(report);
+    auto group = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
+      return g.distribution == curve.distribution && g.side == curve.side;
+    });
+    if (group == groups.end()) {
+      groups.push_back({curve.distribution, curve.side, {}});
+      group = groups.end() - 1;
+    }
+    auto shape = std::find_if(group->shapes.begin(), group->shapes.end(),
+                              [&](const Shape& s) { return s.shape == curve.shape; });
+    if (shape == group->shapes.end()) {
+      group->shapes.push_back({curve.shape, {}, {}});
+      shape = group->shapes.end() - 1;
+    }
+    shape->requirements.push_back({result.curves.size() - 1, curve.twice_orders, report.separation_min,
+                                   report.separation_max, curve.max_rel_error});
+  }
+
+  std::ostringstream options;
+  options.precision(12);
+  options << "scene=" << (scene.name.empty() ? scene.source : scene.name) << " curves=" << scene.curves.size();
+  result.table.generator = "asperity tablegen --scene (Boost.odeint runge_kutta_fehlberg78, Boost.Math quadrature)";
+  result.table.exact_shapes = true;
+
+  for (Group& group : groups) {
+    std::sort(group.shapes.begin(), group.shapes.end(), [](const Shape& a, const Shape& b) { return a.shape < b.shape; });
+    const std::vector<SegmentSpec> base = default_layout(group.distribution, group.side);
+    const double tolerance = group_tolerance(group);
+    double density = tolerance >= 1e-9 ? 0.5 : tolerance >= 5e-12 ? 1.0 : 2.0;
+    for (;;) {  // until the fine layout itself is good enough
+      const std::vector<SegmentSpec> fine_layout = scale_knot_density(base, density);
+      int total_knots = 0;
+      for (const SegmentSpec& spec : fine_layout) total_knots += spec.knots;
+      parallel_for(group.shapes.size(), threads, [&](std::size_t i) {
+        group.shapes[i].fine = integrate_curve({group.distribution, group.side, group.shapes[i].shape}, fine_layout,
+                                               ChainOptions{});
+      });
+      // The coarsest thinning per segment that every shape's requirements accept.
+      std::vector<int> factors(fine_layout.size(), 1);
+      for (std::size_t segment = 0; segment < fine_layout.size(); ++segment) {
+        const int intervals = fine_layout[segment].knots - 1;
+        int first_knot = 0;
+        for (std::size_t k = 0; k < segment; ++k) first_knot += fine_layout[k].knots;
+        int factor = 1;
+        while (intervals % (factor * 2) == 0 && intervals / (factor * 2) >= 2) factor *= 2;
+        // Half the (strictest) tolerance at the dropped knots: the check that follows looks between them.
+        for (; factor > 1; factor /= 2) {
+          double worst = 0;
+          for (const Shape& shape : group.shapes) {
+            const auto maps = SegmentMap::resolve(fine_layout, group.distribution, group.side, shape.shape);
+            worst = std::max(worst, thinning_error(shape, maps[segment], first_knot, fine_layout[segment].knots,
+                                                   total_knots, factor));
+          }
+          if (worst <= 0.5 * tolerance) break;
+        }
+        factors[segment] = factor;
+      }
+      // Thin, verify, refine where a check fails.
+      bool fine_failed = false;
+      for (int attempt = 0; attempt < 12; ++attempt) {
+        std::vector<SegmentSpec> layout = fine_layout;
+        for (std::size_t i = 0; i < layout.size(); ++i) layout[i].knots = (fine_layout[i].knots - 1) / factors[i] + 1;
+        std::vector<char> failed(layout.size(), 0);
+        std::vector<std::vector<double>> thinned(group.shapes.size()), errors(group.shapes.size()),
+            requirement_errors(group.shapes.size());
+        std::vector<std::vector<char>> shape_failed(group.shapes.size(), std::vector<char>(layout.size(), 0));
+        parallel_for(group.shapes.size(), threads, [&](std::size_t i) {
+          thinned[i] = thin(group.shapes[i].fine, fine_layout, factors);
+          errors[i] = verify(group, group.shapes[i], layout, thinned[i], shape_failed[i], requirement_errors[i]);
+        });
+        for (const auto& flags : shape_failed)
+          for (std::size_t k = 0; k < flags.size(); ++k) failed[k] |= flags[k];
+        bool refined = false, stuck = false;
+        for (std::size_t k = 0; k < failed.size(); ++k)
+          if (failed[k]) {
+            if (factors[k] > 1) {
+              factors[k] /= 2;
+              refined = true;
+            } else {
+              stuck = true;
+            }
+          }
+        if (stuck) {
+          fine_failed = true;
+          break;
+        }
+        if (refined) continue;
+        // Passed: record it.
+        CurveSet set;
+        set.distribution = group.distribution;
+        set.side = group.side;
+        for (const Shape& shape : group.shapes) set.shapes.push_back(shape.shape);
+        set.shape_min = set.shapes.front();
+        set.shape_max = set.shapes.back();
+        set.layout = layout;
+        for (std::size_t i = 0; i < group.shapes.size(); ++i) {
+          set.knots.insert(set.knots.end(), thinned[i].begin(), thinned[i].end());
+          set.max_rel_error.insert(set.max_rel_error.end(), errors[i].begin(), errors[i].end());
+          const Curve curve(group.distribution, group.side, group.shapes[i].shape, layout, thinned[i].data());
+          for (std::size_t r = 0; r < group.shapes[i].requirements.size(); ++r) {
+            SceneCurveReport& report = result.curves[group.shapes[i].requirements[r].report];
+            report.achieved_error = requirement_errors[i][r];
+            report.knots = set.total_knots();
+            report.memory_bytes = curve.memory_bytes();
+          }
+        }
+        options << " " << to_string(group.distribution) << "_" << to_string(group.side) << ":density=" << density;
+        result.fine_density = std::max(result.fine_density, density);
+        result.table.sets.push_back(std::move(set));
+        break;
+      }
+      if (!fine_failed && !result.table.sets.empty() && result.table.sets.back().distribution == group.distribution &&
+          result.table.sets.back().side == group.side)
+        break;
+      if (density >= 8) {
+        std::ostringstream message;
+        message << "scene: " << to_string(group.distribution) << " " << to_string(group.side)
+                << " curves cannot reach max_rel_error " << tolerance << " even at 8x the default knot density";
+        throw Error(message.str());
+      }
+      density *= 2;
+    }
+  }
+  std::size_t total_bytes = 0;
+  for (const SceneCurveReport& report : result.curves) total_bytes += report.memory_bytes;
+  if (scene.memory_budget_bytes > 0 && total_bytes > scene.memory_budget_bytes) {
+    std::ostringstream message;
+    message << "scene: the table needs " << (total_bytes + 1023) / 1024 << " KiB in memory, over the budget of "
+            << scene.memory_budget_bytes / 1024 << " KiB (loosen max_rel_error or narrow the ranges)";
+    throw Error(message.str());
+  }
+  result.table.generator_options = options.str();
+  for (const CurveSet& set : result.table.sets) set.validate("scene table");
+  return result;
+}
+
+}  // namespace asperity::tablegen
