@@ -313,9 +313,13 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
         for (std::size_t i = 0; i < group.shapes.size(); ++i) {
           set.knots.insert(set.knots.end(), thinned[i].begin(), thinned[i].end());
           set.max_rel_error.insert(set.max_rel_error.end(), errors[i].begin(), errors[i].end());
-          const Curve curve(group.distribution, group.side, group.shapes[i].shape, layout, thinned[i].data());
           for (std::size_t r = 0; r < group.shapes[i].requirements.size(); ++r) {
-            SceneCurveReport& report = result.curves[group.shapes[i].requirements[r].report];
+            const Requirement& requirement = group.shapes[i].requirements[r];
+            unsigned mask = 0;
+            for (int twice_order : requirement.twice_orders) mask |= 1u << twice_order;
+            // in memory as serve_scene gives it: the asked orders only
+            const Curve curve(group.distribution, group.side, group.shapes[i].shape, layout, thinned[i].data(), mask);
+            SceneCurveReport& report = result.curves[requirement.report];
             report.achieved_error = requirement_errors[i][r];
             report.knots = set.total_knots();
             report.memory_bytes = curve.memory_bytes();

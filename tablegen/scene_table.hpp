@@ -22,7 +22,7 @@ struct SceneCurveReport {
   double separation_min = 0, separation_max = 0;
   double achieved_error = 0;         // max over the requested orders, against quadrature
   int knots = 0;                     // knots of the curve's layout (all segments)
-  std::size_t memory_bytes = 0;      // a resolved Curve in memory
+  std::size_t memory_bytes = 0;      // the curve in memory, its asked orders only (serve_scene)
 };
 
 struct SceneResult {
