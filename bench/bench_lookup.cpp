@@ -14,6 +14,7 @@
 
 #include "asperity/asperity.h"
 #include "asperity/contact.hpp"
+#include "asperity/contact_model.hpp"
 #include "asperity/detail/fast_math.hpp"
 #include "asperity/table.hpp"
 #include "quadrature.hpp"
@@ -70,6 +71,43 @@ void BM_ContactAllFour(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ContactAllFour);
+
+// The physical layer: forward (a separation) against inverse (a load): a tabulated inverse and
+// one Newton step, against the same queries (the loads the separations give).
+const ContactModel& physical_model() {
+  static const ContactModel model(table(), [] {
+    PhysicalSurface surface;
+    surface.shape = 2.0;
+    return surface;
+  }());
+  return model;
+}
+void BM_PhysicalForward(benchmark::State& state) {
+  const ContactModel& model = physical_model();
+  const std::vector<double>& separations = weibull_separations();
+  const double sigma = model.surface().height_scale;
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(model.at_separation(sigma * separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_PhysicalForward);
+
+void BM_PhysicalInverseLoad(benchmark::State& state) {
+  const ContactModel& model = physical_model();
+  static const std::vector<double> loads = [&] {
+    std::vector<double> out;
+    const double sigma = model.surface().height_scale;
+    for (double s : weibull_separations()) {
+      const double load = model.at_separation(sigma * s).load;
+      out.push_back(load > 1e-290 ? load : 1e-290);
+    }
+    return out;
+  }();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(model.at_load(loads[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_PhysicalInverseLoad);
 
 // The batch path, per instruction set (the same separations, order 3/2).
 void BM_Batch(benchmark::State& state, InstructionSet isa) {

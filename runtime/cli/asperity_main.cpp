@@ -1,6 +1,7 @@
 // The asperity command.
 //   asperity eval [--table FILE] [INPUT.csv]   values of the six integrals, CSV in and out
 //   asperity summary [--table FILE]            load, area and stiffness for a few shapes
+//   asperity contact ...                       a physical surface, forward and inverse (contact_cli.cpp)
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "asperity/contact.hpp"
 #include "asperity/error.hpp"
 #include "asperity/table.hpp"
+#include "contact_cli.hpp"
 #include "eval_csv.hpp"
 
 namespace {
@@ -18,6 +20,7 @@ namespace {
 const char* usage =
     "usage: asperity eval [--table FILE] [INPUT.csv]\n"
     "       asperity summary [--table FILE]\n"
+    "       asperity contact [--table FILE] SURFACE QUERY   (asperity contact --help)\n"
     "  eval     reads CSV with header dist,side,shape,sep (file or standard input) and writes\n"
     "           dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,...,lnI5_2 (%.17g)\n"
     "  summary  count, area, load and stiffness for a few shapes on both sides\n"
@@ -62,6 +65,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string command = argv[1];
+  if (command == "contact") {
+    try {
+      return asperity::cli::contact_command(argc - 1, argv + 1);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "asperity %s\n", error.what());
+      return 2;
+    }
+  }
   std::string table_path, input_path;
   for (int i = 2; i < argc; ++i) {
     const std::string argument = argv[i];

@@ -1,0 +1,41 @@
+// A physical rough surface (MODEL.md sections 1, 3 and 6), in SI units: what the contact of a
+// flat against it depends on. Either Weibull summit heights of shape a and scale sigma_s, or
+// Gaussian summit heights (rms sigma), possibly from the profile's spectral moments through
+// Nayak and McCool.
+#pragma once
+#include "asperity/model.hpp"
+
+namespace asperity {
+
+struct PhysicalSurface {
+  Distribution distribution = Distribution::weibull;
+  Side side = Side::tail;
+  double shape = 2;              // Weibull a (the Gaussian: unused)
+  double height_scale = 1e-6;    // sigma_s [m] (Gaussian: sigma, the rms summit height)
+  double summit_radius = 1e-4;   // R [m]
+  double summit_density = 1e10;  // summits per unit nominal area [1/m^2]
+  double nominal_area = 1e-4;    // A0 [m^2]
+  double contact_modulus = 1e11; // E* [Pa], plane strain: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+
+  double summit_count() const noexcept { return summit_density * nominal_area; }
+  // Throws asperity::Error naming the first bad parameter (not finite, or <= 0; a Weibull shape
+  // outside 0.3..50; a bounded side for the Gaussian).
+  void validate() const;
+};
+
+// E* from the two bodies' Young's moduli and Poisson's ratios; throws for E <= 0 or nu outside
+// (-1, 0.5].
+double contact_modulus_from(double young1, double poisson1, double young2, double poisson2);
+
+// A Gaussian surface from the spectral moments of its profile (Nayak's bandwidth alpha =
+// m0 m4 / m2^2, McCool's summit statistics):
+//   summit density D = m4 / (6 pi sqrt(3) m2), summit radius 1/R = (8/3) sqrt(m4 / pi),
+//   rms summit height sigma = sqrt(m0 (1 - 0.8968 / alpha)).
+// The paper prints sigma = sqrt(m0)(1 - 0.9/alpha), which is not what its own product
+// R sigma D = (1/48) sqrt((3/pi)(alpha - 0.9)) needs (that product follows from the square root
+// form). Throws for moments <= 0 or alpha <= 0.9 (McCool's formulas need a broad band).
+PhysicalSurface gaussian_surface_from_moments(double m0, double m2, double m4, double nominal_area,
+                                              double contact_modulus);
+double bandwidth_alpha(double m0, double m2, double m4);
+
+}  // namespace asperity

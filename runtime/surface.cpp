@@ -1,0 +1,80 @@
+#include "asperity/surface.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "asperity/error.hpp"
+
+namespace asperity {
+namespace {
+void require_positive(double value, const char* name) {
+  if (!(std::isfinite(value) && value > 0)) {
+    std::ostringstream message;
+    message << "surface: " << name << " must be a positive number, got " << value;
+    throw Error(message.str());
+  }
+}
+}  // namespace
+
+void PhysicalSurface::validate() const {
+  if (distribution == Distribution::weibull) {
+    require_positive(shape, "shape");
+    if (!(shape >= 0.3 && shape <= 50)) {
+      std::ostringstream message;
+      message << "surface: Weibull shape must be between 0.3 and 50, got " << shape;
+      throw Error(message.str());
+    }
+  } else if (side == Side::bounded) {
+    throw Error("surface: the Gaussian has no bounded side");
+  }
+  require_positive(height_scale, "height scale sigma_s");
+  require_positive(summit_radius, "summit radius R");
+  require_positive(summit_density, "summit density");
+  require_positive(nominal_area, "nominal area A0");
+  require_positive(contact_modulus, "contact modulus E*");
+}
+
+double contact_modulus_from(double young1, double poisson1, double young2, double poisson2) {
+  require_positive(young1, "E1");
+  require_positive(young2, "E2");
+  for (double poisson : {poisson1, poisson2})
+    if (!(poisson > -1 && poisson <= 0.5)) {
+      std::ostringstream message;
+      message << "surface: a Poisson's ratio must be in (-1, 0.5], got " << poisson;
+      throw Error(message.str());
+    }
+  return 1 / ((1 - poisson1 * poisson1) / young1 + (1 - poisson2 * poisson2) / young2);
+}
+
+double bandwidth_alpha(double m0, double m2, double m4) {
+  require_positive(m0, "m0");
+  require_positive(m2, "m2");
+  require_positive(m4, "m4");
+  return m0 * m4 / (m2 * m2);
+}
+
+PhysicalSurface gaussian_surface_from_moments(double m0, double m2, double m4, double nominal_area,
+                                              double contact_modulus) {
+  const double alpha = bandwidth_alpha(m0, m2, m4);
+  if (!(alpha > 0.9)) {
+    std::ostringstream message;
+    message << "surface: bandwidth alpha = m0 m4 / m2^2 = " << alpha
+            << " must exceed 0.9 (McCool's summit statistics; alpha >= 1.5 for a real surface)";
+    throw Error(message.str());
+  }
+  const double pi = 3.14159265358979323846;
+  PhysicalSurface surface;
+  surface.distribution = Distribution::gaussian;
+  surface.side = Side::tail;
+  surface.shape = 2;
+  surface.summit_density = m4 / (6 * pi * std::sqrt(3.0) * m2);
+  surface.summit_radius = 1 / ((8.0 / 3.0) * std::sqrt(m4 / pi));
+  surface.height_scale = std::sqrt(m0 * (1 - 0.8968 / alpha));
+  surface.nominal_area = nominal_area;
+  surface.contact_modulus = contact_modulus;
+  surface.validate();
+  return surface;
+}
+
+}  // namespace asperity

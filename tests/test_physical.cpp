@@ -1,0 +1,168 @@
+// The physical layer: surfaces and their validation, E* and the Nayak-McCool Gaussian surface,
+// forward contact against the dimensionless integrals, and the inverses (separation at a load,
+// a pressure, a real area) round-tripped across the whole range; Persson's law.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "asperity/contact.hpp"
+#include "asperity/contact_model.hpp"
+#include "asperity/error.hpp"
+#include "asperity/persson.hpp"
+#include "asperity/surface.hpp"
+
+namespace {
+using namespace asperity;
+
+const Table& table() {
+  static const Table instance = Table::open(ASPERITY_TEST_TABLE);
+  return instance;
+}
+
+std::string error_of(const PhysicalSurface& surface) {
+  try {
+    surface.validate();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Surface, ValidationNamesTheParameter) {
+  PhysicalSurface surface;
+  EXPECT_EQ(error_of(surface), "");
+  surface.height_scale = -1e-6;
+  EXPECT_NE(error_of(surface).find("height scale"), std::string::npos);
+  surface = PhysicalSurface{};
+  surface.summit_radius = 0;
+  EXPECT_NE(error_of(surface).find("summit radius"), std::string::npos);
+  surface = PhysicalSurface{};
+  surface.summit_density = NAN;
+  EXPECT_NE(error_of(surface).find("summit density"), std::string::npos);
+  surface = PhysicalSurface{};
+  surface.nominal_area = -2;
+  EXPECT_NE(error_of(surface).find("nominal area"), std::string::npos);
+  surface = PhysicalSurface{};
+  surface.contact_modulus = INFINITY;
+  EXPECT_NE(error_of(surface).find("contact modulus"), std::string::npos);
+  surface = PhysicalSurface{};
+  surface.shape = 0.2;
+  EXPECT_NE(error_of(surface).find("shape"), std::string::npos);
+  surface = PhysicalSurface{};
+  surface.distribution = Distribution::gaussian;
+  surface.side = Side::bounded;
+  EXPECT_NE(error_of(surface).find("no bounded side"), std::string::npos);
+}
+
+TEST(Surface, ContactModulusAndMoments) {
+  // steel on steel: E / (2 (1 - nu^2))
+  EXPECT_NEAR(contact_modulus_from(210e9, 0.3, 210e9, 0.3), 210e9 / (2 * 0.91), 1e-3);
+  EXPECT_NEAR(contact_modulus_from(1e9, 0.5, 1e15, 0.0), 1e9 / 0.75, 1e-3 * 1e9);  // rubber on a rigid flat
+  EXPECT_THROW(contact_modulus_from(-1, 0.3, 1, 0.3), Error);
+  EXPECT_THROW(contact_modulus_from(1, 0.6, 1, 0.3), Error);
+
+  const double m0 = 1e-12, m2 = 1e-4, m4 = 1e4, pi = 3.14159265358979323846;
+  const double alpha = bandwidth_alpha(m0, m2, m4);
+  EXPECT_DOUBLE_EQ(alpha, 1.0);
+  const PhysicalSurface surface = gaussian_surface_from_moments(m0, m2, m4, 1e-4, 1e11);
+  EXPECT_NEAR(surface.summit_density, m4 / (6 * pi * std::sqrt(3.0) * m2), 1e-9 * surface.summit_density);
+  EXPECT_NEAR(1 / surface.summit_radius, (8.0 / 3.0) * std::sqrt(m4 / pi), 1e-9 / surface.summit_radius);
+  EXPECT_NEAR(surface.height_scale, std::sqrt(m0 * (1 - 0.8968 / alpha)), 1e-15);
+  // McCool's product, which needs the square root form of sigma (the paper prints it without):
+  // R sigma D = sqrt(alpha - 0.8968) / (16 sqrt(3 pi)) = (1/48) sqrt((3/pi)(alpha - 0.8968))
+  const double product = surface.summit_radius * surface.height_scale * surface.summit_density;
+  EXPECT_NEAR(product, std::sqrt((3 / pi) * (alpha - 0.8968)) / 48, 1e-12 * product);
+  EXPECT_THROW(gaussian_surface_from_moments(1, 1, 0.9, 1, 1), Error);  // alpha = 0.9
+  EXPECT_THROW(gaussian_surface_from_moments(0, 1, 1, 1, 1), Error);
+}
+
+PhysicalSurface weibull_surface(Side side, double shape) {
+  PhysicalSurface surface;
+  surface.side = side;
+  surface.shape = shape;
+  surface.height_scale = 2e-6;
+  surface.summit_radius = 5e-5;
+  surface.summit_density = 4e9;
+  surface.nominal_area = 3e-4;
+  surface.contact_modulus = contact_modulus_from(210e9, 0.3, 70e9, 0.33);
+  return surface;
+}
+
+TEST(ContactModel, ForwardIsTheScaledIntegrals) {
+  const PhysicalSurface surface = weibull_surface(Side::tail, 2.0);
+  const ContactModel model(table(), surface);
+  const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
+  for (double s : {-1.0, 0.0, 0.3, 1.2, 2.5}) {
+    const PhysicalState state = model.at_separation(s * surface.height_scale);
+    ContactState reference;
+    contact_at(curve, Surface{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus},
+               s, reference);
+    EXPECT_NEAR(state.count, reference.count, 1e-13 * reference.count);
+    EXPECT_NEAR(state.real_area, reference.area, 1e-13 * reference.area);
+    EXPECT_NEAR(state.load, reference.load, 1e-13 * reference.load);
+    EXPECT_NEAR(state.stiffness, reference.stiffness, 1e-13 * reference.stiffness);
+    EXPECT_NEAR(state.stiffness_over_load, reference.stiffness_ratio / surface.height_scale,
+                1e-12 * state.stiffness_over_load);
+    EXPECT_NEAR(state.pressure, state.load / surface.nominal_area, 1e-15 * state.pressure);
+    EXPECT_NEAR(state.mean_separation, (s - weibull_mean(2.0)) * surface.height_scale, 1e-20);
+  }
+  EXPECT_TRUE(std::isnan(model.at_separation(NAN).load));
+}
+
+TEST(ContactModel, InversesRoundTripAcrossTheRange) {
+  struct Case {
+    PhysicalSurface surface;
+    const char* label;
+  };
+  PhysicalSurface gaussian = gaussian_surface_from_moments(1e-12, 1e-4, 3e4, 1e-4, 1e11);
+  const Case cases[] = {{weibull_surface(Side::tail, 2.0), "tail a=2"},
+                        {weibull_surface(Side::tail, 0.5), "tail a=0.5"},
+                        {weibull_surface(Side::bounded, 1.73), "bounded a=1.73"},
+                        {weibull_surface(Side::tail, 17.0), "tail a=17"},
+                        {gaussian, "gaussian"}};
+  for (const Case& c : cases) {
+    const ContactModel model(table(), c.surface);
+    double previous_separation = INFINITY, worst = 0, worst_area = 0;
+    for (double exponent = -40; exponent <= 6; exponent += 0.37) {
+      const double load = std::pow(10.0, exponent);
+      const PhysicalState state = model.at_load(load);
+      worst = std::max(worst, std::fabs(state.load - load) / load);
+      EXPECT_LT(state.separation, previous_separation) << c.label << " load " << load;  // monotone
+      previous_separation = state.separation;
+      if (state.real_area > 0) {
+        const PhysicalState by_area = model.at_real_area(state.real_area);
+        worst_area = std::max(worst_area, std::fabs(by_area.real_area - state.real_area) / state.real_area);
+        EXPECT_NEAR(by_area.separation, state.separation, 1e-9 * (std::fabs(state.separation) + c.surface.height_scale));
+      }
+      const PhysicalState by_pressure = model.at_pressure(load / c.surface.nominal_area);
+      EXPECT_NEAR(by_pressure.separation, state.separation, 1e-12 * (std::fabs(state.separation) + 1e-12));
+    }
+    RecordProperty(std::string(c.label) + "_load_round_trip", std::to_string(worst));
+    EXPECT_LT(worst, 1e-11) << c.label;  // the table's own error level
+    EXPECT_LT(worst_area, 1e-11) << c.label;
+    EXPECT_TRUE(std::isnan(model.at_load(NAN).separation));
+    const PhysicalState none = model.at_load(0);
+    if (c.surface.side == Side::bounded) EXPECT_EQ(none.separation, 0.0);
+    else EXPECT_EQ(none.separation, INFINITY);
+  }
+}
+
+TEST(ContactModel, MovesKeepTheInverses) {
+  ContactModel first(table(), weibull_surface(Side::tail, 3.0));
+  const double expected = first.at_load(0.5).separation;
+  ContactModel moved(std::move(first));
+  EXPECT_DOUBLE_EQ(moved.at_load(0.5).separation, expected);
+  EXPECT_THROW(ContactModel(table(), weibull_surface(Side::tail, 25.0)), Error);  // beyond the default table
+}
+
+TEST(Persson, ExponentialLaw) {
+  const PerssonLaw law{0.5, 2.0};
+  EXPECT_DOUBLE_EQ(law.pressure(0), 2.0);
+  EXPECT_NEAR(law.pressure(1), 2.0 * std::exp(-2.0), 1e-15);
+  EXPECT_NEAR(law.separation_at(law.pressure(1.7)), 1.7, 1e-14);
+  EXPECT_DOUBLE_EQ(law.stiffness_over_load(), 2.0);
+}
+
+}  // namespace
