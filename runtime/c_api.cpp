@@ -8,6 +8,7 @@
 #include <string>
 
 #include "asperity/contact.hpp"
+#include "asperity/contact_model.hpp"
 #include "asperity/table.hpp"
 
 struct asperity_table {
@@ -15,6 +16,9 @@ struct asperity_table {
 };
 struct asperity_curve {
   asperity::Curve curve;
+};
+struct asperity_model {
+  asperity::ContactModel model;
 };
 
 namespace {
@@ -89,6 +93,64 @@ asperity_curve* asperity_curve_open(const asperity_table* table, const char* dis
 }
 
 void asperity_curve_close(asperity_curve* curve) { delete curve; }
+
+asperity_model* asperity_model_open(const asperity_table* table, const char* dist, const char* side, double shape,
+                                    double height_scale, double summit_radius, double summit_density,
+                                    double nominal_area, double contact_modulus, char* err, size_t err_size) {
+  if (!table || !dist || !side) {
+    write_error(err, err_size, "asperity_model_open: NULL table, dist or side");
+    return nullptr;
+  }
+  asperity::PhysicalSurface surface;
+  if (!asperity::parse_distribution(dist, surface.distribution)) {
+    write_error(err, err_size, (std::string("unknown dist '") + dist + "' (weibull or gaussian)").c_str());
+    return nullptr;
+  }
+  if (!asperity::parse_side(side, surface.side)) {
+    write_error(err, err_size, (std::string("unknown side '") + side + "' (tail or bounded)").c_str());
+    return nullptr;
+  }
+  surface.shape = shape;
+  surface.height_scale = height_scale;
+  surface.summit_radius = summit_radius;
+  surface.summit_density = summit_density;
+  surface.nominal_area = nominal_area;
+  surface.contact_modulus = contact_modulus;
+  return guarded(err, err_size, "asperity_model_open",
+                 [&] { return new asperity_model{asperity::ContactModel(table->table, surface)}; });
+}
+
+void asperity_model_close(asperity_model* model) { delete model; }
+
+static int physical_query(const asperity_model* model, double input, asperity_physical_state* out,
+                          asperity::PhysicalState (asperity::ContactModel::*query)(double) const noexcept) {
+  if (!model || !out) return ASPERITY_BAD_HANDLE;
+  const asperity::PhysicalState state = (model->model.*query)(input);
+  *out = {state.separation, state.mean_separation, state.count, state.real_area, state.area_fraction,
+          state.load, state.pressure, state.stiffness, state.stiffness_over_load};
+  return std::isnan(input) ? ASPERITY_BAD_SEPARATION : ASPERITY_OK;
+}
+
+int asperity_model_at_separation(const asperity_model* model, double separation, asperity_physical_state* out) {
+  return physical_query(model, separation, out, &asperity::ContactModel::at_separation);
+}
+int asperity_model_at_load(const asperity_model* model, double load, asperity_physical_state* out) {
+  return physical_query(model, load, out, &asperity::ContactModel::at_load);
+}
+int asperity_model_at_pressure(const asperity_model* model, double pressure, asperity_physical_state* out) {
+  return physical_query(model, pressure, out, &asperity::ContactModel::at_pressure);
+}
+int asperity_model_at_real_area(const asperity_model* model, double real_area, asperity_physical_state* out) {
+  return physical_query(model, real_area, out, &asperity::ContactModel::at_real_area);
+}
+
+double asperity_contact_modulus(double young1, double poisson1, double young2, double poisson2) {
+  try {
+    return asperity::contact_modulus_from(young1, poisson1, young2, poisson2);
+  } catch (const std::exception&) {
+    return not_a_number;
+  }
+}
 
 double asperity_eval(const asperity_curve* curve, int twice_order, double sep) {
   return curve ? curve->curve.value(twice_order, sep) : not_a_number;

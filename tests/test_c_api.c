@@ -57,6 +57,34 @@ int main(void) {
   CHECK(strlen(asperity_version()) > 0);
   CHECK(strcmp(asperity_status_string(ASPERITY_OK), "ok") == 0);
 
+  /* the physical layer: a load and back */
+  {
+    const double modulus = asperity_contact_modulus(2.1e11, 0.3, 2.1e11, 0.3);
+    asperity_physical_state forward, inverse;
+    asperity_model *model;
+    CHECK(fabs(modulus - 2.1e11 / 1.82) < 1e-3);
+    CHECK(isnan(asperity_contact_modulus(-1.0, 0.3, 1.0, 0.3)));
+    model = asperity_model_open(table, "weibull", "tail", 2.0, 1e-6, 1e-4, 1e10, 1e-4, modulus, err, sizeof err);
+    CHECK(model != NULL);
+    if (model) {
+      CHECK(asperity_model_at_separation(model, 3e-6, &forward) == ASPERITY_OK);
+      CHECK(forward.load > 0 && forward.real_area > 0 && forward.stiffness_over_load > 0);
+      CHECK(asperity_model_at_load(model, forward.load, &inverse) == ASPERITY_OK);
+      CHECK(fabs(inverse.separation - 3e-6) < 1e-15);
+      CHECK(asperity_model_at_pressure(model, forward.pressure, &inverse) == ASPERITY_OK);
+      CHECK(fabs(inverse.load - forward.load) < 1e-11 * forward.load);
+      CHECK(asperity_model_at_real_area(model, forward.real_area, &inverse) == ASPERITY_OK);
+      CHECK(fabs(inverse.separation - 3e-6) < 1e-15);
+      CHECK(asperity_model_at_load(model, NAN, &inverse) == ASPERITY_BAD_SEPARATION);
+      CHECK(isnan(inverse.separation));
+      CHECK(asperity_model_at_load(NULL, 1.0, &inverse) == ASPERITY_BAD_HANDLE);
+      asperity_model_close(model);
+    }
+    CHECK(asperity_model_open(table, "weibull", "tail", 2.0, -1e-6, 1e-4, 1e10, 1e-4, modulus, err, sizeof err) == NULL);
+    CHECK(strstr(err, "height scale") != NULL);
+    asperity_model_close(NULL);
+  }
+
   asperity_curve_close(curve);
   asperity_curve_close(NULL);
   asperity_table_close(table);

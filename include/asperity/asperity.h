@@ -62,6 +62,35 @@ double asperity_standardized_from_origin(const asperity_curve *curve, double sep
 double asperity_origin_from_standardized(const asperity_curve *curve, double standardized);
 
 const char *asperity_version(void);
+
+/* A physical surface and its contact with a flat, forward and inverse (asperity/contact_model.hpp),
+ * SI units. dist "weibull" (shape 0.3..50, side "tail" or "bounded") or "gaussian" (side "tail").
+ * Returns NULL and writes a message into err for a bad parameter or a missing curve. The model
+ * is immutable: one handle may serve many threads. */
+typedef struct asperity_model asperity_model;
+typedef struct asperity_physical_state {
+  double separation;          /* m, origin convention (from the Weibull origin / Gaussian mean) */
+  double mean_separation;     /* m, from the mean summit height */
+  double count;               /* summits in contact */
+  double real_area;           /* m^2 */
+  double area_fraction;       /* A / A0 */
+  double load;                /* N */
+  double pressure;            /* Pa, load / A0 */
+  double stiffness;           /* N/m */
+  double stiffness_over_load; /* 1/m */
+} asperity_physical_state;
+asperity_model *asperity_model_open(const asperity_table *table, const char *dist, const char *side, double shape,
+                                    double height_scale, double summit_radius, double summit_density,
+                                    double nominal_area, double contact_modulus, char *err, size_t err_size);
+void asperity_model_close(asperity_model *model);
+/* Each returns a status code (ASPERITY_BAD_HANDLE for NULL, ASPERITY_BAD_SEPARATION for a NaN
+ * input, whose outputs are NaN) and fills *out. A load, pressure or area <= 0 is no contact. */
+int asperity_model_at_separation(const asperity_model *model, double separation, asperity_physical_state *out);
+int asperity_model_at_load(const asperity_model *model, double load, asperity_physical_state *out);
+int asperity_model_at_pressure(const asperity_model *model, double pressure, asperity_physical_state *out);
+int asperity_model_at_real_area(const asperity_model *model, double real_area, asperity_physical_state *out);
+/* 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; NaN for E <= 0 or nu outside (-1, 0.5]. */
+double asperity_contact_modulus(double young1, double poisson1, double young2, double poisson2);
 /* A message for a status code (static storage). */
 const char *asperity_status_string(int status);
 
