@@ -196,6 +196,43 @@ std::vector<double> verify(const Group& group, const Shape& shape, const std::ve
   return errors;
 }
 
+// Segments parameterized by separation itself (linear, gaussian_linear, log_distance) are cut at
+// the scene's range (with a small margin), so that the knots the range needs are not spread
+// over the whole segment: the pieces outside are thinned to three knots. Each piece keeps the
+// segment's knot spacing, in multiples of 16 intervals (the thinning halves them).
+std::vector<SegmentSpec> split_for_range(const std::vector<SegmentSpec>& layout, double lo, double hi) {
+  std::vector<SegmentSpec> out;
+  for (std::size_t i = 0; i < layout.size(); ++i) {
+    const SegmentSpec& spec = layout[i];
+    const bool by_separation = spec.kind == SegmentKind::linear || spec.kind == SegmentKind::gaussian_linear ||
+                               spec.kind == SegmentKind::log_distance;
+    const std::size_t room = static_cast<std::size_t>(max_segments) - (layout.size() - 1 - i) - out.size();
+    if (!by_separation || room < 2 || !(hi > spec.p0 && lo < spec.p1)) {
+      out.push_back(spec);
+      continue;
+    }
+    const bool logarithmic = spec.kind == SegmentKind::log_distance;  // u = ln(-s)
+    auto u_of = [&](double s) { return logarithmic ? std::log(-s) : s; };
+    const double margin = 0.02 * (spec.p1 - spec.p0);
+    std::vector<double> cuts = {spec.p0};
+    const double a = std::max(spec.p0, lo - margin), b = std::min(spec.p1, hi + margin);
+    if (a - spec.p0 > 4 * margin && cuts.size() + 1 < room) cuts.push_back(a);
+    if (spec.p1 - b > 4 * margin && cuts.size() < room) cuts.push_back(b);
+    cuts.push_back(spec.p1);
+    if (cuts.size() == 2) {
+      out.push_back(spec);
+      continue;
+    }
+    const double per_u = (spec.knots - 1) / std::fabs(u_of(spec.p1) - u_of(spec.p0));
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const double intervals = per_u * std::fabs(u_of(cuts[k + 1]) - u_of(cuts[k]));
+      const int rounded = std::max(16, 16 * static_cast<int>(std::ceil(intervals / 16)));
+      out.push_back({spec.kind, rounded + 1, cuts[k], cuts[k + 1]});
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 SceneResult generate_scene_table(const Scene& scene, int threads) {
@@ -241,7 +278,14 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
 
   for (Group& group : groups) {
     std::sort(group.shapes.begin(), group.shapes.end(), [](const Shape& a, const Shape& b) { return a.shape < b.shape; });
-    const std::vector<SegmentSpec> base = default_layout(group.distribution, group.side);
+    double range_lo = std::numeric_limits<double>::infinity(), range_hi = -range_lo;
+    for (const Shape& shape : group.shapes)
+      for (const Requirement& requirement : shape.requirements) {
+        range_lo = std::min(range_lo, requirement.separation_min);
+        range_hi = std::max(range_hi, requirement.separation_max);
+      }
+    const std::vector<SegmentSpec> base =
+        split_for_range(default_layout(group.distribution, group.side), range_lo, range_hi);
     const double tolerance = group_tolerance(group);
     double density = tolerance >= 1e-9 ? 0.5 : tolerance >= 5e-12 ? 1.0 : 2.0;
     for (;;) {  // until the fine layout itself is good enough
