@@ -9,6 +9,7 @@
 // table (the callers send NaN, infinities and the series beyond the table to the cold path).
 #pragma once
 #include <cstddef>
+#include <type_traits>
 
 #include "asperity/detail/fast_math.hpp"
 #include "asperity/detail/kernel_segment.hpp"
@@ -97,26 +98,35 @@ static ASPERITY_ALWAYS_INLINE double log_value_in(const KernelSegment& segment, 
   return mapped.base + mapped.per_order * order + interpolate(segment, order_coefficients, mapped.u);
 }
 
+// The one switch over the kinds: visit(KindTag<kind>{}) for a segment's kind, so that each
+// kind's map is compiled on its own (no per-query branches inside it).
+template <KernelKind kind>
+using KindTag = std::integral_constant<KernelKind, kind>;
+
+template <class Visit>
+static ASPERITY_ALWAYS_INLINE auto with_kind(KernelKind kind, Visit&& visit) noexcept {
+  switch (kind) {
+    case KernelKind::reciprocal: return visit(KindTag<KernelKind::reciprocal>{});
+    case KernelKind::linear: return visit(KindTag<KernelKind::linear>{});
+    case KernelKind::graded: return visit(KindTag<KernelKind::graded>{});
+    case KernelKind::graded_exponent: return visit(KindTag<KernelKind::graded_exponent>{});
+    case KernelKind::weibull_far: return visit(KindTag<KernelKind::weibull_far>{});
+    case KernelKind::gaussian_far: return visit(KindTag<KernelKind::gaussian_far>{});
+    case KernelKind::log_tau: return visit(KindTag<KernelKind::log_tau>{});
+    case KernelKind::log_distance: return visit(KindTag<KernelKind::log_distance>{});
+    case KernelKind::bounded_far: return visit(KindTag<KernelKind::bounded_far>{});
+    case KernelKind::gaussian_linear: return visit(KindTag<KernelKind::gaussian_linear>{});
+  }
+  return visit(KindTag<KernelKind::linear>{});  // not reached: every kind is listed
+}
+
 // The scalar lookup: ln X_n(s) for s inside the table (segment found by the caller).
 template <class Math>
-static ASPERITY_ALWAYS_INLINE double log_value_scalar(const KernelSegment& segment, const double* order_coefficients, double order,
-                                      double separation) noexcept {
-  switch (segment.kind) {
-#define ASPERITY_KERNEL_CASE(name) \
-  case KernelKind::name: return log_value_in<KernelKind::name, Math>(segment, order_coefficients, order, separation);
-    ASPERITY_KERNEL_CASE(reciprocal)
-    ASPERITY_KERNEL_CASE(linear)
-    ASPERITY_KERNEL_CASE(graded)
-    ASPERITY_KERNEL_CASE(graded_exponent)
-    ASPERITY_KERNEL_CASE(weibull_far)
-    ASPERITY_KERNEL_CASE(gaussian_far)
-    ASPERITY_KERNEL_CASE(log_tau)
-    ASPERITY_KERNEL_CASE(log_distance)
-    ASPERITY_KERNEL_CASE(bounded_far)
-    ASPERITY_KERNEL_CASE(gaussian_linear)
-#undef ASPERITY_KERNEL_CASE
-  }
-  return __builtin_nan("");
+static ASPERITY_ALWAYS_INLINE double log_value_scalar(const KernelSegment& segment, const double* order_coefficients,
+                                                     double order, double separation) noexcept {
+  return with_kind(segment.kind, [&](auto kind) __attribute__((always_inline)) {
+    return log_value_in<decltype(kind)::value, Math>(segment, order_coefficients, order, separation);
+  });
 }
 
 // Several orders at one separation: one map, one Horner step per order.
@@ -125,22 +135,9 @@ template <class Math>
 static ASPERITY_ALWAYS_INLINE void log_values_scalar(const KernelSegment& segment,
                                                     const double* const* order_coefficients, double separation,
                                                     int first, int last, double* out) noexcept {
-  MappedSeparation mapped{0.0, 0.0, 0.0};
-  switch (segment.kind) {
-#define ASPERITY_KERNEL_CASE(name) \
-  case KernelKind::name: mapped = map_separation<KernelKind::name, Math>(segment, separation); break;
-    ASPERITY_KERNEL_CASE(reciprocal)
-    ASPERITY_KERNEL_CASE(linear)
-    ASPERITY_KERNEL_CASE(graded)
-    ASPERITY_KERNEL_CASE(graded_exponent)
-    ASPERITY_KERNEL_CASE(weibull_far)
-    ASPERITY_KERNEL_CASE(gaussian_far)
-    ASPERITY_KERNEL_CASE(log_tau)
-    ASPERITY_KERNEL_CASE(log_distance)
-    ASPERITY_KERNEL_CASE(bounded_far)
-    ASPERITY_KERNEL_CASE(gaussian_linear)
-#undef ASPERITY_KERNEL_CASE
-  }
+  const MappedSeparation mapped = with_kind(segment.kind, [&](auto kind) __attribute__((always_inline)) {
+    return map_separation<decltype(kind)::value, Math>(segment, separation);
+  });
   for (int k = first; k <= last; ++k)
     out[k - first] = order_coefficients[k] ? mapped.base + mapped.per_order * (0.5 * k) +
                                                  interpolate(segment, order_coefficients[k], mapped.u)
@@ -186,23 +183,10 @@ __attribute__((noinline)) static void run_segment(const KernelSegment& segment_i
 template <bool log_output, class Math>
 static inline void run_segment_of_kind(const KernelSegment& segment, const double* order_coefficients, double order,
                                        const double* separations, double* results, int count) noexcept {
-  switch (segment.kind) {
-#define ASPERITY_KERNEL_CASE(name)                                                                                     \
-  case KernelKind::name:                                                                                              \
-    return run_segment<KernelKind::name, log_output, Math>(segment, order_coefficients, order, separations, results, \
-                                                           count);
-    ASPERITY_KERNEL_CASE(reciprocal)
-    ASPERITY_KERNEL_CASE(linear)
-    ASPERITY_KERNEL_CASE(graded)
-    ASPERITY_KERNEL_CASE(graded_exponent)
-    ASPERITY_KERNEL_CASE(weibull_far)
-    ASPERITY_KERNEL_CASE(gaussian_far)
-    ASPERITY_KERNEL_CASE(log_tau)
-    ASPERITY_KERNEL_CASE(log_distance)
-    ASPERITY_KERNEL_CASE(bounded_far)
-    ASPERITY_KERNEL_CASE(gaussian_linear)
-#undef ASPERITY_KERNEL_CASE
-  }
+  with_kind(segment.kind, [&](auto kind) {
+    run_segment<decltype(kind)::value, log_output, Math>(segment, order_coefficients, order, separations, results,
+                                                        count);
+  });
 }
 
 // One block (count <= batch_block). Writes ln X or X for every query inside the table and

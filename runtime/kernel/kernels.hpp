@@ -7,7 +7,6 @@
 namespace asperity::detail {
 
 struct Kernels {
-  InstructionSet isa;
   // out[k] = exp(logs[k]) for k < 4, as one vector (the four quantities of contact_at).
   void (*exp4)(const double* logs, double* out) noexcept;
   // One block of a batch (count <= batch_block): ln X or X for every query inside the table;
@@ -15,6 +14,20 @@ struct Kernels {
   int (*block)(const KernelCurve& curve, int twice_order, const double* separations, double* out, int count,
                bool log_output, int* rest) noexcept;
 };
+
+// What each instruction-set build instantiates (kernels_<isa>.cpp): internal linkage, so every
+// build keeps its own copy (see curve_kernel.hpp).
+namespace {
+inline void exp4(const double* logs, double* out) noexcept {
+  for (int k = 0; k < 4; ++k) out[k] = fast_exp(logs[k]);
+}
+
+template <class Math>
+int block(const KernelCurve& curve, int twice_order, const double* separations, double* out, int count,
+          bool log_output, int* rest) noexcept {
+  return evaluate_block<Math>(curve, twice_order, separations, out, count, log_output, rest);
+}
+}  // namespace
 
 extern const Kernels generic_kernels;
 #if ASPERITY_X86_KERNELS
