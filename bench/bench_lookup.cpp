@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "random_separations.hpp"
 #include "asperity/asperity.h"
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
@@ -29,13 +30,7 @@ const Table& table() {
   return instance;
 }
 
-std::vector<double> uniform(double lo, double hi, std::size_t count, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> pick(lo, hi);
-  std::vector<double> values(count);
-  for (double& value : values) value = pick(rng);
-  return values;
-}
+using bench::uniform;
 
 // Weibull a = 2, tail side: separations across the whole tabulated range.
 const Curve& weibull_curve() {

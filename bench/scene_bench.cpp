@@ -1,6 +1,6 @@
 // Scene tables against tolerance: generation time (tablegen --scene's work), table size,
-// achieved error and lookup latency, for a three-curve scene (a worn surface near first
-// contact, a Gaussian lubrication film, a ground surface given by its load range).
+// achieved error and lookup latency, for tables/scenes/tolerance-sweep.toml (a worn surface
+// near first contact, a Gaussian lubrication film, a ground surface given by its load range).
 // scripts/scenes-report.sh turns the JSON into docs/scenes.md's measured section.
 #include <benchmark/benchmark.h>
 
@@ -19,31 +19,11 @@
 namespace {
 using namespace asperity;
 
-std::string scene_text(double tolerance) {
-  char text[1024];
-  std::snprintf(text, sizeof text, R"(
-max_rel_error = %g
-[[curve]]
-name = "worn"
-distribution = "weibull"
-shape = 1.73
-side = "bounded"
-quantities = ["load", "stiffness"]
-separation = [-0.5, -1e-4]
-[[curve]]
-name = "lubrication"
-distribution = "gaussian"
-quantities = ["F2", "F5/2"]
-separation = [-3.0, 4.0]
-[[curve]]
-name = "ground"
-distribution = "weibull"
-shape = 2.7
-quantities = ["count", "area", "load"]
-load = [1e-8, 1e-2]
-)",
-                tolerance);
-  return text;
+// tables/scenes/tolerance-sweep.toml at a given tolerance for every curve.
+Scene sweep_scene(double tolerance) {
+  Scene scene = read_scene_file(std::string(ASPERITY_SCENES_DIR) + "/tolerance-sweep.toml");
+  for (SceneCurve& curve : scene.curves) curve.max_rel_error = tolerance;
+  return scene;
 }
 
 struct Built {
@@ -56,7 +36,7 @@ const Built& built(double tolerance) {
   auto found = cache.find(tolerance);
   if (found == cache.end()) {
     Built entry;
-    const Scene scene = parse_scene(scene_text(tolerance), "bench scene");
+    const Scene scene = sweep_scene(tolerance);
     entry.result = tablegen::generate_scene_table(scene, 2);
     Table table(entry.result.table);
     entry.views = serve_scene(table, scene);
@@ -67,7 +47,7 @@ const Built& built(double tolerance) {
 
 void BM_SceneGenerate(benchmark::State& state) {
   const double tolerance = std::pow(10.0, -static_cast<double>(state.range(0)));
-  const Scene scene = parse_scene(scene_text(tolerance), "bench scene");
+  const Scene scene = sweep_scene(tolerance);
   double kib = 0, worst = 0;
   int knots = 0;
   for (auto _ : state) {

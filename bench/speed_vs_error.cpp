@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "random_separations.hpp"
 #include "asperity/curve.hpp"
 #include "chain_ode.hpp"
 #include "quadrature.hpp"
@@ -41,13 +42,7 @@ struct Study {
   double lo, hi;  // the separations queried and checked
 };
 
-std::vector<double> uniform(double lo, double hi, std::size_t count, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> pick(lo, hi);
-  std::vector<double> values(count);
-  for (double& value : values) value = pick(rng);
-  return values;
-}
+using bench::uniform;
 
 // A curve's knots for a layout, straight from the generator's integrator.
 std::vector<double> knots_for(const Study& study, const std::vector<SegmentSpec>& layout) {

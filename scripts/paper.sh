@@ -4,14 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
-if ! /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  if [ "$(id -u)" = 0 ]; then
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-matplotlib >/dev/null
-  else
-    echo "paper: needs python3-matplotlib (apt-get install python3-matplotlib)" >&2
-    exit 1
-  fi
-fi
+source scripts/require-matplotlib.sh
 cmake --build "$BUILD_DIR" --target paper_data -j2
 mkdir -p "$BUILD_DIR/paper"
 "$BUILD_DIR/examples/paper_data" "$BUILD_DIR/paper"

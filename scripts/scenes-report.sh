@@ -4,14 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
-if ! /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  if [ "$(id -u)" = 0 ]; then
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-matplotlib >/dev/null
-  else
-    echo "scenes-report: needs python3-matplotlib (apt-get install python3-matplotlib)" >&2
-    exit 1
-  fi
-fi
+source scripts/require-matplotlib.sh
 cmake --build "$BUILD_DIR" --target scene_bench -j2
 "$BUILD_DIR/bench/scene_bench" --benchmark_out="$BUILD_DIR/scene_bench.json" --benchmark_out_format=json
 /usr/bin/python3 scripts/scenes_report.py "$BUILD_DIR/scene_bench.json" docs

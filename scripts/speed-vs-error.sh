@@ -5,14 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
-if ! /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  if [ "$(id -u)" = 0 ]; then
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-matplotlib >/dev/null
-  else
-    echo "speed-vs-error: needs python3-matplotlib (apt-get install python3-matplotlib)" >&2
-    exit 1
-  fi
-fi
+source scripts/require-matplotlib.sh
 cmake --build "$BUILD_DIR" --target speed_vs_error -j2
 "$BUILD_DIR/bench/speed_vs_error" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
   --benchmark_min_time=0.2 --benchmark_out="$BUILD_DIR/speed_vs_error.json" --benchmark_out_format=json

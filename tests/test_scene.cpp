@@ -104,44 +104,17 @@ TEST(SceneFile, ErrorsNameTheKeyAndTheLine) {
   EXPECT_THROW(read_scene_file("/nonexistent/scene.toml"), Error);
 }
 
-// A scene, the points where it is checked and their 50-digit references (computed once).
-struct Checked {
-  std::string text;
-  std::vector<std::vector<double>> points;                 // per curve
-  std::map<std::tuple<int, int, double>, double> references;  // (curve, twice_order, s) -> ln X
-};
-
-std::string scene_text(double tolerance) {
-  char text[1024];
-  std::snprintf(text, sizeof text, R"(
-max_rel_error = %g
-[[curve]]
-name = "worn, near first contact"
-distribution = "weibull"
-shape = 1.73
-side = "bounded"
-quantities = ["load", "stiffness"]
-separation = [-0.5, -1e-4]
-[[curve]]
-name = "lubrication"
-distribution = "gaussian"
-quantities = ["F2", "F5/2"]
-separation = [-3.0, 4.0]
-[[curve]]
-name = "ground, by load"
-distribution = "weibull"
-shape = 2.7
-quantities = ["count", "area", "load"]
-load = [1e-8, 1e-2]
-)",
-                tolerance);
-  return text;
+// tables/scenes/tolerance-sweep.toml at a given tolerance for every curve.
+Scene sweep_scene(double tolerance) {
+  Scene scene = read_scene_file(std::string(ASPERITY_TEST_SCENES) + "/tolerance-sweep.toml");
+  for (SceneCurve& curve : scene.curves) curve.max_rel_error = tolerance;
+  return scene;
 }
 
 TEST(SceneTable, MeetsItsToleranceAgainstIndependentReferencesFrom1e4To1e12) {
   std::map<std::tuple<int, int, double>, double> references;
   for (double tolerance : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
-    const Scene scene = parse_scene(scene_text(tolerance), "scene");
+    const Scene scene = sweep_scene(tolerance);
     const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
     const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/scene.h5";
     tablegen::write_table_file(result.table, path);
@@ -185,7 +158,7 @@ TEST(SceneTable, MeetsItsToleranceAgainstIndependentReferencesFrom1e4To1e12) {
 }
 
 TEST(SceneTable, ServesOnlyItsOwnShapesAndOpensFromC) {
-  const Scene scene = parse_scene(scene_text(1e-8), "scene");
+  const Scene scene = sweep_scene(1e-8);
   const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
   const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/scene-exact.h5";
   tablegen::write_table_file(result.table, path);
@@ -241,7 +214,7 @@ separation = [0.5, 1.1]
 
 TEST(SceneFromDefaultTable, ServedWithTheTestedBoundOrRefused) {
   const Table table = Table::open(ASPERITY_TEST_TABLE);
-  const Scene scene = parse_scene(scene_text(1e-8), "scene");
+  const Scene scene = sweep_scene(1e-8);
   const std::vector<SceneCurveView> views = serve_scene(table, scene);
   for (const SceneCurveView& view : views) {
     EXPECT_LE(view.error_bound, 1e-9);
@@ -256,7 +229,7 @@ TEST(SceneFromDefaultTable, ServedWithTheTestedBoundOrRefused) {
                                                  .memory_bytes() * view.spec.twice_orders.size() / 6 + 4096);
   }
   // 1e-12 between grid shapes is more than the default table guarantees
-  EXPECT_THROW(serve_scene(table, parse_scene(scene_text(1e-12), "strict")), Error);
+  EXPECT_THROW(serve_scene(table, sweep_scene(1e-12)), Error);
 }
 
 }  // namespace
