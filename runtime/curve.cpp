@@ -123,14 +123,14 @@ inline bool inside_table(double separation, double table_end) noexcept {
 }  // namespace
 
 double Curve::log_value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order) || segment_count_ == 0) return not_a_number;
+  if (!has_order(twice_order)) return not_a_number;  // also a default Curve: it holds no order
   if (!inside_table(separation, table_max_separation_)) return log_value_outside(twice_order, separation);
   return detail::log_value_scalar<detail::LibraryMath>(segment_of(separation), order_coefficients(twice_order),
                                                        order_of(twice_order), separation);
 }
 
 double Curve::value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order) || segment_count_ == 0) return not_a_number;
+  if (!has_order(twice_order)) return not_a_number;  // also a default Curve: it holds no order
   if (!inside_table(separation, table_max_separation_)) return std::exp(log_value_outside(twice_order, separation));
   return std::exp(detail::log_value_scalar<detail::LibraryMath>(segment_of(separation), order_coefficients(twice_order),
                                                                 order_of(twice_order), separation));
@@ -176,7 +176,7 @@ void Curve::log_value_batch(int twice_order, const double* separations, double* 
 
 void Curve::batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
                   bool log_output) const noexcept {
-  if (!has_order(twice_order) || segment_count_ == 0) {
+  if (!has_order(twice_order)) {
     for (std::size_t i = 0; i < count; ++i) out[i] = not_a_number;
     return;
   }
