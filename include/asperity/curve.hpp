@@ -4,7 +4,7 @@
 // Complexity: a query is O(1): a scan of at most six segment bounds, one map to the
 // segment variable (a log, and an exp in the far tail and near s = 0), Horner's rule on the
 // interval's quintic (six coefficients, one cache line) and one exp. The batch functions do
-// the same arithmetic vectorized (runtime/kernel/). No allocation, no exception, no lock.
+// the same arithmetic vectorized (runtime/core/kernel/). No allocation, no exception, no lock.
 // Errors by value: NaN for a NaN or infinite separation or an order outside 0..5;
 // value 0 (log -inf) where the integral is exactly 0 (bounded side, s >= 0).
 #pragma once

@@ -11,7 +11,7 @@
 // log(NaN) = NaN.
 //
 // The functions are `static` on purpose: the batch kernel is compiled once per instruction
-// set (runtime/kernel/kernels_*.cpp), and internal linkage keeps each copy in its own translation
+// set (runtime/core/kernel/kernels_*.cpp), and internal linkage keeps each copy in its own translation
 // unit (an inline function with external linkage would be merged by the linker, and an
 // AVX-512 copy could then be called on a machine without AVX-512).
 #pragma once

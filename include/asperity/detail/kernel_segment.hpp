@@ -1,7 +1,7 @@
 // What the lookup kernel needs of one segment of a curve, flattened for the hot path: the
 // map from separation to the segment variable u (layout.hpp) as precomputed constants, and
 // where the segment's interval coefficients start. Plain data; the kernel that reads it is
-// runtime/kernel/curve_kernel.hpp.
+// runtime/core/kernel/curve_kernel.hpp.
 #pragma once
 
 namespace asperity::detail {
