@@ -1,15 +1,11 @@
-// Reading a table file. The whole file is read with plain reads (a FIFO, directory or device
-// is refused before a byte is read), its integrity header checked (table_file.hpp), and only
+// Reading a table file. The whole file is read with plain reads (regular_file.hpp: a FIFO,
+// directory or device is refused before a byte is read), its integrity header checked (table_file.hpp), and only
 // the checked bytes are given to HDF5, from memory. Then every object is checked before it is
 // read: each attribute scalar and of its type class, each dataset of its exact datatype and of
 // the dimensions the segment layout implies, every size bounded before anything is allocated.
 // Every failure is a TableFileError naming the file, with its status.
-#include <fcntl.h>
 #include <hdf5.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cstring>
 #include <mutex>
 #include <optional>
@@ -20,6 +16,7 @@
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
 #include "hdf5_handle.hpp"
+#include "regular_file.hpp"
 
 namespace asperity {
 namespace {
@@ -34,46 +31,6 @@ std::mutex& hdf5_mutex() {
 
 [[noreturn]] void fail(TableFileStatus status, const std::string& name, const std::string& what) {
   throw TableFileError(status, "table '" + name + "': " + what);
-}
-
-// Closes a POSIX file descriptor by scope.
-struct FileDescriptor {
-  int fd;
-  ~FileDescriptor() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
-std::vector<unsigned char> read_whole_file(const std::string& path) {
-  // O_NONBLOCK: opening a FIFO must not wait for a writer (it is refused just below).
-  FileDescriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
-  if (file.fd < 0) {
-    const int error = errno;
-    if (error == ENOENT || error == ENOTDIR) fail(TableFileStatus::missing, path, "no such file");
-    fail(TableFileStatus::unreadable, path, std::string("cannot be opened: ") + std::strerror(error));
-  }
-  struct stat status {};
-  if (::fstat(file.fd, &status) != 0)
-    fail(TableFileStatus::unreadable, path, std::string("cannot be examined: ") + std::strerror(errno));
-  if (S_ISDIR(status.st_mode)) fail(TableFileStatus::unreadable, path, "a directory, not a table file");
-  if (!S_ISREG(status.st_mode))
-    fail(TableFileStatus::unreadable, path, "not a regular file (a FIFO, device or socket), so not a table file");
-  const std::uint64_t size = static_cast<std::uint64_t>(status.st_size);
-  if (size > schema::max_file_bytes)
-    fail(TableFileStatus::invalid, path,
-         std::to_string(size) + " bytes, more than a table may have (" + std::to_string(schema::max_file_bytes) + ")");
-  std::vector<unsigned char> bytes(static_cast<std::size_t>(size) + 1);  // one more: to see a file that grew
-  std::size_t filled = 0;
-  while (filled < bytes.size()) {
-    const ssize_t count = ::read(file.fd, bytes.data() + filled, bytes.size() - filled);
-    if (count < 0 && errno == EINTR) continue;
-    if (count < 0) fail(TableFileStatus::unreadable, path, std::string("read error: ") + std::strerror(errno));
-    if (count == 0) break;
-    filled += static_cast<std::size_t>(count);
-  }
-  if (filled != size) fail(TableFileStatus::unreadable, path, "changed size while being read");
-  bytes.resize(filled);
-  return bytes;
 }
 
 // Reads one verified HDF5 file image; every method checks before it reads.
@@ -328,7 +285,15 @@ TableData read_table_bytes(const void* bytes, std::size_t size, const std::strin
 }
 
 TableData read_table_file(const std::string& path) {
-  const std::vector<unsigned char> bytes = read_whole_file(path);
+  std::string bytes;
+  try {
+    bytes = detail::read_regular_file(path, schema::max_file_bytes);
+  } catch (const detail::RegularFileError& error) {
+    const TableFileStatus status = error.failure() == detail::FileFailure::missing ? TableFileStatus::missing
+                                   : error.failure() == detail::FileFailure::too_large ? TableFileStatus::invalid
+                                                                                       : TableFileStatus::unreadable;
+    fail(status, path, error.what());
+  }
   return read_table_bytes(bytes.data(), bytes.size(), path);
 }
 
