@@ -8,6 +8,7 @@ import os
 import subprocess
 import sys
 import threading
+import time
 from pathlib import Path
 
 import numpy as np
@@ -115,6 +116,40 @@ def test_threads_share_one_curve(weibull2):
         thread.join()
     for result in results:
         assert np.array_equal(result, expected)
+
+
+def gil_pause_during(call):
+    """The longest pause of a Python loop in this thread while another thread runs call(), as a
+    fraction of the call's duration: 1 if the call holds the GIL throughout."""
+    timing = {}
+
+    def work():
+        begin = time.perf_counter()
+        call()
+        timing["call"] = (begin, time.perf_counter())
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-4)
+    stamps = []
+    try:
+        worker = threading.Thread(target=work)
+        worker.start()
+        while worker.is_alive():
+            stamps.append(time.perf_counter())
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    begin, end = timing["call"]
+    inside = [begin] + [t for t in stamps if begin < t < end] + [end]
+    return max(b - a for a, b in zip(inside, inside[1:])) / (end - begin)
+
+
+def test_large_arrays_release_the_gil(weibull2):
+    separations = np.linspace(-2.0, 20.0, 6_000_000)
+    assert gil_pause_during(lambda: weibull2.value(3, separations)) < 0.5
+    # the check itself tells a call holding the GIL (py::vectorize does) from one releasing it
+    shapes = np.full(3_000_000, 2.0)
+    assert gil_pause_during(lambda: asperity.weibull_mean(shapes)) > 0.9
 
 
 # ---- values against closed forms (docs/model.md section 5) ----
