@@ -126,7 +126,7 @@ def main():
         quad_error[name] = float(np.max(np.abs(theirs[keep] - ours[keep]) / ours[keep]))
 
     print(f"asperity {asperity.__version__}, Python {platform.python_version()}, numpy {np.__version__}; "
-          f"{cpu_name()}, {os.cpu_count()} cores, batch kernel {asperity.best_instruction_set()}; "
+          f"{cpu_name()}, {os.cpu_count()} cores, batch kernel {asperity.best_instruction_set().name}; "
           f"{options.rounds} rounds, medians, CPU time\n")
     print("| per element, 1e6 random separations | Weibull a = 2, X_3/2 | Gaussian F_5/2, h in [0, 4) |")
     print("|---|---:|---:|")

@@ -148,19 +148,16 @@ void bind(py::module_& m) {
   // ---- the vocabulary (asperity/model.hpp) ----
   py::enum_<Distribution>(m, "Distribution", "Summit height density: weibull (shape a) or gaussian.")
       .value("weibull", Distribution::weibull)
-      .value("gaussian", Distribution::gaussian)
-      .def("__str__", [](Distribution d) { return std::string(to_string(d)); });
+      .value("gaussian", Distribution::gaussian);
   py::enum_<Side>(m, "Side", "Side of approach: tail (the GW approach, unbounded upper tail) or bounded "
                              "(mirrored heights: worn, polished surfaces; Weibull only).")
       .value("tail", Side::tail)
-      .value("bounded", Side::bounded)
-      .def("__str__", [](Side s) { return std::string(to_string(s)); });
+      .value("bounded", Side::bounded);
   py::enum_<InstructionSet>(m, "InstructionSet", "The batch kernel's instruction set.")
       .value("automatic", InstructionSet::automatic)
       .value("generic", InstructionSet::generic)
       .value("avx2", InstructionSet::avx2)
-      .value("avx512", InstructionSet::avx512)
-      .def("__str__", [](InstructionSet isa) { return std::string(to_string(isa)); });
+      .value("avx512", InstructionSet::avx512);
   m.def("best_instruction_set", &best_instruction_set,
         "The widest instruction set this CPU has, which the batch path uses.");
 

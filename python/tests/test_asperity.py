@@ -154,6 +154,12 @@ def test_large_arrays_release_the_gil(weibull2):
 
 # ---- values against closed forms (docs/model.md section 5) ----
 
+def test_enums(weibull2):
+    assert weibull2.distribution == asperity.Distribution.weibull and weibull2.side.name == "tail"
+    assert asperity.Side.bounded.name == "bounded" and int(asperity.Distribution.gaussian) == 1
+    assert asperity.best_instruction_set() in asperity.InstructionSet.__members__.values()
+
+
 def test_weibull_closed_forms(weibull2, table):
     for s in (0.0, 0.3, 1.0, 2.5, 5.0):
         assert close(weibull2.value(0, s), math.exp(-s * s), 1e-12)                      # J_0 = exp(-s^a)
