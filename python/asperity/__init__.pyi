@@ -12,7 +12,7 @@ ORDER_COUNT: int
 ALL_ORDERS: int
 
 FloatArray = NDArray[np.float64]
-PathLike = Union[str, os.PathLike]
+PathLike = Union[str, bytes, os.PathLike]
 
 class Error(RuntimeError):
     """An error of the asperity library; its message is the library's."""

@@ -38,7 +38,7 @@ struct SideName {
   py::object object;  // 'tail', 'bounded' or an asperity.Side
 };
 struct PathName {
-  py::object object;  // str or os.PathLike
+  py::object object;  // str, bytes or os.PathLike
 };
 
 }  // namespace asperity::python
@@ -64,7 +64,7 @@ ASPERITY_PASS_THROUGH_CASTER(ContactStateRecord, "asperity.ContactState")
 ASPERITY_PASS_THROUGH_CASTER(PhysicalStateRecord, "asperity.PhysicalState")
 ASPERITY_PASS_THROUGH_CASTER(DistributionName, "str | asperity.Distribution")
 ASPERITY_PASS_THROUGH_CASTER(SideName, "str | asperity.Side")
-ASPERITY_PASS_THROUGH_CASTER(PathName, "str | os.PathLike")
+ASPERITY_PASS_THROUGH_CASTER(PathName, "str | bytes | os.PathLike")
 #undef ASPERITY_PASS_THROUGH_CASTER
 }  // namespace pybind11::detail
 

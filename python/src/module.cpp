@@ -59,7 +59,7 @@ Side to_side(const py::handle& value) {
 }
 
 std::string to_path(const py::handle& path) {
-  return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
+  return py::module_::import("os").attr("fsdecode")(path).cast<std::string>();  // str, bytes or PathLike
 }
 
 void check_order(int twice_order) {

@@ -213,8 +213,9 @@ def test_errors(table, weibull2, tmp_path):
     with pytest.raises(TypeError):
         weibull2.value(3, "near")
     missing = tmp_path / "missing.h5"
-    with pytest.raises(asperity.Error, match=str(missing)):
-        asperity.Table.open(missing)
+    for spelled in (missing, str(missing), os.fsencode(missing)):  # PathLike, str, bytes
+        with pytest.raises(asperity.Error, match=str(missing)):
+            asperity.Table.open(spelled)
     not_hdf5 = tmp_path / "not.h5"
     not_hdf5.write_bytes(b"not a table at all")
     with pytest.raises(asperity.Error, match="not.h5"):
