@@ -1,5 +1,5 @@
 // The paper's figures and claims from the engine (docs/paper.md, scripts/paper.sh): curves in
-// the paper's normalization (MODEL.md section 6) as CSV, and the quantitative claims as CSV.
+// the paper's normalization (docs/model.md section 6) as CSV, and the quantitative claims as CSV.
 //   build/examples/paper_data OUT_DIR
 //
 // Normalization: A/A0^g = sqrt(2 pi) X_1 / c_a, P/P0^g = sqrt(2 pi) X_3/2 / c_a^(3/2) (the

@@ -1,4 +1,4 @@
-// The generator's core: the derivative chain of MODEL.md section 4 integrated as an ODE in
+// The generator's core: the derivative chain of docs/model.md section 4 integrated as an ODE in
 // each segment's variable u with Boost.odeint (Runge-Kutta-Fehlberg 7(8), error-controlled),
 // always toward growing values (stable), for H = ln X - offset(u) of all six orders at once.
 #pragma once

@@ -1,6 +1,6 @@
 // Independent references for the tests: the asperity integrals by double-exponential
 // quadrature in 50-digit arithmetic (Boost.Multiprecision), straight from their definitions
-// (MODEL.md section 2) in the height variable z, not in the generator's scaled forms.
+// (docs/model.md section 2) in the height variable z, not in the generator's scaled forms.
 #pragma once
 #include <boost/math/quadrature/exp_sinh.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>

@@ -36,7 +36,7 @@ std::vector<double> tail_separations(const Curve& curve, std::mt19937_64& rng) {
   auto from_exponent = [&](double t) { return gaussian ? std::sqrt(2 * t) : std::pow(t, 1 / shape); };
   for (int i = 0; i < 8; ++i) points.push_back(from_exponent(std::exp(std::log(1e-3) + unit(rng) * std::log(2e5))));
   for (double t : {230.0, 400.0, 600.0, 690.0, 700.0, 759.0}) points.push_back(from_exponent(t));
-  // Beyond the table; the problem's own condition number there is about a t (MODEL.md), so
+  // Beyond the table; the problem's own condition number there is about a t (docs/model.md), so
   // the bound 1e-10 holds out to t ~ 1e5 and the error grows like a t eps past it.
   for (double t : {761.0, 800.0, 1500.0, 5000.0, 5e4}) points.push_back(from_exponent(t));
   if (gaussian) points.insert(points.end(), {-10, -9.5, -20, -2, 0.5, 1, 1.5, 5, 10, 20});
@@ -137,7 +137,7 @@ TEST(Accuracy, BetweenGridShapes) {
   print(report, "shapes between grid nodes");
 }
 
-// Closed forms of MODEL.md section 5, evaluated in 50 digits.
+// Closed forms of docs/model.md section 5, evaluated in 50 digits.
 TEST(Accuracy, ClosedForms) {
   using boost::multiprecision::exp;
   using boost::multiprecision::log;

@@ -58,7 +58,7 @@ TEST(Asymptotic, BoundedNearFirstContact) {
 }
 
 TEST(Asymptotic, StiffnessLoadRatioGrowsLikeThreeHalvesPlusShapeOverDistance) {
-  // MODEL.md: near first contact K_n ~ C d^(n+a), so (3/2) K_1/2 / K_3/2 -> (3/2 + a)/d.
+  // docs/model.md: near first contact K_n ~ C d^(n+a), so (3/2) K_1/2 / K_3/2 -> (3/2 + a)/d.
   for (double shape : {1.0, 2.0, 5.0}) {
     const double d = 1e-6, s = -d;
     const double ratio = 1.5 * std::exp(bounded_contact_log(bounded_contact_series(shape, 0.5), shape, 0.5, s) -

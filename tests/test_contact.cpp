@@ -1,4 +1,4 @@
-// Physical quantities (MODEL.md section 3) and the separation conventions (section 6).
+// Physical quantities (docs/model.md section 3) and the separation conventions (section 6).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -86,7 +86,7 @@ asperity_curve *asperity_curve_open(const asperity_table *table, const char *dis
 void asperity_curve_close(asperity_curve *curve);
 
 /* twice_order: 0 -> I0, 1 -> I1/2, 2 -> I1, 3 -> I3/2, 4 -> I2, 5 -> I5/2; sep in the origin
- * convention (MODEL.md). NaN on bad input (NULL curve, bad order, NaN or infinite sep). */
+ * convention (docs/model.md). NaN on bad input (NULL curve, bad order, NaN or infinite sep). */
 double asperity_eval(const asperity_curve *curve, int twice_order, double sep);
 /* ln of the value: finite wherever the value is positive, -inf where it is exactly 0. */
 double asperity_eval_log(const asperity_curve *curve, int twice_order, double sep);
@@ -98,7 +98,7 @@ int asperity_eval_batch(const asperity_curve *curve, int twice_order, const doub
 /* The same for asperity_eval_log. */
 int asperity_eval_log_batch(const asperity_curve *curve, int twice_order, const double *sep, double *out, size_t n);
 
-/* The physical quantities of MODEL.md section 3 in one call, for N summits of radius R, height
+/* The physical quantities of docs/model.md section 3 in one call, for N summits of radius R, height
  * scale sigma_s and plane-strain modulus E*. Returns a status code (NaNs on failure). */
 typedef struct asperity_contact_state {
   double count, area, load, stiffness, stiffness_ratio;

@@ -1,4 +1,4 @@
-// Series that answer beyond the tabulated range (MODEL.md section 5), and seed the generator.
+// Series that answer beyond the tabulated range (docs/model.md section 5), and seed the generator.
 //
 //   Weibull far tail   ln J_n = -t + n ln(t^(1/a-1)/a) + ln Gamma(n+1) + ln sum_k e_k t^-k
 //                      (Watson's lemma to all orders; t = s^a)

@@ -1,4 +1,4 @@
-// Physical quantities of MODEL.md section 3 from a resolved curve, and the two separation
+// Physical quantities of docs/model.md section 3 from a resolved curve, and the two separation
 // conventions of section 6. contact_at and ContactModel (contact_model.hpp) compute through the
 // one function here, contact_state_from_logs.
 #pragma once

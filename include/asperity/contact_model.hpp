@@ -3,7 +3,7 @@
 // that carries a load, a pressure or a real area. The inverses are tabulated once, when the
 // model is made (asperity/inverse.hpp): a query is a table step and one Newton step.
 //
-// Separations are physical lengths [m] in the origin convention of MODEL.md: d = sigma_s * s,
+// Separations are physical lengths [m] in the origin convention of docs/model.md: d = sigma_s * s,
 // from the Weibull origin (the lowest summit on the tail side, the highest on the bounded
 // side) or the Gaussian's mean summit height. `mean_separation` gives the same point measured
 // from the mean summit height, the convention of GW and McCool.

@@ -58,7 +58,7 @@ class Curve {
         const double* knot_data, const ShapeBlend& blend, unsigned order_mask = all_orders,
         const CurveOptions& options = {});
 
-  // ln X_n(s), twice_order = 2n in 0..5, s in the origin convention of MODEL.md.
+  // ln X_n(s), twice_order = 2n in 0..5, s in the origin convention of docs/model.md.
   double log_value(int twice_order, double separation) const noexcept;
   // X_n(s); underflows to 0 below ~1e-308 (use log_value there).
   double value(int twice_order, double separation) const noexcept;

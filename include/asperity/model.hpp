@@ -1,4 +1,4 @@
-// The vocabulary of the model (MODEL.md sections 1-2): which density, which side of
+// The vocabulary of the model (docs/model.md sections 1-2): which density, which side of
 // approach, which order. Orders are carried as twice_order (0..5) so they stay integers.
 #pragma once
 #include <string_view>
@@ -42,7 +42,7 @@ double weibull_log_density(double shape, double height);
 double gaussian_log_density(double height);
 // Raw moments of the unit Weibull density, E z^p = Gamma(1 + p/a).
 double weibull_moment(double shape, double power);
-// Mean and rms about the mean of the unit Weibull density (MODEL.md section 1).
+// Mean and rms about the mean of the unit Weibull density (docs/model.md section 1).
 double weibull_mean(double shape);
 double weibull_rms(double shape);
 

@@ -1,4 +1,4 @@
-// Persson's (2007) law for comparison (MODEL.md section 6): the nominal pressure falls
+// Persson's (2007) law for comparison (docs/model.md section 6): the nominal pressure falls
 // exponentially with the separation, p = p_ref exp(-s / beta), s in units of the rms roughness,
 // beta about 0.5 to 1; its stiffness/load ratio is the constant 1/beta.
 #pragma once

@@ -1,4 +1,4 @@
-// A physical rough surface (MODEL.md sections 1, 3 and 6), in SI units: what the contact of a
+// A physical rough surface (docs/model.md sections 1, 3 and 6), in SI units: what the contact of a
 // flat against it depends on. Either Weibull summit heights of shape a and scale sigma_s, or
 // Gaussian summit heights (rms sigma), possibly from the profile's spectral moments through
 // Nayak and McCool.

@@ -56,9 +56,15 @@ class Table {
  public:
   explicit Table(TableData data);
   static Table open(const std::string& path);
-  // ASPERITY_TABLE from the environment if set, else the shipped default table.
+  // The default table: $ASPERITY_TABLE if set, else the table installed with the library
+  // (share/asperity/asperity-default.h5 beside its lib/ or bin/, wherever the installed tree
+  // is), else the build tree's (runtime/table/default_table.cpp).
   static Table open_default();
+  // The first of default_search_paths() that is a file; throws Error naming every place
+  // looked at when none is.
   static std::string default_path();
+  // Where default_path() looks, in order ($ASPERITY_TABLE alone when it is set).
+  static std::vector<std::string> default_search_paths();
 
   const TableData& data() const noexcept { return data_; }
   const CurveSet* find(Distribution distribution, Side side) const noexcept;

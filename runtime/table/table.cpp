@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <algorithm>
-#include <cstdlib>
 #include <sstream>
 
 #include "asperity/error.hpp"
@@ -85,13 +84,6 @@ Table::Table(TableData data) : data_(std::move(data)) {
 }
 
 Table Table::open(const std::string& path) { return Table(read_table_file(path)); }
-
-std::string Table::default_path() {
-  if (const char* path = std::getenv("ASPERITY_TABLE"); path && *path) return path;
-  return ASPERITY_DEFAULT_TABLE;
-}
-
-Table Table::open_default() { return open(default_path()); }
 
 const CurveSet* Table::find(Distribution distribution, Side side) const noexcept {
   for (const CurveSet& set : data_.sets)

@@ -1,0 +1,225 @@
+! The asperity C API (asperity/asperity.h) for Fortran 2003 and later: `use asperity`.
+!
+! Interfaces (iso_c_binding), the C structs as interoperable types, the status codes as
+! parameters. The module holds no code, so its compiled asperity.mod (installed beside the
+! headers) is all a program needs besides the library:
+!
+!   gfortran prog.f90 $(pkg-config --cflags --libs asperity)
+!
+! (another compiler: compile this file first). Strings passed in (paths, distribution and side
+! names) end with c_null_char; an error buffer is a character(kind=c_char, len=N) variable
+! passed with its length, and holds a NUL-terminated message on failure:
+!
+!   character(kind=c_char, len=512) :: err
+!   table = asperity_table_open(c_null_ptr, err, int(len(err), c_size_t))   ! the default table
+!   curve = asperity_curve_open(table, "weibull"//c_null_char, "bounded"//c_null_char, &
+!                               1.73_c_double, err, int(len(err), c_size_t))
+!   if (.not. c_associated(curve)) print *, err(1:index(err, c_null_char) - 1)
+!   load = asperity_eval(curve, 3_c_int, -0.4_c_double)                    ! X_3/2(-0.4)
+!
+! A path other than the default: pass c_loc of a NUL-terminated character variable with the
+! target attribute, e.g. path = "file.h5"//c_null_char; table = asperity_table_open(c_loc(path), ...).
+! twice_order: 0 -> X_0, 1 -> X_1/2, 2 -> X_1, 3 -> X_3/2, 4 -> X_2, 5 -> X_5/2.
+! Separations follow docs/model.md (origin convention); physical quantities are in SI units.
+module asperity
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_null_ptr, c_char, c_null_char, c_int, c_double, &
+                                         c_size_t, c_associated, c_loc, c_f_pointer
+  implicit none
+  private
+  public :: c_ptr, c_null_ptr, c_char, c_null_char, c_int, c_double, c_size_t, c_associated, c_loc, c_f_pointer
+
+  ! Status codes (asperity_eval_batch, asperity_contact, asperity_model_at_*).
+  integer(c_int), parameter, public :: ASPERITY_OK = 0
+  integer(c_int), parameter, public :: ASPERITY_BAD_HANDLE = 1      ! NULL curve or output
+  integer(c_int), parameter, public :: ASPERITY_BAD_ORDER = 2       ! twice_order outside 0..5
+  integer(c_int), parameter, public :: ASPERITY_BAD_SEPARATION = 3  ! NaN or infinite: those outputs NaN
+  integer(c_int), parameter, public :: ASPERITY_BAD_PARAMETER = 4   ! a physical parameter <= 0 or not finite
+
+  ! asperity_contact: N summits of radius R, height scale sigma_s, modulus E* (docs/model.md section 3)
+  type, bind(c), public :: asperity_contact_state
+    real(c_double) :: count, area, load, stiffness, stiffness_ratio
+  end type
+
+  ! asperity_model_at_*: a physical surface against a flat, SI units
+  type, bind(c), public :: asperity_physical_state
+    real(c_double) :: separation           ! m, origin convention
+    real(c_double) :: mean_separation      ! m, from the mean summit height
+    real(c_double) :: count                ! summits in contact
+    real(c_double) :: real_area            ! m^2
+    real(c_double) :: area_fraction        ! A / A0
+    real(c_double) :: load                 ! N
+    real(c_double) :: pressure             ! Pa, load / A0
+    real(c_double) :: stiffness            ! N/m
+    real(c_double) :: stiffness_over_load  ! 1/m
+  end type
+
+  public :: asperity_table_open, asperity_table_close, asperity_curve_open, asperity_curve_close
+  public :: asperity_eval, asperity_eval_log, asperity_eval_batch, asperity_eval_log_batch
+  public :: asperity_contact, asperity_standardized_from_origin, asperity_origin_from_standardized
+  public :: asperity_version, asperity_status_string, asperity_contact_modulus
+  public :: asperity_model_open, asperity_model_close, asperity_model_at_separation, asperity_model_at_load
+  public :: asperity_model_at_pressure, asperity_model_at_real_area
+
+  interface
+    ! path: c_null_ptr for the default table ($ASPERITY_TABLE if set). c_null_ptr on failure.
+    function asperity_table_open(path, err, err_size) bind(c, name="asperity_table_open")
+      import :: c_ptr, c_char, c_size_t
+      type(c_ptr), value :: path
+      character(kind=c_char), dimension(*) :: err
+      integer(c_size_t), value :: err_size
+      type(c_ptr) :: asperity_table_open
+    end function
+
+    subroutine asperity_table_close(table) bind(c, name="asperity_table_close")
+      import :: c_ptr
+      type(c_ptr), value :: table
+    end subroutine
+
+    ! dist: "weibull" or "gaussian"; side: "tail" or "bounded"; shape ignored for the Gaussian.
+    function asperity_curve_open(table, dist, side, shape, err, err_size) bind(c, name="asperity_curve_open")
+      import :: c_ptr, c_char, c_double, c_size_t
+      type(c_ptr), value :: table
+      character(kind=c_char), dimension(*) :: dist, side, err
+      real(c_double), value :: shape
+      integer(c_size_t), value :: err_size
+      type(c_ptr) :: asperity_curve_open
+    end function
+
+    subroutine asperity_curve_close(curve) bind(c, name="asperity_curve_close")
+      import :: c_ptr
+      type(c_ptr), value :: curve
+    end subroutine
+
+    ! X_n(sep); NaN on bad input. Pure: no side effect, so usable in pure procedures.
+    pure function asperity_eval(curve, twice_order, sep) bind(c, name="asperity_eval")
+      import :: c_ptr, c_int, c_double
+      type(c_ptr), value, intent(in) :: curve
+      integer(c_int), value, intent(in) :: twice_order
+      real(c_double), value, intent(in) :: sep
+      real(c_double) :: asperity_eval
+    end function
+
+    ! ln X_n(sep): finite wherever X_n > 0, -inf where it is exactly 0.
+    pure function asperity_eval_log(curve, twice_order, sep) bind(c, name="asperity_eval_log")
+      import :: c_ptr, c_int, c_double
+      type(c_ptr), value, intent(in) :: curve
+      integer(c_int), value, intent(in) :: twice_order
+      real(c_double), value, intent(in) :: sep
+      real(c_double) :: asperity_eval_log
+    end function
+
+    ! out(i) = asperity_eval(curve, twice_order, sep(i)), i = 1..n, vectorized. Returns a status.
+    function asperity_eval_batch(curve, twice_order, sep, out, n) bind(c, name="asperity_eval_batch")
+      import :: c_ptr, c_int, c_double, c_size_t
+      type(c_ptr), value :: curve
+      integer(c_int), value :: twice_order
+      real(c_double), dimension(*), intent(in) :: sep
+      real(c_double), dimension(*), intent(out) :: out
+      integer(c_size_t), value :: n
+      integer(c_int) :: asperity_eval_batch
+    end function
+
+    function asperity_eval_log_batch(curve, twice_order, sep, out, n) bind(c, name="asperity_eval_log_batch")
+      import :: c_ptr, c_int, c_double, c_size_t
+      type(c_ptr), value :: curve
+      integer(c_int), value :: twice_order
+      real(c_double), dimension(*), intent(in) :: sep
+      real(c_double), dimension(*), intent(out) :: out
+      integer(c_size_t), value :: n
+      integer(c_int) :: asperity_eval_log_batch
+    end function
+
+    function asperity_contact(curve, summit_count, summit_radius, height_scale, contact_modulus, sep, out) &
+        bind(c, name="asperity_contact")
+      import :: c_ptr, c_int, c_double, asperity_contact_state
+      type(c_ptr), value :: curve
+      real(c_double), value :: summit_count, summit_radius, height_scale, contact_modulus, sep
+      type(asperity_contact_state), intent(out) :: out
+      integer(c_int) :: asperity_contact
+    end function
+
+    ! standardized = (sep - mean)/rms, from the mean summit height
+    pure function asperity_standardized_from_origin(curve, sep) bind(c, name="asperity_standardized_from_origin")
+      import :: c_ptr, c_double
+      type(c_ptr), value, intent(in) :: curve
+      real(c_double), value, intent(in) :: sep
+      real(c_double) :: asperity_standardized_from_origin
+    end function
+
+    pure function asperity_origin_from_standardized(curve, standardized) bind(c, name="asperity_origin_from_standardized")
+      import :: c_ptr, c_double
+      type(c_ptr), value, intent(in) :: curve
+      real(c_double), value, intent(in) :: standardized
+      real(c_double) :: asperity_origin_from_standardized
+    end function
+
+    ! A NUL-terminated C string in static storage (read it with c_f_pointer; examples/fortran_example.f90).
+    function asperity_version() bind(c, name="asperity_version")
+      import :: c_ptr
+      type(c_ptr) :: asperity_version
+    end function
+
+    function asperity_status_string(status) bind(c, name="asperity_status_string")
+      import :: c_ptr, c_int
+      integer(c_int), value :: status
+      type(c_ptr) :: asperity_status_string
+    end function
+
+    ! 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; NaN for E <= 0 or nu outside (-1, 0.5].
+    pure function asperity_contact_modulus(young1, poisson1, young2, poisson2) bind(c, name="asperity_contact_modulus")
+      import :: c_double
+      real(c_double), value, intent(in) :: young1, poisson1, young2, poisson2
+      real(c_double) :: asperity_contact_modulus
+    end function
+
+    ! A physical surface (SI units): dist "weibull" (shape 0.3..50, side "tail" or "bounded") or
+    ! "gaussian" (side "tail"). c_null_ptr and a message in err for a bad parameter.
+    function asperity_model_open(table, dist, side, shape, height_scale, summit_radius, summit_density, &
+                                 nominal_area, contact_modulus, err, err_size) bind(c, name="asperity_model_open")
+      import :: c_ptr, c_char, c_double, c_size_t
+      type(c_ptr), value :: table
+      character(kind=c_char), dimension(*) :: dist, side, err
+      real(c_double), value :: shape, height_scale, summit_radius, summit_density, nominal_area, contact_modulus
+      integer(c_size_t), value :: err_size
+      type(c_ptr) :: asperity_model_open
+    end function
+
+    subroutine asperity_model_close(model) bind(c, name="asperity_model_close")
+      import :: c_ptr
+      type(c_ptr), value :: model
+    end subroutine
+
+    function asperity_model_at_separation(model, separation, out) bind(c, name="asperity_model_at_separation")
+      import :: c_ptr, c_int, c_double, asperity_physical_state
+      type(c_ptr), value :: model
+      real(c_double), value :: separation
+      type(asperity_physical_state), intent(out) :: out
+      integer(c_int) :: asperity_model_at_separation
+    end function
+
+    function asperity_model_at_load(model, load, out) bind(c, name="asperity_model_at_load")
+      import :: c_ptr, c_int, c_double, asperity_physical_state
+      type(c_ptr), value :: model
+      real(c_double), value :: load
+      type(asperity_physical_state), intent(out) :: out
+      integer(c_int) :: asperity_model_at_load
+    end function
+
+    function asperity_model_at_pressure(model, pressure, out) bind(c, name="asperity_model_at_pressure")
+      import :: c_ptr, c_int, c_double, asperity_physical_state
+      type(c_ptr), value :: model
+      real(c_double), value :: pressure
+      type(asperity_physical_state), intent(out) :: out
+      integer(c_int) :: asperity_model_at_pressure
+    end function
+
+    function asperity_model_at_real_area(model, real_area, out) bind(c, name="asperity_model_at_real_area")
+      import :: c_ptr, c_int, c_double, asperity_physical_state
+      type(c_ptr), value :: model
+      real(c_double), value :: real_area
+      type(asperity_physical_state), intent(out) :: out
+      integer(c_int) :: asperity_model_at_real_area
+    end function
+  end interface
+
+end module asperity

@@ -1,0 +1,65 @@
+"""asperity: Greenwood-Williamson asperity integrals from precomputed tables.
+
+The integrals X_n(s) -- J_n on the tail side, K_n on the bounded side, the Greenwood-Tripp F_n
+for the Gaussian -- for n = twice_order/2 in 0, 1/2, 1, 3/2, 2, 5/2, served in nanoseconds to
+about 1e-12, and the physical contact built on them (docs/model.md has the conventions).
+
+    import asperity, numpy as np
+    table = asperity.Table.open_default()            # or asperity.Table.open("file.h5")
+    curve = table.curve("weibull", "bounded", 1.73)  # distribution, side, shape
+    load = curve.value(3, np.linspace(-1.0, -0.01, 100))   # X_3/2: an ndarray
+
+Arrays of any shape go through the library's vectorized batch path (no Python loop; the GIL
+is released for large arrays); numbers give floats. Errors raise asperity.Error with the
+library's message. The names mirror the C++ API (include/asperity/*.hpp).
+"""
+from ._asperity import (  # noqa: F401
+    ALL_ORDERS,
+    ORDER_COUNT,
+    ContactModel,
+    ContactState,
+    Curve,
+    CurveSet,
+    Distribution,
+    Error,
+    InstructionSet,
+    InverseCurve,
+    PerssonLaw,
+    PhysicalState,
+    PhysicalSurface,
+    Scene,
+    SceneCurve,
+    SceneCurveView,
+    Side,
+    Surface,
+    Table,
+    __version__,
+    bandwidth_alpha,
+    best_instruction_set,
+    contact_at,
+    contact_modulus_from,
+    gaussian_log_density,
+    gaussian_surface_from_moments,
+    order_of,
+    origin_from_standardized,
+    parse_scene,
+    quantity_twice_order,
+    read_scene_file,
+    separation_at_load,
+    serve_scene,
+    standardized_from_origin,
+    weibull_log_density,
+    weibull_mean,
+    weibull_moment,
+    weibull_rms,
+)
+
+__all__ = [
+    "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveSet", "Distribution", "Error",
+    "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState", "PhysicalSurface", "Scene", "SceneCurve",
+    "SceneCurveView", "Side", "Surface", "Table", "bandwidth_alpha", "best_instruction_set", "contact_at",
+    "contact_modulus_from", "gaussian_log_density", "gaussian_surface_from_moments", "order_of",
+    "origin_from_standardized", "parse_scene", "quantity_twice_order", "read_scene_file", "separation_at_load",
+    "serve_scene", "standardized_from_origin", "weibull_log_density", "weibull_mean", "weibull_moment", "weibull_rms",
+]
+

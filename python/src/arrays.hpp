@@ -1,0 +1,161 @@
+// numpy arrays in and out of the library: any shape, any real dtype (converted to float64 once,
+// without copying when it already is contiguous float64), the result shaped like the input; a
+// Python number in gives a Python float out. The work runs without the GIL for large arrays,
+// so other Python threads go on meanwhile.
+#pragma once
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace asperity::python {
+
+namespace py = pybind11;
+
+// Python objects passed through as they are, named in the signatures help() shows (the type
+// casters below): a number or an array of numbers in, a float or an array out, a record out.
+struct ArrayLike {
+  py::object object;
+};
+struct OptionalOut {
+  py::object object;  // None or the array to write into
+};
+struct FloatOrArray {
+  py::object object;
+};
+struct ContactStateRecord {
+  py::object object;
+};
+struct PhysicalStateRecord {
+  py::object object;
+};
+struct DistributionName {
+  py::object object;  // 'weibull', 'gaussian' or an asperity.Distribution
+};
+struct SideName {
+  py::object object;  // 'tail', 'bounded' or an asperity.Side
+};
+struct PathName {
+  py::object object;  // str, bytes or os.PathLike
+};
+
+}  // namespace asperity::python
+
+namespace pybind11::detail {
+#define ASPERITY_PASS_THROUGH_CASTER(Type, Name)                                                              \
+  template <>                                                                                                \
+  struct type_caster<asperity::python::Type> {                                                               \
+    PYBIND11_TYPE_CASTER(asperity::python::Type, const_name(Name));                                          \
+    bool load(handle source, bool) {                                                                         \
+      if (!source) return false;                                                                             \
+      value.object = reinterpret_borrow<object>(source);                                                     \
+      return true;                                                                                           \
+    }                                                                                                        \
+    static handle cast(const asperity::python::Type& source, return_value_policy, handle) {                  \
+      return source.object.inc_ref();                                                                        \
+    }                                                                                                        \
+  };
+ASPERITY_PASS_THROUGH_CASTER(ArrayLike, "float | numpy.typing.ArrayLike")
+ASPERITY_PASS_THROUGH_CASTER(OptionalOut, "numpy.ndarray[numpy.float64] | None")
+ASPERITY_PASS_THROUGH_CASTER(FloatOrArray, "float | numpy.ndarray[numpy.float64]")
+ASPERITY_PASS_THROUGH_CASTER(ContactStateRecord, "asperity.ContactState")
+ASPERITY_PASS_THROUGH_CASTER(PhysicalStateRecord, "asperity.PhysicalState")
+ASPERITY_PASS_THROUGH_CASTER(DistributionName, "str | asperity.Distribution")
+ASPERITY_PASS_THROUGH_CASTER(SideName, "str | asperity.Side")
+ASPERITY_PASS_THROUGH_CASTER(PathName, "str | bytes | os.PathLike")
+#undef ASPERITY_PASS_THROUGH_CASTER
+}  // namespace pybind11::detail
+
+namespace asperity::python {
+
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Below this many elements the GIL is kept: releasing and taking it back costs more than the work.
+inline constexpr std::size_t release_gil_from = 2048;
+
+// The argument as a C-contiguous float64 array (a copy only if needed); TypeError if it is not
+// a number or an array of numbers.
+inline DoubleArray as_double_array(py::handle input, const char* name) {
+  DoubleArray array = DoubleArray::ensure(input);
+  if (!array) throw py::type_error(std::string(name) + " must be a number or an array of numbers");
+  return array;
+}
+
+// A plain number, not an ndarray (a Python float or int, a numpy scalar): the answer is a float.
+inline bool is_scalar(py::handle input, const DoubleArray& array) {
+  return array.ndim() == 0 && !py::isinstance<py::array>(input);
+}
+
+inline std::vector<py::ssize_t> shape_of(const DoubleArray& array) {
+  return std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim());
+}
+
+// out[i] = f(in[i]) for a whole array through one call `batch(in, out, n)`, or `scalar(x)` for one
+// number; `out`, if given, must be a writeable C-contiguous float64 array of the input's size and
+// receives the result.
+template <class Batch, class Scalar>
+FloatOrArray map_batch(py::handle input, const char* name, py::object out, Batch batch, Scalar scalar) {
+  if (out.is_none() && (PyFloat_Check(input.ptr()) || (PyLong_Check(input.ptr()) && !PyBool_Check(input.ptr())))) {
+    // One number (a float, an int, numpy.float64): no array made, a float back.
+    const double x = PyFloat_AsDouble(input.ptr());
+    if (x == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    return {py::float_(scalar(x))};
+  }
+  const DoubleArray in = as_double_array(input, name);
+  const std::size_t n = static_cast<std::size_t>(in.size());
+  py::array_t<double> result;
+  if (out.is_none()) {
+    result = py::array_t<double>(shape_of(in));
+  } else {
+    if (!py::isinstance<py::array_t<double>>(out)) throw py::type_error("out must be a float64 numpy array");
+    result = py::reinterpret_borrow<py::array_t<double>>(out);
+    if (!(result.flags() & py::array::c_style) || !result.writeable())
+      throw py::value_error("out must be C-contiguous and writeable");
+    if (static_cast<std::size_t>(result.size()) != n)
+      throw py::value_error("out has " + std::to_string(result.size()) + " elements, the input " + std::to_string(n));
+  }
+  const double* source = in.data();
+  double* target = result.mutable_data();
+  if (n >= release_gil_from) {
+    py::gil_scoped_release unlocked;
+    batch(source, target, n);
+  } else {
+    batch(source, target, n);
+  }
+  if (out.is_none() && is_scalar(input, in)) return {py::float_(target[0])};
+  return {std::move(result)};
+}
+
+// Several outputs per element (a record of arrays): `each(in[i], i)` writes element i of every
+// output. Returns the arrays, shaped like the input (floats for a number).
+template <std::size_t Fields, class Each>
+std::vector<py::object> map_records(py::handle input, const char* name, Each each) {
+  const DoubleArray in = as_double_array(input, name);
+  const std::size_t n = static_cast<std::size_t>(in.size());
+  std::vector<py::array_t<double>> arrays;
+  double* fields[Fields];
+  arrays.reserve(Fields);
+  for (std::size_t k = 0; k < Fields; ++k) {
+    arrays.emplace_back(shape_of(in));
+    fields[k] = arrays.back().mutable_data();
+  }
+  const double* source = in.data();
+  auto run = [&] {
+    for (std::size_t i = 0; i < n; ++i) each(source[i], fields, i);
+  };
+  if (n >= release_gil_from) {
+    py::gil_scoped_release unlocked;
+    run();
+  } else {
+    run();
+  }
+  std::vector<py::object> result;
+  const bool scalar = is_scalar(input, in);
+  for (std::size_t k = 0; k < Fields; ++k)
+    result.push_back(scalar ? py::object(py::float_(fields[k][0])) : py::object(arrays[k]));
+  return result;
+}
+
+}  // namespace asperity::python

@@ -1,0 +1,503 @@
+// The Python module asperity._asperity (imported by python/asperity/__init__.py): a thin
+// binding of the C++ API with the same names. Arrays go through the vectorized batch path
+// (arrays.hpp); asperity::Error becomes asperity.Error with the library's message.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "asperity/contact.hpp"
+#include "asperity/contact_model.hpp"
+#include "asperity/error.hpp"
+#include "asperity/instruction_set.hpp"
+#include "asperity/inverse.hpp"
+#include "asperity/model.hpp"
+#include "asperity/persson.hpp"
+#include "asperity/scene.hpp"
+#include "asperity/scene_curves.hpp"
+#include "asperity/surface.hpp"
+#include "asperity/table.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace asperity::python {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// The record types (collections.namedtuple, made once at import): fields are floats for a
+// number in, arrays for an array in.
+py::handle contact_state_type, physical_state_type;
+
+Distribution to_distribution(const py::handle& value) {
+  if (py::isinstance<Distribution>(value)) return value.cast<Distribution>();
+  if (py::isinstance<py::str>(value)) {
+    const std::string name = value.cast<std::string>();
+    Distribution out;
+    if (parse_distribution(name, out)) return out;
+    throw py::value_error("unknown distribution '" + name + "': expected 'weibull' or 'gaussian'");
+  }
+  throw py::type_error("distribution must be 'weibull', 'gaussian' or an asperity.Distribution");
+}
+
+Side to_side(const py::handle& value) {
+  if (py::isinstance<Side>(value)) return value.cast<Side>();
+  if (py::isinstance<py::str>(value)) {
+    const std::string name = value.cast<std::string>();
+    Side out;
+    if (parse_side(name, out)) return out;
+    throw py::value_error("unknown side '" + name + "': expected 'tail' or 'bounded'");
+  }
+  throw py::type_error("side must be 'tail', 'bounded' or an asperity.Side");
+}
+
+std::string to_path(const py::handle& path) {
+  return py::module_::import("os").attr("fsdecode")(path).cast<std::string>();  // str, bytes or PathLike
+}
+
+void check_order(int twice_order) {
+  if (twice_order < 0 || twice_order >= order_count)
+    throw py::value_error("twice_order " + std::to_string(twice_order) + " is outside 0..5");
+}
+
+py::array_t<double> to_array(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::object make_record(py::handle type, const std::vector<py::object>& fields) {
+  py::tuple arguments(fields.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) arguments[i] = fields[i];
+  return type(*arguments);
+}
+
+template <class Answer>
+PhysicalStateRecord physical_states(py::handle input, const char* name, Answer answer) {
+  return {make_record(physical_state_type, map_records<9>(input, name, [&](double x, double** out, std::size_t i) {
+    const PhysicalState state = answer(x);
+    out[0][i] = state.separation;
+    out[1][i] = state.mean_separation;
+    out[2][i] = state.count;
+    out[3][i] = state.real_area;
+    out[4][i] = state.area_fraction;
+    out[5][i] = state.load;
+    out[6][i] = state.pressure;
+    out[7][i] = state.stiffness;
+    out[8][i] = state.stiffness_over_load;
+  }))};
+}
+
+template <class Function>
+FloatOrArray map_scalar(py::handle input, const char* name, Function function) {
+  return map_batch(
+      input, name, py::none(),
+      [&](const double* in, double* out, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = function(in[i]);
+      },
+      function);
+}
+
+std::string describe(const Curve& curve) {
+  std::string text = std::string("<asperity.Curve ") + to_string(curve.distribution()) + " " + to_string(curve.side());
+  if (curve.distribution() == Distribution::weibull) text += " shape=" + py::repr(py::float_(curve.shape())).cast<std::string>();
+  return text + ">";
+}
+
+}  // namespace
+
+void bind(py::module_& m) {
+  m.doc() = "asperity: Greenwood-Williamson asperity integrals from precomputed tables (the C++ library's binding).";
+  m.attr("__version__") = ASPERITY_VERSION_STRING;
+  m.attr("ORDER_COUNT") = order_count;
+  m.attr("ALL_ORDERS") = Curve::all_orders;
+
+  py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  m.attr("Error").attr("__doc__") =
+      "An error of the asperity library (a missing or bad table or scene, a shape outside the table, a bad "
+      "physical parameter); its message is the library's.";
+
+  auto collections = py::module_::import("collections");
+  py::object contact_state = collections.attr("namedtuple")(
+      "ContactState", py::make_tuple("count", "area", "load", "stiffness", "stiffness_ratio"), "module"_a = "asperity");
+  contact_state.attr("__doc__") =
+      "contact_at's answer (floats, or arrays shaped like the separations): count N X_0, area pi N R sigma_s X_1, "
+      "load (4/3) N E* R^1/2 sigma_s^3/2 X_3/2, stiffness 2 N E* R^1/2 sigma_s^1/2 X_1/2 and the stiffness/load "
+      "ratio (3/2) X_1/2 / X_3/2 (in separation units).";
+  m.attr("ContactState") = contact_state;
+  contact_state_type = contact_state.release();
+  py::object physical_state = collections.attr("namedtuple")(
+      "PhysicalState",
+      py::make_tuple("separation", "mean_separation", "count", "real_area", "area_fraction", "load", "pressure",
+                     "stiffness", "stiffness_over_load"),
+      "module"_a = "asperity");
+  physical_state.attr("__doc__") =
+      "ContactModel's answer (floats, or arrays shaped like the input), SI units: separation [m] (origin "
+      "convention), mean_separation [m] (from the mean summit height), count, real_area [m^2], area_fraction "
+      "(A/A0), load [N], pressure [Pa] (load/A0), stiffness [N/m], stiffness_over_load [1/m].";
+  m.attr("PhysicalState") = physical_state;
+  physical_state_type = physical_state.release();
+
+  // ---- the vocabulary (asperity/model.hpp) ----
+  py::enum_<Distribution>(m, "Distribution", "Summit height density: weibull (shape a) or gaussian.")
+      .value("weibull", Distribution::weibull)
+      .value("gaussian", Distribution::gaussian);
+  py::enum_<Side>(m, "Side", "Side of approach: tail (the GW approach, unbounded upper tail) or bounded "
+                             "(mirrored heights: worn, polished surfaces; Weibull only).")
+      .value("tail", Side::tail)
+      .value("bounded", Side::bounded);
+  py::enum_<InstructionSet>(m, "InstructionSet", "The batch kernel's instruction set.")
+      .value("automatic", InstructionSet::automatic)
+      .value("generic", InstructionSet::generic)
+      .value("avx2", InstructionSet::avx2)
+      .value("avx512", InstructionSet::avx512);
+  m.def("best_instruction_set", &best_instruction_set,
+        "The widest instruction set this CPU has, which the batch path uses.");
+
+  m.def("order_of", &order_of, "twice_order"_a, "The order n = twice_order / 2.");
+  m.def("weibull_mean", py::vectorize(&weibull_mean), "shape"_a,
+        "Mean of the unit Weibull density, mu_a = Gamma(1 + 1/a).");
+  m.def("weibull_rms", py::vectorize(&weibull_rms), "shape"_a,
+        "Rms about the mean of the unit Weibull density, c_a = sqrt(Gamma(1 + 2/a) - Gamma(1 + 1/a)^2).");
+  m.def("weibull_moment", py::vectorize(&weibull_moment), "shape"_a, "power"_a,
+        "Raw moment of the unit Weibull density, E z^p = Gamma(1 + p/a).");
+  m.def("weibull_log_density", py::vectorize(&weibull_log_density), "shape"_a, "height"_a,
+        "ln phi_a(z), phi_a(z) = a z^(a-1) exp(-z^a).");
+  m.def("gaussian_log_density", py::vectorize(&gaussian_log_density), "height"_a,
+        "ln phi(z), phi(z) = exp(-z^2/2) / sqrt(2 pi).");
+
+  // ---- curves (asperity/curve.hpp) ----
+  py::class_<Curve>(m, "Curve",
+                    "One resolved curve (distribution, side, shape): the hot handle. Immutable; any number of "
+                    "threads may query it at once. Made by Table.curve.")
+      .def(
+          "value",
+          [](const Curve& curve, int twice_order, const ArrayLike& separation, const OptionalOut& out) {
+            check_order(twice_order);
+            return map_batch(separation.object, "separation", out.object, [&](const double* in, double* result, std::size_t n) {
+              curve.value_batch(twice_order, in, result, n);
+            }, [&](double x) { return curve.value(twice_order, x); });
+          },
+          "twice_order"_a, "separation"_a, py::kw_only(), "out"_a = py::none(),
+          "X_n(s) for n = twice_order/2 (0 count, 1 stiffness, 2 area, 3 load, 4 F_2, 5 F_5/2) at the\n"
+          "separations s (origin convention, units of sigma_s; docs/model.md).\n\n"
+          "separation: a number (the answer is a float) or an array of any shape (the answer is a float64\n"
+          "array of that shape), computed by the vectorized batch path without the GIL. NaN for a NaN or\n"
+          "infinite separation; underflows to 0 below ~1e-308 (use log_value there). out: an optional\n"
+          "C-contiguous float64 array of the same size to write into (returned).")
+      .def(
+          "log_value",
+          [](const Curve& curve, int twice_order, const ArrayLike& separation, const OptionalOut& out) {
+            check_order(twice_order);
+            return map_batch(separation.object, "separation", out.object, [&](const double* in, double* result, std::size_t n) {
+              curve.log_value_batch(twice_order, in, result, n);
+            }, [&](double x) { return curve.log_value(twice_order, x); });
+          },
+          "twice_order"_a, "separation"_a, py::kw_only(), "out"_a = py::none(),
+          "ln X_n(s): finite wherever X_n > 0 (far below 1e-308), -inf where it is exactly 0 (bounded side,\n"
+          "s >= 0). Arguments as for value().")
+      .def("has_order", &Curve::has_order, "twice_order"_a, "Whether the curve holds this order (order_mask).")
+      .def_property_readonly("distribution", &Curve::distribution)
+      .def_property_readonly("side", &Curve::side)
+      .def_property_readonly("shape", &Curve::shape, "The Weibull shape a (2 for the Gaussian).")
+      .def_property_readonly("order_mask", &Curve::order_mask, "Bit 1 << twice_order for each order held.")
+      .def_property_readonly("table_min_separation", &Curve::table_min_separation,
+                             "Where the knots start (below: the all-touching segment).")
+      .def_property_readonly("table_max_separation", &Curve::table_max_separation,
+                             "Where the knots end (beyond: the series).")
+      .def_property_readonly("memory_bytes", &Curve::memory_bytes)
+      .def("__repr__", &describe);
+
+  // ---- tables (asperity/table.hpp) ----
+  py::class_<CurveSet>(m, "CurveSet", "One (distribution, side) group of a table file.")
+      .def_readonly("distribution", &CurveSet::distribution)
+      .def_readonly("side", &CurveSet::side)
+      .def_property_readonly("shapes", [](const CurveSet& set) { return to_array(set.shapes); },
+                             "The grid shapes (ascending; a few run past the served range).")
+      .def_readonly("shape_min", &CurveSet::shape_min, "The smallest shape served.")
+      .def_readonly("shape_max", &CurveSet::shape_max, "The largest shape served.")
+      .def_property_readonly(
+          "max_rel_error",
+          [](const CurveSet& set) {
+            py::array_t<double> out = to_array(set.max_rel_error);
+            if (!set.max_rel_error.empty()) out.resize({static_cast<py::ssize_t>(set.shapes.size()), py::ssize_t(order_count)});
+            return out;
+          },
+          "The generator's measured error per [shape, twice_order].")
+      .def("__repr__", [](const CurveSet& set) {
+        return std::string("<asperity.CurveSet ") + to_string(set.distribution) + " " + to_string(set.side) + ", " +
+               std::to_string(set.shapes.size()) + " shapes>";
+      });
+
+  py::class_<Table>(m, "Table",
+                    "A loaded table file: its curve sets, and curves resolved from them. Opening validates "
+                    "everything and raises asperity.Error naming the file and the problem.")
+      .def_static("open", [](const PathName& path) { return Table::open(to_path(path.object)); }, "path"_a,
+                  "Opens and validates a table file (HDF5).")
+      .def_static("open_default", &Table::open_default,
+                  "The default table: $ASPERITY_TABLE if set, else the one installed with the library\n"
+                  "(share/asperity/asperity-default.h5), else the build tree's. The error names every place looked at.")
+      .def_static("default_path", &Table::default_path,
+                  "The file open_default() would open; raises asperity.Error naming every place looked at.")
+      .def_static("default_search_paths", &Table::default_search_paths,
+                  "Where default_path() looks, in order ($ASPERITY_TABLE alone when it is set).")
+      .def(
+          "curve",
+          [](const Table& table, const DistributionName& distribution, const SideName& side, std::optional<double> shape,
+             unsigned order_mask) {
+            const Distribution d = to_distribution(distribution.object);
+            if (!shape && d == Distribution::weibull) throw py::value_error("a Weibull curve needs its shape");
+            return table.curve(d, to_side(side.object), shape.value_or(2.0), order_mask);
+          },
+          "distribution"_a, "side"_a = "tail", "shape"_a = py::none(), "order_mask"_a = Curve::all_orders,
+          "The curve of a distribution ('weibull' or 'gaussian'), a side ('tail' or 'bounded') and a Weibull\n"
+          "shape (ignored for the Gaussian). A shape between grid nodes is resolved here, once. order_mask\n"
+          "(bit 1 << twice_order) keeps only the orders needed (less memory; NaN for the others).\n"
+          "Raises asperity.Error for a shape outside the table or a missing set.")
+      .def_property_readonly(
+          "sets",
+          [](const py::object& self) {
+            py::list sets;  // views into the table (the knots are not copied), which they keep alive
+            for (const CurveSet& set : self.cast<const Table&>().data().sets)
+              sets.append(py::cast(&set, py::return_value_policy::reference_internal, self));
+            return sets;
+          },
+          "The (distribution, side) groups of the file.")
+      .def_property_readonly("generator", [](const Table& table) { return table.data().generator; })
+      .def_property_readonly("generator_options", [](const Table& table) { return table.data().generator_options; })
+      .def_property_readonly("exact_shapes", [](const Table& table) { return table.data().exact_shapes; },
+                             "True for a scene table: it serves only its own shapes.")
+      .def("__repr__", [](const Table& table) {
+        return "<asperity.Table " + std::to_string(table.data().sets.size()) + " curve sets>";
+      });
+
+  // ---- the physical quantities (asperity/contact.hpp) ----
+  py::class_<Surface>(m, "Surface", "N summits of radius R, height scale sigma_s (Gaussian: rms sigma), modulus E*.")
+      .def(py::init([](double summit_count, double summit_radius, double height_scale, double contact_modulus) {
+             return Surface{summit_count, summit_radius, height_scale, contact_modulus};
+           }),
+           "summit_count"_a = 1.0, "summit_radius"_a = 1.0, "height_scale"_a = 1.0, "contact_modulus"_a = 1.0)
+      .def_readwrite("summit_count", &Surface::summit_count)
+      .def_readwrite("summit_radius", &Surface::summit_radius)
+      .def_readwrite("height_scale", &Surface::height_scale)
+      .def_readwrite("contact_modulus", &Surface::contact_modulus)
+      .def("__repr__", [](const Surface& s) {
+        return py::str("Surface(summit_count={!r}, summit_radius={!r}, height_scale={!r}, contact_modulus={!r})")
+            .format(s.summit_count, s.summit_radius, s.height_scale, s.contact_modulus);
+      });
+
+  m.def(
+      "contact_at",
+      [](const Curve& curve, const Surface& surface, const ArrayLike& separation) -> ContactStateRecord {
+        return {make_record(contact_state_type,
+                           map_records<5>(separation.object, "separation", [&](double s, double** out, std::size_t i) {
+                             ContactState state{nan, nan, nan, nan, nan};
+                             contact_at(curve, surface, s, state);
+                             out[0][i] = state.count;
+                             out[1][i] = state.area;
+                             out[2][i] = state.load;
+                             out[3][i] = state.stiffness;
+                             out[4][i] = state.stiffness_ratio;
+                           }))};
+      },
+      "curve"_a, "surface"_a, "separation"_a,
+      "Count, area, load, stiffness and stiffness/load ratio at the separations (a number or an array),\n"
+      "as a ContactState of floats or arrays. NaN for a non-physical surface or a NaN/infinite separation.");
+  m.def(
+      "standardized_from_origin",
+      [](const Curve& curve, const ArrayLike& separation) {
+        return map_scalar(separation.object, "separation", [&](double s) { return standardized_from_origin(curve, s); });
+      },
+      "curve"_a, "separation"_a,
+      "(s - mu_a)/c_a: the separation from the mean summit height in rms units (the GW/McCool convention).");
+  m.def(
+      "origin_from_standardized",
+      [](const Curve& curve, const ArrayLike& standardized) {
+        return map_scalar(standardized.object, "standardized", [&](double t) { return origin_from_standardized(curve, t); });
+      },
+      "curve"_a, "standardized"_a, "The inverse of standardized_from_origin.");
+
+  // ---- physical surfaces and the contact model (surface.hpp, contact_model.hpp, inverse.hpp) ----
+  py::class_<PhysicalSurface>(m, "PhysicalSurface",
+                              "A physical rough surface in SI units: Weibull summit heights of shape a and scale "
+                              "sigma_s, or Gaussian (rms sigma).")
+      .def(py::init([](const DistributionName& distribution, const SideName& side, double shape, double height_scale,
+                       double summit_radius, double summit_density, double nominal_area, double contact_modulus) {
+             PhysicalSurface s;
+             s.distribution = to_distribution(distribution.object);
+             s.side = to_side(side.object);
+             s.shape = shape;
+             s.height_scale = height_scale;
+             s.summit_radius = summit_radius;
+             s.summit_density = summit_density;
+             s.nominal_area = nominal_area;
+             s.contact_modulus = contact_modulus;
+             return s;
+           }),
+           "distribution"_a = "weibull", "side"_a = "tail", "shape"_a = 2.0, "height_scale"_a = 1e-6,
+           "summit_radius"_a = 1e-4, "summit_density"_a = 1e10, "nominal_area"_a = 1e-4, "contact_modulus"_a = 1e11,
+           "height_scale sigma_s [m] (Gaussian: the rms summit height), summit_radius R [m], summit_density\n"
+           "[1/m^2], nominal_area A0 [m^2], contact_modulus E* [Pa] (plane strain).")
+      .def_property(
+          "distribution", [](const PhysicalSurface& s) { return s.distribution; },
+          [](PhysicalSurface& s, const DistributionName& value) { s.distribution = to_distribution(value.object); })
+      .def_property(
+          "side", [](const PhysicalSurface& s) { return s.side; },
+          [](PhysicalSurface& s, const SideName& value) { s.side = to_side(value.object); })
+      .def_readwrite("shape", &PhysicalSurface::shape)
+      .def_readwrite("height_scale", &PhysicalSurface::height_scale)
+      .def_readwrite("summit_radius", &PhysicalSurface::summit_radius)
+      .def_readwrite("summit_density", &PhysicalSurface::summit_density)
+      .def_readwrite("nominal_area", &PhysicalSurface::nominal_area)
+      .def_readwrite("contact_modulus", &PhysicalSurface::contact_modulus)
+      .def_property_readonly("summit_count", &PhysicalSurface::summit_count, "summit_density * nominal_area")
+      .def("validate", &PhysicalSurface::validate, "Raises asperity.Error naming the first bad parameter.")
+      .def("__repr__", [](const PhysicalSurface& s) {
+        return py::str("PhysicalSurface(distribution='{}', side='{}', shape={!r}, height_scale={!r}, summit_radius={!r}, "
+                       "summit_density={!r}, nominal_area={!r}, contact_modulus={!r})")
+            .format(to_string(s.distribution), to_string(s.side), s.shape, s.height_scale, s.summit_radius,
+                    s.summit_density, s.nominal_area, s.contact_modulus);
+      });
+  m.def("contact_modulus_from", py::vectorize(&contact_modulus_from), "young1"_a, "poisson1"_a, "young2"_a, "poisson2"_a,
+        "E* from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (broadcasts); raises asperity.Error for E <= 0 or nu\n"
+        "outside (-1, 0.5].");
+  m.def("gaussian_surface_from_moments", &gaussian_surface_from_moments, "m0"_a, "m2"_a, "m4"_a, "nominal_area"_a,
+        "contact_modulus"_a,
+        "A Gaussian PhysicalSurface from its profile's spectral moments (Nayak's bandwidth, McCool's summit\n"
+        "statistics; docs/model.md section 6).");
+  m.def("bandwidth_alpha", &bandwidth_alpha, "m0"_a, "m2"_a, "m4"_a, "Nayak's bandwidth alpha = m0 m4 / m2^2.");
+
+  py::class_<InverseCurve>(m, "InverseCurve",
+                           "The separation where X_n takes a value (n = twice_order/2 > 1/2): a tabulated inverse "
+                           "and one Newton step on the curve, to the curve's accuracy.")
+      .def(py::init<const Curve&, int>(), "curve"_a, "twice_order"_a, py::keep_alive<1, 2>(),
+           "The curve must hold twice_order and twice_order - 2 (asperity.Error otherwise).")
+      .def(
+          "separation_at",
+          [](const InverseCurve& inverse, const ArrayLike& value) {
+            return map_scalar(value.object, "value", [&](double x) { return inverse.separation_at(x); });
+          },
+          "value"_a, "s with X_n(s) = value (a number or an array).")
+      .def(
+          "separation_at_log",
+          [](const InverseCurve& inverse, const ArrayLike& log_value) {
+            return map_scalar(log_value.object, "log_value", [&](double y) { return inverse.separation_at_log(y); });
+          },
+          "log_value"_a, "s with ln X_n(s) = log_value.")
+      .def_property_readonly("twice_order", &InverseCurve::twice_order)
+      .def_property_readonly("memory_bytes", &InverseCurve::memory_bytes);
+
+  py::class_<ContactModel>(m, "ContactModel",
+                           "Contact of a flat with a PhysicalSurface, forward and inverse, SI units. Separations "
+                           "are lengths [m] in the origin convention (docs/model.md).")
+      .def(py::init<const Table&, const PhysicalSurface&>(), "table"_a, "surface"_a,
+           "Raises asperity.Error for a bad surface or a table without its curve.")
+      .def(
+          "at_separation",
+          [](const ContactModel& model, const ArrayLike& separation) {
+            return physical_states(separation.object, "separation", [&](double d) { return model.at_separation(d); });
+          },
+          "separation"_a, "The PhysicalState at separations d [m] (a number or an array).")
+      .def(
+          "at_load",
+          [](const ContactModel& model, const ArrayLike& load) {
+            return physical_states(load.object, "load", [&](double p) { return model.at_load(p); });
+          },
+          "load"_a, "The PhysicalState carrying loads P [N]; P <= 0 is no contact.")
+      .def(
+          "at_pressure",
+          [](const ContactModel& model, const ArrayLike& pressure) {
+            return physical_states(pressure.object, "pressure", [&](double p) { return model.at_pressure(p); });
+          },
+          "pressure"_a, "The PhysicalState at nominal pressures P/A0 [Pa].")
+      .def(
+          "at_real_area",
+          [](const ContactModel& model, const ArrayLike& area) {
+            return physical_states(area.object, "real_area", [&](double a) { return model.at_real_area(a); });
+          },
+          "real_area"_a, "The PhysicalState with real contact areas A [m^2].")
+      .def_property_readonly("surface", &ContactModel::surface, py::return_value_policy::copy,
+                             "A copy of the surface (changing it does not change the model).")
+      .def_property_readonly("curve", &ContactModel::curve, py::return_value_policy::reference_internal)
+      .def(
+          "dimensionless",
+          [](const ContactModel& model, const ArrayLike& separation) {
+            return map_scalar(separation.object, "separation", [&](double d) { return model.dimensionless(d); });
+          },
+          "separation"_a, "s = d / sigma_s.");
+
+  py::class_<PerssonLaw>(m, "PerssonLaw",
+                         "Persson's (2007) law for comparison: p = reference_pressure exp(-s / beta).")
+      .def(py::init([](double beta, double reference_pressure) { return PerssonLaw{beta, reference_pressure}; }),
+           "beta"_a = 0.5, "reference_pressure"_a = 1.0)
+      .def_readwrite("beta", &PerssonLaw::beta)
+      .def_readwrite("reference_pressure", &PerssonLaw::reference_pressure)
+      .def(
+          "pressure",
+          [](const PerssonLaw& law, const ArrayLike& s) {
+            return map_scalar(s.object, "separation", [&](double x) { return law.pressure(x); });
+          },
+          "separation"_a)
+      .def(
+          "separation_at",
+          [](const PerssonLaw& law, const ArrayLike& p) {
+            return map_scalar(p.object, "pressure", [&](double x) { return law.separation_at(x); });
+          },
+          "pressure"_a)
+      .def("stiffness_over_load", &PerssonLaw::stiffness_over_load, "The constant 1/beta.");
+
+  // ---- scenes (asperity/scene.hpp, scene_curves.hpp) ----
+  py::class_<SceneCurve>(m, "SceneCurve", "One curve a scene asks for.")
+      .def_readonly("name", &SceneCurve::name)
+      .def_readonly("distribution", &SceneCurve::distribution)
+      .def_readonly("side", &SceneCurve::side)
+      .def_readonly("shape", &SceneCurve::shape)
+      .def_readonly("twice_orders", &SceneCurve::twice_orders)
+      .def_readonly("by_load", &SceneCurve::by_load, "The range is of X_3/2, not of separation.")
+      .def_readonly("range_min", &SceneCurve::range_min)
+      .def_readonly("range_max", &SceneCurve::range_max)
+      .def_readonly("max_rel_error", &SceneCurve::max_rel_error)
+      .def_readonly("line", &SceneCurve::line, "Where the curve starts in the file.");
+  py::class_<Scene>(m, "Scene", "The few curves one program needs (docs/scenes.md).")
+      .def_readonly("name", &Scene::name)
+      .def_readonly("source", &Scene::source)
+      .def_readonly("memory_budget_bytes", &Scene::memory_budget_bytes)
+      .def_readonly("curves", &Scene::curves);
+  py::class_<SceneCurveView>(m, "SceneCurveView", "A scene's curve served from a table.")
+      .def_readonly("spec", &SceneCurveView::spec)
+      .def_readonly("curve", &SceneCurveView::curve)
+      .def_readonly("separation_min", &SceneCurveView::separation_min)
+      .def_readonly("separation_max", &SceneCurveView::separation_max)
+      .def_readonly("error_bound", &SceneCurveView::error_bound, "The table's error bound for these orders here.");
+  m.def("read_scene_file", [](const PathName& path) { return read_scene_file(to_path(path.object)); }, "path"_a,
+        "Reads a scene file (TOML); asperity.Error names the file, the line and the key.");
+  m.def("parse_scene", &parse_scene, "text"_a, "source"_a = "<string>", "A scene from TOML text.");
+  m.def("serve_scene", &serve_scene, "table"_a, "scene"_a,
+        "The scene's curves from a table (a scene table, or any full table such as the default).");
+  m.def(
+      "separation_at_load",
+      [](const Curve& curve, const ArrayLike& load) {
+        return map_scalar(load.object, "load", [&](double x) { return separation_at_load(curve, x); });
+      },
+      "curve"_a, "load"_a, "The separation where X_3/2 = load (NaN if not reached).");
+  m.def("quantity_twice_order", &quantity_twice_order, "quantity"_a,
+        "twice_order of a quantity's integral: count 0, stiffness 1, area 2, load 3, F2 4, F5/2 5; -1 otherwise.");
+}
+
+}  // namespace asperity::python
+
+PYBIND11_MODULE(_asperity, m) {
+  // Types made while the module calls itself "asperity" are named asperity.Curve, ... in
+  // signatures, messages and help(), as users import them.
+  const py::object name = m.attr("__name__");
+  m.attr("__name__") = "asperity";
+  asperity::python::bind(m);
+  m.attr("__name__") = name;
+}

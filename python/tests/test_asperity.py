@@ -1,0 +1,386 @@
+"""The Python module against closed forms (docs/model.md section 5), the library's own scalar
+path, and its error messages; arrays of every shape and dtype; the type stubs against the module.
+Run by ctest (python_tests) with PYTHONPATH=build/python."""
+import ast
+import gc
+import math
+import os
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import asperity
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="module")
+def table():
+    return asperity.Table.open_default()
+
+
+@pytest.fixture(scope="module")
+def weibull2(table):
+    return table.curve("weibull", "tail", 2.0)
+
+
+@pytest.fixture(scope="module")
+def gaussian(table):
+    return table.curve("gaussian", "tail")
+
+
+def close(actual, expected, rel):
+    return abs(actual - expected) <= rel * abs(expected)
+
+
+# ---- the issue's example, and arrays in and out ----
+
+def test_quick_start(table):
+    curve = table.curve("weibull", "bounded", 1.73)
+    load = curve.value(3, np.linspace(-1.0, -0.01, 100))
+    assert isinstance(load, np.ndarray) and load.dtype == np.float64 and load.shape == (100,)
+    assert np.all(load > 0) and np.all(np.diff(load) < 0)  # falls toward first contact at s = 0
+    assert load[0] == curve.value(3, -1.0)
+
+
+def test_numbers_give_floats_arrays_give_arrays(weibull2):
+    assert type(weibull2.value(3, 0.5)) is float
+    assert type(weibull2.value(3, 1)) is float
+    assert type(weibull2.value(3, np.float64(0.5))) is float
+    assert type(weibull2.value(3, np.float32(0.5))) is float
+    zero_d = weibull2.value(3, np.array(0.5))
+    assert isinstance(zero_d, np.ndarray) and zero_d.shape == ()
+
+
+@pytest.mark.parametrize("make", [
+    lambda s: s.reshape(4, 5),
+    lambda s: s.reshape(2, 2, 5),
+    lambda s: np.asfortranarray(s.reshape(4, 5)),
+    lambda s: s[::2],                        # not contiguous
+    lambda s: s.astype(np.float32),
+    lambda s: list(s),
+    lambda s: s.reshape(20, 1)[:, 0],
+])
+def test_any_shape_and_dtype(weibull2, make):
+    base = np.linspace(-1.5, 4.0, 20)
+    given = make(base)
+    result = weibull2.value(3, given)
+    expected_shape = np.shape(given)
+    assert result.shape == expected_shape
+    flat_in = np.asarray(given, dtype=np.float64).ravel(order="C")
+    flat_out = result.ravel(order="C")
+    for s, value in zip(flat_in, flat_out):
+        assert close(value, weibull2.value(3, float(s)), 1e-13)
+
+
+def test_empty_array(weibull2):
+    assert weibull2.value(0, np.empty((0, 3))).shape == (0, 3)
+
+
+def test_batch_agrees_with_scalar_on_a_large_array(weibull2):
+    separations = np.random.default_rng(1).uniform(weibull2.table_min_separation, weibull2.table_max_separation, 50000)
+    logs = weibull2.log_value(3, separations)  # large: computed without the GIL
+    for i in range(0, separations.size, 997):
+        scalar = weibull2.log_value(3, float(separations[i]))
+        assert abs(logs[i] - scalar) <= 2e-14 * (1 + abs(scalar))
+
+
+def test_out_parameter(weibull2):
+    s = np.linspace(0, 2, 10)
+    out = np.empty(10)
+    assert weibull2.value(2, s, out=out) is out
+    assert np.array_equal(out, weibull2.value(2, s))
+    with pytest.raises(ValueError, match="elements"):
+        weibull2.value(2, s, out=np.empty(9))
+    with pytest.raises(TypeError):
+        weibull2.value(2, s, out=np.empty(10, dtype=np.float32))
+
+
+def test_threads_share_one_curve(weibull2):
+    separations = np.linspace(-2, 8, 200000)
+    expected = weibull2.value(1, separations)
+    results = [None] * 4
+
+    def work(k):
+        results[k] = weibull2.value(1, separations)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    for result in results:
+        assert np.array_equal(result, expected)
+
+
+def gil_pause_during(call):
+    """The longest pause of a Python loop in this thread while another thread runs call(), as a
+    fraction of the call's duration: 1 if the call holds the GIL throughout."""
+    timing = {}
+
+    def work():
+        begin = time.perf_counter()
+        call()
+        timing["call"] = (begin, time.perf_counter())
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e-4)
+    stamps = []
+    try:
+        worker = threading.Thread(target=work)
+        worker.start()
+        while worker.is_alive():
+            stamps.append(time.perf_counter())
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    begin, end = timing["call"]
+    inside = [begin] + [t for t in stamps if begin < t < end] + [end]
+    return max(b - a for a, b in zip(inside, inside[1:])) / (end - begin)
+
+
+def test_large_arrays_release_the_gil(weibull2):
+    separations = np.linspace(-2.0, 20.0, 6_000_000)
+    assert gil_pause_during(lambda: weibull2.value(3, separations)) < 0.5
+    # the check itself tells a call holding the GIL (py::vectorize does) from one releasing it
+    shapes = np.full(3_000_000, 2.0)
+    assert gil_pause_during(lambda: asperity.weibull_mean(shapes)) > 0.9
+
+
+# ---- values against closed forms (docs/model.md section 5) ----
+
+def test_enums(weibull2):
+    assert weibull2.distribution == asperity.Distribution.weibull and weibull2.side.name == "tail"
+    assert asperity.Side.bounded.name == "bounded" and int(asperity.Distribution.gaussian) == 1
+    assert asperity.best_instruction_set() in asperity.InstructionSet.__members__.values()
+
+
+def test_weibull_closed_forms(weibull2, table):
+    for s in (0.0, 0.3, 1.0, 2.5, 5.0):
+        assert close(weibull2.value(0, s), math.exp(-s * s), 1e-12)                      # J_0 = exp(-s^a)
+        assert close(weibull2.value(2, s), math.sqrt(math.pi) / 2 * math.erfc(s), 1e-12)  # a = 2: J_1
+    for a in (0.5, 1.0, 3.0, 20.0):
+        curve = table.curve(asperity.Distribution.weibull, asperity.Side.tail, a)
+        for twice_order in range(6):
+            assert close(curve.value(twice_order, 0.0), math.gamma(1 + 0.5 * twice_order / a), 1e-12)  # moments
+    exponential = table.curve("weibull", "tail", 1.0)
+    assert close(exponential.value(3, 2.0), math.gamma(2.5) * math.exp(-2.0), 1e-12)  # Gamma(n+1) exp(-s)
+    bounded = table.curve("weibull", "bounded", 1.6)
+    for d in (0.1, 0.7, 2.0):
+        assert close(bounded.value(0, -d), 1 - math.exp(-d ** 1.6), 1e-12)  # K_0 = 1 - exp(-d^a)
+    assert bounded.value(3, 0.5) == 0.0 and bounded.log_value(3, 0.5) == -math.inf
+
+
+def test_gaussian_closed_forms(gaussian):
+    for s in (-2.0, 0.0, 0.5, 3.0):
+        f0 = 0.5 * math.erfc(s / math.sqrt(2))
+        phi = math.exp(-s * s / 2) / math.sqrt(2 * math.pi)
+        assert close(gaussian.value(0, s), f0, 1e-12)
+        assert close(gaussian.value(2, s), phi - s * f0, 1e-12)
+    assert close(gaussian.value(5, 0.0), 0.616634218996844, 1e-12)  # the half-normal moment
+
+
+def test_far_tail_log(weibull2):
+    assert weibull2.value(0, 40.0) == 0.0               # underflows
+    assert close(weibull2.log_value(0, 40.0), -1600.0, 1e-13)   # ln J_0 = -s^2
+
+
+def test_bad_separations_give_nan(weibull2):
+    out = weibull2.value(3, [np.nan, np.inf, -np.inf, 1.0])
+    assert np.isnan(out[:3]).all() and np.isfinite(out[3])
+
+
+# ---- errors carry the library's message ----
+
+def test_errors(table, weibull2, tmp_path):
+    with pytest.raises(asperity.Error, match=r"shape 1000 is outside the table's range \[0.5, 20\]"):
+        table.curve("weibull", "tail", 1000)
+    with pytest.raises(asperity.Error, match="no bounded side"):
+        table.curve("gaussian", "bounded")
+    with pytest.raises(ValueError, match="unknown distribution 'weibul'"):
+        table.curve("weibul", "tail", 2.0)
+    with pytest.raises(ValueError, match="unknown side"):
+        table.curve("weibull", "up", 2.0)
+    with pytest.raises(ValueError, match="needs its shape"):
+        table.curve("weibull", "tail")
+    with pytest.raises(ValueError, match="twice_order 6"):
+        weibull2.value(6, 0.0)
+    with pytest.raises(TypeError):
+        weibull2.value(3, "near")
+    missing = tmp_path / "missing.h5"
+    for spelled in (missing, str(missing), os.fsencode(missing)):  # PathLike, str, bytes
+        with pytest.raises(asperity.Error, match=str(missing)):
+            asperity.Table.open(spelled)
+    not_hdf5 = tmp_path / "not.h5"
+    not_hdf5.write_bytes(b"not a table at all")
+    with pytest.raises(asperity.Error, match="not.h5"):
+        asperity.Table.open(str(not_hdf5))
+    assert issubclass(asperity.Error, RuntimeError)
+
+
+def run_python(code, **environment):
+    env = dict(os.environ, **environment)
+    return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+
+
+def test_default_table_search(table):
+    places = asperity.Table.default_search_paths()
+    assert asperity.Table.default_path() in places
+    assert all(place.endswith(".h5") for place in places)
+    missing = "/nonexistent/asperity/table.h5"
+    result = run_python("import asperity\nasperity.Table.open_default()", ASPERITY_TABLE=missing)
+    assert result.returncode != 0
+    assert "ASPERITY_TABLE" in result.stderr and missing in result.stderr
+    result = run_python("import asperity; print(asperity.Table.default_search_paths())", ASPERITY_TABLE=missing)
+    assert result.stdout.strip() == repr([missing])
+
+
+# ---- the physical layer ----
+
+def test_contact_at(weibull2):
+    surface = asperity.Surface(summit_count=1e4, summit_radius=1e-4, height_scale=1e-6, contact_modulus=1e11)
+    s = np.array([-0.5, 0.0, 0.7])
+    state = asperity.contact_at(weibull2, surface, s)
+    assert isinstance(state, asperity.ContactState)
+    x0, x12, x1, x32 = (weibull2.value(k, s) for k in range(4))
+    assert np.allclose(state.count, 1e4 * x0, rtol=1e-13, atol=0)
+    assert np.allclose(state.area, math.pi * 1e4 * 1e-4 * 1e-6 * x1, rtol=1e-13, atol=0)
+    assert np.allclose(state.load, 4 / 3 * 1e4 * 1e11 * 1e-2 * 1e-9 * x32, rtol=1e-13, atol=0)
+    assert np.allclose(state.stiffness, 2 * 1e4 * 1e11 * 1e-2 * 1e-3 * x12, rtol=1e-13, atol=0)
+    assert np.allclose(state.stiffness_ratio, 1.5 * x12 / x32, rtol=1e-13, atol=0)
+    scalar = asperity.contact_at(weibull2, surface, 0.7)
+    assert type(scalar.load) is float and close(scalar.load, state.load[2], 1e-15)
+    bad = asperity.contact_at(weibull2, asperity.Surface(summit_count=-1), 0.0)
+    assert math.isnan(bad.load)
+
+
+def test_conventions(table):
+    curve = table.curve("weibull", "tail", 1.6)
+    mean, rms = math.gamma(1 + 1 / 1.6), math.sqrt(math.gamma(1 + 2 / 1.6) - math.gamma(1 + 1 / 1.6) ** 2)
+    assert close(asperity.weibull_mean(1.6), mean, 1e-14) and close(asperity.weibull_rms(1.6), rms, 1e-14)
+    t = asperity.standardized_from_origin(curve, np.array([0.0, 1.0]))
+    assert np.allclose(t, (np.array([0.0, 1.0]) - mean) / rms, rtol=1e-14)
+    assert np.allclose(asperity.origin_from_standardized(curve, t), [0.0, 1.0], atol=1e-14)
+
+
+def test_contact_model_round_trip(table):
+    surface = asperity.PhysicalSurface("weibull", "tail", shape=2.0, height_scale=1e-6, summit_radius=1e-4,
+                                       summit_density=1e10, nominal_area=1e-4,
+                                       contact_modulus=asperity.contact_modulus_from(2.1e11, 0.3, 2.1e11, 0.3))
+    model = asperity.ContactModel(table, surface)
+    loads = np.logspace(-2, 2, 9)
+    state = model.at_load(loads)
+    assert isinstance(state, asperity.PhysicalState)
+    assert np.allclose(model.at_separation(state.separation).load, loads, rtol=1e-11, atol=0)
+    assert np.allclose(state.pressure, loads / 1e-4, rtol=1e-14)
+    area = model.at_real_area(state.real_area)
+    assert np.allclose(area.separation, state.separation, rtol=1e-10, atol=0)
+    assert close(model.at_pressure(1e4).load, 1.0, 1e-11)
+    copy = model.surface
+    copy.height_scale = 1.0  # a copy: the model keeps its own
+    assert model.surface.height_scale == 1e-6
+    with pytest.raises(asperity.Error):
+        asperity.ContactModel(table, asperity.PhysicalSurface(height_scale=-1.0))
+
+
+def test_physical_helpers():
+    moduli = asperity.contact_modulus_from(np.array([1e11, 2e11]), 0.3, 2e11, 0.3)  # broadcasts
+    assert moduli.shape == (2,)
+    assert close(moduli[1], 2e11 / (2 * (1 - 0.09)), 1e-14)
+    with pytest.raises(asperity.Error):
+        asperity.contact_modulus_from(-1.0, 0.3, 2e11, 0.3)
+    gaussian = asperity.gaussian_surface_from_moments(1e-12, 1e-4, 1e5, 1e-4, 1e11)
+    assert gaussian.distribution == asperity.Distribution.gaussian
+    assert close(asperity.bandwidth_alpha(1e-12, 1e-4, 1e5), 10.0, 1e-14)
+    persson = asperity.PerssonLaw(beta=0.5)
+    assert close(persson.pressure(1.0), math.exp(-2.0), 1e-15)
+    assert persson.stiffness_over_load() == 2.0
+
+
+def test_inverse_curve_keeps_its_curve_alive(table):
+    curve = table.curve("weibull", "tail", 2.0)
+    inverse = asperity.InverseCurve(curve, 3)
+    expected = curve.value(3, 0.8)
+    del curve
+    gc.collect()
+    assert close(inverse.separation_at(expected), 0.8, 1e-11)
+    assert np.allclose(inverse.separation_at(np.array([expected] * 3)), 0.8, rtol=1e-11)
+    with pytest.raises(asperity.Error):
+        asperity.InverseCurve(table.curve("weibull", "tail", 2.0), 1)
+
+
+# ---- scenes ----
+
+SCENE = """
+name = "test"
+max_rel_error = 1e-8
+[[curve]]
+distribution = "weibull"
+shape = 1.73
+side = "bounded"
+quantities = ["load", "stiffness"]
+separation = [-2.0, -0.01]
+"""
+
+
+def test_scenes(table):
+    scene = asperity.parse_scene(SCENE, "inline")
+    assert scene.name == "test" and scene.curves[0].twice_orders == [1, 3]
+    served = asperity.serve_scene(table, scene)
+    assert len(served) == 1
+    view = served[0]
+    direct = table.curve("weibull", "bounded", 1.73)
+    assert close(view.curve.value(3, -0.4), direct.value(3, -0.4), 1e-14)
+    assert math.isnan(view.curve.value(0, -0.4))  # an order the scene did not ask for
+    assert view.error_bound <= 1e-8
+    assert asperity.read_scene_file(REPO / "tables" / "scenes" / "bearing.toml").curves
+    with pytest.raises(asperity.Error, match="shap"):
+        asperity.parse_scene('[[curve]]\nshap = 1.73\n', "bad.toml")
+    assert asperity.quantity_twice_order("load") == 3
+    assert close(asperity.separation_at_load(direct, direct.value(3, -0.4)), -0.4, 1e-9)
+
+
+# ---- documentation: docstrings for help(), stubs for editors ----
+
+def public_names():
+    return set(asperity.__all__)
+
+
+def test_docstrings():
+    for name in public_names():
+        item = getattr(asperity, name)
+        if callable(item):
+            assert item.__doc__, name
+    assert "twice_order" in asperity.Curve.value.__doc__
+    for method in ("value", "log_value", "curve", "open_default", "at_load"):
+        owner = asperity.Table if method in ("curve", "open_default") else (
+            asperity.ContactModel if method == "at_load" else asperity.Curve)
+        assert len(getattr(owner, method).__doc__) > 40, method
+
+
+def test_stubs_name_what_the_module_holds():
+    stub = ast.parse((Path(asperity.__file__).parent / "__init__.pyi").read_text())
+    defined = {}
+    for node in stub.body:
+        if isinstance(node, (ast.ClassDef, ast.FunctionDef)):
+            defined[node.name] = node
+        elif isinstance(node, ast.AnnAssign):
+            defined[node.target.id] = node
+    aliases = {"FloatArray", "PathLike", "DistributionLike", "SideLike"}
+    assert public_names() | {"__version__"} == set(defined) - aliases
+    for name, node in defined.items():
+        if isinstance(node, ast.ClassDef) and not issubclass(getattr(asperity, name), (tuple, BaseException)):
+            members = {item.name for item in node.body if isinstance(item, ast.FunctionDef)}
+            members |= {item.target.id for item in node.body if isinstance(item, ast.AnnAssign)}
+            members |= {item.targets[0].id for item in node.body if isinstance(item, ast.Assign)}
+            cls = getattr(asperity, name)
+            if hasattr(cls, "__members__"):  # an enum: its values
+                bound = set(cls.__members__)
+            else:
+                bound = {m for m in dir(cls) if not m.startswith("_")}
+            assert members - {"__init__"} == bound, name
