@@ -156,10 +156,54 @@ std::vector<double> thin(const std::vector<double>& fine, const std::vector<Segm
 // Checks a thinned curve against quadrature across each requirement's range. Returns the
 // error per order (all six, at the same points) and marks the segments where a requested
 // order failed.
+// How a scene curve is served (CurveOptions, stored with the table): the lookup grid over the
+// scene's separations only, to a tenth of the strictest tolerance asked of the shape.
+CurveOptions grid_options(const Shape& shape) {
+  CurveOptions options;
+  double tolerance = 1, lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Requirement& requirement : shape.requirements) {
+    tolerance = std::min(tolerance, requirement.tolerance);
+    lo = std::min(lo, requirement.separation_min);
+    hi = std::max(hi, requirement.separation_max);
+  }
+  options.grid_tolerance = std::max(1e-13, 0.1 * tolerance);
+  options.grid_min_separation = lo;
+  options.grid_max_separation = hi;
+  return options;
+}
+
+// Where a scene curve is checked: uniform and random over each requirement's range, and
+// log-spaced toward both of its ends, toward every segment end inside it and toward s = 0 (down
+// to the smallest doubles) where the range reaches it: the places an interpolant is weakest.
+std::vector<double> check_points(const Requirement& requirement, const std::vector<SegmentMap>& maps,
+                                 std::mt19937_64& rng) {
+  const double lo = requirement.separation_min, hi = requirement.separation_max, width = hi - lo;
+  std::vector<double> points;
+  const int uniform_points = 96;
+  for (int i = 0; i <= uniform_points; ++i) points.push_back(lo + width * i / uniform_points);
+  std::uniform_real_distribution<double> pick(lo, hi);
+  for (int i = 0; i < 64; ++i) points.push_back(pick(rng));
+  std::vector<double> ends = {lo, hi};
+  for (const SegmentMap& map : maps) ends.insert(ends.end(), {map.s_lo, map.s_hi});
+  for (double end : ends)
+    for (int k = 1; k <= 15; ++k) {
+      const double step = std::max(std::fabs(end), 1e-3) * std::pow(10.0, -k);
+      points.insert(points.end(), {end - step, end + step});
+    }
+  for (double magnitude : {1e-300, 1e-200, 1e-100, 1e-50, 1e-30, 1e-20, 1e-15, 1e-12, 1e-9, 1e-6, 1e-4, 1e-3, 1e-2})
+    points.insert(points.end(), {magnitude, -magnitude});
+  points.push_back(0.0);
+  std::vector<double> inside;
+  for (double point : points)
+    if (point >= lo && point <= hi) inside.push_back(point);
+  return inside;
+}
+
 std::vector<double> verify(const Group& group, const Shape& shape, const std::vector<SegmentSpec>& layout,
                            const std::vector<double>& data, std::vector<char>& failed_segments,
                            std::vector<double>& requirement_error) {
-  const Curve curve(group.distribution, group.side, shape.shape, layout, data.data());
+  const Curve curve(group.distribution, group.side, shape.shape, layout, data.data(), Curve::all_orders,
+                    grid_options(shape));
   const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, group.distribution, group.side, shape.shape);
   const CurveId id{group.distribution, group.side, shape.shape};
   std::vector<double> errors(order_count, 0.0);
@@ -167,14 +211,7 @@ std::vector<double> verify(const Group& group, const Shape& shape, const std::ve
   std::mt19937_64 rng(97);
   for (std::size_t r = 0; r < shape.requirements.size(); ++r) {
     const Requirement& requirement = shape.requirements[r];
-    std::vector<double> points;
-    const int uniform_points = 96;
-    for (int i = 0; i <= uniform_points; ++i)
-      points.push_back(requirement.separation_min +
-                       (requirement.separation_max - requirement.separation_min) * i / uniform_points);
-    std::uniform_real_distribution<double> pick(requirement.separation_min, requirement.separation_max);
-    for (int i = 0; i < 64; ++i) points.push_back(pick(rng));
-    for (double separation : points) {
+    for (double separation : check_points(requirement, maps, rng)) {
       std::size_t segment = 0;
       while (segment + 1 < maps.size() && separation > maps[segment].s_hi) ++segment;
       for (int twice_order = 0; twice_order < order_count; ++twice_order) {
@@ -357,12 +394,17 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
         for (std::size_t i = 0; i < group.shapes.size(); ++i) {
           set.knots.insert(set.knots.end(), thinned[i].begin(), thinned[i].end());
           set.max_rel_error.insert(set.max_rel_error.end(), errors[i].begin(), errors[i].end());
+          const CurveOptions served = grid_options(group.shapes[i]);
+          set.grid_tolerance.push_back(served.grid_tolerance);
+          set.grid_separations.insert(set.grid_separations.end(),
+                                      {served.grid_min_separation, served.grid_max_separation});
           for (std::size_t r = 0; r < group.shapes[i].requirements.size(); ++r) {
             const Requirement& requirement = group.shapes[i].requirements[r];
             unsigned mask = 0;
             for (int twice_order : requirement.twice_orders) mask |= 1u << twice_order;
             // in memory as serve_scene gives it: the asked orders only
-            const Curve curve(group.distribution, group.side, group.shapes[i].shape, layout, thinned[i].data(), mask);
+            const Curve curve(group.distribution, group.side, group.shapes[i].shape, layout, thinned[i].data(), mask,
+                              grid_options(group.shapes[i]));
             SceneCurveReport& report = result.curves[requirement.report];
             report.achieved_error = requirement_errors[i][r];
             report.knots = set.total_knots();

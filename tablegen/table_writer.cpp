@@ -107,6 +107,11 @@ void write_contents(hid_t file, const TableData& table) {
                   {shapes, hsize_t(order_count), hsize_t(set.total_knots()), 3}, set.knots.data());
     write_dataset(g, schema::set_max_rel_error, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {shapes, hsize_t(order_count)},
                   set.max_rel_error.data());
+    if (!set.grid_tolerance.empty()) {
+      write_dataset(g, schema::set_grid_tolerance, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {shapes}, set.grid_tolerance.data());
+      write_dataset(g, schema::set_grid_separations, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {shapes, 2},
+                    set.grid_separations.data());
+    }
   }
 }
 

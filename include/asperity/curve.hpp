@@ -29,6 +29,10 @@ struct CurveOptions {
   // The largest error the lookup grid may add to the table's own, in ln X (so relative in X)
   // where X >= 1e-100, and 100 times that below. Smaller costs memory, never time.
   double grid_tolerance = 1e-13;
+  // The separations the grid covers (within the table's range); outside, the table's own
+  // layout answers (a scene table: the scene's range).
+  double grid_min_separation = -1.0 / 0.0;
+  double grid_max_separation = 1.0 / 0.0;
 };
 
 // A curve between the shapes of a grid (Table::curve): Lagrange interpolation across shapes at

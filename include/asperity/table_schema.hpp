@@ -28,7 +28,12 @@
 //       segment_p0      [G], segment_p1 [G]
 //       knots           [S][6][K][3] H, dH/du, d2H/du2 at each knot (K = sum of segment_knots),
 //                                    H = ln X - offset(u) (see layout.hpp)
-//       max_rel_error   [S][6]       the generator's measured max relative error per curve
+//       max_rel_error   [S][6]       the generator's measured max relative error per curve, as
+//                                    served (the runtime's lookup grid included)
+//       grid_tolerance  [S]          optional (scene tables): the tolerance of the runtime's
+//                                    lookup grid for the curve (CurveOptions; 1e-13 if absent)
+//       grid_separations [S][2]      optional (scene tables): the separations the grid covers
+//                                    (the scene's range); outside, the table's layout answers
 #pragma once
 #include "asperity/segment_kind.hpp"
 #include <cstddef>
@@ -79,6 +84,8 @@ inline constexpr const char* set_segment_p0 = "segment_p0";
 inline constexpr const char* set_segment_p1 = "segment_p1";
 inline constexpr const char* set_knots = "knots";
 inline constexpr const char* set_max_rel_error = "max_rel_error";
+inline constexpr const char* set_grid_tolerance = "grid_tolerance";
+inline constexpr const char* set_grid_separations = "grid_separations";
 
 inline constexpr const char* conventions =
     "Greenwood-Williamson asperity integrals, see MODEL.md of the asperity project.\n"

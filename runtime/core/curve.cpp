@@ -76,6 +76,10 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
   reference.order_mask = compact.order_mask();
   reference.table_min = compact.table_min();
   reference.table_max = compact.table_max();
+  reference.grid_min = options.grid_min_separation;
+  reference.grid_max = options.grid_max_separation;
+  if (!(options.grid_min_separation < options.grid_max_separation))
+    throw Error("CurveOptions: the grid's separations must be an interval (min < max)");
   auto data = std::make_shared<detail::CurveData>();
   detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
   compact.keep_outside_only();

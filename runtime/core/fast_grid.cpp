@@ -157,9 +157,17 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
   for (int sign_bit = 0; sign_bit < 2; ++sign_bit) {
     const double sign = sign_bit ? -1.0 : 1.0;
     FastSide& side = grid.sides[sign_bit];
-    double lower = zero_zone, upper = sign_bit ? -table_min : table_max;
-    if (sign_bit && table_max < 0) lower = std::max(lower, -table_max);  // the bounded side: d >= d_min
-    if (!(upper >= lower) || !std::isfinite(upper)) continue;            // not covered
+    // |s| covered on this side: the table's range cut to the asked range, never below 2^-70
+    const double lo = std::max(table_min, reference.grid_min), hi = std::min(table_max, reference.grid_max);
+    double lower, upper;
+    if (sign_bit) {
+      lower = std::max(zero_zone, -hi);
+      upper = -lo;
+    } else {
+      lower = std::max(zero_zone, lo);
+      upper = hi;
+    }
+    if (!(upper >= lower) || !std::isfinite(upper)) continue;  // not covered
     side.lower = lower;
     side.upper = upper;
     const int e_lo = biased_exponent(lower), e_hi = biased_exponent(upper);
@@ -170,22 +178,22 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
     // From the top binade down: the knots a binade needs shrink toward s = 0.
     for (int e = e_hi; e >= e_lo; --e) {
       const double base = std::ldexp(1.0, e - 1023);
-      const double lo = std::max(lower, base), hi = std::min(upper, 2 * base);
+      const double from = std::max(lower, base), to = std::min(upper, 2 * base);
       knots = std::max(1.0, knots / 4);
       for (;;) {
-        const auto first = static_cast<std::int64_t>(std::floor((lo / base - 1) * knots));
+        const auto first = static_cast<std::int64_t>(std::floor((from / base - 1) * knots));
         const auto last = std::min(static_cast<std::int64_t>(knots) - 1,
-                                   static_cast<std::int64_t>(std::floor((hi / base - 1) * knots)));
+                                   static_cast<std::int64_t>(std::floor((to / base - 1) * knots)));
         const double worst = builder.fit_binade(sign, base, knots, first, last, block);
         if (worst <= 1 || knots >= largest_knots_per_binade) {
           builder.achieved = std::max(builder.achieved, worst * tolerance);
           const std::int64_t count = last - first + 1;
+          if (grid.intervals + count > largest_intervals)
+            throw Error("the lookup grid would need more than 2^22 intervals: the table's curve is not smooth");
           FastBinade& binade = grid.directory[side.offset + e];
           binade.knots = knots;
           binade.first = static_cast<double>(grid.intervals - first);
           grid.intervals += static_cast<std::int32_t>(count);
-          if (grid.intervals > largest_intervals)
-            throw Error("the lookup grid would need more than 2^22 intervals: the table's curve is not smooth");
           for (int o = 0; o < builder.held; ++o)
             per_order[o].insert(per_order[o].end(), block.begin() + static_cast<std::ptrdiff_t>(o) * count * 6,
                                 block.begin() + static_cast<std::ptrdiff_t>(o + 1) * count * 6);

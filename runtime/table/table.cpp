@@ -77,13 +77,37 @@ void CurveSet::validate(const std::string& context) const {
     throw Error(where + "max_rel_error has the wrong size");
   for (double error : max_rel_error)
     if (!(error >= 0 && error <= 1e300)) throw Error(where + "max_rel_error holds a value that is not a finite error");
+  if (!grid_tolerance.empty()) {
+    if (grid_tolerance.size() != shapes.size() || grid_separations.size() != 2 * shapes.size())
+      throw Error(where + "grid_tolerance and grid_separations need one entry (a pair) per shape");
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      if (!(grid_tolerance[i] >= 1e-14 && grid_tolerance[i] <= 1e-2))
+        throw Error(where + "grid_tolerance must lie in [1e-14, 1e-2]");
+      const double lo = grid_separations[2 * i], hi = grid_separations[2 * i + 1];
+      if (std::isnan(lo) || std::isnan(hi) || !(lo < hi)) throw Error(where + "grid_separations must be intervals");
+    }
+  } else if (!grid_separations.empty()) {
+    throw Error(where + "grid_separations without grid_tolerance");
+  }
 }
+
+CurveOptions CurveSet::curve_options(std::size_t shape_index) const {
+  CurveOptions options;
+  if (shape_index < grid_tolerance.size()) {
+    options.grid_tolerance = grid_tolerance[shape_index];
+    options.grid_min_separation = grid_separations[2 * shape_index];
+    options.grid_max_separation = grid_separations[2 * shape_index + 1];
+  }
+  return options;
+}
+
+Table::Table(TableData data, Validated) : data_(std::move(data)) {}
 
 Table::Table(TableData data) : data_(std::move(data)) {
   for (const CurveSet& set : data_.sets) set.validate("table");
 }
 
-Table Table::open(const std::string& path) { return Table(read_table_file(path)); }
+Table Table::open(const std::string& path) { return Table(read_table_file(path), Validated{}); }
 
 const CurveSet* Table::find(Distribution distribution, Side side) const noexcept {
   for (const CurveSet& set : data_.sets)
@@ -98,7 +122,8 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
       throw Error("the Gaussian has no bounded side (its heights are unbounded)");
     throw Error(std::string("this table has no ") + to_string(distribution) + " " + to_string(side) + " curves");
   }
-  if (distribution == Distribution::gaussian) return Curve(distribution, side, 2.0, set->layout, set->knots.data(), order_mask);
+  if (distribution == Distribution::gaussian)
+    return Curve(distribution, side, 2.0, set->layout, set->knots.data(), order_mask, set->curve_options(0));
   if (data_.exact_shapes && std::none_of(set->shapes.begin(), set->shapes.end(), [&](double node) {
         return std::fabs(shape - node) <= 1e-12 * shape;
       })) {
@@ -119,7 +144,8 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
   // A grid shape: its knots as they are.
   for (std::size_t i = 0; i < count; ++i)
     if (std::fabs(shape - set->shapes[i]) <= 1e-12 * shape)
-      return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride], order_mask);
+      return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride], order_mask,
+                   set->curve_options(i));
 
   // Between grid shapes: Lagrange in q over the shape_stencil nearest nodes, centred.
   std::size_t upper = 1;

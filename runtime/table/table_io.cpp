@@ -261,6 +261,12 @@ TableData read_verified(const unsigned char* bytes, std::size_t size, const std:
                        " knot values, more than a table of " + std::to_string(size) + " bytes may hold");
     set.knots = in_group.doubles(g, schema::set_knots, {shapes, hsize_t(order_count), total_knots, 3});
     set.max_rel_error = in_group.doubles(g, schema::set_max_rel_error, {shapes, hsize_t(order_count)});
+    // optional, together (scene tables): the lookup grid's tolerance and range per curve
+    if (H5Lexists(g, schema::set_grid_tolerance, H5P_DEFAULT) > 0 ||
+        H5Lexists(g, schema::set_grid_separations, H5P_DEFAULT) > 0) {
+      set.grid_tolerance = in_group.doubles(g, schema::set_grid_tolerance, {shapes});
+      set.grid_separations = in_group.doubles(g, schema::set_grid_separations, {shapes, 2});
+    }
     set.validate("table '" + name + "'");
     data.sets.push_back(std::move(set));
   }

@@ -23,7 +23,8 @@ struct FastGridBuild {
 struct GridReference {
   std::function<void(double separation, double out[order_count])> log_values;
   unsigned order_mask = 0;
-  double table_min = 0, table_max = 0;
+  double table_min = 0, table_max = 0;  // the grid covers these, cut to [grid_min, grid_max]
+  double grid_min = -1.0 / 0.0, grid_max = 1.0 / 0.0;
 };
 
 // The grid covers |s| from 2^-70 to the table's ends on each side the table covers. In each
