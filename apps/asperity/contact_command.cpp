@@ -85,6 +85,9 @@ PhysicalSurface surface_from(const Options& options, std::string& given_scale) {
     surface.summit_radius = from.summit_radius;
     surface.summit_density = from.summit_density;
     surface.validate();
+    given_scale = "--moments (Nayak-McCool): rms summit height sigma " + approximately(surface.height_scale) +
+                  " m, summit radius " + approximately(surface.summit_radius) + " m, summit density " +
+                  approximately(surface.summit_density) + " per m^2";
     return surface;
   }
   if (given(options.sigma) == given(options.rms))
