@@ -10,10 +10,14 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
-import matplotlib
+from report_style import plt, save
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+# The normalization, said once under the figures that use it.
+SCALES = (r"$A_0^g = \sqrt{\pi/2}\,N R \sigma$ and $P_0^g = \frac{4}{3\sqrt{2\pi}}\,N E^* R^{1/2} \sigma^{3/2}$:"
+          r" the Gaussian model's area and load scales ($\sigma$ the rms summit height, $N$ summits of radius $R$,"
+          r" $E^*$ the contact modulus).")
+SEPARATION = (r"$t = (s - \mu_a)/c_a$: the separation from the mean summit height in rms units"
+              r" ($\mu_a$, $c_a$: mean and rms of the Weibull heights of unit scale; the Gaussian: $t = s$).")
 
 STYLE = {"Weibull a = 1": ("tab:blue", "-"), "Weibull a = 2": ("tab:orange", "-"),
          "Weibull a = 3": ("tab:green", "-"), "Weibull a = 5": ("tab:red", "-"),
@@ -30,11 +34,11 @@ def curves(path):
     return families
 
 
-def save(figure, docs, name):
-    figure.tight_layout()
-    figure.savefig(docs / f"{name}.svg")
-    figure.savefig(docs / f"{name}.png", dpi=110)
-    plt.close(figure)
+def finish(figure, docs, name, notes):
+    """Notes under the panels (what the axes' symbols mean), then the files."""
+    figure.text(0.01, 0.01, "\n".join(notes), fontsize=8.5, va="bottom", ha="left")
+    figure.tight_layout(rect=(0, 0.04 + 0.035 * len(notes), 1, 1))
+    save(figure, docs, name, dpi=110)
 
 
 def main():
@@ -53,19 +57,18 @@ def main():
     ts = [i * 0.05 for i in range(0, 91)]
     for beta, dash in ((0.5, ":"), (1.0, "-.")):
         right.semilogy(ts, [p_at_zero * math.exp(-t / beta) for t in ts], dash, color="gray",
-                       label=f"Persson, beta = {beta} (through the Gaussian at t = 0)")
-    left.set_xlabel("load  P / P0^g")
-    left.set_ylabel("real area  A / A0^g")
+                       label=rf"Persson, $\beta$ = {beta} (through the Gaussian at $t$ = 0)")
+    left.set_xlabel(r"load  $P/P_0^g$")
+    left.set_ylabel(r"real area  $A/A_0^g$")
     left.set_title("Fig. 1a  area-load, tail side")
-    right.set_xlabel("separation from the mean summit height  t = (s - mu_a) / c_a   [rms units]")
-    right.set_ylabel("load  P / P0^g")
+    right.set_xlabel(r"separation from the mean summit height  $t$   [rms units]")
+    right.set_ylabel(r"load  $P/P_0^g$")
     right.set_ylim(1e-8, 10)
     right.set_xlim(-1, 4.5)
     right.set_title("Fig. 1b  load-separation, tail side")
     for axis in (left, right):
-        axis.grid(True, which="major", alpha=0.3)
-        axis.legend(fontsize=7.5)
-    save(figure, docs, "paper_fig1")
+        axis.legend()
+    finish(figure, docs, "paper_fig1", [SCALES, SEPARATION])
 
     # Fig. 2: bounded side
     figure, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6))
@@ -74,18 +77,19 @@ def main():
         keep = [i for i, p in enumerate(family["load"]) if 1e-10 < p]
         left.loglog([family["load"][i] for i in keep], [family["area"][i] for i in keep], dash, color=colour, label=name)
         right.semilogy(family["t"], family["load"], dash, color=colour, label=name)
-    left.set_xlabel("load  P / P0^g")
-    left.set_ylabel("real area  A / A0^g")
+    left.set_xlabel(r"load  $P/P_0^g$")
+    left.set_ylabel(r"real area  $A/A_0^g$")
     left.set_title("Fig. 2a  area-load, bounded side")
-    right.set_xlabel("separation from first contact  s / c_a   [rms units; < 0 in contact]")
-    right.set_ylabel("load  P / P0^g")
+    right.set_xlabel(r"separation from first contact  $s/c_a$   [rms units; $< 0$ in contact]")
+    right.set_ylabel(r"load  $P/P_0^g$")
     right.set_xlim(-3, 0)
     right.set_ylim(1e-10, 100)
     right.set_title("Fig. 2b  load-separation, bounded side")
     for axis in (left, right):
-        axis.grid(True, which="major", alpha=0.3)
-        axis.legend(fontsize=8)
-    save(figure, docs, "paper_fig2")
+        axis.legend()
+    finish(figure, docs, "paper_fig2",
+           [SCALES, r"$s$: the separation from the highest summit (first contact) in units of the Weibull scale;"
+                    r" $c_a$: the rms of the Weibull heights of unit scale."])
 
     # Fig. 3: stiffness / load
     figure, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6))
@@ -93,11 +97,11 @@ def main():
         colour, dash = STYLE[name]
         left.plot(family["t"], family["stiffness_over_load"], dash, color=colour, label=name,
                   linewidth=2.5 if name == "Weibull a = 1" else 1.5)
-    left.plot(ts, [0.92 * (1 + t) for t in ts], ":", color="black", label="paper: 0.92 (1 + t)")
+    left.plot(ts, [0.92 * (1 + t) for t in ts], ":", color="black", label=r"paper: $0.92\,(1 + t)$")
     for beta in (0.5, 1.0):
-        left.axhline(1 / beta, color="gray", linestyle="-." if beta == 1 else ":", label=f"Persson 1/beta, beta = {beta}")
-    left.set_xlabel("t = (s - mu_a) / c_a   [rms units]")
-    left.set_ylabel("stiffness / load  -(dP/dt) / P")
+        left.axhline(1 / beta, color="gray", linestyle="-." if beta == 1 else ":", label=rf"Persson $1/\beta$, $\beta$ = {beta}")
+    left.set_xlabel(r"separation from the mean summit height  $t$   [rms units]")
+    left.set_ylabel(r"stiffness / load  $-(dP/dt)\,/\,P$")
     left.set_xlim(-1, 4.5)
     left.set_ylim(0, 6)
     left.set_title("Fig. 3a  stiffness/load, tail side")
@@ -105,13 +109,14 @@ def main():
         colour, dash = STYLE[name]
         right.loglog([-t for t in family["t"]], family["stiffness_over_load"], dash, color=colour, label=name)
     right.axhline(1, color="gray", linestyle=":", label="1")
-    right.set_xlabel("distance from first contact  -s / c_a   [rms units]")
-    right.set_ylabel("stiffness / load  -(dP/dt) / P")
+    right.set_xlabel(r"distance from first contact  $-s/c_a$   [rms units]")
+    right.set_ylabel(r"stiffness / load  $-(dP/dt)\,/\,P$")
     right.set_title("Fig. 3b  stiffness/load, bounded side (infinite at first contact)")
     for axis in (left, right):
-        axis.grid(True, which="both", alpha=0.3)
-        axis.legend(fontsize=7.5)
-    save(figure, docs, "paper_fig3")
+        axis.legend()
+    finish(figure, docs, "paper_fig3",
+           [SEPARATION, r"The stiffness/load ratio is in the same rms units: $-(dP/dt)/P = (3/2)\,c_a X_{1/2}/X_{3/2}$;"
+                        r" on the bounded side $t$ is $s/c_a$ (zero at first contact)."])
 
     # the claims
     claims = defaultdict(list)

@@ -1,10 +1,7 @@
-# Sourced by the report scripts: Debian's python3-matplotlib for /usr/bin/python3, installed
-# here when missing and run as root.
+# Sourced by the report scripts: they need Debian's python3-matplotlib for /usr/bin/python3.
+# Nothing is installed here: the script says what is missing and stops.
 if ! /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  if [ "$(id -u)" = 0 ]; then
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-matplotlib >/dev/null
-  else
-    echo "$(basename "$0"): needs python3-matplotlib (apt-get install python3-matplotlib)" >&2
-    exit 1
-  fi
+  echo "$(basename "$0"): needs matplotlib for /usr/bin/python3; install it with" >&2
+  echo "  sudo apt-get install python3-matplotlib" >&2
+  exit 1
 fi

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Measure speed against error and write docs/speed-vs-error.md, .svg and .png.
 #   scripts/speed-vs-error.sh            (after scripts/setup.sh; BUILD_DIR=build by default)
-# Needs Debian's python3-matplotlib (installed here if missing, when run as root).
+# Needs Debian's python3-matplotlib (scripts/require-matplotlib.sh says so if it is missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}

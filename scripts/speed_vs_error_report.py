@@ -13,18 +13,45 @@ import subprocess
 import sys
 from pathlib import Path
 
-import matplotlib
+from matplotlib.lines import Line2D
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from report_style import plt, save
 
-FAMILY_STYLE = {
-    "asperity scalar": ("o", "tab:blue"),
-    "asperity batch": ("s", "tab:green"),
-    "Boost.Math": ("^", "tab:orange"),
+# Our two paths are lines through their knot densities (labelled once, at the batch end of each
+# density's pair); every other method is a marker of its own, named in the legend, not on the plot.
+OURS = {"asperity scalar": ("o", "tab:blue"), "asperity batch": ("s", "tab:green")}
+OTHERS = {
+    "Boost cardinal_quintic_hermite": ("^", "tab:orange"),
+    "Boost quintic_hermite": ("v", "tab:brown"),
+    "Boost cubic_hermite": ("<", "tab:olive"),
+    "Boost makima": (">", "tab:pink"),
     "quadrature": ("D", "tab:red"),
     "curve fit": ("X", "tab:purple"),
 }
+FLOOR = 1e-17  # an error of exactly 0 still gets a place on the log axis
+
+
+def other_style(row):
+    if row["family"] in ("quadrature", "curve fit"):
+        return OTHERS[row["family"]]
+    return OTHERS.get(row["method"], ("*", "tab:gray"))
+
+
+def spread_labels(figure, labels, gap_points=9.0):
+    """Moves density labels apart vertically (in each panel) so that no two overlap."""
+    figure.canvas.draw()
+    to_points = 72.0 / figure.dpi
+    by_axis = {}
+    for annotation in labels:
+        by_axis.setdefault(id(annotation.axes), []).append(annotation)
+    for group in by_axis.values():
+        anchored = sorted(group, key=lambda a: a.axes.transData.transform(a.xy)[1])
+        previous = None
+        for annotation in anchored:
+            y = annotation.axes.transData.transform(annotation.xy)[1] * to_points
+            wanted = y if previous is None else max(y, previous + gap_points)
+            annotation.set_position((annotation.xyann[0], wanted - y - 3))
+            previous = wanted
 
 
 def load(path):
@@ -63,12 +90,6 @@ def pareto(rows):
     return front
 
 
-def label(row):
-    if row["family"].startswith("asperity"):
-        return f"{row['method']} x{row['density']:g}"
-    return row["method"]
-
-
 def machine_description(context):
     cpu = "unknown CPU"
     try:
@@ -96,7 +117,7 @@ def main():
     context, rows = load(results)
     studies = list(dict.fromkeys(row["study"] for row in rows))
 
-    figure, axes = plt.subplots(1, len(studies), figsize=(7.5 * len(studies), 6.2))
+    figure, axes = plt.subplots(1, len(studies), figsize=(6.5 * len(studies), 6.4))
     if len(studies) == 1:
         axes = [axes]
     lines = [
@@ -124,31 +145,42 @@ def main():
         "(ours) or the one order interpolated (Boost).",
         "",
     ]
+    density_labels = []
     for axis, study in zip(axes, studies):
         study_rows = [row for row in rows if row["study"] == study]
         front = pareto(study_rows)
-        for family, (marker, colour) in FAMILY_STYLE.items():
-            members = [row for row in study_rows if row["family"] == family]
-            if members:
-                axis.scatter(
-                    [r["ns"] for r in members], [max(r["error"], 1e-17) for r in members],
-                    marker=marker, color=colour, label=family, s=55, zorder=3,
-                )
-        front_rows = sorted((study_rows[i] for i in front), key=lambda r: r["ns"])
-        axis.step(
-            [r["ns"] for r in front_rows], [max(r["error"], 1e-17) for r in front_rows],
-            where="post", color="black", linewidth=1, linestyle="--", label="Pareto front", zorder=2,
-        )
+        for family, (marker, colour) in OURS.items():
+            members = sorted((r for r in study_rows if r["family"] == family), key=lambda r: r["error"])
+            axis.plot([r["ns"] for r in members], [max(r["error"], FLOOR) for r in members], marker=marker,
+                      color=colour, markersize=6, linewidth=1, zorder=3)
+        # each density's scalar and batch points share one error: join them, name the density once
         for row in study_rows:
-            axis.annotate(label(row), (row["ns"], max(row["error"], 1e-17)), fontsize=6.5,
-                          xytext=(4, 3), textcoords="offset points")
+            if row["family"] != "asperity batch":
+                continue
+            scalar = next((r for r in study_rows if r["family"] == "asperity scalar" and r["density"] == row["density"]),
+                          None)
+            if scalar:
+                axis.plot([row["ns"], scalar["ns"]], [max(row["error"], FLOOR)] * 2, color="0.75", linewidth=0.8,
+                          zorder=1)
+            density_labels.append(axis.annotate(
+                f"x{row['density']:g}", (row["ns"], max(row["error"], FLOOR)), xytext=(-6, -3),
+                textcoords="offset points", ha="right", fontsize=8, color="tab:green"))
+        for row in study_rows:
+            if row["family"].startswith("asperity"):
+                continue
+            marker, colour = other_style(row)
+            axis.scatter([row["ns"]], [max(row["error"], FLOOR)], marker=marker, color=colour, s=60, zorder=4,
+                         edgecolors="black", linewidths=0.4)
+        front_rows = sorted((study_rows[i] for i in front), key=lambda r: r["ns"])
+        axis.step([r["ns"] for r in front_rows], [max(r["error"], FLOOR) for r in front_rows], where="post",
+                  color="black", linewidth=1, linestyle="--", zorder=2)
         axis.set_xscale("log")
         axis.set_yscale("log")
+        low, high = axis.get_xlim()
+        axis.set_xlim(low / 2.5, high)  # room for the density labels left of the batch points
         axis.set_xlabel("median time per query (ns)")
-        axis.set_ylabel("maximum relative error")
-        axis.set_title(study, fontsize=10)
-        axis.grid(True, which="major", alpha=0.3)
-        axis.legend(fontsize=8, loc="best")
+        axis.set_ylabel("maximum relative error over the range")
+        axis.set_title(study)
 
         default = next(r for r in study_rows if r["method"] == "asperity scalar" and r["density"] == 1)
         lines += [f"## {study}", "", "| method | density | table | ns/query | vs our scalar | max rel error | Pareto |",
@@ -162,9 +194,16 @@ def main():
                 f" {'yes' if index in front else ''} |"
             )
         lines.append("")
-    figure.tight_layout()
-    figure.savefig(out_dir / "speed-vs-error.svg")
-    figure.savefig(out_dir / "speed-vs-error.png", dpi=130)
+    present = {other_style(r)[0] for r in rows if not r["family"].startswith("asperity")}
+    handles = [Line2D([], [], marker=m, color=c, label=f"ours, {f.split()[1]} (xD: knot density D)")
+               for f, (m, c) in OURS.items()]
+    handles += [Line2D([], [], marker=m, color=c, linestyle="none", markeredgecolor="black", markeredgewidth=0.4,
+                       label=name) for name, (m, c) in OTHERS.items() if m in present]
+    handles.append(Line2D([], [], color="black", linestyle="--", label="Pareto front (nothing both faster and more accurate)"))
+    figure.legend(handles=handles, loc="lower center", ncol=3, frameon=False)
+    figure.tight_layout(rect=(0, 0.13, 1, 1))
+    spread_labels(figure, density_labels)
+    save(figure, out_dir, "speed-vs-error", dpi=130)
     (out_dir / "speed-vs-error.md").write_text("\n".join(lines) + "\n" + READING)
 
 

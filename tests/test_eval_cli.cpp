@@ -1,11 +1,13 @@
-// The `asperity eval` contract: header, %.17g numbers, logs finite below 1e-308, -inf where
-// the value is exactly 0, bad rows named by line with good rows kept.
+// The `asperity eval` contract: header, numbers in the shortest form that reads back to the same
+// double, logs finite below 1e-308, -inf where the value is exactly 0, bad rows named by line
+// with good rows kept, any line ending; and the one number reader and writer of the commands.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
 #include "eval_csv.hpp"
+#include "number_text.hpp"
 
 namespace {
 using namespace asperity;
@@ -50,8 +52,14 @@ TEST(EvalCsv, WritesTheContractHeaderAndValues) {
   auto zero = fields(rows[4]);  // bounded side out of contact: exactly 0, log -inf
   EXPECT_EQ(zero[9], "0");
   EXPECT_EQ(zero[15], "-inf");
-  // %.17g round-trips the double exactly
+  // the shortest text that reads back to the same double
   EXPECT_EQ(fields(rows[2])[3], "1.5");
+  for (const std::string& row : rows)
+    for (const std::string& field : fields(row)) {
+      double value;
+      if (!cli::read_double(field, value) || !std::isfinite(value)) continue;
+      EXPECT_EQ(cli::format_double(value), field) << "not the shortest form: " << field;
+    }
 }
 
 TEST(EvalCsv, BadRowsAreNamedAndGoodRowsKept) {
@@ -74,6 +82,84 @@ TEST(EvalCsv, RejectsAMissingOrWrongHeader) {
   EXPECT_EQ(cli::eval_csv(table(), empty, output, errors), 1);
   EXPECT_EQ(cli::eval_csv(table(), wrong, output, errors), 1);
   EXPECT_NE(errors.str().find("line 1"), std::string::npos);
+}
+
+TEST(EvalCsv, EchoesShapesInTheShortestFormThatReadsBack) {
+  std::stringstream input("dist,side,shape,sep\nweibull,tail,1.6,0.1\nweibull,tail,1.60,3e-1\n");
+  std::stringstream output, errors;
+  ASSERT_EQ(cli::eval_csv(table(), input, output, errors), 0) << errors.str();
+  const auto rows = lines(output.str());
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(fields(rows[1])[2], "1.6");  // not 1.6000000000000001
+  EXPECT_EQ(fields(rows[2])[2], "1.6");
+  EXPECT_EQ(fields(rows[2])[3], "0.3");
+}
+
+TEST(EvalCsv, ReadsEveryLineEnding) {
+  for (const char* text : {"dist,side,shape,sep\nweibull,tail,2,0\nweibull,tail,2,1\n",
+                           "dist,side,shape,sep\r\nweibull,tail,2,0\r\nweibull,tail,2,1\r\n",
+                           "dist,side,shape,sep\rweibull,tail,2,0\rweibull,tail,2,1\r",
+                           "dist,side,shape,sep\rweibull,tail,2,0\r\nweibull,tail,2,1"}) {
+    std::stringstream input(text), output, errors;
+    EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 0) << errors.str();
+    EXPECT_EQ(lines(output.str()).size(), 3u) << output.str();
+  }
+  // A lone CR counts as a line: the bad row is named by its line.
+  std::stringstream input("dist,side,shape,sep\rweibull,tail,2,0\rweibull,tail,2,x\r"), output, errors;
+  EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 1);
+  EXPECT_NE(errors.str().find("line 3: sep 'x'"), std::string::npos) << errors.str();
+}
+
+TEST(EvalCsv, RefusesBytesAfterANumber) {
+  using namespace std::string_literals;  // the text holds NUL bytes
+  const std::string text = "dist,side,shape,sep\nweibull,tail,0.5\0junk,1\nweibull,tail,2,1\0\n"s;
+  std::stringstream input(text), output, errors;
+  EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 2);
+  EXPECT_NE(errors.str().find("line 2: shape '0.5\\x00junk'"), std::string::npos) << errors.str();
+  EXPECT_NE(errors.str().find("line 3: sep '1\\x00'"), std::string::npos) << errors.str();
+  EXPECT_EQ(lines(output.str()).size(), 1u);
+}
+
+TEST(EvalCsv, NamesAShapeOutsideTheTableWithItsOwnDigits) {
+  std::stringstream input("dist,side,shape,sep\nweibull,tail,0.4999999,1\n"), output, errors;
+  EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 1);
+  EXPECT_NE(errors.str().find("shape 0.4999999 is outside the table's range [0.5, 20]"), std::string::npos)
+      << errors.str();
+}
+
+TEST(EvalCsv, RefusesAnOverlongLineAndGoesOn) {
+  std::string text = "\xEF\xBB\xBF" "dist,side,shape,sep\nweibull,tail,2,";
+  text += std::string(cli::max_line_bytes, '1');
+  text += "\nweibull,tail,2,1\n";
+  std::stringstream input(text), output, errors;
+  EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 1);
+  EXPECT_NE(errors.str().find("line 2: longer than"), std::string::npos) << errors.str();
+  EXPECT_EQ(lines(output.str()).size(), 2u);
+}
+
+TEST(NumberText, ReadsAllOfTheTextAndRoundsOnce) {
+  double value = -1;
+  EXPECT_TRUE(cli::read_double("1.6", value));
+  EXPECT_EQ(value, 1.6);
+  EXPECT_TRUE(cli::read_double("+2.5e-3", value));
+  EXPECT_EQ(value, 2.5e-3);
+  EXPECT_TRUE(cli::read_double("1e400", value));
+  EXPECT_EQ(value, INFINITY);  // beyond DBL_MAX: rounds to inf (callers refuse it)
+  EXPECT_TRUE(cli::read_double("-1e-400", value));
+  EXPECT_EQ(value, 0.0);
+  EXPECT_TRUE(std::signbit(value));
+  for (const char* bad : {"", " 1", "1 ", "1e", "0x1p3", "++1", "+-1", "1,5", "--1"})
+    EXPECT_FALSE(cli::read_double(bad, value)) << bad;
+  EXPECT_FALSE(cli::read_double(std::string_view("0.5\0junk", 8), value));
+  long long whole = 0;
+  EXPECT_TRUE(cli::read_whole_number("42", 1, 100, whole));
+  EXPECT_EQ(whole, 42);
+  for (const char* bad : {"1e300", "1e3", "0", "101", "4.0", "010x", ""})
+    EXPECT_FALSE(cli::read_whole_number(bad, 1, 100, whole)) << bad;
+  EXPECT_EQ(cli::format_double(1.6), "1.6");
+  EXPECT_EQ(cli::format_double(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(cli::format_double(-INFINITY), "-inf");
+  EXPECT_EQ(cli::quote_text(std::string_view("a\0b\n", 4)), "a\\x00b\\x0A");
 }
 
 }  // namespace

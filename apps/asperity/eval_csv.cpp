@@ -1,73 +1,116 @@
 #include "eval_csv.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include <ios>
 #include <istream>
 #include <map>
 #include <ostream>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "number_text.hpp"
 
 namespace asperity::cli {
 namespace {
 
-std::string trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  const auto last = text.find_last_not_of(" \t\r");
+// Lines from a stream in blocks: LF, CRLF and a lone CR all end a line; a line longer than
+// max_line_bytes is cut there (flagged) and the rest of it skipped, so memory stays bounded.
+class LineReader {
+ public:
+  explicit LineReader(std::istream& input) : input_(input), block_(1 << 16) {}
+
+  // False at the end of the input.
+  bool next(std::string& line, bool& too_long) {
+    line.clear();
+    too_long = false;
+    bool any = false;
+    for (;;) {
+      if (position_ == filled_ && !refill()) return any;
+      const char c = block_[position_++];
+      if (skip_lf_) {  // the LF of a CRLF
+        skip_lf_ = false;
+        if (c == '\n') continue;
+      }
+      any = true;
+      if (c == '\n') return true;
+      if (c == '\r') {
+        skip_lf_ = true;
+        return true;
+      }
+      if (line.size() < max_line_bytes) line += c;
+      else too_long = true;
+    }
+  }
+
+ private:
+  bool refill() {
+    try {
+      filled_ = static_cast<std::size_t>(input_.rdbuf()->sgetn(block_.data(), static_cast<std::streamsize>(block_.size())));
+    } catch (const std::ios_base::failure& failure) {  // libstdc++'s filebuf throws on a read error
+      throw Error("reading the input failed: " + failure.code().message());
+    }
+    position_ = 0;
+    return filled_ > 0;
+  }
+
+  std::istream& input_;
+  std::vector<char> block_;
+  std::size_t position_ = 0, filled_ = 0;
+  bool skip_lf_ = false;
+};
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
   return text.substr(first, last - first + 1);
 }
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream stream(line);
-  std::string field;
-  while (std::getline(stream, field, ',')) fields.push_back(trim(field));
-  if (!line.empty() && line.back() == ',') fields.push_back("");
-  return fields;
-}
-
-bool parse_double(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return *end == '\0';
-}
-
-std::string number(double value) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> fields;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = line.find(',', start);
+    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) return fields;
+    start = comma + 1;
+  }
 }
 
 }  // namespace
 
 int eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors) {
+  LineReader reader(input);
   std::string line;
-  if (!std::getline(input, line)) {
+  bool too_long = false;
+  if (!reader.next(line, too_long)) {
     errors << "asperity eval: line 1: empty input, expected the header dist,side,shape,sep\n";
     return 1;
   }
-  if (!line.empty() && static_cast<unsigned char>(line[0]) == 0xEF) line.erase(0, 3);  // UTF-8 BOM
-  if (split(line) != std::vector<std::string>{"dist", "side", "shape", "sep"}) {
-    errors << "asperity eval: line 1: expected the header dist,side,shape,sep, got '" << trim(line) << "'\n";
+  if (line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // UTF-8 byte order mark
+  const std::vector<std::string_view> header = split(line);
+  if (too_long || header != std::vector<std::string_view>{"dist", "side", "shape", "sep"}) {
+    errors << "asperity eval: line 1: expected the header dist,side,shape,sep, got '" << quote_text(trim(line))
+           << "'\n";
     return 1;
   }
   output << "dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,lnI1_2,lnI1,lnI3_2,lnI2,lnI5_2\n";
   // Resolving a shape costs more than a query: keep the curves already made (bounded cache).
   std::map<std::tuple<int, int, double>, Curve> curves;
   int bad = 0;
-  for (long line_number = 2; std::getline(input, line); ++line_number) {
-    if (trim(line).empty()) continue;
+  for (long line_number = 2; output && reader.next(line, too_long); ++line_number) {
     auto reject = [&](const std::string& why) {
       errors << "asperity eval: line " << line_number << ": " << why << "\n";
       ++bad;
     };
-    const std::vector<std::string> fields = split(line);
+    if (too_long) {
+      reject("longer than " + std::to_string(max_line_bytes) + " bytes");
+      continue;
+    }
+    if (trim(line).empty()) continue;
+    const std::vector<std::string_view> fields = split(line);
     if (fields.size() != 4) {
       reject("expected 4 fields dist,side,shape,sep, got " + std::to_string(fields.size()));
       continue;
@@ -75,17 +118,26 @@ int eval_csv(const Table& table, std::istream& input, std::ostream& output, std:
     Distribution distribution;
     Side side;
     double shape = 0, separation = 0;
-    if (!parse_distribution(fields[0], distribution)) { reject("unknown dist '" + fields[0] + "' (weibull or gaussian)"); continue; }
-    if (!parse_side(fields[1], side)) { reject("unknown side '" + fields[1] + "' (tail or bounded)"); continue; }
-    if (distribution == Distribution::gaussian) {
-      if (!fields[2].empty() && !parse_double(fields[2], shape)) { reject("shape '" + fields[2] + "' is not a number"); continue; }
-      shape = 2;  // ignored for the Gaussian
-    } else if (!parse_double(fields[2], shape) || !std::isfinite(shape)) {
-      reject("shape '" + fields[2] + "' is not a finite number");
+    if (!parse_distribution(fields[0], distribution)) {
+      reject("unknown dist '" + quote_text(fields[0]) + "' (weibull or gaussian)");
       continue;
     }
-    if (!parse_double(fields[3], separation) || !std::isfinite(separation)) {
-      reject("sep '" + fields[3] + "' is not a finite number");
+    if (!parse_side(fields[1], side)) {
+      reject("unknown side '" + quote_text(fields[1]) + "' (tail or bounded)");
+      continue;
+    }
+    if (distribution == Distribution::gaussian) {
+      if (!fields[2].empty() && !read_double(fields[2], shape)) {
+        reject("shape '" + quote_text(fields[2]) + "' is not a number");
+        continue;
+      }
+      shape = 2;  // ignored for the Gaussian
+    } else if (!read_double(fields[2], shape) || !std::isfinite(shape)) {
+      reject("shape '" + quote_text(fields[2]) + "' is not a finite number");
+      continue;
+    }
+    if (!read_double(fields[3], separation) || !std::isfinite(separation)) {
+      reject("sep '" + quote_text(fields[3]) + "' is not a finite number");
       continue;
     }
     const auto key = std::make_tuple(static_cast<int>(distribution), static_cast<int>(side), shape);
@@ -101,12 +153,14 @@ int eval_csv(const Table& table, std::istream& input, std::ostream& output, std:
     }
     const Curve& curve = found->second;
     std::string row = std::string(to_string(distribution)) + "," + to_string(side) + "," +
-                      (distribution == Distribution::gaussian ? fields[2] : number(shape)) + "," + number(separation);
+                      (distribution == Distribution::gaussian ? std::string(fields[2]) : format_double(shape)) + "," +
+                      format_double(separation);
     double logs[order_count];
     curve.log_values(separation, logs);
-    for (int k = 0; k < order_count; ++k) row += "," + number(std::exp(logs[k]));
-    for (int k = 0; k < order_count; ++k) row += "," + number(logs[k]);
-    output << row << "\n";
+    for (int k = 0; k < order_count; ++k) row += "," + format_double(std::exp(logs[k]));
+    for (int k = 0; k < order_count; ++k) row += "," + format_double(logs[k]);
+    row += '\n';
+    output << row;
   }
   return bad;
 }

@@ -1,4 +1,5 @@
-// `asperity eval`: CSV in (dist,side,shape,sep), CSV out (values and logs of the six orders).
+// `asperity eval`'s contract: CSV in (dist,side,shape,sep), CSV out (the values and logs of the
+// six orders), numbers in the shortest form that reads back to the same double.
 #pragma once
 #include <iosfwd>
 
@@ -7,7 +8,12 @@
 namespace asperity::cli {
 
 // Processes every row; a bad row is reported on `errors` with its line number and skipped.
-// Returns the number of bad rows (a bad or missing header counts as one and stops).
+// Lines end with LF, CRLF or a lone CR; a line longer than max_line_bytes is a bad row.
+// Returns the number of bad rows (a bad or missing header counts as one and stops). Stops early
+// when `output` fails (the caller reports the write error). Throws asperity::Error when reading
+// `input` fails.
 int eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors);
+
+inline constexpr std::size_t max_line_bytes = 65536;
 
 }  // namespace asperity::cli

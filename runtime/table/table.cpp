@@ -2,12 +2,21 @@
 
 #include <cmath>
 #include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <sstream>
 
 #include "asperity/error.hpp"
 #include "asperity/table_schema.hpp"
 
 namespace asperity {
+namespace {
+// In messages: the shortest text that reads back to the same double (0.4999999 is not "0.5").
+std::string shortest(double value) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+}
+}  // namespace
 
 double shape_grid_variable(double shape) { return std::log(shape) - 1 / shape; }
 
@@ -130,14 +139,15 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
     std::ostringstream message;
     message << "this scene table serves only its own " << to_string(distribution) << " " << to_string(side)
             << " shapes (";
-    for (std::size_t i = 0; i < set->shapes.size(); ++i) message << (i ? ", " : "") << set->shapes[i];
-    message << "), exactly; asked for " << shape;
+    for (std::size_t i = 0; i < set->shapes.size(); ++i) message << (i ? ", " : "") << shortest(set->shapes[i]);
+    message << "), exactly; asked for " << shortest(shape);
     throw Error(message.str());
   }
   const double lo = set->shape_min, hi = set->shape_max;
   if (!std::isfinite(shape) || shape < lo * (1 - 1e-12) || shape > hi * (1 + 1e-12)) {
     std::ostringstream message;
-    message << "shape " << shape << " is outside the table's range [" << lo << ", " << hi << "]";
+    message << "shape " << shortest(shape) << " is outside the table's range [" << shortest(lo) << ", "
+            << shortest(hi) << "]";
     throw Error(message.str());
   }
   const std::size_t count = set->shapes.size(), stride = set->curve_stride();

@@ -1,0 +1,323 @@
+#include "contact_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asperity/contact_model.hpp"
+#include "asperity/error.hpp"
+#include "command_line.hpp"
+#include "number_text.hpp"
+#include "pressure_overclosure.hpp"
+
+namespace asperity::cli {
+namespace {
+
+constexpr double not_given = NAN;  // add_number only ever stores finite numbers
+
+struct Options {
+  std::string table, dist, side, moments, sweep, export_format, pressure_range, units;
+  double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
+         count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
+         nu2 = not_given;
+  double separation = not_given, load = not_given, pressure = not_given, real_area = not_given;
+  double export_tolerance = not_given;
+};
+
+bool given(double value) { return !std::isnan(value); }
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream stream(text);
+  while (std::getline(stream, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.push_back("");
+  return parts;
+}
+
+std::string number(double value) { return format_double(value); }
+
+std::string approximately(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
+
+// The surface from the options; `given_scale` says which height scale was given and the other.
+PhysicalSurface surface_from(const Options& options, std::string& given_scale) {
+  PhysicalSurface surface;
+  if (options.dist.empty()) throw CLI::RequiredError("--dist");
+  if (!parse_distribution(options.dist, surface.distribution))
+    usage("--dist: '" + quote_text(options.dist) + "' is not weibull or gaussian");
+  if (!options.side.empty() && !parse_side(options.side, surface.side))
+    usage("--side: '" + quote_text(options.side) + "' is not tail or bounded");
+  const bool weibull = surface.distribution == Distribution::weibull;
+  if (weibull && !given(options.shape)) usage("--shape A is required for a Weibull surface (0.3 <= A <= 50)");
+  if (!weibull && given(options.shape)) usage("--shape is the Weibull shape: a Gaussian surface has none");
+  if (weibull) surface.shape = options.shape;
+
+  if (!given(options.area)) throw CLI::RequiredError("--area");
+  surface.nominal_area = options.area;
+  const bool four_moduli = given(options.e1) || given(options.nu1) || given(options.e2) || given(options.nu2);
+  if (given(options.modulus) == four_moduli) usage("give the contact modulus: --modulus, or --e1 --nu1 --e2 --nu2");
+  if (four_moduli && !(given(options.e1) && given(options.nu1) && given(options.e2) && given(options.nu2)))
+    usage("--e1 --nu1 --e2 --nu2 go together");
+  surface.contact_modulus =
+      four_moduli ? contact_modulus_from(options.e1, options.nu1, options.e2, options.nu2) : options.modulus;
+
+  if (!options.moments.empty()) {
+    if (weibull) usage("--moments describe a Gaussian surface (--dist gaussian)");
+    if (given(options.sigma) || given(options.rms) || given(options.radius) || given(options.density) ||
+        given(options.count))
+      usage("--moments set sigma, the radius and the density: give none of --sigma --rms --radius --density --count");
+    const std::vector<std::string> parts = split(options.moments, ',');
+    if (parts.size() != 3) usage("--moments wants M0,M2,M4, got '" + quote_text(options.moments) + "'");
+    const PhysicalSurface from = gaussian_surface_from_moments(
+        number_from_text(parts[0], "--moments M0"), number_from_text(parts[1], "--moments M2"),
+        number_from_text(parts[2], "--moments M4"), surface.nominal_area, surface.contact_modulus);
+    surface.height_scale = from.height_scale;
+    surface.summit_radius = from.summit_radius;
+    surface.summit_density = from.summit_density;
+    surface.validate();
+    given_scale = "--moments (Nayak-McCool): rms summit height sigma " + approximately(surface.height_scale) +
+                  " m, summit radius " + approximately(surface.summit_radius) + " m, summit density " +
+                  approximately(surface.summit_density) + " per m^2";
+    return surface;
+  }
+  if (given(options.sigma) == given(options.rms))
+    usage("give the height scale once: --sigma (Weibull: its scale; Gaussian: the rms summit height) or --rms");
+  if (!given(options.radius)) throw CLI::RequiredError("--radius");
+  if (given(options.density) == given(options.count)) usage("give the summit density once: --density or --count");
+  surface.summit_radius = options.radius;
+  if (given(options.density)) surface.summit_density = options.density;
+  else if (!(options.count > 0)) usage("--count must be positive, got " + number(options.count));
+  else surface.summit_density = options.count / surface.nominal_area;
+  // The rms summit height of a Weibull surface is weibull_rms(shape) times its scale.
+  const double rms_per_scale = weibull ? weibull_rms(surface.shape) : 1.0;
+  surface.height_scale = given(options.sigma) ? options.sigma : options.rms / rms_per_scale;
+  surface.validate();
+  if (!weibull)
+    given_scale = "sigma " + number(surface.height_scale) + " m is the Gaussian's rms summit height";
+  else if (given(options.sigma))
+    given_scale = "--sigma " + number(options.sigma) + " m given (the Weibull scale); rms summit height " +
+                  approximately(surface.height_scale * rms_per_scale) + " m (rms = " + approximately(rms_per_scale) +
+                  " sigma for shape " + number(surface.shape) + ")";
+  else
+    given_scale = "--rms " + number(options.rms) + " m given (the rms summit height); Weibull scale sigma " +
+                  approximately(surface.height_scale) + " m (rms = " + approximately(rms_per_scale) +
+                  " sigma for shape " + number(surface.shape) + ")";
+  return surface;
+}
+
+struct Sweep {
+  std::string kind;
+  double from = 0, to = 0;
+  long count = 0;
+};
+
+Sweep sweep_from(const std::string& text) {
+  const std::vector<std::string> parts = split(text, ':');
+  if (parts.size() != 4) usage("--sweep wants KIND:FROM:TO:COUNT, got '" + quote_text(text) + "'");
+  Sweep sweep;
+  sweep.kind = parts[0];
+  if (sweep.kind != "separation" && sweep.kind != "load" && sweep.kind != "pressure" && sweep.kind != "real-area")
+    usage("--sweep: unknown KIND '" + quote_text(sweep.kind) + "' (separation, load, pressure, real-area)");
+  sweep.from = number_from_text(parts[1], "--sweep FROM");
+  sweep.to = number_from_text(parts[2], "--sweep TO");
+  const double count = number_from_text(parts[3], "--sweep COUNT");
+  if (!(count >= 2 && count <= 1e6 && count == std::floor(count)))
+    usage("--sweep COUNT must be a whole number from 2 to 1000000, got '" + quote_text(parts[3]) + "'");
+  sweep.count = static_cast<long>(count);
+  if (sweep.kind != "separation" && !(sweep.from > 0 && sweep.to > 0))
+    usage("--sweep: a load, pressure or real-area sweep is logarithmic and needs FROM, TO > 0");
+  return sweep;
+}
+
+// The k-th of `count` values from `from` to `to`, linear or logarithmic (in logs, so that no
+// ratio of the ends overflows), the ends exact.
+double sweep_value(const Sweep& sweep, long k) {
+  if (k == 0) return sweep.from;
+  if (k == sweep.count - 1) return sweep.to;
+  const double fraction = static_cast<double>(k) / static_cast<double>(sweep.count - 1);
+  if (sweep.kind == "separation") return sweep.from + (sweep.to - sweep.from) * fraction;
+  const double log_from = std::log(sweep.from), log_to = std::log(sweep.to);
+  return std::exp(log_from + (log_to - log_from) * fraction);
+}
+
+PhysicalState query(const ContactModel& model, const std::string& kind, double value) {
+  if (kind == "separation") return model.at_separation(value);
+  if (kind == "load") return model.at_load(value);
+  if (kind == "pressure") return model.at_pressure(value);
+  return model.at_real_area(value);
+}
+
+void print(const PhysicalState& state) {
+  std::printf("%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.mean_separation,
+              state.count, state.real_area, state.area_fraction, state.load, state.pressure, state.stiffness,
+              state.stiffness_over_load);
+}
+
+void warn_past_gw(const CLI::App& command, double area_fraction) {
+  if (!(area_fraction > gw_area_fraction_limit)) return;
+  warn(command, "the real contact area reaches " + approximately(area_fraction) +
+                    " of the nominal area (above " + approximately(gw_area_fraction_limit) +
+                    "): Greenwood-Williamson treats the asperity contacts as sparse and independent, "
+                    "which no longer holds there" +
+                    (area_fraction > 1 ? "; above 1 the answer is impossible" : ""));
+}
+
+std::string describe(const PhysicalSurface& surface) {
+  std::ostringstream text;
+  text << to_string(surface.distribution) << " " << to_string(surface.side) << " summit heights";
+  if (surface.distribution == Distribution::weibull)
+    text << ", shape " << number(surface.shape) << ", scale sigma " << number(surface.height_scale)
+         << " m (rms summit height " << approximately(surface.height_scale * weibull_rms(surface.shape)) << " m)";
+  else
+    text << ", rms summit height sigma " << number(surface.height_scale) << " m";
+  text << "\nsummit radius " << number(surface.summit_radius) << " m, summit density "
+       << number(surface.summit_density) << " per m^2, nominal area " << number(surface.nominal_area)
+       << " m^2, contact modulus E* " << number(surface.contact_modulus) << " Pa";
+  return text.str();
+}
+
+int export_law(const Options& options, const ContactModel& model, const CLI::App& command, CardFormat format,
+               CardUnits units) {
+  const std::vector<std::string> range = split(options.pressure_range, ':');
+  if (range.size() != 2) usage("--pressure-range wants PMIN:PMAX (Pa), got '" + quote_text(options.pressure_range) + "'");
+  const double low = number_from_text(range[0], "--pressure-range PMIN");
+  const double high = number_from_text(range[1], "--pressure-range PMAX");
+  if (!(low > 0 && high > low)) usage("--pressure-range needs 0 < PMIN < PMAX");
+  const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
+  const PressureOverclosureTable table = tabulate_pressure_overclosure(model, low, high, tolerance);
+  write_pressure_overclosure(std::cout, table, format, units,
+                             "asperity " ASPERITY_VERSION_STRING
+                             ": the pressure-overclosure law of a rough surface against a flat "
+                             "(Greenwood-Williamson)\n" +
+                                 describe(model.surface()));
+  note(command, std::to_string(table.points.size()) + " points; linear interpolation within " + number(tolerance) +
+                    " of the law from " + number(low) + " to " + number(high) + " Pa (measured at most " +
+                    approximately(table.max_error) + " at " + std::to_string(table.checked_points) + " points)");
+  warn_past_gw(command, model.at_pressure(high).area_fraction);
+  return exit_success;
+}
+
+int run_contact(const Options& options, const CLI::App& command) {
+  std::string given_scale;
+  const PhysicalSurface surface = surface_from(options, given_scale);
+  const int queries = given(options.separation) + given(options.load) + given(options.pressure) +
+                      given(options.real_area) + !options.sweep.empty() + !options.export_format.empty();
+  if (queries != 1)
+    usage(queries == 0 ? "a query is required: --separation, --load, --pressure, --real-area, --sweep or --export"
+                       : "give one query: --separation, --load, --pressure, --real-area, --sweep or --export");
+  CardFormat format = CardFormat::csv;
+  CardUnits units = CardUnits::si;
+  if (!options.export_format.empty()) {
+    if (!parse_card_format(options.export_format, format))
+      usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
+    if (!options.units.empty() && !parse_card_units(options.units, units))
+      usage("--units: '" + quote_text(options.units) + "' is not si or mm");
+    if (options.pressure_range.empty()) throw CLI::RequiredError("--pressure-range (with --export)");
+  } else if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance)) {
+    usage("--pressure-range, --units and --export-tolerance go with --export");
+  }
+  Sweep sweep;
+  if (!options.sweep.empty()) sweep = sweep_from(options.sweep);
+
+  const Table table = open_table(options.table);
+  const ContactModel model(table, surface);
+  if (!given_scale.empty()) note(command, given_scale);
+  if (!options.export_format.empty()) return export_law(options, model, command, format, units);
+
+  std::printf("separation_m,mean_separation_m,count,real_area_m2,area_fraction,load_N,nominal_pressure_Pa,"
+              "stiffness_N_per_m,stiffness_over_load_per_m\n");
+  double largest_fraction = 0;
+  auto row = [&](const PhysicalState& state) {
+    print(state);
+    if (state.area_fraction > largest_fraction) largest_fraction = state.area_fraction;
+  };
+  if (!options.sweep.empty()) {
+    for (long k = 0; k < sweep.count; ++k) row(query(model, sweep.kind, sweep_value(sweep, k)));
+  } else if (given(options.separation)) {
+    row(model.at_separation(options.separation));
+  } else if (given(options.load)) {
+    row(model.at_load(options.load));
+  } else if (given(options.pressure)) {
+    row(model.at_pressure(options.pressure));
+  } else {
+    row(model.at_real_area(options.real_area));
+  }
+  warn_past_gw(command, largest_fraction);
+  return exit_success;
+}
+
+}  // namespace
+
+void add_contact_command(CLI::App& app) {
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "contact", "a physical rough surface against a flat: count, real area, load, pressure and stiffness at a "
+                 "separation, a load, a pressure or a real area (CSV), or its pressure-overclosure law for FE codes");
+  Options& o = *options;
+  add_table_option(*command, o.table);
+  add_text(*command, "--dist", o.dist, "summit heights: weibull or gaussian (required)")->type_name("NAME")->group("Surface (SI units)");
+  add_text(*command, "--side", o.side, "tail (default; GW's approach) or bounded (Weibull only: worn surfaces)")->type_name("SIDE")->group("Surface (SI units)");
+  add_number(*command, "--shape", o.shape, "Weibull shape a, 0.3 to 50 (required for the Weibull)")->type_name("A")->group("Surface (SI units)");
+  add_number(*command, "--sigma", o.sigma,
+             "height scale [m]: the Weibull scale sigma_s (not its rms), or the Gaussian's rms summit height")
+      ->type_name("M")->group("Surface (SI units)");
+  add_number(*command, "--rms", o.rms,
+             "rms summit height [m], what GW users measure (Weibull: sigma = rms / weibull_rms(a); "
+             "for a = 1.6, rms = 0.574 sigma); give --sigma or --rms")
+      ->type_name("M")->group("Surface (SI units)");
+  add_number(*command, "--radius", o.radius, "summit radius R [m]")->type_name("M")->group("Surface (SI units)");
+  add_number(*command, "--density", o.density, "summits per unit nominal area [1/m^2]")->type_name("PER_M2")->group("Surface (SI units)");
+  add_number(*command, "--count", o.count, "summits in all (instead of --density)")->type_name("N")->group("Surface (SI units)");
+  add_number(*command, "--area", o.area, "nominal area A0 [m^2] (required)")->type_name("M2")->group("Surface (SI units)");
+  add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (or --e1 --nu1 --e2 --nu2)")->type_name("PA")->group("Surface (SI units)");
+  add_number(*command, "--e1", o.e1, "Young's modulus of body 1 [Pa]")->type_name("PA")->group("Surface (SI units)");
+  add_number(*command, "--nu1", o.nu1, "Poisson's ratio of body 1")->type_name("X")->group("Surface (SI units)");
+  add_number(*command, "--e2", o.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group("Surface (SI units)");
+  add_number(*command, "--nu2", o.nu2, "Poisson's ratio of body 2")->type_name("X")->group("Surface (SI units)");
+  add_text(*command, "--moments", o.moments,
+           "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
+      ->type_name("M0,M2,M4")->group("Surface (SI units)");
+  add_number(*command, "--separation", o.separation, "at a separation [m] (origin convention)")->type_name("M")->group("Query (one)");
+  add_number(*command, "--load", o.load, "at a load [N]")->type_name("N")->group("Query (one)");
+  add_number(*command, "--pressure", o.pressure, "at a nominal pressure [Pa]")->type_name("PA")->group("Query (one)");
+  add_number(*command, "--real-area", o.real_area, "at a real contact area [m^2]")->type_name("M2")->group("Query (one)");
+  add_text(*command, "--sweep", o.sweep,
+           "COUNT queries from FROM to TO: KIND separation (linear), load, pressure or real-area (logarithmic)")
+      ->type_name("KIND:FROM:TO:COUNT")->group("Query (one)");
+  add_text(*command, "--export", o.export_format,
+           "the pressure-overclosure law as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card "
+           "(calculix, abaqus) or CSV, on standard output")
+      ->type_name("FORMAT")->group("Query (one)");
+  add_text(*command, "--pressure-range", o.pressure_range, "with --export: nominal pressures covered [Pa]")
+      ->type_name("PMIN:PMAX")->group("FE export");
+  add_number(*command, "--export-tolerance", o.export_tolerance,
+             "with --export: largest relative error of linear interpolation between the points (default 1e-3)")
+      ->type_name("REL")->group("FE export");
+  add_text(*command, "--units", o.units, "with --export: si (m, Pa; default) or mm (mm, MPa = N/mm^2)")
+      ->type_name("UNITS")->group("FE export");
+  command->footer(
+      "Output: CSV, one row per query: separation_m (origin convention: from the Weibull origin or the\n"
+      "Gaussian's mean), mean_separation_m (from the mean summit height), count, real_area_m2,\n"
+      "area_fraction, load_N, nominal_pressure_Pa, stiffness_N_per_m, stiffness_over_load_per_m.\n"
+      "Standard error says which height scale was given and the other's value, and warns when the\n"
+      "real-area fraction exceeds 0.1: GW's asperities are independent Hertz contacts, which holds only\n"
+      "while the contacts are sparse (above 1 the answer is impossible).\n"
+      "FE export: overclosure is the interpenetration of the surfaces (a clearance is negative),\n"
+      "measured from the rough surface's mean summit height; the card's header states the units, the\n"
+      "range and the measured interpolation error.\n" +
+      std::string(exit_status_help));
+  CLI::App* self = command;
+  set_action(*command, [options, self] { return run_contact(*options, *self); });
+}
+
+}  // namespace asperity::cli

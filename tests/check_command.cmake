@@ -1,0 +1,35 @@
+# Runs one command and checks what it did: its exit status, and regular expressions its
+# standard output and standard error must (or must not) match.
+#   cmake -DPROGRAM=... -DARGS="a|b|c" [-DSTATUS=N] [-DSTDOUT=regex] [-DSTDERR=regex]
+#         [-DNOT_STDOUT=regex] [-DNOT_STDERR=regex] [-DOUTPUT_FILE=path] [-DINPUT_FILE=path]
+#         -P check_command.cmake
+# ARGS separates the arguments with '|' (a CMake list cannot pass through -D whole).
+cmake_minimum_required(VERSION 3.18)
+string(REPLACE "|" ";" arguments "${ARGS}")
+set(redirect)
+if(DEFINED OUTPUT_FILE)
+  list(APPEND redirect OUTPUT_FILE "${OUTPUT_FILE}")
+else()
+  list(APPEND redirect OUTPUT_VARIABLE out)
+endif()
+if(DEFINED INPUT_FILE)
+  list(APPEND redirect INPUT_FILE "${INPUT_FILE}")
+endif()
+execute_process(COMMAND "${PROGRAM}" ${arguments} RESULT_VARIABLE status ERROR_VARIABLE err ${redirect})
+set(report "command: ${PROGRAM} ${arguments}\nexit status: ${status}\n--- stdout:\n${out}\n--- stderr:\n${err}")
+if(DEFINED STATUS AND NOT status STREQUAL "${STATUS}")
+  message(FATAL_ERROR "expected exit status ${STATUS}\n${report}")
+endif()
+foreach(stream STDOUT STDERR)
+  if(stream STREQUAL "STDOUT")
+    set(text "${out}")
+  else()
+    set(text "${err}")
+  endif()
+  if(DEFINED ${stream} AND NOT text MATCHES "${${stream}}")
+    message(FATAL_ERROR "${stream} does not match '${${stream}}'\n${report}")
+  endif()
+  if(DEFINED NOT_${stream} AND text MATCHES "${NOT_${stream}}")
+    message(FATAL_ERROR "${stream} matches '${NOT_${stream}}', which it must not\n${report}")
+  endif()
+endforeach()
