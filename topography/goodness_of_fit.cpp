@@ -196,8 +196,7 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
   } else {
     text += v.gaussian_rejected ? "not Gaussian: Anderson-Darling rejects the Gaussian (" : "consistent with a Gaussian (Anderson-Darling ";
     text += p_text(gaussian.anderson_darling_p, b) + ", KS " + p_text(gaussian.kolmogorov_smirnov_p, b) + ", " +
-            std::to_string(b) + " bootstrap samples)";
-    text += v.gaussian_rejected ? "). " : ". ";
+            std::to_string(b) + " bootstrap samples). ";
     if (v.best_rejected) {
       text += "No model passes at the " + format("%.0f%%", 100 * options.significance) + " level; the least bad by AIC is " +
               describe(v.best);

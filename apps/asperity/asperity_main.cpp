@@ -14,6 +14,7 @@
 #include "asperity/table.hpp"
 #include "contact_cli.hpp"
 #include "eval_csv.hpp"
+#include "surface_command.hpp"
 
 namespace {
 
@@ -21,6 +22,7 @@ const char* usage =
     "usage: asperity eval [--table FILE] [INPUT.csv]\n"
     "       asperity summary [--table FILE]\n"
     "       asperity contact [--table FILE] SURFACE QUERY   (asperity contact --help)\n"
+    "       asperity surface FILE [--pixel-size L] [--modulus E*] [--report DIR] ...   (asperity surface --help)\n"
     "  eval     reads CSV with header dist,side,shape,sep (file or standard input) and writes\n"
     "           dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,...,lnI5_2 (%.17g)\n"
     "  summary  count, area, load and stiffness for a few shapes on both sides\n"
@@ -65,6 +67,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string command = argv[1];
+  if (command == "surface") return asperity::cli::surface_command(argc - 1, argv + 1);
   if (command == "contact") {
     try {
       return asperity::cli::contact_command(argc - 1, argv + 1);
