@@ -87,8 +87,8 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
   if (xs.size() < 9) fail(path, "holds fewer than 9 points");
   const Axis ax = grid_axis(path, xs, "x", options.max_points), ay = grid_axis(path, ys, "y", options.max_points);
   detail::check_point_count(path, ax.count, ay.count, options.max_points);
-  if (ax.count * ay.count > 4 * xs.size())
-    fail(path, "the points cover less than a quarter of their grid (" + std::to_string(ax.count) + " x " +
+  if (ax.count * ay.count > 2 * xs.size())
+    fail(path, "the points cover less than half of their grid (" + std::to_string(ax.count) + " x " +
                    std::to_string(ay.count) + "): not a regular map");
   HeightMap map;
   map.source = path;

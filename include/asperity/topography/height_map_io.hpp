@@ -13,7 +13,8 @@
 //                     data matrix export, English), then one row of heights per line (x fastest,
 //                     first line y = 0); "nan" marks a missing point.
 //   xyz / CSV         three columns x y z (blank, comma or semicolon separated, one optional
-//                     header line) on a regular grid; points absent from the grid are missing.
+//                     header line) on a regular grid (at least half of it present); points absent from
+//                     the grid are missing.
 //                     These carry no units: ReadOptions::lateral_unit / height_unit are required.
 // Every error is an asperity::Error naming the file and the problem (truncated, wrong checksum,
 // sizes that do not match, an unknown unit, a hostile size: a header is never trusted to
