@@ -54,17 +54,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   if (options.fit_heights) {
     analysis.height_stride_x = std::max<std::size_t>(1, analysis.correlation.x);
     analysis.height_stride_y = std::max<std::size_t>(1, analysis.correlation.y);
-    std::vector<double> thinned;
-    for (std::size_t j = 0; j < map.ny; j += analysis.height_stride_y)
-      for (std::size_t i = 0; i < map.nx; i += analysis.height_stride_x)
-        if (!std::isnan(map.at(i, j))) thinned.push_back(map.at(i, j));
-    if (thinned.size() > options.max_height_sample && options.max_height_sample > 0) {
-      std::vector<double> kept;
-      const double step = static_cast<double>(thinned.size()) / static_cast<double>(options.max_height_sample);
-      for (std::size_t k = 0; k < options.max_height_sample; ++k)
-        kept.push_back(thinned[static_cast<std::size_t>(static_cast<double>(k) * step)]);
-      thinned.swap(kept);
-    }
+    const std::vector<double> thinned = thinned_heights(map, analysis.correlation, options.max_height_sample);
     if (thinned.size() >= 20) analysis.heights = assess_sample("heights (thinned)", thinned, options.assessment);
   }
 

@@ -109,4 +109,19 @@ CorrelationLengths correlation_lengths(const HeightMap& map, double level) {
   return lengths;
 }
 
+std::vector<double> thinned_heights(const HeightMap& map, const CorrelationLengths& lengths, std::size_t max_count) {
+  const std::size_t sx = std::max<std::size_t>(1, lengths.x), sy = std::max<std::size_t>(1, lengths.y);
+  std::vector<double> thinned;
+  for (std::size_t j = 0; j < map.ny; j += sy)
+    for (std::size_t i = 0; i < map.nx; i += sx)
+      if (!std::isnan(map.at(i, j))) thinned.push_back(map.at(i, j));
+  if (max_count > 0 && thinned.size() > max_count) {
+    std::vector<double> kept;
+    const double step = static_cast<double>(thinned.size()) / static_cast<double>(max_count);
+    for (std::size_t k = 0; k < max_count; ++k) kept.push_back(thinned[static_cast<std::size_t>(static_cast<double>(k) * step)]);
+    thinned.swap(kept);
+  }
+  return thinned;
+}
+
 }  // namespace asperity::topography

@@ -11,6 +11,7 @@
 // moments at the file's sampling interval, stated with it.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "asperity/topography/height_map.hpp"
 
@@ -48,5 +49,9 @@ struct CorrelationLengths {
   double level = 0.1;
 };
 CorrelationLengths correlation_lengths(const HeightMap& map, double level = 0.1);
+
+// The valid heights on a grid of one point every lengths.x by lengths.y points, then at most
+// max_count of them, evenly spaced in that order (0: all): nearly independent values.
+std::vector<double> thinned_heights(const HeightMap& map, const CorrelationLengths& lengths, std::size_t max_count);
 
 }  // namespace asperity::topography
