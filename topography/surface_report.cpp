@@ -386,19 +386,21 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   if (a.contact) {
     const ContactComparison& c = *a.contact;
     md << "\n## What it changes: contact with a rigid flat\n\nE* = " << g(c.options.contact_modulus) << " Pa, nominal area A0 = "
-       << g(c.nominal_area) << " m². Separations from each model's mean summit height; stiffness per nominal area.\n\n";
+       << g(c.nominal_area) << " m². Separations from each model's mean summit height; stiffness per nominal area. "
+          "An asperity model is a statistical statement: where only a few summits are in contact over A0, its "
+          "prediction rests on the few highest summits measured, not on the fitted law.\n\n";
     md << "| model | table |\n|---|---|\n";
     for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
     const ModelContact* gaussian = c.find("gaussian");
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-      md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|\n";
+      md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|\n";
       for (const ModelContact& mc : c.models) {
         if (!mc.served) {
-          md << "| " << mc.label << " | – | – | – | – | – |\n";
+          md << "| " << mc.label << " | – | – | – | – | – | – |\n";
           continue;
         }
         const PhysicalState& s = mc.at_pressures[k];
-        md << "| " << mc.label << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
+        md << "| " << mc.label << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
            << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | "
            << (gaussian && gaussian->served ? g(ratio(s.stiffness, gaussian->at_pressures[k].stiffness), 3) : "–") << " |\n";
       }
