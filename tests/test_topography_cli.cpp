@@ -74,6 +74,9 @@ TEST(TopographyCli, ErrorsNameTheProblem) {
   r = run({surfaces + "/afm-zsensor-10um.txt", "--modulus", "1e11", "--pressure", "-5"});
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("not a positive number"), std::string::npos) << r.err;
+  r = run({surfaces + "/afm-zsensor-10um.txt", "--e1", "2e11", "--nu1", "0.7", "--e2", "2e11", "--nu2", "0.3"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("Poisson"), std::string::npos) << r.err;
   r = run({"--no-such-option"});
   EXPECT_EQ(r.status, 2);
   r = run({"--help"});

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/surface.hpp"
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
@@ -45,7 +46,7 @@ int surface_command(int argc, char** argv, std::ostream& out, std::ostream& err)
       "goodness of fit, and (with --modulus) the contact curves of each fit side by side.",
       "asperity surface"};
   std::string file, format = "auto", pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report;
-  double modulus = 0, area = 0, confidence = 0.95;
+  double modulus = 0, area = 0, confidence = 0.95, e1 = 0, nu1 = 0, e2 = 0, nu2 = 0;
   int window = 1, bootstrap = 199, threads = 0;
   std::uint64_t seed = 1;
   bool json = false, no_level = false, no_height_fit = false;
@@ -62,6 +63,10 @@ int surface_command(int argc, char** argv, std::ostream& out, std::ostream& err)
   app.add_option("--summit-threshold", summit_threshold,
                  "summits: at least this high above the mean of their 8 neighbours (a length with its unit, e.g. 2nm)");
   app.add_option("--modulus", modulus, "contact modulus E* [Pa] (plane strain): gives the contact curves");
+  app.add_option("--e1", e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)");
+  app.add_option("--nu1", nu1, "Poisson's ratio of body 1");
+  app.add_option("--e2", e2, "Young's modulus of body 2 [Pa]");
+  app.add_option("--nu2", nu2, "Poisson's ratio of body 2");
   app.add_option("--pressure", pressures, "nominal pressures of interest [Pa], comma-separated (default E* x 1e-5,1e-4,1e-3)");
   app.add_option("--load", loads, "loads of interest [N], comma-separated (over the nominal area)");
   app.add_option("--area", area, "nominal contact area A0 [m^2] (default: the measured area)");
@@ -104,6 +109,10 @@ int surface_command(int argc, char** argv, std::ostream& out, std::ostream& err)
     options.assessment.confidence = confidence;
     options.fit_heights = !no_height_fit;
     if (bootstrap < 0) throw Error("--bootstrap must be >= 0");
+    if (e1 != 0 || e2 != 0) {
+      if (modulus != 0) throw Error("give --modulus or --e1 --nu1 --e2 --nu2, not both");
+      modulus = contact_modulus_from(e1, nu1, e2, nu2);
+    }
     if (modulus != 0 || !pressures.empty() || !loads.empty()) {
       if (!(modulus > 0)) throw Error("the contact curves need the contact modulus: --modulus E* [Pa]");
       topo::ContactOptions contact;
