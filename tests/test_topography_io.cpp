@@ -9,7 +9,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -81,6 +80,29 @@ std::string md5(const std::string& bytes) {
   return t::detail::md5_hex(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
 }
 
+// A message matches a pattern of alternatives "a|b", each a sequence of pieces "x.*y" that must
+// appear in that order (std::regex warns under GCC 12's sanitizer builds).
+bool matches(const std::string& text, const std::string& pattern) {
+  std::size_t start = 0;
+  while (start <= pattern.size()) {
+    const std::size_t bar = std::min(pattern.find('|', start), pattern.size());
+    const std::string alternative = pattern.substr(start, bar - start);
+    std::size_t at = 0, piece_start = 0;
+    bool ok = true;
+    while (ok && piece_start <= alternative.size()) {
+      const std::size_t wildcard = std::min(alternative.find(".*", piece_start), alternative.size());
+      const std::string piece = alternative.substr(piece_start, wildcard - piece_start);
+      const std::size_t found = text.find(piece, at);
+      ok = found != std::string::npos;
+      at = ok ? found + piece.size() : at;
+      piece_start = wildcard + 2;
+    }
+    if (ok) return true;
+    start = bar + 1;
+  }
+  return false;
+}
+
 // Expect an asperity::Error whose message matches the pattern.
 template <class F>
 void expect_error(F&& read, const std::string& pattern) {
@@ -88,7 +110,7 @@ void expect_error(F&& read, const std::string& pattern) {
     read();
     ADD_FAILURE() << "no error; expected /" << pattern << "/";
   } catch (const asperity::Error& error) {
-    EXPECT_TRUE(std::regex_search(error.what(), std::regex(pattern))) << error.what() << "\n  expected /" << pattern << "/";
+    EXPECT_TRUE(matches(error.what(), pattern)) << error.what() << "\n  expected /" << pattern << "/";
   }
 }
 
@@ -209,7 +231,7 @@ TEST(TopographyIo, AsciiMatrixBadFilesAndMissingPoints) {
   write_bytes(path, "# Width: 3 nm\n# Height: 3 nm\n# Value units: nm\n1\t2\t3\n4\t6\n7\t8\t9\n");
   expect_error([&] { t::read_ascii_matrix(path); }, "line 5 has 2 values; the first row has 3");
   write_bytes(path, "# Width: 3 nm\n# Height: 3 nm\n# Value units: nm\n1\t2\t3\n4\t5,5\t6\n");
-  expect_error([&] { t::read_ascii_matrix(path); }, "line 5, column 2: '5,5' is not a number \\(a decimal comma");
+  expect_error([&] { t::read_ascii_matrix(path); }, "line 5, column 2: '5,5' is not a number (a decimal comma");
   write_bytes(path, "# Width: 3 nm\n# Height: 3 nm\n1\t2\t3\n4\t5\t6\n7\t8\t9\n");
   expect_error([&] { t::read_ascii_matrix(path); }, "no height unit");
   t::ReadOptions nm;
