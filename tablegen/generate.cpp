@@ -4,6 +4,8 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <random>
+#include <algorithm>
 #include <sstream>
 #include <thread>
 
@@ -70,25 +72,59 @@ std::vector<double> shape_grid(const GenerateOptions& options) {
   return shapes;
 }
 
-std::vector<double> measure_curve_error(const Curve& curve, int check_stride) {
+std::vector<double> check_separations(const Curve& curve, const std::vector<SegmentSpec>& layout, int check_stride) {
+  std::vector<double> points;
+  const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, curve.distribution(), curve.side(), curve.shape());
+  const int stride = std::max(1, check_stride);
+  // Each segment: uniform in its own variable u (the knots' spacing), and log-spaced toward
+  // both of its ends, where an interpolant is weakest.
+  for (const SegmentMap& map : maps) {
+    if (map.kind == SegmentKind::reciprocal) {  // s in (-inf, s1]: u = sqrt(s1/s) in (0, 1]
+      for (double u : {1e-6, 1e-3, 0.01, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999}) points.push_back(map.separation_of_u(u));
+      continue;
+    }
+    const int uniform = std::max(8, 160 / stride);
+    for (int i = 0; i < uniform; ++i) points.push_back(map.separation_of_u(map.u_lo + (map.u_hi - map.u_lo) * (i + 0.5) / uniform));
+    const double width = map.s_hi - map.s_lo;
+    for (int k = 1; k <= 16; k += (k < 4 ? 1 : stride)) {
+      points.push_back(map.s_lo + width * std::pow(10.0, -k));
+      points.push_back(map.s_hi - width * std::pow(10.0, -k));
+    }
+  }
+  // Toward s = 0 from both sides, down to the smallest doubles (the tail's power terms
+  // |s|^(n + a) live there), and s = 0 itself.
+  std::vector<double> magnitudes = {0.0, 4.9406564584124654e-324, 2.2250738585072014e-308, 1e-300, 1e-250, 1e-200,
+                                    1e-150, 1e-100, 1e-75, 1e-50, 1e-40, 1e-30, 8.470329472543003e-22};
+  for (int k = 20; k >= 1; k -= (k > 4 ? stride : 1)) magnitudes.push_back(std::pow(10.0, -k));
+  for (double magnitude : magnitudes) {
+    points.push_back(magnitude);
+    points.push_back(-magnitude);
+  }
+  // And random points: uniform over the table, and log-uniform in |s| over it.
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
+  for (int i = 0; i < 64 / stride + 4; ++i) {
+    points.push_back(lo + (hi - lo) * unit(rng));
+    const double magnitude = std::exp(std::log(1e-12) + unit(rng) * (std::log(std::max(-lo, std::fabs(hi))) - std::log(1e-12)));
+    points.push_back(unit(rng) < 0.5 ? -magnitude : magnitude);
+  }
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+std::vector<double> measure_curve_error(const Curve& curve, const std::vector<SegmentSpec>& layout, int check_stride) {
   const CurveId id{curve.distribution(), curve.side(), curve.shape()};
   std::vector<double> worst(order_count, 0.0);
-  // Samples across the tabulated range: the bounded side uniform in ln(-s); the tail side
-  // uniform in s below 0 and in ln s above (to see both s near 0 and the far tail).
-  const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
-  const int samples = 400 / std::max(1, check_stride) + 2;
-  for (int i = 0; i < samples; ++i) {
-    const double fraction = (i + 0.5) / samples;
-    double separation;
-    if (curve.side() == Side::bounded)
-      separation = -std::exp(std::log(-hi) + fraction * (std::log(-lo) - std::log(-hi)));
-    else if (fraction < 0.5)
-      separation = lo + (0.0 - lo) * (2 * fraction);
-    else
-      separation = std::exp(std::log(1e-8) + (2 * fraction - 1) * (std::log(hi) - std::log(1e-8)));
+  for (double separation : check_separations(curve, layout, check_stride)) {
+    if (curve.side() == Side::bounded && separation >= 0) continue;  // 0 exactly: nothing to measure
     for (int k = 0; k < order_count; ++k) {
+      if (!curve.has_order(k)) continue;
       const double reference = log_integral(id, order_of(k), separation);
-      const double error = std::fabs(std::expm1(curve.log_value(k, separation) - reference));
+      const double value = curve.log_value(k, separation);
+      double error = std::fabs(std::expm1(value - reference));
+      if (std::isinf(reference) && reference < 0) error = value == reference ? 0.0 : INFINITY;  // both exactly 0
       if (!(error <= worst[k])) worst[k] = std::isnan(error) ? INFINITY : error;
     }
   }
@@ -139,7 +175,7 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
         const std::vector<double> knots = integrate_curve(id, set.layout, ChainOptions{options.tolerance});
         std::copy(knots.begin(), knots.end(), set.knots.begin() + jobs[index].shape * set.curve_stride());
         const Curve curve(set.distribution, set.side, shape, set.layout, knots.data());
-        const std::vector<double> errors = measure_curve_error(curve, options.check_stride);
+        const std::vector<double> errors = measure_curve_error(curve, set.layout, options.check_stride);
         std::copy(errors.begin(), errors.end(), set.max_rel_error.begin() + jobs[index].shape * order_count);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);

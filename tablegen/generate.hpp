@@ -20,7 +20,7 @@ struct GenerateOptions {
   double tolerance = 1e-14;
   double knot_density = 1;  // knots per segment relative to the default layout (docs/speed-vs-error.md)
   int threads = 0;          // 0: hardware concurrency
-  int check_stride = 1;     // check every check_stride-th interval midpoint
+  int check_stride = 1;     // > 1: fewer check points (tests)
   std::string describe() const;
 };
 
@@ -30,7 +30,11 @@ std::vector<double> shape_grid(const GenerateOptions& options);
 TableData generate_table(const GenerateOptions& options,
                          const std::function<void(int, int)>& progress = {});
 
-// Max relative error of a curve against direct quadrature at interval midpoints, per order.
-std::vector<double> measure_curve_error(const Curve& curve, int check_stride);
+// Where the generator checks a served curve against direct quadrature: every segment of its
+// layout uniformly in its variable and log-spaced toward both of its ends, s = 0 and log-spaced
+// toward it from both sides down to the smallest double, and random points over the table.
+std::vector<double> check_separations(const Curve& curve, const std::vector<SegmentSpec>& layout, int check_stride);
+// The largest relative error per order at those points (what a table stores as max_rel_error).
+std::vector<double> measure_curve_error(const Curve& curve, const std::vector<SegmentSpec>& layout, int check_stride);
 
 }  // namespace asperity::tablegen

@@ -110,6 +110,9 @@ void require_finite(double value, const char* what) {
 
 double log_integral(const CurveId& curve, double order, double separation) {
   double result = 0;
+  // On the tail side X_n(s) moves from X_n(0) by terms c s and c |s|^(n + a), n + a > 0: below
+  // |s| = 1e-200 that is far below rounding, and the scaled integrands lose their scale there.
+  if (curve.side == Side::tail && std::fabs(separation) < 1e-200 && order > -0.5) separation = 0;
   if (curve.distribution == Distribution::gaussian) {
     if (separation >= 0) {  // F = phi(s) int w^m e^(-s w - w^2/2) dw
       auto integrand = [=](double w) {

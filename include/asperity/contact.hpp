@@ -1,5 +1,6 @@
 // Physical quantities of MODEL.md section 3 from a resolved curve, and the two separation
-// conventions of section 6.
+// conventions of section 6. contact_at and ContactModel (contact_model.hpp) compute through the
+// one function here, contact_state_from_logs.
 #pragma once
 #include "asperity/curve.hpp"
 
@@ -18,9 +19,22 @@ struct ContactState {
   double area;             // pi N R sigma_s X_1
   double load;             // (4/3) N E* R^1/2 sigma_s^3/2 X_3/2
   double stiffness;        // 2 N E* R^1/2 sigma_s^1/2 X_1/2  (= -dP/d(separation))
-  double stiffness_ratio;  // -(dP/ds)/P = (3/2) X_1/2 / X_3/2, in separation units (finite
-                           // even where X underflows)
+  double stiffness_ratio;  // -(dP/ds)/P = (3/2) X_1/2 / X_3/2, in separation units (from the
+                           // logs: finite where the values underflow; NaN where there is no
+                           // contact, X_3/2 = 0)
 };
+
+// The factors of MODEL.md section 3: quantity = factor * X_n.
+struct ContactScales {
+  double count = 0;      // N
+  double area = 0;       // pi N R sigma_s
+  double load = 0;       // (4/3) N E* R^1/2 sigma_s^3/2
+  double stiffness = 0;  // 2 N E* R^1/2 sigma_s^1/2
+};
+ContactScales contact_scales(const Surface& surface) noexcept;
+
+// The state from ln X and X of orders 0, 1/2, 1, 3/2 (Curve::contact_orders).
+ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept;
 
 // Returns false (and NaNs) for a non-physical surface (a value <= 0 or not finite) or a
 // NaN/infinite separation. Never throws or allocates.

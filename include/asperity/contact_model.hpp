@@ -8,8 +8,7 @@
 // side) or the Gaussian's mean summit height. `mean_separation` gives the same point measured
 // from the mean summit height, the convention of GW and McCool.
 #pragma once
-#include <memory>
-
+#include "asperity/contact.hpp"
 #include "asperity/curve.hpp"
 #include "asperity/inverse.hpp"
 #include "asperity/surface.hpp"
@@ -29,34 +28,40 @@ struct PhysicalState {
   double stiffness_over_load;  // K / P [1/m]
 };
 
+// A model holds its curve and inverses by shared handles: copies are cheap and independent of
+// the Table it was made from.
 class ContactModel {
  public:
-  // Throws asperity::Error for a bad surface or a table without its curve.
+  ContactModel() = default;  // no surface: every query answers NaN
+  // Throws asperity::Error for a bad surface (PhysicalSurface::validate) or a table without its curve.
   ContactModel(const Table& table, const PhysicalSurface& surface);
-  ContactModel(const ContactModel&) = delete;
-  ContactModel& operator=(const ContactModel&) = delete;
-  ContactModel(ContactModel&&) = default;
-  ContactModel& operator=(ContactModel&&) = default;
 
-  // NaN everywhere for a NaN input; a load, pressure or area <= 0 gives the state at no contact
-  // (tail side: separation +inf; bounded side: first contact, separation 0).
+  // NaN everywhere for a NaN input. No contact (a load, pressure or area <= 0, or a separation
+  // past the last summit: +inf on the tail side, >= 0 on the bounded side) gives count, area,
+  // load, pressure and stiffness 0 and stiffness_over_load NaN (0/0), at separation +inf (tail
+  // side) or 0 (bounded side: first contact). Infinite contact (a load, pressure or area of
+  // +inf, or a separation of -inf) gives every summit in contact and infinite area, load and
+  // stiffness.
   PhysicalState at_separation(double separation) const noexcept;
   PhysicalState at_load(double load) const noexcept;
   PhysicalState at_pressure(double pressure) const noexcept;
   PhysicalState at_real_area(double real_area) const noexcept;
 
   const PhysicalSurface& surface() const noexcept { return surface_; }
-  const Curve& curve() const noexcept { return *curve_; }
+  const Curve& curve() const noexcept { return curve_; }
   // the dimensionless separation s of a physical one, and back
   double dimensionless(double separation) const noexcept { return separation / surface_.height_scale; }
 
  private:
   PhysicalState state_at_dimensionless(double s) const noexcept;
+  PhysicalState no_contact() const noexcept;
+  PhysicalState infinite_contact() const noexcept;
 
   PhysicalSurface surface_;
-  std::unique_ptr<Curve> curve_;  // on the heap: the inverses point at it, and the model may move
-  std::unique_ptr<InverseCurve> load_inverse_, area_inverse_;
-  double count_scale_ = 0, area_scale_ = 0, load_scale_ = 0, stiffness_scale_ = 0, mean_offset_ = 0;
+  Curve curve_;
+  InverseCurve load_inverse_, area_inverse_;
+  ContactScales scales_;
+  double mean_offset_ = 0;
 };
 
 }  // namespace asperity

@@ -7,7 +7,9 @@
 // Accuracy: the returned s reproduces X_n(s) = target to the curve's error (round-trip tested).
 // Cost: about one forward lookup of two orders plus the table step (bench_lookup: BM_Inverse*).
 // Outside the tabulated values (the far tail below ~1e-300, deep all-touching contact, a bounded
-// side near first contact) the table step is replaced by bisection on the curve (slow, rare).
+// side near first contact) the table step is replaced by Boost.Math's TOMS 748 root finder on
+// the curve (slower, rare). An inverse holds its curve (a shared handle): it may be copied and
+// outlive the Curve it was made from.
 #pragma once
 #include <vector>
 
@@ -28,13 +30,15 @@ class InverseCurve {
   double separation_at(double value) const noexcept;
 
   int twice_order() const noexcept { return twice_order_; }
+  const Curve& curve() const noexcept { return curve_; }
   std::size_t memory_bytes() const noexcept { return sizeof(*this) + knots_.size() * sizeof(double); }
 
  private:
   double newton(double separation, double log_value) const noexcept;
-  double bisection(double log_value) const noexcept;
+  double solve(double log_value, double lo, double hi) const noexcept;
+  double untabulated(double log_value) const noexcept;
 
-  const Curve* curve_ = nullptr;
+  Curve curve_;
   int twice_order_ = 3;
   double y_lo_ = 0, y_hi_ = 0, inv_step_ = 0;
   int intervals_ = 0;

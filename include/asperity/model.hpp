@@ -12,6 +12,24 @@ enum class Side { tail = 0, bounded = 1 };
 inline constexpr int order_count = 6;
 constexpr double order_of(int twice_order) { return 0.5 * twice_order; }
 
+// The orders by what they give (MODEL.md section 3), as twice_order: X_0 counts the summits in
+// contact, X_1/2 the stiffness, X_1 the real area, X_3/2 the load; X_2 and X_5/2 are the
+// Greenwood-Tripp F_2 and F_5/2 of mixed lubrication.
+namespace orders {
+inline constexpr int count = 0;
+inline constexpr int stiffness = 1;
+inline constexpr int area = 2;
+inline constexpr int load = 3;
+inline constexpr int f2 = 4;
+inline constexpr int f5_2 = 5;
+}  // namespace orders
+
+// The bit of an order in an order mask (Curve, Table::curve).
+constexpr unsigned order_bit(int twice_order) { return 1u << twice_order; }
+// What the physical quantities need: count, stiffness, area, load.
+inline constexpr unsigned contact_order_mask =
+    order_bit(orders::count) | order_bit(orders::stiffness) | order_bit(orders::area) | order_bit(orders::load);
+
 const char* to_string(Distribution distribution);
 const char* to_string(Side side);
 // False (and the output untouched) for a name that is not one of ours.

@@ -19,9 +19,17 @@ struct PhysicalSurface {
 
   double summit_count() const noexcept { return summit_density * nominal_area; }
   // Throws asperity::Error naming the first bad parameter (not finite, or <= 0; a Weibull shape
-  // outside 0.3..50; a bounded side for the Gaussian).
+  // outside 0.3..50; a bounded side for the Gaussian), or the first factor of MODEL.md section 3
+  // (N, pi N R sigma_s, (4/3) N E* R^1/2 sigma_s^3/2, 2 N E* R^1/2 sigma_s^1/2) that falls outside
+  // [1e-250, 1e250], where its products would underflow or overflow.
   void validate() const;
 };
+
+// The Weibull scale sigma_s that gives an rms summit height `rms` (about the mean):
+// sigma_s = rms / c_a, c_a = sqrt(Gamma(1 + 2/a) - Gamma(1 + 1/a)^2) (MODEL.md section 1); GW
+// users measure the rms (for a = 1.6, rms = 0.574 sigma_s). The Gaussian's sigma is the rms.
+// Throws for rms or shape <= 0.
+double height_scale_from_rms(Distribution distribution, double shape, double rms);
 
 // E* from the two bodies' Young's moduli and Poisson's ratios; throws for E <= 0 or nu outside
 // (-1, 0.5].

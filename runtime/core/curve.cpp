@@ -3,163 +3,140 @@
 #include <cmath>
 #include <limits>
 
-#include "asperity/detail/quintic_hermite.hpp"
+#include "asperity/detail/compact_curve.hpp"
+#include "asperity/detail/fast_grid_build.hpp"
 #include "asperity/error.hpp"
-#include "kernel/curve_kernel.hpp"
 #include "kernel/kernels.hpp"
 
 namespace asperity {
+namespace detail {
+
+// What a Curve shares: the lookup grid first (the hot data), then what answers off the grid.
+struct CurveData {
+  FastGrid grid;
+  std::vector<double> coefficients;                  // [held order][interval][fast_stride]
+  std::array<const double*, order_count> order_coefficients{};  // null: not held
+  CompactCurve outside;  // the all-touching segment, the series, the values at 0
+  const Kernels* kernels = nullptr;
+  double grid_error = 0;
+};
+
+}  // namespace detail
+
 namespace {
-
-detail::KernelKind kernel_kind(const SegmentMap& map) {
-  switch (map.kind) {
-    case SegmentKind::reciprocal: return detail::KernelKind::reciprocal;
-    case SegmentKind::linear: return detail::KernelKind::linear;
-    case SegmentKind::graded: return map.exponent_offset ? detail::KernelKind::graded_exponent : detail::KernelKind::graded;
-    case SegmentKind::log_exponent:
-      return map.distribution == Distribution::gaussian ? detail::KernelKind::gaussian_far
-                                                        : detail::KernelKind::weibull_far;
-    case SegmentKind::log_tau: return detail::KernelKind::log_tau;
-    case SegmentKind::log_distance: return detail::KernelKind::log_distance;
-    case SegmentKind::bounded_far: return detail::KernelKind::bounded_far;
-    case SegmentKind::gaussian_linear: return detail::KernelKind::gaussian_linear;
-  }
-  throw Error("unknown segment kind");
-}
-
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
-
-}  // namespace
+}
 
 Curve::Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
-             const double* knot_data, unsigned order_mask)
-    : distribution_(distribution), side_(side), shape_(shape), kernels_(&detail::kernels_for(InstructionSet::automatic)),
-      order_mask_(order_mask & all_orders) {
-  if (order_mask_ == 0) throw Error("a curve needs at least one order");
-  if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
-    throw Error("curve layout must have 1 to 6 segments");
-  segment_count_ = static_cast<int>(layout.size());
-  const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, distribution, side, shape);
-  int intervals = 0;
-  for (int index = 0; index < segment_count_; ++index) {
-    const SegmentMap& map = maps[index];
-    detail::KernelSegment& segment = segments_[index];
-    segment.kind = kernel_kind(map);
-    segment.s_hi = map.s_hi;
-    segment.u_lo = map.u_lo;
-    segment.inv_step = (layout[index].knots - 1) / (map.u_hi - map.u_lo);
-    segment.last_interval = layout[index].knots - 2;
-    segment.p0 = map.p0;
-    segment.inv_range = map.kind == SegmentKind::graded ? 1 / (map.p1 - map.p0) : 0;
-    segment.shape = map.shape;
-    segment.shape_log_p1 = segment.kind == detail::KernelKind::graded_exponent ? map.shape * std::log(map.p1) : 0;
-    segment.inv_span = map.kind == SegmentKind::bounded_far ? 1 / map.span : 0;
-    segment.inv_power = 1 / map.power;
-    segment.first_interval = intervals;
-    intervals += layout[index].knots - 1;
-  }
-  for (int k = 0; k < max_segments - 1; ++k)
-    segment_ends_[k] = k < segment_count_ - 1 ? segments_[k].s_hi : std::numeric_limits<double>::infinity();
-  table_min_separation_ = maps[segment_count_ > 1 ? 1 : 0].s_lo;
-  table_max_separation_ = maps[segment_count_ - 1].s_hi;
+             const double* knot_data, unsigned order_mask, const CurveOptions& options) {
+  detail::CompactCurve compact(distribution, side, shape, layout, knot_data, order_mask);
+  detail::GridReference reference;
+  reference.log_values = [&compact](double separation, double* out) { compact.log_values(separation, 0, order_count - 1, out); };
+  build(compact, reference, options);
+}
 
-  // Hermite data (H, dH/du, d2H/du2 at each knot) -> the quintic of each interval in x in [0, 1].
-  const std::size_t order_stride = static_cast<std::size_t>(intervals) * 6;
-  std::ptrdiff_t held = 0;
-  for (int order = 0; order < order_count; ++order)
-    order_offset_[order] = has_order(order) ? static_cast<std::ptrdiff_t>(order_stride) * held++ : -1;
-  coefficients_.resize(order_stride * static_cast<std::size_t>(held));
-  int total_knots = 0;
-  for (const SegmentSpec& spec : layout) total_knots += spec.knots;
-  for (int order = 0; order < order_count; ++order) {
-    if (!has_order(order)) continue;
-    int knot_offset = 0;
-    for (int index = 0; index < segment_count_; ++index) {
-      const detail::KernelSegment& segment = segments_[index];
-      const double step = 1 / segment.inv_step;
-      const double* knot = knot_data + (static_cast<std::size_t>(order) * total_knots + knot_offset) * 3;
-      double* out = &coefficients_[order_offset_[order] + static_cast<std::ptrdiff_t>(segment.first_interval) * 6];
-      for (int j = 0; j + 1 < layout[index].knots; ++j, knot += 3, out += 6) {
-        const double left[3] = {knot[0], knot[1] * step, knot[2] * step * step};
-        const double right[3] = {knot[3], knot[4] * step, knot[5] * step * step};
-        detail::quintic_hermite_coefficients(left, right, out);
-      }
-      knot_offset += layout[index].knots;
+Curve::Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
+             const double* knot_data, const ShapeBlend& blend, unsigned order_mask, const CurveOptions& options) {
+  if (blend.shapes.size() != blend.knot_data.size() || blend.shapes.size() != blend.weights.size() ||
+      blend.shapes.empty())
+    throw Error("a shape blend needs as many shapes, knot data and weights, at least one");
+  detail::CompactCurve compact(distribution, side, shape, layout, knot_data, order_mask);
+  std::vector<detail::CompactCurve> nodes;
+  nodes.reserve(blend.shapes.size());
+  for (std::size_t i = 0; i < blend.shapes.size(); ++i)
+    nodes.emplace_back(distribution, side, blend.shapes[i], layout, blend.knot_data[i], compact.order_mask());
+  const bool exact_order_zero = distribution == Distribution::weibull && compact.order_mask() & 1u;
+  detail::GridReference reference;
+  reference.log_values = [&](double separation, double* out) {
+    for (int k = 0; k < order_count; ++k) out[k] = 0;
+    double node[order_count];
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      nodes[i].log_values(separation, 0, order_count - 1, node);
+      for (int k = 0; k < order_count; ++k) out[k] += blend.weights[i] * node[k];
     }
-  }
-  for (int order = 0; order < order_count; ++order) {
-    const double n = order_of(order);
-    if (side == Side::bounded) series_[order] = bounded_contact_series(shape, n);
-    else if (distribution == Distribution::gaussian) series_[order] = gaussian_tail_series(n);
-    else series_[order] = weibull_tail_series(shape, n);
-  }
+    if (exact_order_zero) out[0] = compact.log_value(0, separation);
+  };
+  build(compact, reference, options);
 }
 
-double Curve::log_value_outside(int twice_order, double separation) const noexcept {
-  if (std::isnan(separation) || std::isinf(separation)) return not_a_number;
-  const double n = order_of(twice_order);
-  if (side_ == Side::bounded) {
-    if (separation >= 0) return -std::numeric_limits<double>::infinity();
-    return bounded_contact_log(series_[twice_order], shape_, n, separation);
-  }
-  if (distribution_ == Distribution::gaussian) return gaussian_tail_log(series_[twice_order], n, separation);
-  return weibull_tail_log(series_[twice_order], shape_, n, separation);
+void Curve::build(detail::CompactCurve& compact, const detail::GridReference& reference_in,
+                  const CurveOptions& options) {
+  detail::GridReference reference = reference_in;
+  reference.order_mask = compact.order_mask();
+  reference.table_min = compact.table_min();
+  reference.table_max = compact.table_max();
+  auto data = std::make_shared<detail::CurveData>();
+  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
+  compact.keep_outside_only();
+  data->grid = std::move(build.grid);
+  data->coefficients = std::move(build.coefficients);
+  for (int order = 0; order < order_count; ++order)
+    data->order_coefficients[order] =
+        build.order_offset[order] < 0 ? nullptr : data->coefficients.data() + build.order_offset[order];
+  data->outside = std::move(compact);
+  data->kernels = &detail::kernels_for(InstructionSet::automatic);
+  data->grid_error = build.achieved;
+  order_mask_ = data->outside.order_mask();
+  data_ = std::move(data);
 }
 
-// Inside the table: the number of segment ends below s (unused ends are +inf), without a
-// data-dependent branch: a search loop mispredicts on separations that jump between segments.
-ASPERITY_ALWAYS_INLINE const detail::KernelSegment& Curve::segment_of(double separation) const noexcept {
-  const int index = (separation > segment_ends_[0]) + (separation > segment_ends_[1]) +
-                    (separation > segment_ends_[2]) + (separation > segment_ends_[3]) +
-                    (separation > segment_ends_[4]);
-  return segments_[index];
-}
+Distribution Curve::distribution() const noexcept { return data_ ? data_->outside.distribution() : Distribution::weibull; }
+Side Curve::side() const noexcept { return data_ ? data_->outside.side() : Side::tail; }
+double Curve::shape() const noexcept { return data_ ? data_->outside.shape() : 0.0; }
+double Curve::table_min_separation() const noexcept { return data_ ? data_->outside.table_min() : not_a_number; }
+double Curve::table_max_separation() const noexcept { return data_ ? data_->outside.table_max() : not_a_number; }
+std::size_t Curve::grid_intervals() const noexcept { return data_ ? static_cast<std::size_t>(data_->grid.intervals) : 0; }
+double Curve::grid_error() const noexcept { return data_ ? data_->grid_error : not_a_number; }
 
-namespace {
-// Finite and not beyond the table's last knot (NaN fails both compares).
-inline bool inside_table(double separation, double table_end) noexcept {
-  return separation <= table_end && separation >= -std::numeric_limits<double>::max();
+std::size_t Curve::memory_bytes() const noexcept {
+  if (!data_) return sizeof(*this);
+  return sizeof(*this) + sizeof(detail::CurveData) + data_->coefficients.capacity() * sizeof(double) +
+         data_->grid.directory.capacity() * sizeof(detail::FastBinade) + data_->outside.memory_bytes();
 }
-}  // namespace
 
 double Curve::log_value(int twice_order, double separation) const noexcept {
   if (!has_order(twice_order)) return not_a_number;  // also a default Curve: it holds no order
-  if (!inside_table(separation, table_max_separation_)) return log_value_outside(twice_order, separation);
-  return detail::log_value_scalar<detail::LibraryMath>(segment_of(separation), order_coefficients(twice_order),
-                                                       order_of(twice_order), separation);
+  const detail::CurveData& data = *data_;
+  detail::FastPosition at;
+  if (!detail::fast_position(data.grid, separation, at)) return data.outside.log_value(twice_order, separation);
+  return detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
 }
 
 double Curve::value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order)) return not_a_number;  // also a default Curve: it holds no order
-  if (!inside_table(separation, table_max_separation_)) return std::exp(log_value_outside(twice_order, separation));
-  return std::exp(detail::log_value_scalar<detail::LibraryMath>(segment_of(separation), order_coefficients(twice_order),
-                                                                order_of(twice_order), separation));
+  if (!has_order(twice_order)) return not_a_number;
+  const detail::CurveData& data = *data_;
+  detail::FastPosition at;
+  if (!detail::fast_position(data.grid, separation, at)) return std::exp(data.outside.log_value(twice_order, separation));
+  return std::exp(detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y));
 }
 
 void Curve::log_values(double separation, double out[order_count]) const noexcept {
   log_values(separation, 0, order_count - 1, out);
 }
 
-// One segment search and one map for every order asked: the cost of several orders is one
-// lookup plus a Horner step each.
+// One position on the grid for every order asked: the cost of several orders is one lookup
+// plus a quintic each.
 void Curve::log_values(double separation, int first, int last, double* out) const noexcept {
   if (first < 0 || last >= order_count || first > last) return;
-  if (segment_count_ == 0) {
+  if (!data_) {
     for (int k = first; k <= last; ++k) out[k - first] = not_a_number;
     return;
   }
-  if (!inside_table(separation, table_max_separation_)) {
-    for (int k = first; k <= last; ++k) out[k - first] = has_order(k) ? log_value_outside(k, separation) : not_a_number;
+  const detail::CurveData& data = *data_;
+  detail::FastPosition at;
+  if (!detail::fast_position(data.grid, separation, at)) {
+    data.outside.log_values(separation, first, last, out);
     return;
   }
-  const double* pointers[order_count];
-  for (int k = 0; k < order_count; ++k) pointers[k] = order_coefficients(k);
-  detail::log_values_scalar<detail::LibraryMath>(segment_of(separation), pointers, separation, first, last, out);
+  for (int k = first; k <= last; ++k) {
+    const double* c = data.order_coefficients[k];
+    out[k - first] = c ? detail::fast_quintic(c, at.interval * detail::fast_stride, at.y) : not_a_number;
+  }
 }
 
 void Curve::contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept {
   log_values(separation, 0, 3, log_out);
-  if (kernels_) kernels_->exp4(log_out, value_out);
+  if (data_) data_->kernels->exp4(log_out, value_out);
   else
     for (int k = 0; k < 4; ++k) value_out[k] = not_a_number;
 }
@@ -180,16 +157,18 @@ void Curve::batch(int twice_order, const double* separations, double* out, std::
     for (std::size_t i = 0; i < count; ++i) out[i] = not_a_number;
     return;
   }
-  const detail::Kernels& kernels = isa == InstructionSet::automatic ? *kernels_ : detail::kernels_for(isa);
-  const detail::KernelCurve curve{segments_.data(), segment_count_, order_coefficients(twice_order)};
+  const detail::CurveData& data = *data_;
+  const detail::Kernels& kernels = isa == InstructionSet::automatic ? *data.kernels : detail::kernels_for(isa);
+  const double* coefficients = data.order_coefficients[twice_order];
   int rest[detail::batch_block];
-  double block_separations[detail::batch_block];  // a copy, so that out may alias separations
+  double block_separations[detail::batch_block];  // a copy, so that out may be separations
   for (std::size_t start = 0; start < count; start += detail::batch_block) {
     const int block = static_cast<int>(count - start < detail::batch_block ? count - start : detail::batch_block);
     for (int j = 0; j < block; ++j) block_separations[j] = separations[start + j];
-    const int rest_count = kernels.block(curve, twice_order, block_separations, out + start, block, log_output, rest);
+    const int rest_count =
+        kernels.block(data.grid, coefficients, block_separations, out + start, block, log_output, rest);
     for (int r = 0; r < rest_count; ++r) {
-      const double log_value = log_value_outside(twice_order, block_separations[rest[r]]);
+      const double log_value = data.outside.log_value(twice_order, block_separations[rest[r]]);
       out[start + rest[r]] = log_output ? log_value : std::exp(log_value);
     }
   }

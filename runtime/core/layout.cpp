@@ -17,8 +17,8 @@ std::vector<SegmentSpec> default_layout(Distribution distribution, Side side) {
   if (side == Side::tail)
     return {{SegmentKind::reciprocal, 129, 0.0, 0.0},
             {SegmentKind::log_distance, 97, -3.0, -0.1},
-            {SegmentKind::graded, 97, 0.0, -0.1},
-            {SegmentKind::graded, 97, 0.0, 0.1},
+            {SegmentKind::graded_bare, 97, 0.0, -0.1},
+            {SegmentKind::graded_bare, 97, 0.0, 0.1},
             {SegmentKind::log_exponent, 641, 0.1, 760.0}};
   // Bounded: log_tau to tau = 100 (exp(-tau) negligible beyond), then 10 more units of distance.
   return {{SegmentKind::reciprocal, 129, 0.0, 0.0},
@@ -42,69 +42,32 @@ double tail_exponent(Distribution distribution, double shape, double separation)
                                                 : std::pow(separation, shape);
 }
 
-namespace {
-SegmentMap make_map(const SegmentSpec& spec, Distribution distribution, Side side, double shape) {
-  SegmentMap map{};
-  map.kind = spec.kind;
-  map.distribution = distribution;
-  map.side = side;
-  map.shape = distribution == Distribution::gaussian ? 2.0 : shape;
-  map.p0 = spec.p0;
-  map.p1 = spec.p1;
-  const double inf = std::numeric_limits<double>::infinity();
-  switch (spec.kind) {
-    case SegmentKind::reciprocal:  // anchored by resolve()
-      map.u_lo = 0; map.u_hi = 1; map.s_lo = -inf;
-      break;
-    case SegmentKind::linear:
-      map.u_lo = spec.p0; map.u_hi = spec.p1; map.s_lo = spec.p0; map.s_hi = spec.p1;
-      break;
-    case SegmentKind::gaussian_linear:
-      map.u_lo = spec.p0; map.u_hi = spec.p1; map.s_lo = spec.p0; map.s_hi = spec.p1;
-      map.exponent_offset = true;
-      break;
-    case SegmentKind::graded:
-      map.u_lo = 0; map.u_hi = 1;
-      map.s_lo = std::fmin(spec.p0, spec.p1); map.s_hi = std::fmax(spec.p0, spec.p1);
-      map.exponent_offset = distribution == Distribution::weibull && side == Side::tail &&
-                            spec.p1 > 0 && spec.p0 == 0;
-      if (distribution == Distribution::weibull) map.power = std::max(6.0, std::ceil(2 / shape - 1e-9));
-      break;
-    case SegmentKind::log_exponent:
-      map.u_lo = std::log(tail_exponent(distribution, map.shape, spec.p0));
-      map.u_hi = std::log(spec.p1);
-      map.s_lo = spec.p0;
-      map.s_hi = distribution == Distribution::gaussian ? std::sqrt(2 * spec.p1)
-                                                        : std::pow(spec.p1, 1 / map.shape);
-      map.exponent_offset = true;
-      break;
-    case SegmentKind::log_distance:
-      map.u_lo = std::log(-spec.p1); map.u_hi = std::log(-spec.p0);
-      map.s_lo = spec.p0; map.s_hi = spec.p1;
-      break;
-    case SegmentKind::log_tau:
-      map.u_lo = std::log(spec.p0); map.u_hi = std::log(spec.p1);
-      map.s_lo = -std::pow(spec.p1, 1 / map.shape); map.s_hi = -std::pow(spec.p0, 1 / map.shape);
-      break;
-    case SegmentKind::bounded_far: {
-      const double start = std::pow(spec.p0, 1 / map.shape);
-      map.u_lo = 0; map.u_hi = 1;
-      map.s_lo = -(start + spec.p1); map.s_hi = -start;
-      map.span = std::log(map.s_lo / map.s_hi);
-      break;
-    }
+const char* to_string(SegmentKind kind) noexcept {
+  switch (kind) {
+#define ASPERITY_KIND_NAME(number, name, Type, text) \
+  case SegmentKind::name: return #name;
+    ASPERITY_SEGMENT_KINDS(ASPERITY_KIND_NAME)
+#undef ASPERITY_KIND_NAME
   }
-  return map;
+  return "unknown";
 }
-}  // namespace
 
 std::vector<SegmentMap> SegmentMap::resolve(const std::vector<SegmentSpec>& layout, Distribution distribution,
                                             Side side, double shape) {
   std::vector<SegmentMap> maps;
-  for (const SegmentSpec& spec : layout) maps.push_back(make_map(spec, distribution, side, shape));
+  for (const SegmentSpec& spec : layout) {
+    if (!is_segment_kind(static_cast<int>(spec.kind))) throw Error("unknown segment kind");
+    SegmentMap map;
+    map.kind = spec.kind;
+    map.distribution = distribution;
+    map.side = side;
+    map.shape = distribution == Distribution::gaussian ? 2.0 : shape;
+    map.p0 = spec.p0;
+    map.p1 = spec.p1;
+    visit_segment_kind(spec.kind, [&](auto kind) { decltype(kind)::set_range(map); });
+    maps.push_back(map);
+  }
   for (std::size_t i = 0; i < maps.size(); ++i) {
-    if (static_cast<int>(maps[i].kind) < 0 || static_cast<int>(maps[i].kind) >= segment_kind_count)
-      throw Error("unknown segment kind");
     if (maps[i].kind == SegmentKind::gaussian_linear && distribution != Distribution::gaussian)
       throw Error("a gaussian_linear segment is for the Gaussian only");
     if (maps[i].kind == SegmentKind::reciprocal) {
@@ -119,114 +82,27 @@ std::vector<SegmentMap> SegmentMap::resolve(const std::vector<SegmentSpec>& layo
 }
 
 double SegmentMap::u_of_s(double separation) const {
-  switch (kind) {
-    case SegmentKind::reciprocal: return std::sqrt(p0 / separation);
-    case SegmentKind::linear:
-    case SegmentKind::gaussian_linear: return separation;
-    case SegmentKind::graded:
-      return power == 6 ? std::cbrt(std::sqrt((separation - p0) / (p1 - p0)))
-                        : std::pow((separation - p0) / (p1 - p0), 1 / power);
-    case SegmentKind::log_exponent:  // t by one pow: a ln s would amplify rounding by a ln s
-      return std::log(tail_exponent(distribution, shape, separation));
-    case SegmentKind::log_tau: return shape * std::log(-separation);
-    case SegmentKind::log_distance: return std::log(-separation);
-    case SegmentKind::bounded_far:
-      return std::sqrt(std::log(separation / s_hi) / span);
-  }
-  return std::numeric_limits<double>::quiet_NaN();
+  return visit_segment_kind(kind, [&](auto k) { return decltype(k)::u_of_s(*this, separation); });
 }
 
 void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s_du2) const {
-  switch (kind) {
-    case SegmentKind::reciprocal:  // s = p0 / u^2
-      separation = p0 / (u * u); ds_du = -2 * p0 / (u * u * u); d2s_du2 = 6 * p0 / (u * u * u * u);
-      return;
-    case SegmentKind::linear:
-    case SegmentKind::gaussian_linear:
-      separation = u; ds_du = 1; d2s_du2 = 0;
-      return;
-    case SegmentKind::graded: {
-      const double span = p1 - p0;
-      if (power == 6) {
-        const double u2 = u * u, u4 = u2 * u2;
-        separation = p0 + span * u4 * u2; ds_du = 6 * span * u4 * u; d2s_du2 = 30 * span * u4;
-      } else {
-        separation = p0 + span * std::pow(u, power);
-        ds_du = power * span * std::pow(u, power - 1);
-        d2s_du2 = power * (power - 1) * span * std::pow(u, power - 2);
-      }
-      return;
-    }
-    case SegmentKind::log_exponent:
-      if (distribution == Distribution::gaussian) {
-        separation = std::sqrt(2 * std::exp(u)); ds_du = separation / 2; d2s_du2 = separation / 4;
-      } else {
-        separation = std::exp(u / shape); ds_du = separation / shape;
-        d2s_du2 = separation / (shape * shape);
-      }
-      return;
-    case SegmentKind::log_distance: {
-      const double distance = std::exp(u);
-      separation = -distance; ds_du = -distance; d2s_du2 = -distance;
-      return;
-    }
-    case SegmentKind::bounded_far: {
-      const double distance = -s_hi * std::exp(span * u * u);
-      separation = -distance; ds_du = -distance * 2 * span * u;
-      d2s_du2 = -distance * (2 * span + 4 * span * span * u * u);
-      return;
-    }
-    case SegmentKind::log_tau: {
-      const double distance = std::exp(u / shape);
-      separation = -distance; ds_du = -distance / shape; d2s_du2 = -distance / (shape * shape);
-      return;
-    }
-  }
+  visit_segment_kind(kind, [&](auto k) { decltype(k)::s_of_u(*this, u, separation, ds_du, d2s_du2); });
+}
+
+double SegmentMap::separation_of_u(double u) const {
+  double separation, d1, d2;
+  s_of_u(u, separation, d1, d2);
+  return separation;
 }
 
 void SegmentMap::offset(double order, double u, double& value, double& d1, double& d2) const {
-  value = d1 = d2 = 0;
-  switch (kind) {
-    case SegmentKind::reciprocal:
-      value = order * (std::log(-p0) - 2 * std::log(u)); d1 = -2 * order / u; d2 = 2 * order / (u * u);
-      return;
-    case SegmentKind::linear:
-    case SegmentKind::log_distance:
-    case SegmentKind::bounded_far: return;
-    case SegmentKind::graded:
-      if (exponent_offset) {  // t = (p1 w^power)^a
-        const double exponent = power * shape, scale = std::pow(p1, shape);
-        value = -scale * std::pow(u, exponent);
-        d1 = -scale * exponent * std::pow(u, exponent - 1);
-        d2 = exponent == 2 ? -scale * 2 : -scale * exponent * (exponent - 1) * std::pow(u, exponent - 2);
-      }
-      return;
-    case SegmentKind::log_exponent:
-      value = d1 = d2 = -std::exp(u);
-      return;
-    case SegmentKind::gaussian_linear:
-      value = -0.5 * u * u; d1 = -u; d2 = -1;
-      return;
-    case SegmentKind::log_tau:
-      value = (order + shape) / shape * u; d1 = (order + shape) / shape;
-      return;
-  }
+  visit_segment_kind(kind, [&](auto k) { decltype(k)::offset(*this, order, u, value, d1, d2); });
 }
 
 double SegmentMap::offset_value(double order, double u) const {
-  switch (kind) {
-    case SegmentKind::reciprocal: return order * (std::log(-p0) - 2 * std::log(u));
-    case SegmentKind::linear:
-    case SegmentKind::log_distance:
-    case SegmentKind::bounded_far: return 0;
-    case SegmentKind::graded:
-      if (!exponent_offset) return 0;
-      return power == 6 ? -std::pow(p1 * u * u * u * u * u * u, shape) : -std::pow(p1 * std::pow(u, power), shape);
-    case SegmentKind::log_exponent: return -std::exp(u);
-    case SegmentKind::log_tau: return (order + shape) / shape * u;
-    case SegmentKind::gaussian_linear: return -0.5 * u * u;
-  }
-  return 0;
+  double value, d1, d2;
+  offset(order, u, value, d1, d2);
+  return value;
 }
 
 }  // namespace asperity

@@ -8,24 +8,40 @@ namespace {
 bool positive(double value) { return std::isfinite(value) && value > 0; }
 }  // namespace
 
+ContactScales contact_scales(const Surface& surface) noexcept {
+  const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
+  const double modulus = surface.contact_modulus;
+  ContactScales scales;
+  scales.count = n;
+  scales.area = M_PI * n * radius * scale;
+  scales.load = (4.0 / 3.0) * n * modulus * std::sqrt(radius) * scale * std::sqrt(scale);
+  scales.stiffness = 2 * n * modulus * std::sqrt(radius * scale);
+  return scales;
+}
+
+// The one rule for the stiffness/load ratio: from the logs, so that it stays finite where X_1/2
+// and X_3/2 underflow; NaN where X_3/2 is exactly 0 (no contact: 0/0).
+ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept {
+  ContactState state;
+  state.count = scales.count * values[orders::count];
+  state.stiffness = scales.stiffness * values[orders::stiffness];
+  state.area = scales.area * values[orders::area];
+  state.load = scales.load * values[orders::load];
+  const double no_contact = -std::numeric_limits<double>::infinity();
+  state.stiffness_ratio = logs[orders::load] == no_contact ? std::numeric_limits<double>::quiet_NaN()
+                                                           : 1.5 * std::exp(logs[orders::stiffness] - logs[orders::load]);
+  return state;
+}
+
 bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   out = {nan, nan, nan, nan, nan};
   if (!positive(surface.summit_count) || !positive(surface.summit_radius) ||
       !positive(surface.height_scale) || !positive(surface.contact_modulus) || !std::isfinite(separation))
     return false;
-  const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
-  const double modulus = surface.contact_modulus;
   double logs[4], values[4];
   curve.contact_orders(separation, logs, values);  // one lookup for orders 0, 1/2, 1, 3/2
-  const double count = values[0], half = values[1], area = values[2], three_halves = values[3];
-  out.count = n * count;
-  out.area = M_PI * n * radius * scale * area;
-  out.load = (4.0 / 3.0) * n * modulus * std::sqrt(radius) * scale * std::sqrt(scale) * three_halves;
-  out.stiffness = 2 * n * modulus * std::sqrt(radius * scale) * half;
-  // the ratio from the logs where X_3/2 underflows (or is exactly 0: no contact, NaN)
-  if (three_halves > 1e-300) out.stiffness_ratio = 1.5 * half / three_halves;
-  else out.stiffness_ratio = std::isinf(logs[3]) ? nan : 1.5 * std::exp(logs[1] - logs[3]);
+  out = contact_state_from_logs(contact_scales(surface), logs, values);
   return true;
 }
 

@@ -1,6 +1,7 @@
 #include "asperity/inverse.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <limits>
 
@@ -13,42 +14,46 @@ constexpr double y_step = 0.125;         // knots in y = ln X_n (cubic Hermite e
 constexpr double lowest_value = -690;    // ln 1e-300: below it the bisection path
 }  // namespace
 
-InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(&curve), twice_order_(twice_order) {
+// s in [lo, hi] where ln X_n(s) = log_value (ln X_n falls as s grows; lo may be -inf-ish
+// deep, hi the end of contact), by TOMS 748 to a few ulps.
+double InverseCurve::solve(double log_value, double lo, double hi) const noexcept {
+  auto excess = [&](double separation) { return curve_.log_value(twice_order_, separation) - log_value; };
+  const double at_lo = excess(lo), at_hi = excess(hi);
+  if (!(at_lo >= 0)) return lo;  // deeper than lo reaches (or NaN)
+  if (!(at_hi <= 0)) return hi;
+  if (at_lo == 0) return lo;
+  if (at_hi == 0) return hi;
+  boost::uintmax_t iterations = 200;
+  try {
+    const auto bracket = boost::math::tools::toms748_solve(excess, lo, hi, at_lo, at_hi,
+                                                           boost::math::tools::eps_tolerance<double>(50), iterations);
+    return 0.5 * (bracket.first + bracket.second);
+  } catch (...) {  // Boost reports a bracket it cannot keep by exception; the midpoint then
+    return 0.5 * (lo + hi);
+  }
+}
+
+InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(curve), twice_order_(twice_order) {
   if (twice_order < 2 || twice_order >= order_count || !curve.has_order(twice_order) ||
       !curve.has_order(twice_order - 2))
     throw Error("an inverse needs the curve to hold orders n and n - 1, n >= 1");
   // The separations spanned: from deep contact to the far tail (tail side), or to first contact
   // (bounded side); the tabulated values are those between ln X = -690 and the deep-contact end.
-  const double s_deep = curve.table_min_separation() * 4;  // reciprocal segment: well inside
+  const double s_deep = curve.table_min_separation() * 4;  // all-touching segment: well inside
   y_hi_ = curve.log_value(twice_order, s_deep);
-  // the far end: where ln X_n reaches lowest_value (bisection once, here)
-  double lo = s_deep, hi = curve.side() == Side::bounded ? -1e-300 : curve.table_max_separation();
-  if (curve.log_value(twice_order, hi) > lowest_value) {
-    y_lo_ = curve.log_value(twice_order, hi);
-  } else {
-    for (int i = 0; i < 400 && hi - lo > 1e-13 * (1 + std::fabs(lo)); ++i) {
-      const double middle = 0.5 * (lo + hi);
-      (curve.log_value(twice_order, middle) > lowest_value ? lo : hi) = middle;
-    }
-    y_lo_ = curve.log_value(twice_order, lo);
-    hi = lo;
-  }
+  double hi = curve.side() == Side::bounded ? -1e-300 : curve.table_max_separation();
+  if (curve.log_value(twice_order, hi) <= lowest_value) hi = solve(lowest_value, s_deep, hi);
+  y_lo_ = curve.log_value(twice_order, hi);
   if (!(y_hi_ > y_lo_) || !std::isfinite(y_hi_) || !std::isfinite(y_lo_)) throw Error("an inverse: the curve is not monotone");
   intervals_ = std::max(4, static_cast<int>(std::ceil((y_hi_ - y_lo_) / y_step)));
   inv_step_ = intervals_ / (y_hi_ - y_lo_);
   const double step = 1 / inv_step_;
   knots_.resize(static_cast<std::size_t>(intervals_ + 1) * 2);
-  // Each knot: solve ln X_n(s) = y by bisection bracketed by the previous knot, then polish.
+  // Each knot: solve ln X_n(s) = y bracketed by the previous knot, then polish.
   double previous = s_deep;
   for (int k = intervals_; k >= 0; --k) {  // from y_hi (deep contact) down, s increasing
     const double y = y_lo_ + (y_hi_ - y_lo_) * k / intervals_;
-    double a = previous, b = hi;
-    for (int i = 0; i < 200 && b - a > 4e-16 * (std::fabs(a) + std::fabs(b)) + 1e-300; ++i) {
-      const double middle = 0.5 * (a + b);
-      (curve.log_value(twice_order, middle) > y ? a : b) = middle;
-    }
-    double separation = 0.5 * (a + b);
-    separation = newton(separation, y);
+    const double separation = newton(solve(y, previous, hi), y);
     double lower[3];  // orders n - 1 (index 0) to n (index 2)
     curve.log_values(separation, twice_order - 2, twice_order, lower);
     const double slope = -0.5 * twice_order * std::exp(lower[0] - lower[2]);  // d ln X_n / ds
@@ -60,36 +65,35 @@ InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(&curve)
 
 double InverseCurve::newton(double separation, double log_value) const noexcept {
   double logs[3];
-  curve_->log_values(separation, twice_order_ - 2, twice_order_, logs);
+  curve_.log_values(separation, twice_order_ - 2, twice_order_, logs);
   const double slope = -0.5 * twice_order_ * std::exp(logs[0] - logs[2]);
   const double next = separation - (logs[2] - log_value) / slope;
   return std::isfinite(next) ? next : separation;
 }
 
-double InverseCurve::bisection(double log_value) const noexcept {
-  double lo = knots_.empty() ? -1e6 : knots_[2 * intervals_], hi;
-  if (log_value > y_hi_) {  // deeper than the table: grow the bracket toward -inf
-    hi = lo;
-    for (int i = 0; i < 1100 && curve_->log_value(twice_order_, lo) < log_value; ++i) lo = lo * 2 - 1;
-  } else {  // below the tabulated values
+// Values the table does not hold: deeper than its deep end (grow the bracket toward -inf), or
+// below ln X = -690 (grow it toward +inf on the tail side; up to first contact on the bounded).
+double InverseCurve::untabulated(double log_value) const noexcept {
+  double lo, hi;
+  if (log_value > y_hi_) {
+    hi = knots_[2 * intervals_];
+    lo = hi;
+    for (int i = 0; i < 1100 && curve_.log_value(twice_order_, lo) < log_value; ++i) lo = lo * 2 - 1;
+  } else {
     lo = knots_[0];
-    hi = curve_->side() == Side::bounded ? -0.0 : lo + 1;
-    for (int i = 0; i < 2000 && curve_->side() == Side::tail && curve_->log_value(twice_order_, hi) > log_value; ++i)
+    hi = curve_.side() == Side::bounded ? -1e-300 : lo + 1;  // the bounded side: up to first contact
+    for (int i = 0; i < 2000 && curve_.side() == Side::tail && curve_.log_value(twice_order_, hi) > log_value; ++i)
       hi = lo + (hi - lo) * 2;
   }
-  for (int i = 0; i < 2200 && hi - lo > 4e-16 * (std::fabs(lo) + std::fabs(hi)) + 1e-320; ++i) {
-    const double middle = 0.5 * (lo + hi);
-    (curve_->log_value(twice_order_, middle) > log_value ? lo : hi) = middle;
-  }
-  return 0.5 * (lo + hi);
+  return solve(log_value, lo, hi);
 }
 
 double InverseCurve::separation_at_log(double log_value) const noexcept {
-  if (!curve_ || std::isnan(log_value)) return nan;
+  if (knots_.empty() || std::isnan(log_value)) return nan;
   if (log_value == std::numeric_limits<double>::infinity()) return -std::numeric_limits<double>::infinity();
   if (log_value == -std::numeric_limits<double>::infinity())
-    return curve_->side() == Side::bounded ? 0.0 : std::numeric_limits<double>::infinity();
-  if (!(log_value >= y_lo_ && log_value <= y_hi_)) return newton(bisection(log_value), log_value);
+    return curve_.side() == Side::bounded ? 0.0 : std::numeric_limits<double>::infinity();
+  if (!(log_value >= y_lo_ && log_value <= y_hi_)) return newton(untabulated(log_value), log_value);
   double position = (log_value - y_lo_) * inv_step_;
   int interval = static_cast<int>(position);
   if (interval > intervals_ - 1) interval = intervals_ - 1;

@@ -33,6 +33,29 @@ void PhysicalSurface::validate() const {
   require_positive(summit_density, "summit density");
   require_positive(nominal_area, "nominal area A0");
   require_positive(contact_modulus, "contact modulus E*");
+  // The factors of MODEL.md section 3 must be ordinary numbers: sigma_s = 1e-300 or E* = 1e308
+  // would give a load of 0 or inf at every separation.
+  const double n = summit_count();
+  const double factors[] = {n, M_PI * n * summit_radius * height_scale,
+                            (4.0 / 3.0) * n * contact_modulus * std::sqrt(summit_radius) * height_scale * std::sqrt(height_scale),
+                            2 * n * contact_modulus * std::sqrt(summit_radius * height_scale), n / nominal_area};
+  const char* names[] = {"summit count N = density * A0", "area factor pi N R sigma_s",
+                         "load factor (4/3) N E* R^1/2 sigma_s^3/2", "stiffness factor 2 N E* R^1/2 sigma_s^1/2",
+                         "summit density"};
+  for (int i = 0; i < 5; ++i)
+    if (!(std::isfinite(factors[i]) && factors[i] >= 1e-250 && factors[i] <= 1e250)) {
+      std::ostringstream message;
+      message << "surface: the " << names[i] << " is " << factors[i]
+              << ", outside [1e-250, 1e250]: the parameters are not those of a physical surface (SI units?)";
+      throw Error(message.str());
+    }
+}
+
+double height_scale_from_rms(Distribution distribution, double shape, double rms) {
+  require_positive(rms, "rms summit height");
+  if (distribution == Distribution::gaussian) return rms;
+  require_positive(shape, "shape");
+  return rms / weibull_rms(shape);
 }
 
 double contact_modulus_from(double young1, double poisson1, double young2, double poisson2) {

@@ -1,5 +1,7 @@
 #include "asperity/scene_curves.hpp"
 
+#include <boost/math/tools/roots.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,23 +16,27 @@ constexpr double between_grid_bound = 1e-9;  // docs/accuracy.md, tests/test_acc
 
 double separation_at_load(const Curve& curve, double load) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (!curve.has_order(3) || !(load > 0) || !std::isfinite(load)) return nan;
+  if (!curve.has_order(orders::load) || !(load > 0) || !std::isfinite(load)) return nan;
   const double target = std::log(load);
-  auto above = [&](double separation) { return curve.log_value(3, separation) > target; };
+  // ln X_3/2 falls as s grows: bracket the root, then TOMS 748 (Boost.Math)
+  auto excess = [&](double separation) { return curve.log_value(orders::load, separation) - target; };
   double lo = -1, hi = curve.side() == Side::bounded ? -1e-300 : 1;
-  for (int i = 0; !above(lo); ++i) {
+  for (int i = 0; !(excess(lo) > 0); ++i) {
     if (i > 1100) return nan;
     lo *= 2;
   }
-  for (int i = 0; above(hi); ++i) {
+  for (int i = 0; !(excess(hi) < 0); ++i) {
     if (i > 2000 || curve.side() == Side::bounded) return nan;
     hi = hi < 1 ? 1 : hi * 1.5;
   }
-  for (int i = 0; i < 200 && hi - lo > 4 * std::numeric_limits<double>::epsilon() * std::fabs(lo + hi); ++i) {
-    const double middle = 0.5 * (lo + hi);
-    (above(middle) ? lo : hi) = middle;
+  boost::uintmax_t iterations = 200;
+  try {
+    const auto bracket = boost::math::tools::toms748_solve(excess, lo, hi, boost::math::tools::eps_tolerance<double>(50),
+                                                          iterations);
+    return 0.5 * (bracket.first + bracket.second);
+  } catch (...) {
+    return nan;
   }
-  return 0.5 * (lo + hi);
 }
 
 std::vector<SceneCurveView> serve_scene(const Table& table, const Scene& scene) {

@@ -27,7 +27,7 @@ void CurveSet::validate(const std::string& context) const {
     if (i > 0 && !(shapes[i] > shapes[i - 1])) throw Error(where + "shapes are not strictly ascending");
   }
   if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
-    throw Error(where + "the layout must have 1 to 6 segments");
+    throw Error(where + "the layout must have 1 to " + std::to_string(max_segments) + " segments");
   if (layout.front().kind != SegmentKind::reciprocal) throw Error(where + "the first segment must be reciprocal");
   for (double shape : shapes) {
     try {
@@ -38,7 +38,7 @@ void CurveSet::validate(const std::string& context) const {
   }
   for (const SegmentSpec& segment : layout) {
     if (segment.knots < 2 || segment.knots > 1000000) throw Error(where + "a segment has a bad knot count");
-    if (static_cast<int>(segment.kind) < 0 || static_cast<int>(segment.kind) >= segment_kind_count)
+    if (!is_segment_kind(static_cast<int>(segment.kind)))
       throw Error(where + "unknown segment kind");
     if (!std::isfinite(segment.p0) || !std::isfinite(segment.p1)) throw Error(where + "a segment bound is not finite");
   }
@@ -118,12 +118,18 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
       }
     weights[i] = weight;
   }
+  // The all-touching segment (below the table) from the knot data blended with the same
+  // weights: its variable u = sqrt(s1/s) does not depend on the shape.
   std::vector<double> blended(stride, 0.0);
+  ShapeBlend blend;
   for (std::size_t i = 0; i < points; ++i) {
     const double* source = &set->knots[(first + i) * stride];
     for (std::size_t k = 0; k < stride; ++k) blended[k] += weights[i] * source[k];
+    blend.shapes.push_back(set->shapes[first + i]);
+    blend.knot_data.push_back(source);
+    blend.weights.push_back(weights[i]);
   }
-  return Curve(distribution, side, shape, set->layout, blended.data(), order_mask);
+  return Curve(distribution, side, shape, set->layout, blended.data(), blend, order_mask);
 }
 
 }  // namespace asperity

@@ -1,31 +1,95 @@
-// The batch kernels, one per instruction set (kernels_<isa>.cpp), and the choice among them
-// (kernels_dispatch.cpp).
+// The batch kernels, one build per instruction set (kernels_<isa>.cpp), and the choice among
+// them (kernels_dispatch.cpp). Every query runs the same branch-free arithmetic on the fast
+// grid (fast_grid.hpp): bits of s -> binade -> interval -> quintic -> exp, which the compiler
+// vectorizes 2, 4 or 8 queries at a time (the directory and coefficient loads become gathers).
 #pragma once
+#include <cstdint>
+
+#include "asperity/detail/fast_grid.hpp"
 #include "asperity/instruction_set.hpp"
-#include "curve_kernel.hpp"
 
 namespace asperity::detail {
+
+inline constexpr int batch_block = 256;
 
 struct Kernels {
   // out[k] = exp(logs[k]) for k < 4, as one vector (the four quantities of contact_at).
   void (*exp4)(const double* logs, double* out) noexcept;
-  // One block of a batch (count <= batch_block): ln X or X for every query inside the table;
-  // returns how many were not (NaN, infinite, beyond the table), their indices in `rest`.
-  int (*block)(const KernelCurve& curve, int twice_order, const double* separations, double* out, int count,
-               bool log_output, int* rest) noexcept;
+  // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
+  // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.
+  int (*block)(const FastGrid& grid, const double* order_coefficients, const double* separations, double* out,
+               int count, bool log_output, int* rest) noexcept;
 };
 
-// What each instruction-set build instantiates (kernels_<isa>.cpp): internal linkage, so every
-// build keeps its own copy (see curve_kernel.hpp).
+// What each instruction-set build instantiates: internal linkage (see fast_math.hpp).
 namespace {
+struct FastMath {
+  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
+};
+struct LibraryMath {
+  static double exp(double x) noexcept { return __builtin_exp(x); }
+};
+
 inline void exp4(const double* logs, double* out) noexcept {
   for (int k = 0; k < 4; ++k) out[k] = fast_exp(logs[k]);
 }
 
+// Not inlined, and with restrict: the promise that the results do not overlap the
+// coefficients is what lets the compiler gather the coefficients in vectors. Every value is
+// 64 bits wide (doubles, and 64-bit integers made with the 2^52 shifter rather than by
+// conversions, which AVX2 lacks), so that the loop vectorizes with one lane per query.
+// Queries off the grid read interval 0 (a valid load) and are counted; the caller answers them.
+template <bool log_output, class Math>
+__attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const FastBinade* __restrict directory,
+                                                  const double* __restrict coefficients,
+                                                  const double* __restrict separations, double* __restrict out,
+                                                  int count) noexcept {
+  const std::uint64_t lower0_bits = bits_of(grid.sides[0].lower), upper0_bits = bits_of(grid.sides[0].upper);
+  const std::uint64_t lower1_bits = bits_of(grid.sides[1].lower), upper1_bits = bits_of(grid.sides[1].upper);
+  const std::uint64_t offset0 = static_cast<std::uint64_t>(grid.sides[0].offset);
+  const std::uint64_t offset1 = static_cast<std::uint64_t>(grid.sides[1].offset);
+  const std::uint64_t shifter_bits = bits_of(round_shifter);
+  std::uint64_t outside = 0;
+  for (int j = 0; j < count; ++j) {
+    const double separation = separations[j];
+    const std::uint64_t bits = bits_of(separation);
+    // the sign's grid by bit masks (all ones for s < 0), not by selects on a bool
+    const std::uint64_t negative = static_cast<std::uint64_t>(static_cast<std::int64_t>(bits) >> 63);
+    const double magnitude = double_of(bits & 0x7fffffffffffffffull);
+    const double lower = double_of((lower1_bits & negative) | (lower0_bits & ~negative));
+    const double upper = double_of((upper1_bits & negative) | (upper0_bits & ~negative));
+    const bool inside = (magnitude >= lower) & (magnitude <= upper);  // no branch: &, not &&
+    // all ones on the grid, 0 off it: the indices are masked, not selected (a select would
+    // become a conditional load, which does not vectorize)
+    const std::uint64_t keep = 0 - static_cast<std::uint64_t>(inside);
+    const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
+    const std::uint64_t entry = (offset + ((bits >> 52) & 0x7ff)) & keep;
+    const double knots = directory[entry].knots;
+    const double first = directory[entry].first;
+    const double mantissa = double_of((bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
+    const double position = (mantissa - 1.0) * knots;  // exact: knots is a power of two
+    const double cell = __builtin_floor(position);
+    const std::uint64_t index = (bits_of(first + cell + round_shifter) - shifter_bits) & keep;
+    const double log_value = fast_quintic(coefficients, index * fast_stride, position - cell - 0.5);
+    out[j] = log_output ? log_value : Math::exp(log_value);
+    outside += inside ? 0 : 1;
+  }
+  return outside;
+}
+
 template <class Math>
-int block(const KernelCurve& curve, int twice_order, const double* separations, double* out, int count,
+int block(const FastGrid& grid, const double* coefficients, const double* separations, double* out, int count,
           bool log_output, int* rest) noexcept {
-  return evaluate_block<Math>(curve, twice_order, separations, out, count, log_output, rest);
+  const FastBinade* directory = grid.directory.data();
+  const std::uint64_t outside =
+      log_output ? run_block<true, Math>(grid, directory, coefficients, separations, out, count)
+                 : run_block<false, Math>(grid, directory, coefficients, separations, out, count);
+  if (outside == 0) return 0;
+  int found = 0;
+  FastPosition unused;
+  for (int j = 0; j < count; ++j)
+    if (!fast_position(grid, separations[j], unused)) rest[found++] = j;
+  return found;
 }
 }  // namespace
 

@@ -1,4 +1,4 @@
-// The kernels built for AVX2 + FMA (compile options in CMakeLists.txt; see curve_kernel.hpp).
+// The kernels built for AVX2 + FMA (compile options in runtime/CMakeLists.txt; see kernels.hpp).
 #include "kernels.hpp"
 
 namespace asperity::detail {

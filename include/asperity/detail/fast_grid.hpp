@@ -1,0 +1,84 @@
+// The runtime's lookup grid: ln X_n(s) as a piecewise quintic on a grid that the bits of s
+// index directly. A binade [2^e, 2^(e+1)) of |s| holds K = 2^k intervals uniform in s; the
+// exponent field of s picks the binade (one table load), the mantissa the interval and the
+// position in it. So a lookup is a few integer operations, two loads, one quintic and one exp:
+// no log and no branch on the data. Knots are packed geometrically toward s = 0 (where the
+// Weibull integrals have their power terms |s|^(n + a)) and K per binade follows the curve.
+//
+// The grid is built at load time from the table's own layout (compact_curve.hpp) by
+// interpolating ln X at the six Chebyshev-Lobatto points of each interval (values only; the
+// quintic is kept in the power basis of y = x - 1/2, x in [0, 1] the position in the
+// interval), with K per binade doubled until the quintic reproduces the table at check points
+// between the nodes (fast_grid.cpp). Where it does not reach (|s| below 2^-70, past the
+// table's ends, NaN, infinities) the curve answers from the compact layout and the series.
+#pragma once
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "asperity/detail/fast_math.hpp"
+
+namespace asperity::detail {
+
+// One binade of |s|: `knots` intervals (a power of two, as a double), the first at `first`
+// (an index into the coefficients; partial binades at the grid's ends keep their numbering,
+// so `first` may point before the allocated intervals: only the covered ones are read).
+struct FastBinade {
+  double knots = 1;
+  double first = 0;  // an integer; a double so that the batch kernel's lanes stay 64 bits wide
+};
+
+// The grid of one sign of s: |s| in [lower, upper]; the binade of biased exponent E is
+// directory[offset + E].
+struct FastSide {
+  double lower = 1;   // lower > upper: this sign is not covered
+  double upper = 0;
+  std::int32_t offset = 0;
+};
+
+inline constexpr int fast_stride = 6;  // coefficients per interval (see bench: 48-byte records)
+
+struct FastGrid {
+  FastSide sides[2];                   // [0]: s > 0, [1]: s < 0 (the sign bit)
+  std::vector<FastBinade> directory;
+  std::int32_t intervals = 0;          // per order (at most 2^22)
+};
+
+// The kernel below is `static` like fast_math.hpp's functions: each instruction-set build of
+// the batch kernel (runtime/core/kernel/) keeps its own copy.
+
+// The position of s on the grid, or inside = false where the grid does not reach.
+struct FastPosition {
+  std::uint64_t interval;  // index of the interval (into one order's coefficients / fast_stride)
+  double y;               // position in the interval, in [-1/2, 1/2]
+};
+
+static ASPERITY_ALWAYS_INLINE bool fast_position(const FastGrid& grid, double separation,
+                                                 FastPosition& out) noexcept {
+  std::uint64_t bits;
+  std::memcpy(&bits, &separation, sizeof bits);
+  const FastSide& side = grid.sides[bits >> 63];
+  const double magnitude = __builtin_fabs(separation);
+  if (!(magnitude >= side.lower && magnitude <= side.upper)) return false;  // NaN fails too
+  const FastBinade& binade = grid.directory[side.offset + static_cast<std::int32_t>((bits >> 52) & 0x7ff)];
+  const std::uint64_t mantissa_bits = (bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull;
+  double mantissa;  // in [1, 2)
+  std::memcpy(&mantissa, &mantissa_bits, sizeof mantissa);
+  const double position = (mantissa - 1.0) * binade.knots;  // exact: knots is a power of two
+  const std::int32_t cell = static_cast<std::int32_t>(position);
+  out.interval = static_cast<std::int32_t>(binade.first) + cell;
+  out.y = position - static_cast<double>(cell) - 0.5;
+  return true;
+}
+
+// The quintic of one interval at y (Estrin's scheme: three independent pairs, then y^2). The
+// coefficients are read by index from one base (the form a vectorizer turns into gathers).
+static ASPERITY_ALWAYS_INLINE double fast_quintic(const double* coefficients, std::uint64_t at, double y) noexcept {
+  const double y2 = y * y;
+  const double low = coefficients[at] + y * coefficients[at + 1];
+  const double middle = coefficients[at + 2] + y * coefficients[at + 3];
+  const double high = coefficients[at + 4] + y * coefficients[at + 5];
+  return low + y2 * (middle + y2 * high);
+}
+
+}  // namespace asperity::detail

@@ -1,0 +1,36 @@
+// Building a curve's fast grid (fast_grid.hpp) from its compact form (compact_curve.hpp).
+#pragma once
+#include <array>
+#include <functional>
+#include <cstdint>
+#include <vector>
+
+#include "asperity/detail/compact_curve.hpp"
+#include "asperity/detail/fast_grid.hpp"
+
+namespace asperity::detail {
+
+struct FastGridBuild {
+  FastGrid grid;
+  std::vector<double> coefficients;                  // [held order][interval][fast_stride]
+  std::array<std::int64_t, order_count> order_offset;  // into coefficients; -1: order not held
+  double achieved = 0;  // the largest |error| in ln X found at the check points
+};
+
+// What the grid is made from: ln X of all six orders at any s (NaN for an order not held; the
+// series past the table's ends, which meet the table to its own error), and the range the
+// table covers.
+struct GridReference {
+  std::function<void(double separation, double out[order_count])> log_values;
+  unsigned order_mask = 0;
+  double table_min = 0, table_max = 0;
+};
+
+// The grid covers |s| from 2^-70 to the table's ends on each side the table covers. In each
+// binade the knot count is doubled until the quintics reproduce the compact curve at the check
+// points to `tolerance` in ln X (absolute: relative in X) where X >= 1e-100, and to 100 times
+// that below. Throws asperity::Error if the compact curve is not finite somewhere inside its
+// range, or if the grid would exceed 2^22 intervals.
+FastGridBuild build_fast_grid(const GridReference& reference, double tolerance);
+
+}  // namespace asperity::detail

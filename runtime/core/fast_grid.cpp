@@ -1,0 +1,207 @@
+// Building the fast grid (fast_grid.hpp) from a curve's compact form.
+#include "asperity/detail/fast_grid_build.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "asperity/error.hpp"
+
+namespace asperity::detail {
+namespace {
+
+constexpr double zero_zone = 8.470329472543003e-22;  // 2^-70: below it the compact curve answers
+constexpr double log_of_1e_minus_100 = -230.25850929940457;
+constexpr double largest_knots_per_binade = 65536;
+constexpr std::int64_t largest_intervals = std::int64_t(1) << 22;
+
+// The six Chebyshev-Lobatto points of an interval in y = x - 1/2, and where the interpolation
+// error peaks between them (the middle three gaps: |prod (y - y_k)| is largest there).
+struct Nodes {
+  std::array<double, 6> y;
+  std::array<double, 3> check;
+  std::array<std::array<double, 6>, 6> inverse;  // power-basis coefficients = inverse * values
+  Nodes() {
+    const long double pi = 3.141592653589793238462643383279502884L;
+    for (int k = 0; k < 6; ++k) y[k] = static_cast<double>((1 - std::cos(pi * k / 5)) / 2 - 0.5L);
+    y[0] = -0.5;
+    y[5] = 0.5;
+    for (int g = 0; g < 3; ++g) check[g] = 0.5 * (y[g + 1] + y[g + 2]);
+    // invert the Vandermonde matrix V[k][j] = y_k^j (Gauss-Jordan in long double)
+    long double a[6][12];
+    for (int k = 0; k < 6; ++k)
+      for (int j = 0; j < 12; ++j)
+        a[k][j] = j < 6 ? std::pow(static_cast<long double>(y[k]), j) : (j - 6 == k ? 1.0L : 0.0L);
+    for (int column = 0; column < 6; ++column) {
+      int pivot = column;
+      for (int row = column + 1; row < 6; ++row)
+        if (std::fabs(a[row][column]) > std::fabs(a[pivot][column])) pivot = row;
+      for (int j = 0; j < 12; ++j) std::swap(a[column][j], a[pivot][j]);
+      const long double scale = a[column][column];
+      for (int j = 0; j < 12; ++j) a[column][j] /= scale;
+      for (int row = 0; row < 6; ++row)
+        if (row != column) {
+          const long double factor = a[row][column];
+          for (int j = 0; j < 12; ++j) a[row][j] -= factor * a[column][j];
+        }
+    }
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k) inverse[j][k] = static_cast<double>(a[j][6 + k]);
+  }
+};
+
+const Nodes& nodes() {
+  static const Nodes instance;
+  return instance;
+}
+
+// The quintic through values at the nodes, in the power basis of y. Differences from the
+// mean of the end values keep the rounding relative to the variation in the interval.
+void fit_quintic(const double* values, double* out) {
+  const Nodes& n = nodes();
+  const double reference = 0.5 * (values[0] + values[5]);
+  for (int j = 0; j < 6; ++j) {
+    double sum = 0;
+    for (int k = 0; k < 6; ++k) sum += n.inverse[j][k] * (values[k] - reference);
+    out[j] = sum;
+  }
+  out[0] += reference;
+}
+
+struct Builder {
+  const GridReference& reference;
+  double tolerance;
+  std::array<int, order_count> orders{};  // the held orders
+  int held = 0;
+  double achieved = 0;
+
+  void evaluate(double separation, double* out) const {  // ln X of the held orders
+    double all[order_count];
+    reference.log_values(separation, all);
+    for (int k = 0; k < held; ++k) {
+      out[k] = all[orders[k]];
+      if (!std::isfinite(out[k]))
+        throw Error("the table gives ln X_" + std::to_string(order_of(orders[k])) + " = " + std::to_string(out[k]) +
+                    " at s = " + std::to_string(separation) + ", inside the curve's range");
+    }
+  }
+
+  // One binade's intervals first..last (of `knots`) at |s| = base (1 + (i + 1/2 + y)/knots):
+  // appends their coefficients [held order][interval][6] to `block` and returns the largest
+  // error at the check points relative to what is allowed there.
+  double fit_binade(double sign, double base, double knots, std::int64_t first, std::int64_t last,
+                    std::vector<double>& block) const {
+    const Nodes& n = nodes();
+    const std::int64_t count = last - first + 1;
+    block.assign(static_cast<std::size_t>(count) * held * 6, 0.0);
+    double worst = 0;
+    std::vector<double> values(static_cast<std::size_t>(6) * held), checks(static_cast<std::size_t>(3) * held);
+    std::vector<double> left(held);
+    for (std::int64_t i = first; i <= last; ++i) {
+      auto at = [&](double y) { return sign * base * (1 + (static_cast<double>(i) + 0.5 + y) / knots); };
+      for (int k = 0; k < 6; ++k) {
+        if (k == 0 && i > first) {  // the previous interval's right end
+          for (int o = 0; o < held; ++o) values[o * 6] = left[o];
+          continue;
+        }
+        double point[order_count];
+        evaluate(at(n.y[k]), point);
+        for (int o = 0; o < held; ++o) values[o * 6 + k] = point[o];
+      }
+      for (int o = 0; o < held; ++o) left[o] = values[o * 6 + 5];
+      for (int g = 0; g < 3; ++g) {
+        double point[order_count];
+        evaluate(at(n.check[g]), point);
+        for (int o = 0; o < held; ++o) checks[o * 3 + g] = point[o];
+      }
+      for (int o = 0; o < held; ++o) {
+        double* c = &block[(static_cast<std::size_t>(o) * count + (i - first)) * 6];
+        fit_quintic(&values[o * 6], c);
+        for (int g = 0; g < 3; ++g) {
+          const double truth = checks[o * 3 + g];
+          // what is asked, plus four units in the last place of ln X (the rounding of the
+          // reference and of the quintic: a relative error |ln X| eps that no method escapes)
+          const double allowed = (truth >= log_of_1e_minus_100 ? tolerance : 100 * tolerance) +
+                                 8.8817841970012523e-16 * std::fabs(truth);
+          const double error = std::fabs(fast_quintic(c, 0, n.check[g]) - truth) / allowed;
+          worst = std::max(worst, std::isnan(error) ? std::numeric_limits<double>::infinity() : error);
+        }
+      }
+    }
+    return worst;
+  }
+};
+
+int biased_exponent(double magnitude) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &magnitude, sizeof bits);
+  return static_cast<int>((bits >> 52) & 0x7ff);
+}
+
+}  // namespace
+
+FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) {
+  if (!(tolerance > 0)) throw Error("the lookup grid's tolerance must be positive");
+  Builder builder{reference, tolerance};
+  for (int order = 0; order < order_count; ++order)
+    if (reference.order_mask >> order & 1u) builder.orders[builder.held++] = order;
+
+  FastGridBuild build;
+  FastGrid& grid = build.grid;
+  // Per held order, the intervals in the order they are made; coefficients gathered at the end.
+  std::vector<std::vector<double>> per_order(builder.held);
+  const double table_min = reference.table_min, table_max = reference.table_max;
+  for (int sign_bit = 0; sign_bit < 2; ++sign_bit) {
+    const double sign = sign_bit ? -1.0 : 1.0;
+    FastSide& side = grid.sides[sign_bit];
+    double lower = zero_zone, upper = sign_bit ? -table_min : table_max;
+    if (sign_bit && table_max < 0) lower = std::max(lower, -table_max);  // the bounded side: d >= d_min
+    if (!(upper >= lower) || !std::isfinite(upper)) continue;            // not covered
+    side.lower = lower;
+    side.upper = upper;
+    const int e_lo = biased_exponent(lower), e_hi = biased_exponent(upper);
+    side.offset = static_cast<std::int32_t>(grid.directory.size()) - e_lo;
+    grid.directory.resize(grid.directory.size() + (e_hi - e_lo + 1));
+    double knots = 1;
+    std::vector<double> block;
+    // From the top binade down: the knots a binade needs shrink toward s = 0.
+    for (int e = e_hi; e >= e_lo; --e) {
+      const double base = std::ldexp(1.0, e - 1023);
+      const double lo = std::max(lower, base), hi = std::min(upper, 2 * base);
+      knots = std::max(1.0, knots / 4);
+      for (;;) {
+        const auto first = static_cast<std::int64_t>(std::floor((lo / base - 1) * knots));
+        const auto last = std::min(static_cast<std::int64_t>(knots) - 1,
+                                   static_cast<std::int64_t>(std::floor((hi / base - 1) * knots)));
+        const double worst = builder.fit_binade(sign, base, knots, first, last, block);
+        if (worst <= 1 || knots >= largest_knots_per_binade) {
+          builder.achieved = std::max(builder.achieved, worst * tolerance);
+          const std::int64_t count = last - first + 1;
+          FastBinade& binade = grid.directory[side.offset + e];
+          binade.knots = knots;
+          binade.first = static_cast<double>(grid.intervals - first);
+          grid.intervals += static_cast<std::int32_t>(count);
+          if (grid.intervals > largest_intervals)
+            throw Error("the lookup grid would need more than 2^22 intervals: the table's curve is not smooth");
+          for (int o = 0; o < builder.held; ++o)
+            per_order[o].insert(per_order[o].end(), block.begin() + static_cast<std::ptrdiff_t>(o) * count * 6,
+                                block.begin() + static_cast<std::ptrdiff_t>(o + 1) * count * 6);
+          break;
+        }
+        knots *= 2;
+      }
+    }
+  }
+  build.order_offset.fill(-1);
+  for (int o = 0; o < builder.held; ++o) {
+    build.order_offset[builder.orders[o]] = static_cast<std::int64_t>(build.coefficients.size());
+    build.coefficients.insert(build.coefficients.end(), per_order[o].begin(), per_order[o].end());
+  }
+  build.achieved = builder.achieved;
+  return build;
+}
+
+}  // namespace asperity::detail
