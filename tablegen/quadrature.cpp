@@ -2,6 +2,7 @@
 
 #include <boost/math/quadrature/exp_sinh.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -120,13 +121,20 @@ double log_integral(const CurveId& curve, double order, double separation) {
         return (weight == 0 || w <= 0) ? 0.0 : power(w, order) * weight;
       };
       result = gaussian_log_density(separation) + std::log(integrate_half_line(integrand));
-    } else {  // the density peaks inside: split at w = -s
+    } else if (separation >= -40) {  // the density peaks inside: split at w = -s
       auto integrand = [=](double w) {
         const double weight = std::exp(gaussian_log_density(separation + w));
         return (weight == 0 || w <= 0) ? 0.0 : power(w, order) * weight;
       };
       result = std::log(finite().integrate(integrand, 0.0, -separation, tolerance) +
                         integrate_half_line(integrand, -separation));
+    } else {  // deep: in the height z itself (w = z - s would be rounded to ulp(s)); below
+              // z = -40 the density is under e^-800 of its peak, and so is (z - s)'s endpoint
+      auto integrand = [=](double z) {
+        const double weight = std::exp(gaussian_log_density(z));
+        return weight == 0 ? 0.0 : power(z - separation, order) * weight;
+      };
+      result = std::log(finite().integrate(integrand, -40.0, 0.0, tolerance) + integrate_half_line(integrand, 0.0));
     }
   } else if (curve.side == Side::tail) {
     const double shape = curve.shape;
@@ -166,7 +174,7 @@ double log_slope_minus_half(const CurveId& curve, double separation) {
       };
       slope = -integrate_half_line([&](double w) { return base(w, 1); }) /
               integrate_half_line([&](double w) { return base(w, 0); });
-    } else {
+    } else if (separation >= -40) {
       auto base = [=](double w, int moment) {
         const double weight = std::exp(gaussian_log_density(separation + w));
         return (weight == 0 || w <= 0) ? 0.0 : power(w, order) * weight * (moment ? separation + w : 1.0);
@@ -174,6 +182,15 @@ double log_slope_minus_half(const CurveId& curve, double separation) {
       auto whole = [&](int moment) {
         auto f = [&](double w) { return base(w, moment); };
         return finite().integrate(f, 0.0, -separation, tolerance) + integrate_half_line(f, -separation);
+      };
+      slope = -whole(1) / whole(0);
+    } else {  // deep: in the height z (as in log_integral), -int (z - s)^m z phi(z) dz / int (z - s)^m phi(z) dz
+      auto whole = [&](int moment) {
+        auto f = [=](double z) {
+          const double weight = std::exp(gaussian_log_density(z));
+          return weight == 0 ? 0.0 : power(z - separation, order) * weight * (moment ? z : 1.0);
+        };
+        return finite().integrate(f, -40.0, 0.0, tolerance) + integrate_half_line(f, 0.0);
       };
       slope = -whole(1) / whole(0);
     }

@@ -1,6 +1,7 @@
 /* The C API from C (compiled as C99): open, evaluate, batch, physical quantities, errors. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "asperity/asperity.h"
@@ -13,6 +14,115 @@ static int failures = 0;
       ++failures;                                                          \
     }                                                                      \
   } while (0)
+
+/* The default table's bytes, or NULL. */
+static char *read_file(const char *path, size_t *size) {
+  FILE *file = fopen(path, "rb");
+  char *bytes;
+  long length;
+  if (!file) return NULL;
+  fseek(file, 0, SEEK_END);
+  length = ftell(file);
+  fseek(file, 0, SEEK_SET);
+  bytes = malloc((size_t)length);
+  if (bytes && fread(bytes, 1, (size_t)length, file) != (size_t)length) {
+    free(bytes);
+    bytes = NULL;
+  }
+  fclose(file);
+  *size = (size_t)length;
+  return bytes;
+}
+
+static void write_file(const char *path, const char *bytes, size_t size) {
+  FILE *file = fopen(path, "wb");
+  if (!file) return;
+  fwrite(bytes, 1, size, file);
+  fclose(file);
+}
+
+/* asperity_table_load tells why a file was refused, as a status. */
+static void table_statuses(void) {
+  char err[512], path[512];
+  asperity_table *table = (asperity_table *)1;
+  size_t size = 0, i;
+  char *bytes = read_file(ASPERITY_TEST_TABLE, &size);
+  CHECK(bytes != NULL && size > 100000);
+  if (!bytes) return;
+
+  CHECK(asperity_table_load("/nonexistent/table.h5", &table, err, sizeof err) == ASPERITY_FILE_MISSING);
+  CHECK(table == NULL && strstr(err, "no such file") != NULL);
+  CHECK(asperity_table_load(ASPERITY_TEST_BINARY_DIR, &table, err, sizeof err) == ASPERITY_FILE_UNREADABLE);
+  snprintf(path, sizeof path, "%s/c-api-text.h5", ASPERITY_TEST_BINARY_DIR);
+  write_file(path, "dist,side,shape,sep\n", 20);
+  CHECK(asperity_table_load(path, &table, err, sizeof err) == ASPERITY_NOT_HDF5);
+  /* a format-1 table: the HDF5 file without the integrity header */
+  snprintf(path, sizeof path, "%s/c-api-version1.h5", ASPERITY_TEST_BINARY_DIR);
+  write_file(path, bytes + 512, size - 512);
+  CHECK(asperity_table_load(path, &table, err, sizeof err) == ASPERITY_OTHER_VERSION);
+  CHECK(strstr(err, "regenerate") != NULL);
+  /* another program's HDF5 file: the same without the schema's name */
+  for (i = 512; i + 14 <= size; ++i)
+    if (memcmp(bytes + i, "asperity-table", 14) == 0) memcpy(bytes + i, "someone-elses!", 14);
+  snprintf(path, sizeof path, "%s/c-api-foreign.h5", ASPERITY_TEST_BINARY_DIR);
+  write_file(path, bytes + 512, size - 512);
+  CHECK(asperity_table_load(path, &table, err, sizeof err) == ASPERITY_OTHER_SCHEMA);
+  /* damaged: truncated, and (the same bytes as the header says, one changed) */
+  snprintf(path, sizeof path, "%s/c-api-damaged.h5", ASPERITY_TEST_BINARY_DIR);
+  write_file(path, bytes, size / 2);
+  CHECK(asperity_table_load(path, &table, err, sizeof err) == ASPERITY_DAMAGED);
+  CHECK(strstr(err, "truncated") != NULL);
+  write_file(path, bytes, size);
+  CHECK(asperity_table_load(path, &table, err, sizeof err) == ASPERITY_DAMAGED);
+  CHECK(strstr(err, "SHA-256") != NULL);
+  CHECK(asperity_table_load(NULL, NULL, err, sizeof err) == ASPERITY_BAD_HANDLE);
+  CHECK(asperity_table_load("/nonexistent/table.h5", &table, NULL, 0) == ASPERITY_FILE_MISSING);
+  CHECK(strcmp(asperity_status_string(ASPERITY_DAMAGED),
+               "the table file is damaged (truncated or changed since it was written)") == 0);
+  free(bytes);
+}
+
+/* Curves with fewer orders, and why a curve could not be made. */
+static void curve_statuses(const asperity_table *table) {
+  char err[512];
+  asperity_curve *curve = NULL;
+  CHECK(asperity_curve_load(table, "weibull", "tail", 2.0, ASPERITY_ORDER_I3_2 | ASPERITY_ORDER_I1_2, &curve, err,
+                            sizeof err) == ASPERITY_OK);
+  CHECK(asperity_curve_order_mask(curve) == (ASPERITY_ORDER_I3_2 | ASPERITY_ORDER_I1_2));
+  CHECK(isfinite(asperity_eval(curve, 3, 0.5)) && isnan(asperity_eval(curve, 2, 0.5)));
+  asperity_curve_close(curve);
+  CHECK(asperity_curve_load(table, "weibull", "tail", 2.0, 0u, &curve, err, sizeof err) == ASPERITY_BAD_ORDER);
+  CHECK(asperity_curve_load(table, "weibull", "tail", 2.0, 0x40u, &curve, err, sizeof err) == ASPERITY_BAD_ORDER);
+  CHECK(asperity_curve_load(table, "beta", "tail", 2.0, ASPERITY_ALL_ORDERS, &curve, err, sizeof err) ==
+        ASPERITY_BAD_NAME);
+  CHECK(asperity_curve_load(table, "weibull", "tail", 100.0, ASPERITY_ALL_ORDERS, &curve, err, sizeof err) ==
+        ASPERITY_NOT_IN_TABLE);
+  CHECK(curve == NULL && strstr(err, "outside") != NULL);
+  CHECK(asperity_curve_load(table, "gaussian", "bounded", 0.0, ASPERITY_ALL_ORDERS, &curve, err, sizeof err) ==
+        ASPERITY_NOT_IN_TABLE);
+  CHECK(asperity_curve_load(NULL, "weibull", "tail", 2.0, ASPERITY_ALL_ORDERS, &curve, err, sizeof err) ==
+        ASPERITY_BAD_HANDLE);
+  CHECK(asperity_curve_order_mask(NULL) == 0u);
+}
+
+/* The batch calls with out overlapping sep: the values of separate buffers. */
+static void overlapping_batches(const asperity_curve *curve) {
+  enum { n = 1000 };
+  static double expected[n], expected_log[n], buffer[n + 40];
+  int shift, i, log_output;
+  for (shift = -20; shift <= 20; shift += 5) {
+    double *sep = buffer + 20, *out = buffer + 20 + shift;
+    for (log_output = 0; log_output <= 1; ++log_output) {
+      int same = 1;
+      for (i = 0; i < n; ++i) sep[i] = -3.0 + 6.0 * i / n;
+      CHECK(asperity_eval_batch(curve, 3, sep, expected, n) == ASPERITY_OK);
+      CHECK(asperity_eval_log_batch(curve, 3, sep, expected_log, n) == ASPERITY_OK);
+      CHECK((log_output ? asperity_eval_log_batch : asperity_eval_batch)(curve, 3, sep, out, n) == ASPERITY_OK);
+      for (i = 0; i < n; ++i) same = same && out[i] == (log_output ? expected_log : expected)[i];
+      CHECK(same);
+    }
+  }
+}
 
 int main(void) {
   char err[512];
@@ -84,6 +194,10 @@ int main(void) {
     CHECK(strstr(err, "height scale") != NULL);
     asperity_model_close(NULL);
   }
+
+  table_statuses();
+  curve_statuses(table);
+  overlapping_batches(curve);
 
   asperity_curve_close(curve);
   asperity_curve_close(NULL);

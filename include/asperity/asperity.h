@@ -1,9 +1,24 @@
 /* The C API of asperity: plain C (C99 and C++), for calling the runtime from any language.
  *
- * A table is loaded once (asperity_table_open); a curve resolves one distribution, side and
- * shape (asperity_curve_open) and is the hot handle. Both are immutable: any number of
+ * A table is loaded once (asperity_table_load); a curve resolves one distribution, side and
+ * shape (asperity_curve_load) and is the hot handle. Both are immutable: any number of
  * threads may query the same curve at once. Queries never allocate, lock or abort:
  * bad input gives NaN (or a nonzero status for the batch call).
+ *
+ * What is defined and what is not:
+ *  - Closing NULL does nothing. Closing a handle twice, or using it after it was closed, is
+ *    undefined behaviour (as with free()): the handle is gone.
+ *  - A table may be closed while curves and models made from it are still open: they hold their
+ *    own data.
+ *  - In the batch calls, out may overlap sep in any way (as with memmove): out == sep works in
+ *    place, and a partial overlap gives the same values as separate buffers.
+ *  - Messages: err gets a NUL-terminated message, cut to err_size - 1 bytes (nothing is written
+ *    when err is NULL or err_size is 0).
+ *  - Tables may be loaded from several threads; they are read one at a time (Debian's HDF5 is
+ *    not thread-safe, so a host program that calls HDF5 itself from another thread at the same
+ *    time must serialize that with table loading).
+ *  - Table files are untrusted input: whatever their bytes, loading returns a status and a
+ *    message, never crashes (docs/reliability.md says what is checked and what is promised).
  */
 #ifndef ASPERITY_ASPERITY_H
 #define ASPERITY_ASPERITY_H
@@ -14,24 +29,58 @@
 extern "C" {
 #endif
 
+/* Status codes. Functions declared to return int return one of these too. */
+typedef enum asperity_status {
+  ASPERITY_OK = 0,
+  ASPERITY_BAD_HANDLE = 1,      /* NULL curve, model, table or output */
+  ASPERITY_BAD_ORDER = 2,       /* twice_order outside 0..5, or an order mask with no order or unknown bits */
+  ASPERITY_BAD_SEPARATION = 3,  /* some separations were NaN or infinite: their outputs are NaN */
+  ASPERITY_BAD_PARAMETER = 4,   /* a physical parameter <= 0 or not finite */
+  /* asperity_table_load: why a table file was refused */
+  ASPERITY_FILE_MISSING = 5,     /* no such file */
+  ASPERITY_FILE_UNREADABLE = 6,  /* not a regular file (directory, FIFO, device), no permission, read error */
+  ASPERITY_NOT_HDF5 = 7,         /* neither an asperity table nor any HDF5 file */
+  ASPERITY_OTHER_SCHEMA = 8,     /* an HDF5 file, but not an asperity table */
+  ASPERITY_OTHER_VERSION = 9,    /* an asperity table of another format version: regenerate it */
+  ASPERITY_DAMAGED = 10,         /* truncated, extended or changed since it was written (integrity header) */
+  ASPERITY_INVALID_TABLE = 11,   /* intact, but breaks the schema or its limits */
+  /* asperity_curve_load, asperity_model_open */
+  ASPERITY_BAD_NAME = 12,        /* dist or side is not a known name */
+  ASPERITY_NOT_IN_TABLE = 13,    /* the table has no such curve set, or the shape is outside it */
+  ASPERITY_NO_MEMORY = 14,
+  ASPERITY_FAILURE = 15          /* anything else: the message says what */
+} asperity_status;
+
+/* Order masks: bit (1 << twice_order) keeps the integral of order twice_order / 2. A curve
+ * holding fewer orders takes proportionally less memory and answers NaN for the others. */
+#define ASPERITY_ORDER_I0 0x01u   /* count */
+#define ASPERITY_ORDER_I1_2 0x02u /* stiffness */
+#define ASPERITY_ORDER_I1 0x04u   /* area */
+#define ASPERITY_ORDER_I3_2 0x08u /* load */
+#define ASPERITY_ORDER_I2 0x10u
+#define ASPERITY_ORDER_I5_2 0x20u
+#define ASPERITY_ALL_ORDERS 0x3Fu
+#define ASPERITY_CONTACT_ORDERS 0x0Fu /* what asperity_contact needs */
+
 typedef struct asperity_table asperity_table; /* a loaded table: immutable, thread-safe */
 typedef struct asperity_curve asperity_curve; /* one dist/side/shape resolved: the hot handle */
 
-/* Status codes of asperity_eval_batch and asperity_contact. */
-enum {
-  ASPERITY_OK = 0,
-  ASPERITY_BAD_HANDLE = 1,    /* NULL curve or output */
-  ASPERITY_BAD_ORDER = 2,     /* twice_order outside 0..5 */
-  ASPERITY_BAD_SEPARATION = 3,/* some separations were NaN or infinite: their outputs are NaN */
-  ASPERITY_BAD_PARAMETER = 4  /* a physical parameter <= 0 or not finite */
-};
-
-/* NULL path: the shipped default table ($ASPERITY_TABLE if set). On failure returns NULL
- * and writes a message into err (if err is not NULL and err_size > 0). */
+/* Loads a table file; NULL path: the shipped default table ($ASPERITY_TABLE if set). On success
+ * returns ASPERITY_OK and sets *table; on failure a status (ASPERITY_FILE_MISSING ...
+ * ASPERITY_INVALID_TABLE tell why), *table = NULL, and a message in err. */
+asperity_status asperity_table_load(const char *path, asperity_table **table, char *err, size_t err_size);
+/* The same, returning the table or NULL (the reason only as text). */
 asperity_table *asperity_table_open(const char *path, char *err, size_t err_size);
 void asperity_table_close(asperity_table *table);
 
-/* dist: "weibull" or "gaussian"; side: "tail" or "bounded"; shape ignored for the Gaussian. */
+/* dist: "weibull" or "gaussian"; side: "tail" or "bounded"; shape ignored for the Gaussian.
+ * order_mask: ASPERITY_ALL_ORDERS or an OR of ASPERITY_ORDER_* bits. On failure *curve = NULL,
+ * a status (ASPERITY_BAD_NAME, ASPERITY_NOT_IN_TABLE, ASPERITY_BAD_ORDER, ...) and a message. */
+asperity_status asperity_curve_load(const asperity_table *table, const char *dist, const char *side, double shape,
+                                    unsigned order_mask, asperity_curve **curve, char *err, size_t err_size);
+/* The orders a curve holds (ASPERITY_ORDER_* bits); 0 for NULL. */
+unsigned asperity_curve_order_mask(const asperity_curve *curve);
+/* asperity_curve_load with all orders, returning the curve or NULL (the reason only as text). */
 asperity_curve *asperity_curve_open(const asperity_table *table, const char *dist, const char *side,
                                     double shape, char *err, size_t err_size);
 void asperity_curve_close(asperity_curve *curve);
@@ -43,8 +92,8 @@ double asperity_eval(const asperity_curve *curve, int twice_order, double sep);
 double asperity_eval_log(const asperity_curve *curve, int twice_order, double sep);
 /* out[i] = asperity_eval(curve, twice_order, sep[i]) for i < n, vectorized for the widest
  * instruction set this CPU has (results agree with asperity_eval to rounding: a few ulp of
- * ln X). out may be sep. Returns a status code: the first problem found, every other output
- * still written. */
+ * ln X). out may overlap sep in any way. Returns a status code: the first problem found, every
+ * other output still written. */
 int asperity_eval_batch(const asperity_curve *curve, int twice_order, const double *sep, double *out, size_t n);
 /* The same for asperity_eval_log. */
 int asperity_eval_log_batch(const asperity_curve *curve, int twice_order, const double *sep, double *out, size_t n);

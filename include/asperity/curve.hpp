@@ -31,9 +31,10 @@ struct CurveOptions {
   double grid_tolerance = 1e-13;
 };
 
-// A curve between the shapes of a grid (Table::curve): ln X_n(s) = sum_i weights[i] ln X_n(s)
-// of the node shapes at the same separation, i.e. Lagrange interpolation across shapes at
-// every s (the Weibull order 0 is exact instead: exp(-s^a), 1 - exp(-d^a)).
+// A curve between the shapes of a grid (Table::curve): Lagrange interpolation across shapes at
+// the same separation, ln X_n(s) = sum_i weights[i] ln X_n(s; shape i), of ln X_n + s^a on
+// the Weibull tail past s = 0 (where ln X falls like -s^a). The Weibull order 0 is exact
+// instead: exp(-s^a), 1 - exp(-d^a).
 struct ShapeBlend {
   std::vector<double> shapes;
   std::vector<const double*> knot_data;  // each [order][knot][3] on the curve's layout

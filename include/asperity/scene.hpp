@@ -15,8 +15,13 @@
 //   load = [1e-6, 1e-2]             # ... or the range of X_3/2 it visits (one of the two)
 //   max_rel_error = 1e-10           # optional, overrides the scene's
 //
-// Errors name the file, the line and the key (asperity::Error).
+// Errors name the file, the line and the key (asperity::Error). A scene file is untrusted input
+// (docs/reliability.md): before TOML parsing it must be valid UTF-8 without control characters,
+// at most scene_max_bytes long, nested at most scene_max_nesting deep, with at most
+// scene_max_list_entries commas; after it, at most scene_max_curves curves and names of at most
+// scene_max_name_bytes. Anything else is refused quickly, with the limit in the message.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -46,6 +51,11 @@ struct Scene {
 // The limits a scene is checked against.
 inline constexpr double scene_shape_min = 0.3, scene_shape_max = 50.0;
 inline constexpr double scene_error_min = 1e-13, scene_error_max = 1e-2;
+inline constexpr std::size_t scene_max_bytes = 64 * 1024;
+inline constexpr int scene_max_nesting = 4;          // [ and { (a [[curve]] header counts 2)
+inline constexpr int scene_max_list_entries = 1024;  // commas outside strings and comments
+inline constexpr std::size_t scene_max_curves = 64;
+inline constexpr std::size_t scene_max_name_bytes = 256;
 
 Scene read_scene_file(const std::string& path);
 // `source` names the text in messages.

@@ -35,10 +35,15 @@ enum class SegmentKind : int {
 #undef ASPERITY_KIND_ENUM
 };
 
-// The kinds' lines of the schema text: "<number> <name>  <text>\n" each.
+// The kinds' lines of the schema text, one string literal: "<number> <name>  <text>\n" each.
 #define ASPERITY_KIND_TEXT(number, name, Type, text) #number " " #name "  " text "\n"
-inline constexpr const char* segment_kind_schema_text = ASPERITY_SEGMENT_KINDS(ASPERITY_KIND_TEXT);
-#undef ASPERITY_KIND_TEXT
+#define ASPERITY_SEGMENT_KIND_TEXT ASPERITY_SEGMENT_KINDS(ASPERITY_KIND_TEXT)
+inline constexpr const char* segment_kind_schema_text = ASPERITY_SEGMENT_KIND_TEXT;
+
+// The kinds are numbered 0 .. segment_kind_count - 1.
+#define ASPERITY_KIND_ONE(number, name, Type, text) +1
+inline constexpr int segment_kind_count = 0 ASPERITY_SEGMENT_KINDS(ASPERITY_KIND_ONE);
+#undef ASPERITY_KIND_ONE
 
 // True for a number that names a kind (a file may hold any int).
 constexpr bool is_segment_kind(int number) {
@@ -47,6 +52,13 @@ constexpr bool is_segment_kind(int number) {
 #undef ASPERITY_KIND_TEST
   return false;
 }
+
+constexpr bool segment_kinds_are_numbered_densely() {
+  for (int number = 0; number < segment_kind_count; ++number)
+    if (!is_segment_kind(number)) return false;
+  return true;
+}
+static_assert(segment_kinds_are_numbered_densely(), "segment kinds must be numbered 0 .. count - 1");
 
 const char* to_string(SegmentKind kind) noexcept;
 

@@ -1,11 +1,14 @@
 // A loaded table: the curve sets of one HDF5 file, and curves resolved from them.
 //
-// Opening validates everything (schema, version, shapes, sizes, finite knots) and throws
-// asperity::Error with a message naming the file and the problem. Shapes between grid shapes
+// Opening checks the file's integrity header (SHA-256) before HDF5 reads it, then validates
+// everything (schema, version, datatypes, shapes, sizes, bounded knots) and throws
+// asperity::TableFileError (an asperity::Error, table_file.hpp) with a message naming the file
+// and the problem, and the problem as a value. The trust model: docs/reliability.md. Shapes between grid shapes
 // are resolved once, when the curve is made, by 12-point Lagrange interpolation in the grid
 // variable q = ln(a) - 1/a (see shape_grid_variable) of the knot data at corresponding
 // knots; queries on the resulting Curve cost the same as on a grid shape.
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -27,7 +30,8 @@ struct CurveSet {
 
   int total_knots() const;
   std::size_t curve_stride() const { return static_cast<std::size_t>(order_count) * total_knots() * 3; }
-  // Throws Error if sizes, ordering or values are inconsistent.
+  // Throws Error if sizes, ordering or values are inconsistent, or beyond the limits of
+  // table_schema.hpp (which the writer keeps too).
   void validate(const std::string& context) const;
 };
 
@@ -43,8 +47,10 @@ struct TableData {
 double shape_grid_variable(double shape);
 inline constexpr int shape_stencil = 12;
 
-// Reads and validates a table file (HDF5, schema asperity::schema).
+// Reads and validates a table file (HDF5, schema asperity::schema). Throws TableFileError.
 TableData read_table_file(const std::string& path);
+// The same from a whole file's bytes in memory; `name` names them in messages.
+TableData read_table_bytes(const void* bytes, std::size_t size, const std::string& name);
 
 class Table {
  public:

@@ -1,4 +1,18 @@
-// The HDF5 table schema, defined once for the writer (tablegen) and the reader (runtime).
+// The table file format, defined once for the writer (tablegen) and the reader (runtime).
+//
+// A table file is an HDF5 file created with a 512-byte user block (which HDF5 skips) holding
+// the integrity header, checked with plain file reads before HDF5 sees a byte
+// (docs/reliability.md):
+//
+//   offset  size  field
+//        0    16  magic: 0x89 "asperity" CR LF 0x1A LF and three zero bytes
+//       16     4  format version (unsigned, little-endian) = version below
+//       20     4  header size (unsigned, little-endian) = 512
+//       24     8  payload size (unsigned, little-endian): the file's size - 512
+//       32    32  SHA-256 of the payload (bytes 512 to the end)
+//       64   448  zero
+//
+// The HDF5 file after it (scalar attributes, fixed datatypes: strings, int32, IEEE float64):
 //
 //   /                       attributes: schema, schema_version, generator, generator_options,
 //                                       conventions (plain text, readable with h5dump),
@@ -16,11 +30,35 @@
 //                                    H = ln X - offset(u) (see layout.hpp)
 //       max_rel_error   [S][6]       the generator's measured max relative error per curve
 #pragma once
+#include "asperity/segment_kind.hpp"
+#include <cstddef>
+#include <cstdint>
 
 namespace asperity::schema {
 
 inline constexpr const char* name = "asperity-table";
-inline constexpr int version = 1;
+// 2: the integrity header (version 1 had none; such tables are refused: regenerate them).
+inline constexpr int version = 2;
+
+// The integrity header (see above).
+inline constexpr std::size_t header_bytes = 512;
+inline constexpr unsigned char header_magic[16] = {0x89, 'a', 's', 'p', 'e', 'r', 'i', 't',
+                                                   'y',  '\r', '\n', 0x1A, '\n', 0, 0, 0};
+inline constexpr std::size_t header_version_offset = 16, header_size_offset = 20,
+                             header_payload_size_offset = 24, header_digest_offset = 32, header_digest_bytes = 32,
+                             header_used_bytes = 64;
+
+// What a reader accepts (and a writer may write): bounds that keep a table's memory and a
+// load's work in proportion to the file, far above what the generator makes (the default
+// table: 90 shapes, at most 1153 knots in a segment, |H| <= 56, |dH/du| <= 13, |d2H/du2| <= 68).
+inline constexpr std::uint64_t max_file_bytes = std::uint64_t(1) << 30;   // 1 GiB
+inline constexpr int max_shapes = 4096;                                   // per curve set
+inline constexpr int max_segment_knots = 65536;
+inline constexpr std::uint64_t max_set_values = std::uint64_t(1) << 26;  // knot values per set: 512 MiB
+inline constexpr double max_expansion = 64;  // knot values in memory / bytes of the file holding them
+inline constexpr double max_knot_value = 1e4;  // |H|, |dH/du|, |d2H/du2|
+inline constexpr double min_shape = 0.05, max_shape = 1000;  // Weibull shapes in a table
+inline constexpr std::size_t max_text_bytes = 60000;  // a text attribute (HDF5's compact limit is 64 KiB)
 
 inline constexpr const char* attr_schema = "schema";
 inline constexpr const char* attr_schema_version = "schema_version";
@@ -52,14 +90,7 @@ inline constexpr const char* conventions =
     "the mean), in units of sigma_s (Gaussian: sigma). dX_n/ds = -n X_(n-1).\n"
     "Stored: H = ln X - offset(u) and dH/du, d2H/du2 on knots uniform in u per segment.\n"
     "Segment kinds (p0, p1 from segment_p0/p1; t = s^a, or s^2/2 for the Gaussian):\n"
-    "0 reciprocal   s <= s1 (start of the next segment), u = sqrt(s1/s), offset n ln(-s)\n"
-    "1 linear       p0 <= s <= p1, u = s, offset 0\n"
-    "2 graded       s = p0 + (p1 - p0) u^6, offset -s^a on the Weibull tail for s > 0, else 0\n"
-    "3 log_exponent s >= p0 and t <= p1, u = ln t, offset -t\n"
-    "4 log_tau      tau = (-s)^a in [p0, p1], u = ln tau, offset (n + a) ln(-s)\n"
-    "5 log_distance p0 <= s <= p1 < 0, u = ln(-s), offset 0\n"
-    "6 bounded_far  -s = d0 exp(L u^2), d0 = p0^(1/a), L = ln((d0 + p1)/d0), offset 0\n"
-    "7 gaussian_linear p0 <= s <= p1, u = s, offset -s^2/2 (Gaussian only)\n"
-    "Shapes between grid nodes: Lagrange in q = ln a - 1/a over the 12 nearest nodes.";
+    ASPERITY_SEGMENT_KIND_TEXT
+    "Shapes between grid nodes: Lagrange in q = ln a - 1/a over the 12 nearest nodes, at the same s.";
 
 }  // namespace asperity::schema

@@ -1,8 +1,11 @@
 // The C API (include/asperity/asperity.h) over the C++ runtime. Exceptions stop here.
 #include "asperity/asperity.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <new>
 #include <string>
@@ -10,6 +13,7 @@
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/table.hpp"
+#include "asperity/table_file.hpp"
 
 struct asperity_table {
   asperity::Table table;
@@ -52,45 +56,132 @@ int eval_batch(const asperity_curve* curve, int twice_order, const double* sep, 
     for (size_t i = 0; i < n; ++i) out[i] = not_a_number;
     return ASPERITY_BAD_ORDER;
   }
-  // Scan for non-finite separations first: out may alias sep.
+  // Scan for non-finite separations first: out may overlap sep.
   int status = ASPERITY_OK;
   for (size_t i = 0; i < n; ++i)
     if (!std::isfinite(sep[i])) status = ASPERITY_BAD_SEPARATION;
-  if (log_output) curve->curve.log_value_batch(twice_order, sep, out, n);
-  else curve->curve.value_batch(twice_order, sep, out, n);
+  auto run = [&](const double* in, double* to, size_t count) {
+    if (log_output) curve->curve.log_value_batch(twice_order, in, to, count);
+    else curve->curve.value_batch(twice_order, in, to, count);
+  };
+  const auto in_address = reinterpret_cast<std::uintptr_t>(sep), out_address = reinterpret_cast<std::uintptr_t>(out);
+  const std::uintptr_t bytes = n * sizeof(double);
+  if (in_address == out_address || in_address + bytes <= out_address || out_address + bytes <= in_address) {
+    run(sep, out, n);  // in place (the kernel copies each block first) or apart
+    return status;
+  }
+  // A partial overlap, as memmove: each chunk of input copied before its outputs are written,
+  // chunks taken in the order that never overwrites input not yet copied.
+  constexpr size_t chunk = 256;
+  double copy[chunk];
+  const size_t chunks = (n + chunk - 1) / chunk;
+  for (size_t step = 0; step < chunks; ++step) {
+    const size_t index = out_address > in_address ? chunks - 1 - step : step;
+    const size_t start = index * chunk, count = std::min(chunk, n - start);
+    std::memcpy(copy, sep + start, count * sizeof(double));
+    run(copy, out + start, count);
+  }
   return status;
+}
+
+asperity_status table_status(asperity::TableFileStatus status) {
+  switch (status) {
+    case asperity::TableFileStatus::missing: return ASPERITY_FILE_MISSING;
+    case asperity::TableFileStatus::unreadable: return ASPERITY_FILE_UNREADABLE;
+    case asperity::TableFileStatus::not_hdf5: return ASPERITY_NOT_HDF5;
+    case asperity::TableFileStatus::other_schema: return ASPERITY_OTHER_SCHEMA;
+    case asperity::TableFileStatus::other_version: return ASPERITY_OTHER_VERSION;
+    case asperity::TableFileStatus::damaged: return ASPERITY_DAMAGED;
+    case asperity::TableFileStatus::invalid: return ASPERITY_INVALID_TABLE;
+  }
+  return ASPERITY_FAILURE;
+}
+
+// Runs make() into *result; an exception becomes a status (failure_status for asperity::Error)
+// and a message in err.
+template <class Make, class Result>
+asperity_status guarded_status(char* err, size_t err_size, const char* where, asperity_status failure_status,
+                               Result** result, Make make) {
+  try {
+    *result = make();
+    return ASPERITY_OK;
+  } catch (const asperity::TableFileError& error) {
+    write_error(err, err_size, error.what());
+    return table_status(error.status());
+  } catch (const asperity::Error& error) {
+    write_error(err, err_size, error.what());
+    return failure_status;
+  } catch (const std::bad_alloc&) {
+    write_error(err, err_size, (std::string(where) + ": out of memory").c_str());
+    return ASPERITY_NO_MEMORY;
+  } catch (const std::exception& error) {
+    write_error(err, err_size, error.what());
+  } catch (...) {
+    write_error(err, err_size, (std::string(where) + ": unknown failure").c_str());
+  }
+  return ASPERITY_FAILURE;
 }
 }  // namespace
 
 extern "C" {
 
-asperity_table* asperity_table_open(const char* path, char* err, size_t err_size) {
-  return guarded(err, err_size, "asperity_table_open", [&] {
+asperity_status asperity_table_load(const char* path, asperity_table** table, char* err, size_t err_size) {
+  if (!table) {
+    write_error(err, err_size, "asperity_table_load: NULL output");
+    return ASPERITY_BAD_HANDLE;
+  }
+  *table = nullptr;
+  return guarded_status(err, err_size, "asperity_table_load", ASPERITY_FAILURE, table, [&] {
     return new asperity_table{path ? asperity::Table::open(path) : asperity::Table::open_default()};
   });
 }
 
+asperity_table* asperity_table_open(const char* path, char* err, size_t err_size) {
+  asperity_table* table = nullptr;
+  asperity_table_load(path, &table, err, err_size);
+  return table;
+}
+
 void asperity_table_close(asperity_table* table) { delete table; }
 
-asperity_curve* asperity_curve_open(const asperity_table* table, const char* dist, const char* side, double shape,
-                                    char* err, size_t err_size) {
+asperity_status asperity_curve_load(const asperity_table* table, const char* dist, const char* side, double shape,
+                                    unsigned order_mask, asperity_curve** curve, char* err, size_t err_size) {
+  if (!curve) {
+    write_error(err, err_size, "asperity_curve_load: NULL output");
+    return ASPERITY_BAD_HANDLE;
+  }
+  *curve = nullptr;
   if (!table || !dist || !side) {
-    write_error(err, err_size, "asperity_curve_open: NULL table, dist or side");
-    return nullptr;
+    write_error(err, err_size, "asperity_curve_load: NULL table, dist or side");
+    return ASPERITY_BAD_HANDLE;
   }
   asperity::Distribution distribution;
   asperity::Side which;
   if (!asperity::parse_distribution(dist, distribution)) {
     write_error(err, err_size, (std::string("unknown dist '") + dist + "' (weibull or gaussian)").c_str());
-    return nullptr;
+    return ASPERITY_BAD_NAME;
   }
   if (!asperity::parse_side(side, which)) {
     write_error(err, err_size, (std::string("unknown side '") + side + "' (tail or bounded)").c_str());
-    return nullptr;
+    return ASPERITY_BAD_NAME;
   }
-  return guarded(err, err_size, "asperity_curve_open",
-                 [&] { return new asperity_curve{table->table.curve(distribution, which, shape)}; });
+  if (order_mask == 0 || (order_mask & ~ASPERITY_ALL_ORDERS) != 0) {
+    write_error(err, err_size, "order_mask must be a nonzero OR of ASPERITY_ORDER_* bits");
+    return ASPERITY_BAD_ORDER;
+  }
+  return guarded_status(err, err_size, "asperity_curve_load", ASPERITY_NOT_IN_TABLE, curve, [&] {
+    return new asperity_curve{table->table.curve(distribution, which, shape, order_mask)};
+  });
 }
+
+asperity_curve* asperity_curve_open(const asperity_table* table, const char* dist, const char* side, double shape,
+                                    char* err, size_t err_size) {
+  asperity_curve* curve = nullptr;
+  asperity_curve_load(table, dist, side, shape, ASPERITY_ALL_ORDERS, &curve, err, err_size);
+  return curve;
+}
+
+unsigned asperity_curve_order_mask(const asperity_curve* curve) { return curve ? curve->curve.order_mask() : 0u; }
 
 void asperity_curve_close(asperity_curve* curve) { delete curve; }
 
@@ -193,10 +284,21 @@ const char* asperity_version(void) { return ASPERITY_VERSION_STRING; }
 const char* asperity_status_string(int status) {
   switch (status) {
     case ASPERITY_OK: return "ok";
-    case ASPERITY_BAD_HANDLE: return "NULL curve, input or output";
-    case ASPERITY_BAD_ORDER: return "twice_order outside 0..5";
+    case ASPERITY_BAD_HANDLE: return "NULL curve, model, table, input or output";
+    case ASPERITY_BAD_ORDER: return "twice_order outside 0..5, or a bad order mask";
     case ASPERITY_BAD_SEPARATION: return "a separation is NaN or infinite";
     case ASPERITY_BAD_PARAMETER: return "a physical parameter is not a positive finite number";
+    case ASPERITY_FILE_MISSING: return "no such table file";
+    case ASPERITY_FILE_UNREADABLE: return "the table file cannot be read (not a regular file, permission, I/O)";
+    case ASPERITY_NOT_HDF5: return "not a table file (nor any HDF5 file)";
+    case ASPERITY_OTHER_SCHEMA: return "an HDF5 file, but not an asperity table";
+    case ASPERITY_OTHER_VERSION: return "an asperity table of another format version (regenerate it)";
+    case ASPERITY_DAMAGED: return "the table file is damaged (truncated or changed since it was written)";
+    case ASPERITY_INVALID_TABLE: return "the table file breaks the schema or its limits";
+    case ASPERITY_BAD_NAME: return "unknown distribution or side name";
+    case ASPERITY_NOT_IN_TABLE: return "the table has no such curve, or the shape is outside it";
+    case ASPERITY_NO_MEMORY: return "out of memory";
+    case ASPERITY_FAILURE: return "failure";
     default: return "unknown status";
   }
 }

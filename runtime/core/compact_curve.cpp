@@ -113,7 +113,10 @@ double CompactCurve::log_value_series(int twice_order, double separation) const 
 double CompactCurve::log_value_closed_order_zero(double separation) const noexcept {
   if (side_ == Side::tail) return separation > 0 ? -std::pow(separation, shape_) : 0.0;
   if (separation >= 0) return minus_infinity;
-  return std::log(-std::expm1(-std::pow(-separation, shape_)));
+  // ln(1 - e^-tau), tau = d^a: from ln tau where tau would underflow (first contact)
+  const double log_tau = shape_ * std::log(-separation);
+  if (log_tau < -40) return log_tau - 0.5 * std::exp(log_tau);  // ln tau + ln(1 - tau/2 + ...)
+  return std::log(-std::expm1(-std::exp(log_tau)));
 }
 
 void CompactCurve::log_values(double separation, int first, int last, double* out) const noexcept {

@@ -45,16 +45,27 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
   nodes.reserve(blend.shapes.size());
   for (std::size_t i = 0; i < blend.shapes.size(); ++i)
     nodes.emplace_back(distribution, side, blend.shapes[i], layout, blend.knot_data[i], compact.order_mask());
-  const bool exact_order_zero = distribution == Distribution::weibull && compact.order_mask() & 1u;
+  const bool weibull = distribution == Distribution::weibull;
+  const bool exact_order_zero = weibull && (compact.order_mask() & order_bit(orders::count));
+  // Blended at the same s: ln X + t with t = s^a on the Weibull tail past s = 0, where ln X
+  // falls like -s^a and its shape dependence is exponential (blending ln X itself there is
+  // wrong by 1e-5 at t = 300); ln X elsewhere.
+  const bool exponent_offset = weibull && side == Side::tail;
   detail::GridReference reference;
   reference.log_values = [&](double separation, double* out) {
     for (int k = 0; k < order_count; ++k) out[k] = 0;
+    const bool offset = exponent_offset && separation > 0;
     double node[order_count];
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       nodes[i].log_values(separation, 0, order_count - 1, node);
-      for (int k = 0; k < order_count; ++k) out[k] += blend.weights[i] * node[k];
+      const double t = offset ? std::pow(separation, blend.shapes[i]) : 0.0;
+      for (int k = 0; k < order_count; ++k) out[k] += blend.weights[i] * (node[k] + t);
     }
-    if (exact_order_zero) out[0] = compact.log_value(0, separation);
+    if (offset) {
+      const double t = std::pow(separation, shape);
+      for (int k = 0; k < order_count; ++k) out[k] -= t;
+    }
+    if (exact_order_zero) out[0] = compact.log_value(orders::count, separation);
   };
   build(compact, reference, options);
 }

@@ -1,14 +1,16 @@
 // Scene files: TOML read with toml11 (Debian's libtoml11-dev), which keeps every value's
-// line, so each message can point at the key it is about.
+// line, so each message can point at the key it is about. toml11 3.7 reads out of bounds on
+// invalid UTF-8, recurses without bound into nested arrays and is quadratic in long lists:
+// check_scene_text bounds all three before toml11 sees the text (fuzz/fuzz_scene.cpp).
 #include "asperity/scene.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <toml.hpp>
 
+#include "../table/regular_file.hpp"
 #include "asperity/error.hpp"
 
 namespace asperity {
@@ -27,6 +29,100 @@ double number(const toml::value& value, const std::string& key) {
 std::string text(const toml::value& value, const std::string& key) {
   if (!value.is_string()) fail_at(value, "'" + key + "' must be a string", "here");
   return value.as_string().str;
+}
+
+std::string name_text(const toml::value& value) {
+  std::string name = text(value, "name");
+  if (name.size() > scene_max_name_bytes)
+    fail_at(value, "a name has at most " + std::to_string(scene_max_name_bytes) + " bytes", "too long");
+  return name;
+}
+
+// The checks toml11 needs before it parses (see the top of this file).
+void check_scene_text(const std::string& content, const std::string& source) {
+  auto fail = [&](std::size_t at, const std::string& what) {
+    const long line = 1 + std::count(content.begin(), content.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+    throw Error("scene " + source + ": line " + std::to_string(line) + ": " + what);
+  };
+  if (content.size() > scene_max_bytes)
+    throw Error("scene " + source + ": " + std::to_string(content.size()) + " bytes; a scene file has at most " +
+                std::to_string(scene_max_bytes));
+  const auto* bytes = reinterpret_cast<const unsigned char*>(content.data());
+  const std::size_t size = content.size();
+  for (std::size_t i = 0; i < size;) {
+    const unsigned lead = bytes[i];
+    if (lead < 0x80) {
+      if ((lead < 0x20 && lead != '\t' && lead != '\n' && lead != '\r') || lead == 0x7F)
+        fail(i, "a control character (byte " + std::to_string(lead) + "); scene files are text");
+      ++i;
+      continue;
+    }
+    // UTF-8: the length from the lead byte, continuation bytes, no overlong form, no surrogate.
+    const int length = lead >= 0xC2 && lead <= 0xDF   ? 2
+                       : lead >= 0xE0 && lead <= 0xEF ? 3
+                       : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                      : 0;
+    bool valid = length > 0 && i + static_cast<std::size_t>(length) <= size;
+    unsigned code = length == 2 ? lead & 0x1F : length == 3 ? lead & 0x0F : lead & 0x07;
+    for (int k = 1; valid && k < length; ++k) {
+      valid = (bytes[i + k] & 0xC0) == 0x80;
+      code = code << 6 | (bytes[i + k] & 0x3F);
+    }
+    valid = valid && !(length == 3 && code < 0x800) && !(length == 4 && (code < 0x10000 || code > 0x10FFFF)) &&
+            !(code >= 0xD800 && code <= 0xDFFF);
+    if (!valid) fail(i, "not valid UTF-8 (byte " + std::to_string(lead) + ")");
+    i += static_cast<std::size_t>(length);
+  }
+  // Nesting and list length, outside comments and strings.
+  enum { plain, comment, basic, literal, multiline_basic, multiline_literal } state = plain;
+  int depth = 0, commas = 0;
+  for (std::size_t i = 0; i < size; ++i) {
+    const char c = content[i];
+    const bool triple_quote = content.compare(i, 3, "\"\"\"") == 0, triple_apostrophe = content.compare(i, 3, "'''") == 0;
+    switch (state) {
+      case plain:
+        if (c == '#') {
+          state = comment;
+        } else if (triple_quote || triple_apostrophe) {
+          state = triple_quote ? multiline_basic : multiline_literal;
+          i += 2;
+        } else if (c == '"' || c == '\'') {
+          state = c == '"' ? basic : literal;
+        } else if (c == '[' || c == '{') {
+          if (++depth > scene_max_nesting)
+            fail(i, "lists or tables nested deeper than " + std::to_string(scene_max_nesting));
+        } else if (c == ']' || c == '}') {
+          depth = depth > 0 ? depth - 1 : 0;
+        } else if (c == ',' && ++commas > scene_max_list_entries) {
+          fail(i, "more than " + std::to_string(scene_max_list_entries) + " list entries in a scene file");
+        }
+        break;
+      case comment:
+        if (c == '\n') state = plain;
+        break;
+      case basic:
+        if (c == '\\') ++i;
+        else if (c == '"' || c == '\n') state = plain;
+        break;
+      case literal:
+        if (c == '\'' || c == '\n') state = plain;
+        break;
+      case multiline_basic:
+        if (c == '\\') {
+          ++i;
+        } else if (triple_quote) {
+          state = plain;
+          i += 2;
+        }
+        break;
+      case multiline_literal:
+        if (triple_apostrophe) {
+          state = plain;
+          i += 2;
+        }
+        break;
+    }
+  }
 }
 
 void check_keys(const toml::value& table, const std::set<std::string>& allowed, const std::string& where) {
@@ -78,7 +174,7 @@ SceneCurve read_curve(const toml::value& table, double default_tolerance, std::s
     if (!value) fail_at(table, where + " has no '" + key + "'", "this curve");
     return *value;
   };
-  if (const toml::value* name = entry_of(table, "name")) curve.name = text(*name, "name");
+  if (const toml::value* name = entry_of(table, "name")) curve.name = name_text(*name);
 
   const toml::value& distribution = required("distribution");
   if (!parse_distribution(text(distribution, "distribution"), curve.distribution))
@@ -157,6 +253,7 @@ int quantity_twice_order(const std::string& quantity) {
 }
 
 Scene parse_scene(const std::string& content, const std::string& source) {
+  check_scene_text(content, source);
   toml::value root;
   try {
     std::istringstream stream(content);
@@ -167,7 +264,7 @@ Scene parse_scene(const std::string& content, const std::string& source) {
   Scene scene;
   scene.source = source;
   check_keys(root, {"name", "max_rel_error", "memory_budget_kib", "curve"}, "the scene");
-  if (const toml::value* name = entry_of(root, "name")) scene.name = text(*name, "name");
+  if (const toml::value* name = entry_of(root, "name")) scene.name = name_text(*name);
   double default_tolerance = 1e-8;
   if (const toml::value* value = entry_of(root, "max_rel_error")) default_tolerance = tolerance(*value);
   if (const toml::value* budget = entry_of(root, "memory_budget_kib")) {
@@ -179,17 +276,25 @@ Scene parse_scene(const std::string& content, const std::string& source) {
   if (!curves) throw Error("scene " + source + ": no [[curve]] entries");
   if (!curves->is_array() || curves->as_array().empty())
     fail_at(*curves, "'curve' must be a list of tables ([[curve]])", "here");
+  if (curves->as_array().size() > scene_max_curves)
+    fail_at(*curves,
+            "a scene has at most " + std::to_string(scene_max_curves) + " curves; this one has " +
+                std::to_string(curves->as_array().size()),
+            "too many");
   for (std::size_t i = 0; i < curves->as_array().size(); ++i)
     scene.curves.push_back(read_curve(curves->as_array()[i], default_tolerance, i));
   return scene;
 }
 
 Scene read_scene_file(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw Error("scene " + path + ": cannot open the file");
-  std::ostringstream content;
-  content << file.rdbuf();
-  return parse_scene(content.str(), path);
+  std::string content;
+  try {
+    content = detail::read_regular_file(path, scene_max_bytes);
+  } catch (const detail::RegularFileError& error) {
+    throw Error("scene " + path + ": " + error.what() +
+                (error.failure() == detail::FileFailure::too_large ? " (a scene file has at most 64 KiB)" : ""));
+  }
+  return parse_scene(content, path);
 }
 
 }  // namespace asperity

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "asperity/error.hpp"
+#include "asperity/table_schema.hpp"
 
 namespace asperity {
 
@@ -19,36 +20,64 @@ int CurveSet::total_knots() const {
 
 void CurveSet::validate(const std::string& context) const {
   const std::string where = context + " " + to_string(distribution) + "_" + to_string(side) + ": ";
-  if (shapes.empty()) throw Error(where + "no shapes");
-  if (!(shape_min >= shapes.front() && shape_max <= shapes.back() && shape_min <= shape_max))
-    throw Error(where + "shape_range is not inside the shape grid");
+  if (shapes.empty() || shapes.size() > static_cast<std::size_t>(schema::max_shapes))
+    throw Error(where + "a curve set has 1 to " + std::to_string(schema::max_shapes) + " shapes");
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     if (!(std::isfinite(shapes[i]) && shapes[i] > 0)) throw Error(where + "a shape is not a positive number");
     if (i > 0 && !(shapes[i] > shapes[i - 1])) throw Error(where + "shapes are not strictly ascending");
   }
+  if (distribution == Distribution::gaussian && !(shapes.size() == 1 && shapes[0] == 2))
+    throw Error(where + "the Gaussian set has the one shape 2");
+  if (!(shapes.front() >= schema::min_shape && shapes.back() <= schema::max_shape)) {
+    std::ostringstream message;
+    message << where << "shapes must lie in [" << schema::min_shape << ", " << schema::max_shape << "]";
+    throw Error(message.str());
+  }
+  if (!(shape_min >= shapes.front() && shape_max <= shapes.back() && shape_min <= shape_max))
+    throw Error(where + "shape_range is not inside the shape grid");
   if (layout.empty() || layout.size() > static_cast<std::size_t>(max_segments))
     throw Error(where + "the layout must have 1 to " + std::to_string(max_segments) + " segments");
-  if (layout.front().kind != SegmentKind::reciprocal) throw Error(where + "the first segment must be reciprocal");
-  for (double shape : shapes) {
-    try {
-      SegmentMap::resolve(layout, distribution, side, distribution == Distribution::gaussian ? 2.0 : shape);
-    } catch (const Error& error) {
-      throw Error(where + error.what());
-    }
-  }
   for (const SegmentSpec& segment : layout) {
-    if (segment.knots < 2 || segment.knots > 1000000) throw Error(where + "a segment has a bad knot count");
+    if (segment.knots < 2 || segment.knots > schema::max_segment_knots)
+      throw Error(where + "a segment has a bad knot count (2 to " + std::to_string(schema::max_segment_knots) + ")");
     if (!is_segment_kind(static_cast<int>(segment.kind)))
       throw Error(where + "unknown segment kind");
     if (!std::isfinite(segment.p0) || !std::isfinite(segment.p1)) throw Error(where + "a segment bound is not finite");
   }
+  if (layout.front().kind != SegmentKind::reciprocal) throw Error(where + "the first segment must be reciprocal");
+  for (double shape : shapes) {
+    std::vector<SegmentMap> maps;
+    try {
+      maps = SegmentMap::resolve(layout, distribution, side, distribution == Distribution::gaussian ? 2.0 : shape);
+    } catch (const Error& error) {
+      throw Error(where + error.what());
+    }
+    // What a lookup divides by and maps with must be finite numbers.
+    for (std::size_t i = 0; i < maps.size(); ++i) {
+      const SegmentMap& map = maps[i];
+      const double inverse_step = (layout[i].knots - 1) / (map.u_hi - map.u_lo);
+      if (!std::isfinite(map.u_lo) || !std::isfinite(map.u_hi) || !std::isfinite(inverse_step) ||
+          std::isnan(map.s_lo) || std::isnan(map.s_hi) || !std::isfinite(map.span) || !std::isfinite(map.power))
+        throw Error(where + "the layout maps to non-finite numbers at shape " + std::to_string(shape));
+    }
+  }
+  const double expected = static_cast<double>(shapes.size()) * static_cast<double>(curve_stride());
+  if (expected > static_cast<double>(schema::max_set_values))
+    throw Error(where + "more knot values than a table may hold (" + std::to_string(schema::max_set_values) + ")");
   if (knots.size() != shapes.size() * curve_stride())
     throw Error(where + "knot data has " + std::to_string(knots.size()) + " values, expected " +
                 std::to_string(shapes.size() * curve_stride()));
   for (double value : knots)
-    if (!std::isfinite(value)) throw Error(where + "knot data holds a value that is not finite");
+    if (!(std::fabs(value) <= schema::max_knot_value)) {
+      std::ostringstream message;
+      message << where << "knot data holds " << value << ", not a number of magnitude at most "
+              << schema::max_knot_value;
+      throw Error(message.str());
+    }
   if (!max_rel_error.empty() && max_rel_error.size() != shapes.size() * order_count)
     throw Error(where + "max_rel_error has the wrong size");
+  for (double error : max_rel_error)
+    if (!(error >= 0 && error <= 1e300)) throw Error(where + "max_rel_error holds a value that is not a finite error");
 }
 
 Table::Table(TableData data) : data_(std::move(data)) {

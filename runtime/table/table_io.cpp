@@ -1,142 +1,300 @@
-// Reading a table file. Every failure becomes an asperity::Error naming the file and what
-// is wrong: missing, not HDF5, truncated, another schema, another version, bad contents.
+// Reading a table file. The whole file is read with plain reads (regular_file.hpp: a FIFO,
+// directory or device is refused before a byte is read), its integrity header checked (table_file.hpp), and only
+// the checked bytes are given to HDF5, from memory. Then every object is checked before it is
+// read: each attribute scalar and of its type class, each dataset of its exact datatype and of
+// the dimensions the segment layout implies, every size bounded before anything is allocated.
+// Every failure is a TableFileError naming the file, with its status.
 #include <hdf5.h>
 
-#include <fstream>
+#include <cstring>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "asperity/error.hpp"
 #include "asperity/table.hpp"
+#include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
+#include "hdf5_handle.hpp"
+#include "regular_file.hpp"
 
 namespace asperity {
 namespace {
 
-// Closes an HDF5 identifier with the right function when it goes out of scope.
-class Handle {
+using detail::Hdf5Handle;
+
+// Debian's HDF5 is built without its thread-safety option: one table is read at a time.
+std::mutex& hdf5_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+[[noreturn]] void fail(TableFileStatus status, const std::string& name, const std::string& what) {
+  throw TableFileError(status, "table '" + name + "': " + what);
+}
+
+// Reads one verified HDF5 file image; every method checks before it reads.
+class Reader {
  public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() { if (id_ >= 0) close_(id_); }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+  explicit Reader(std::string name) : name_(std::move(name)) {}
+  [[noreturn]] void invalid(const std::string& what) const { fail(TableFileStatus::invalid, name_, what); }
 
-struct Reader {
-  std::string path;
-  [[noreturn]] void fail(const std::string& what) const { throw Error("table '" + path + "': " + what); }
-
-  std::string string_attribute(hid_t object, const char* name) const {
-    if (H5Aexists(object, name) <= 0) fail(std::string("missing attribute '") + name + "'");
-    Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
-    Handle type(H5Aget_type(attribute.get()), H5Tclose);
-    if (!attribute.ok() || H5Tget_class(type.get()) != H5T_STRING) fail(std::string("attribute '") + name + "' is not a string");
+  std::optional<std::string> text_attribute(hid_t object, const char* name, bool required) const {
+    const Hdf5Handle attribute = open_scalar_attribute(object, name, required);
+    if (!attribute.ok()) return std::nullopt;
+    const Hdf5Handle type = detail::hdf5_type(H5Aget_type(attribute.get()));
+    if (!type.ok() || H5Tget_class(type.get()) != H5T_STRING) invalid(std::string("attribute '") + name + "' is not text");
+    const H5T_cset_t charset = H5Tget_cset(type.get());  // ASCII, or UTF-8 (h5py's default)
+    if (charset != H5T_CSET_ASCII && charset != H5T_CSET_UTF8)
+      invalid(std::string("attribute '") + name + "' has an unknown character set");
+    const Hdf5Handle memory = detail::hdf5_type(H5Tcopy(H5T_C_S1));
+    if (!memory.ok() || H5Tset_cset(memory.get(), charset) < 0) invalid("HDF5 cannot make a string type");
+    std::string result;
     if (H5Tis_variable_str(type.get()) > 0) {
-      Handle memory(H5Tcopy(H5T_C_S1), H5Tclose);
-      H5Tset_size(memory.get(), H5T_VARIABLE);
       char* text = nullptr;
-      if (H5Aread(attribute.get(), memory.get(), &text) < 0) fail(std::string("cannot read attribute '") + name + "'");
-      std::string result = text ? text : "";
+      if (H5Tset_size(memory.get(), H5T_VARIABLE) < 0 || H5Aread(attribute.get(), memory.get(), &text) < 0)
+        invalid(std::string("cannot read attribute '") + name + "'");
+      const std::size_t length = text ? strnlen(text, schema::max_text_bytes + 1) : 0;
+      if (length <= schema::max_text_bytes) result.assign(text ? text : "", length);
       H5free_memory(text);
+      if (length > schema::max_text_bytes) invalid(std::string("attribute '") + name + "' is too long");
       return result;
     }
     const std::size_t size = H5Tget_size(type.get());
+    if (size == 0 || size > schema::max_text_bytes) invalid(std::string("attribute '") + name + "' is too long");
+    // One byte more than stored, null-terminated: a string that fills its size keeps its last character.
     std::vector<char> buffer(size + 1, '\0');
-    if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) fail(std::string("cannot read attribute '") + name + "'");
-    return std::string(buffer.data());
+    if (H5Tset_size(memory.get(), size + 1) < 0 || H5Tset_strpad(memory.get(), H5T_STR_NULLTERM) < 0 ||
+        H5Aread(attribute.get(), memory.get(), buffer.data()) < 0)
+      invalid(std::string("cannot read attribute '") + name + "'");
+    return std::string(buffer.data(), strnlen(buffer.data(), size));
   }
 
-  long long int_attribute(hid_t object, const char* name) const {
-    if (H5Aexists(object, name) <= 0) fail(std::string("missing attribute '") + name + "'");
-    Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  std::optional<long long> integer_attribute(hid_t object, const char* name, bool required) const {
+    const Hdf5Handle attribute = open_scalar_attribute(object, name, required);
+    if (!attribute.ok()) return std::nullopt;
+    const Hdf5Handle type = detail::hdf5_type(H5Aget_type(attribute.get()));
+    if (!type.ok() || H5Tget_class(type.get()) != H5T_INTEGER)
+      invalid(std::string("attribute '") + name + "' is not an integer");
     long long value = 0;
-    if (!attribute.ok() || H5Aread(attribute.get(), H5T_NATIVE_LLONG, &value) < 0)
-      fail(std::string("cannot read attribute '") + name + "' as an integer");
+    if (H5Aread(attribute.get(), H5T_NATIVE_LLONG, &value) < 0)
+      invalid(std::string("cannot read attribute '") + name + "'");
     return value;
   }
 
-  template <class T>
-  std::vector<T> dataset(hid_t group, const char* name, hid_t memory_type, std::vector<hsize_t>& dims) const {
-    if (H5Lexists(group, name, H5P_DEFAULT) <= 0) fail(std::string("missing dataset '") + name + "'");
-    Handle set(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
-    if (!set.ok()) fail(std::string("cannot open dataset '") + name + "'");
-    Handle space(H5Dget_space(set.get()), H5Sclose);
-    const int rank = H5Sget_simple_extent_ndims(space.get());
-    if (rank < 1 || rank > 4) fail(std::string("dataset '") + name + "' has an unexpected rank");
-    dims.assign(rank, 0);
-    H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
-    std::size_t count = 1;
-    for (hsize_t dim : dims) count *= dim;
-    if (count > (std::size_t(1) << 31)) fail(std::string("dataset '") + name + "' is implausibly large");
-    std::vector<T> values(count);
-    if (count && H5Dread(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
-      fail(std::string("cannot read dataset '") + name + "' (truncated or corrupt file?)");
+  // A dataset's dimensions (rank checked), before anything is read.
+  std::vector<hsize_t> dimensions(const Hdf5Handle& set, const char* name, int rank) const {
+    const Hdf5Handle space = detail::hdf5_space(H5Dget_space(set.get()));
+    if (!space.ok() || H5Sget_simple_extent_type(space.get()) != H5S_SIMPLE ||
+        H5Sget_simple_extent_ndims(space.get()) != rank)
+      invalid(std::string("dataset '") + name + "' must have " + std::to_string(rank) + " dimension" +
+              (rank > 1 ? "s" : ""));
+    std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+    if (H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) != rank)
+      invalid(std::string("cannot read the dimensions of dataset '") + name + "'");
+    return dims;
+  }
+
+  Hdf5Handle open_dataset(hid_t group, const char* name) const {
+    if (H5Lexists(group, name, H5P_DEFAULT) <= 0) invalid(std::string("missing dataset '") + name + "'");
+    Hdf5Handle set = detail::hdf5_dataset(H5Dopen2(group, name, H5P_DEFAULT));
+    if (!set.ok()) invalid(std::string("'") + name + "' is not a dataset");
+    return set;
+  }
+
+  // 64-bit IEEE floats of exactly the expected dimensions.
+  std::vector<double> doubles(hid_t group, const char* name, const std::vector<hsize_t>& expected) const {
+    const Hdf5Handle set = open_dataset(group, name);
+    check_dimensions(set, name, expected);
+    const Hdf5Handle type = detail::hdf5_type(H5Dget_type(set.get()));
+    if (!type.ok() || H5Tget_class(type.get()) != H5T_FLOAT ||
+        !(H5Tequal(type.get(), H5T_IEEE_F64LE) > 0 || H5Tequal(type.get(), H5T_IEEE_F64BE) > 0))
+      invalid(std::string("dataset '") + name + "' must hold 64-bit IEEE floats (" + describe(type.get()) + ")");
+    std::vector<double> values(count_of(expected));
+    if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+      invalid(std::string("cannot read dataset '") + name + "'");
     return values;
   }
+
+  // Integers of exactly the expected dimensions, each in [lo, hi].
+  std::vector<long long> integers(hid_t group, const char* name, const std::vector<hsize_t>& expected, long long lo,
+                                  long long hi) const {
+    const Hdf5Handle set = open_dataset(group, name);
+    check_dimensions(set, name, expected);
+    const Hdf5Handle type = detail::hdf5_type(H5Dget_type(set.get()));
+    if (!type.ok() || H5Tget_class(type.get()) != H5T_INTEGER)
+      invalid(std::string("dataset '") + name + "' must hold integers (" + describe(type.get()) + ")");
+    std::vector<long long> values(count_of(expected));
+    if (!values.empty() && H5Dread(set.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+      invalid(std::string("cannot read dataset '") + name + "'");
+    for (long long value : values)
+      if (value < lo || value > hi)
+        invalid(std::string("dataset '") + name + "' holds " + std::to_string(value) + ", outside [" +
+                std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return values;
+  }
+
+  // The length of a one-dimensional dataset, in [1, most].
+  std::size_t length(hid_t group, const char* name, std::size_t most) const {
+    const Hdf5Handle set = open_dataset(group, name);
+    const hsize_t count = dimensions(set, name, 1)[0];
+    if (count < 1 || count > most)
+      invalid(std::string("dataset '") + name + "' has " + std::to_string(count) + " entries, expected 1 to " +
+              std::to_string(most));
+    return static_cast<std::size_t>(count);
+  }
+
+ private:
+  Hdf5Handle open_scalar_attribute(hid_t object, const char* name, bool required) const {
+    if (H5Aexists(object, name) <= 0) {
+      if (required) invalid(std::string("missing attribute '") + name + "'");
+      return {};
+    }
+    Hdf5Handle attribute = detail::hdf5_attribute(H5Aopen(object, name, H5P_DEFAULT));
+    if (!attribute.ok()) invalid(std::string("cannot open attribute '") + name + "'");
+    const Hdf5Handle space = detail::hdf5_space(H5Aget_space(attribute.get()));
+    if (!space.ok() || H5Sget_simple_extent_type(space.get()) != H5S_SCALAR)
+      invalid(std::string("attribute '") + name + "' must hold one value, not an array");
+    return attribute;
+  }
+
+  void check_dimensions(const Hdf5Handle& set, const char* name, const std::vector<hsize_t>& expected) const {
+    if (dimensions(set, name, static_cast<int>(expected.size())) != expected) {
+      std::string text;
+      for (hsize_t dim : expected) text += (text.empty() ? "" : " x ") + std::to_string(dim);
+      invalid(std::string("dataset '") + name + "' must be " + text + " (from the segment layout)");
+    }
+  }
+
+  static std::size_t count_of(const std::vector<hsize_t>& dims) {
+    std::size_t count = 1;
+    for (hsize_t dim : dims) count *= static_cast<std::size_t>(dim);  // bounded by the callers
+    return count;
+  }
+
+  static std::string describe(hid_t type) {
+    if (type < 0) return "unreadable type";
+    const std::string bits = std::to_string(8 * H5Tget_size(type)) + "-bit ";
+    switch (H5Tget_class(type)) {
+      case H5T_INTEGER: return bits + "integers";
+      case H5T_FLOAT: return bits + "floats";
+      case H5T_STRING: return "text";
+      default: return "another type";
+    }
+  }
+
+  std::string name_;
 };
 
-}  // namespace
+TableData read_verified(const unsigned char* bytes, std::size_t size, const std::string& name) {
+  std::lock_guard<std::mutex> lock(hdf5_mutex());
+  const detail::QuietHdf5Errors quiet;
+  Reader reader(name);
+  // HDF5's core driver on a copy of the checked bytes; the name only identifies the image
+  // (it must not be an existing file, and must differ between images open at once).
+  static unsigned long images = 0;
+  const std::string image_name = "/dev/null/asperity-table-image-" + std::to_string(++images);
+  Hdf5Handle file;
+  {
+    const Hdf5Handle access = detail::hdf5_properties(H5Pcreate(H5P_FILE_ACCESS));
+    if (!access.ok() || H5Pset_fapl_core(access.get(), 1 << 20, false) < 0 ||
+        H5Pset_file_image(access.get(), const_cast<unsigned char*>(bytes), size) < 0)
+      reader.invalid("HDF5 cannot take the file image");
+    file = detail::hdf5_file(H5Fopen(image_name.c_str(), H5F_ACC_RDONLY, access.get()));
+  }
+  if (!file.ok()) reader.invalid("its header is intact but HDF5 cannot open what follows");
 
-TableData read_table_file(const std::string& path) {
-  Reader reader{path};
-  if (!std::ifstream(path).good()) reader.fail("no such file, or it cannot be read");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by us, not printed by HDF5
-  if (H5Fis_hdf5(path.c_str()) <= 0) reader.fail("not an HDF5 file (or truncated)");
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.ok()) reader.fail("HDF5 cannot open it (truncated or corrupt?)");
-
-  if (H5Aexists(file.get(), schema::attr_schema) <= 0)
-    reader.fail("an HDF5 file, but not an asperity table (no 'schema' attribute)");
-  if (reader.string_attribute(file.get(), schema::attr_schema) != schema::name)
-    reader.fail("an HDF5 file of another schema");
-  const long long version = reader.int_attribute(file.get(), schema::attr_schema_version);
+  const std::optional<std::string> schema_name = reader.text_attribute(file.get(), schema::attr_schema, false);
+  if (!schema_name) fail(TableFileStatus::other_schema, name, "an HDF5 file, but not an asperity table (no 'schema')");
+  if (*schema_name != schema::name) fail(TableFileStatus::other_schema, name, "an HDF5 file of another schema");
+  const long long version = *reader.integer_attribute(file.get(), schema::attr_schema_version, true);
   if (version != schema::version)
-    reader.fail("schema version " + std::to_string(version) + ", this runtime reads version " +
-                std::to_string(schema::version) + "; regenerate the table with this tablegen");
+    fail(TableFileStatus::other_version, name,
+         "schema version " + std::to_string(version) + ", this runtime reads version " +
+             std::to_string(schema::version) + "; regenerate the table with this tablegen");
 
   TableData data;
-  data.generator = reader.string_attribute(file.get(), schema::attr_generator);
-  data.generator_options = reader.string_attribute(file.get(), schema::attr_generator_options);
-  if (H5Aexists(file.get(), schema::attr_exact_shapes) > 0)
-    data.exact_shapes = reader.int_attribute(file.get(), schema::attr_exact_shapes) != 0;
+  data.generator = *reader.text_attribute(file.get(), schema::attr_generator, true);
+  data.generator_options = *reader.text_attribute(file.get(), schema::attr_generator_options, true);
+  if (const auto exact = reader.integer_attribute(file.get(), schema::attr_exact_shapes, false)) {
+    if (*exact != 0 && *exact != 1) reader.invalid("attribute 'exact_shapes' must be 0 or 1");
+    data.exact_shapes = *exact == 1;
+  }
   const struct { Distribution distribution; Side side; } groups[] = {
       {Distribution::weibull, Side::tail}, {Distribution::weibull, Side::bounded}, {Distribution::gaussian, Side::tail}};
+  double values_in_memory = 0;
   for (const auto& group_id : groups) {
-    const std::string name = std::string(to_string(group_id.distribution)) + "_" + to_string(group_id.side);
-    if (H5Lexists(file.get(), name.c_str(), H5P_DEFAULT) <= 0) continue;
-    Handle group(H5Gopen2(file.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
-    if (!group.ok()) reader.fail("cannot open group '" + name + "'");
+    const std::string group_name = std::string(to_string(group_id.distribution)) + "_" + to_string(group_id.side);
+    if (H5Lexists(file.get(), group_name.c_str(), H5P_DEFAULT) <= 0) continue;
+    const Hdf5Handle group = detail::hdf5_group(H5Gopen2(file.get(), group_name.c_str(), H5P_DEFAULT));
+    if (!group.ok()) reader.invalid("'" + group_name + "' is not a group");
+    const Reader in_group(name + "' group '" + group_name);
+    const hid_t g = group.get();
     CurveSet set;
     set.distribution = group_id.distribution;
     set.side = group_id.side;
-    std::vector<hsize_t> dims;
-    set.shapes = reader.dataset<double>(group.get(), schema::set_shapes, H5T_NATIVE_DOUBLE, dims);
-    const auto range = reader.dataset<double>(group.get(), schema::set_shape_range, H5T_NATIVE_DOUBLE, dims);
-    if (range.size() != 2) reader.fail(name + ": shape_range must hold two values");
+    const hsize_t shapes = in_group.length(g, schema::set_shapes, schema::max_shapes);
+    set.shapes = in_group.doubles(g, schema::set_shapes, {shapes});
+    const std::vector<double> range = in_group.doubles(g, schema::set_shape_range, {2});
     set.shape_min = range[0];
     set.shape_max = range[1];
-    const auto kinds = reader.dataset<int>(group.get(), schema::set_segment_kind, H5T_NATIVE_INT, dims);
-    const auto knot_counts = reader.dataset<int>(group.get(), schema::set_segment_knots, H5T_NATIVE_INT, dims);
-    const auto p0 = reader.dataset<double>(group.get(), schema::set_segment_p0, H5T_NATIVE_DOUBLE, dims);
-    const auto p1 = reader.dataset<double>(group.get(), schema::set_segment_p1, H5T_NATIVE_DOUBLE, dims);
-    if (kinds.size() != knot_counts.size() || kinds.size() != p0.size() || kinds.size() != p1.size())
-      reader.fail(name + ": segment datasets differ in length");
-    for (std::size_t i = 0; i < kinds.size(); ++i)
-      set.layout.push_back({static_cast<SegmentKind>(kinds[i]), knot_counts[i], p0[i], p1[i]});
-    set.knots = reader.dataset<double>(group.get(), schema::set_knots, H5T_NATIVE_DOUBLE, dims);
-    if (dims.size() != 4 || dims[0] != set.shapes.size() || dims[1] != static_cast<hsize_t>(order_count) || dims[3] != 3)
-      reader.fail(name + ": knots dataset has the wrong shape");
-    set.max_rel_error = reader.dataset<double>(group.get(), schema::set_max_rel_error, H5T_NATIVE_DOUBLE, dims);
-    set.validate("table '" + path + "'");
+    const std::vector<double> orders = in_group.doubles(g, schema::set_orders, {hsize_t(order_count)});
+    for (int k = 0; k < order_count; ++k)
+      if (orders[k] != order_of(k)) in_group.invalid("dataset 'orders' must be 0, 0.5, 1, 1.5, 2, 2.5");
+    const hsize_t segments = in_group.length(g, schema::set_segment_kind, max_segments);
+    const auto kinds = in_group.integers(g, schema::set_segment_kind, {segments}, 0, segment_kind_count - 1);
+    const auto knots = in_group.integers(g, schema::set_segment_knots, {segments}, 2, schema::max_segment_knots);
+    const std::vector<double> p0 = in_group.doubles(g, schema::set_segment_p0, {segments});
+    const std::vector<double> p1 = in_group.doubles(g, schema::set_segment_p1, {segments});
+    hsize_t total_knots = 0;
+    for (std::size_t i = 0; i < segments; ++i) {
+      set.layout.push_back({static_cast<SegmentKind>(kinds[i]), static_cast<int>(knots[i]), p0[i], p1[i]});
+      total_knots += static_cast<hsize_t>(knots[i]);
+    }
+    // The knot data's size follows from the layout: bounded, and in proportion to the file,
+    // before a byte of it is allocated (a small file cannot claim gigabytes of zeros).
+    const double values = static_cast<double>(shapes) * order_count * static_cast<double>(total_knots) * 3;
+    values_in_memory += values;
+    if (values > static_cast<double>(schema::max_set_values) ||
+        values_in_memory * sizeof(double) > schema::max_expansion * static_cast<double>(size))
+      in_group.invalid("its layout implies " + std::to_string(static_cast<long long>(values)) +
+                       " knot values, more than a table of " + std::to_string(size) + " bytes may hold");
+    set.knots = in_group.doubles(g, schema::set_knots, {shapes, hsize_t(order_count), total_knots, 3});
+    set.max_rel_error = in_group.doubles(g, schema::set_max_rel_error, {shapes, hsize_t(order_count)});
+    set.validate("table '" + name + "'");
     data.sets.push_back(std::move(set));
   }
-  if (data.sets.empty()) reader.fail("holds no curve sets");
+  if (data.sets.empty()) reader.invalid("holds no curve sets");
   return data;
+}
+
+}  // namespace
+
+TableData read_table_bytes(const void* bytes, std::size_t size, const std::string& name) {
+  const auto* data = static_cast<const unsigned char*>(bytes);
+  if (size > schema::max_file_bytes)
+    fail(TableFileStatus::invalid, name, "more bytes than a table may have (" + std::to_string(schema::max_file_bytes) + ")");
+  verify_table_bytes(data, size, name);
+  try {
+    return read_verified(data, size, name);
+  } catch (const TableFileError&) {
+    throw;
+  } catch (const Error& error) {  // CurveSet::validate: the contents break the schema
+    throw TableFileError(TableFileStatus::invalid, error.what());
+  }
+}
+
+TableData read_table_file(const std::string& path) {
+  std::string bytes;
+  try {
+    bytes = detail::read_regular_file(path, schema::max_file_bytes);
+  } catch (const detail::RegularFileError& error) {
+    const TableFileStatus status = error.failure() == detail::FileFailure::missing ? TableFileStatus::missing
+                                   : error.failure() == detail::FileFailure::too_large ? TableFileStatus::invalid
+                                                                                       : TableFileStatus::unreadable;
+    fail(status, path, error.what());
+  }
+  return read_table_bytes(bytes.data(), bytes.size(), path);
 }
 
 }  // namespace asperity
