@@ -1,0 +1,63 @@
+// The whole path from a measured height map to the evidence and the contact curves:
+// read, level (least-squares plane, stated), height statistics and spectral moments, summits
+// (and their dependence on the sampling interval), the three fits on the summit heights (and on
+// the heights, for comparison) with goodness of fit and a verdict, and the contact curves of
+// each fit (when a contact modulus is given).
+//
+// All heights of a map are strongly correlated, and the tests and intervals assume independent
+// values: the heights are thinned first, to one point per correlation length (the lags where
+// the autocorrelation falls below 0.1, along x and y), and to at most max_height_sample points.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "asperity/topography/contact_comparison.hpp"
+#include "asperity/topography/goodness_of_fit.hpp"
+#include "asperity/topography/height_map.hpp"
+#include "asperity/topography/height_map_io.hpp"
+#include "asperity/topography/leveling.hpp"
+#include "asperity/topography/statistics.hpp"
+#include "asperity/topography/summits.hpp"
+
+namespace asperity::topography {
+
+struct AnalysisOptions {
+  ReadOptions read;
+  bool level = true;                      // subtract the least-squares plane
+  SummitOptions summits;
+  AssessmentOptions assessment;
+  bool fit_heights = true;                // also fit the (thinned) heights
+  std::size_t max_height_sample = 4000;
+  std::vector<std::size_t> sampling_factors = {1, 2, 4};  // summits at k dx (sampling dependence)
+  std::optional<ContactOptions> contact;  // contact curves: needs ContactOptions::contact_modulus
+};
+
+struct SamplingRow {
+  std::size_t factor = 1;
+  double dx = 0, dy = 0;
+  std::size_t summits = 0;
+  double density = 0, radius = 0;  // [1/m^2], [m]
+  double m2 = 0, m4 = 0, alpha = 0;
+};
+
+struct SurfaceAnalysis {
+  HeightMap map;                   // as analysed (leveled when asked)
+  bool leveled = false;
+  Plane plane;                     // the plane subtracted
+  HeightStatistics statistics;
+  SpectralMoments moments;
+  CorrelationLengths correlation;
+  Summits summits;
+  std::vector<SamplingRow> sampling;
+  SampleAssessment summit_heights;
+  std::optional<SampleAssessment> heights;
+  std::size_t height_stride_x = 1, height_stride_y = 1;
+  std::optional<ContactComparison> contact;
+  AnalysisOptions options;
+};
+
+SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options = {});
+SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOptions& options = {});
+
+}  // namespace asperity::topography

@@ -1,0 +1,64 @@
+// The fits carried through: contact curves of a measured surface, one per height model, side by
+// side (MODEL.md section 3, through asperity::ContactModel), and the ratios between their
+// predictions at the pressures of interest (the paper's point, in numbers, for this surface).
+//
+//   gaussian-moments  the Gaussian that a contact code makes from the spectral moments alone
+//                     (Nayak-McCool: summit density, radius and rms summit height from m0, m2,
+//                     m4; asperity::gaussian_surface_from_moments)
+//   gaussian          the Gaussian fitted to the summit heights
+//   weibull-tail      the tail-up Weibull fitted to the summit heights (tail side of approach)
+//   weibull-bounded   the mirrored Weibull (bounded side: the flat meets the highest summits)
+// The last three use the measured summit density and radius (summits.hpp) and each fit's own
+// scale. The Gaussian is served from the default table. Each Weibull is served from an
+// exact-shape scene table generated for the fitted shape over the pressures asked
+// (asperity::tablegen::generate_scene_table, shapes 0.3-50), or from a given full table (the
+// default table: shapes 0.5-20, between grid shapes by interpolation). A fitted shape outside
+// what the table serves gets no curve; the reason is stated (ModelContact::note).
+//
+// Separations are reported from the mean summit height of each model (comparable across
+// models); pressures are nominal (load / A0), stiffness per nominal area [N/m^3] as well.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "asperity/contact_model.hpp"
+#include "asperity/topography/goodness_of_fit.hpp"
+#include "asperity/topography/statistics.hpp"
+#include "asperity/topography/summits.hpp"
+
+namespace asperity::topography {
+
+struct ContactOptions {
+  double contact_modulus = 0;     // E* [Pa] (plane strain); required
+  double nominal_area = 0;        // A0 [m^2]; 0: the measured area
+  std::vector<double> pressures;  // nominal pressures of interest [Pa]; empty: E* x {1e-5, 1e-4, 1e-3}
+  int curve_points = 61;          // points of each curve, log-uniform in pressure
+  double scene_tolerance = 1e-8;  // of the scene tables
+  std::string table_path;         // a full table instead of scene tables (empty: scene tables)
+  int threads = 0;
+};
+
+struct ModelContact {
+  std::string label;               // gaussian-moments, gaussian, weibull-tail, weibull-bounded
+  bool served = false;
+  std::string note;                // the table that served it, or why there is no curve
+  PhysicalSurface surface;
+  double mean_summit_height = 0;   // [m], in the map's height frame (leveled)
+  std::vector<PhysicalState> curve;         // over [pressure_min, pressure_max]
+  std::vector<PhysicalState> at_pressures;  // at ContactComparison::pressures
+};
+
+struct ContactComparison {
+  ContactOptions options;
+  std::vector<double> pressures;   // the pressures of interest [Pa]
+  double pressure_min = 0, pressure_max = 0;
+  double nominal_area = 0;
+  std::vector<ModelContact> models;
+  const ModelContact* find(const std::string& label) const;
+};
+
+// Throws asperity::Error for a missing or bad modulus, bad pressures, or no summits.
+ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summits& summits,
+                                  const SpectralMoments& moments, double measured_area, const ContactOptions& options);
+
+}  // namespace asperity::topography

@@ -1,0 +1,90 @@
+// Goodness of fit, confidence intervals and a verdict, for the three height models on one sample.
+//
+//   Anderson-Darling A^2 = -n - (1/n) sum (2i-1) [ln F(x_(i)) + ln(1 - F(x_(n+1-i)))]
+//   Kolmogorov-Smirnov D = max_i max(i/n - F(x_(i)), F(x_(i)) - (i-1)/n)
+// The parameters are estimated from the same data, so the textbook null distributions (for a
+// fully specified F) do not apply: the p-values come from a parametric bootstrap. B samples of
+// size n are drawn from the fitted distribution, each is refitted with the same estimator, and
+// its A^2 and D against its own refit are the null sample; p = (1 + #{A*^2 >= A^2}) / (B + 1).
+// The refits give the confidence intervals too: percentile intervals of the refitted
+// parameters (for the Weibull models the shape, which is what the contact curves depend on).
+// AIC = 2k - 2 ln L at the estimate (MPS for the Weibull models, ML for the Gaussian). With a
+// shape below 1, ln L is finite at the MPS estimate but grows as the location nears the
+// smallest value: the AIC of such a fit leans toward it; the verdict rests on the tests first.
+//
+// Random numbers: std::mt19937_64 (its output sequence is defined by the standard) seeded per
+// replicate from (seed, model, replicate), uniforms from its bits and the quantile function,
+// so results are the same on every platform and for every thread count.
+//
+// The samples are assumed independent: summit heights nearly are (summits are at least two
+// sampling intervals apart); all heights of a map are not, and are thinned first (analysis.hpp).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "asperity/topography/distribution_fit.hpp"
+
+namespace asperity::topography {
+
+double anderson_darling(const HeightDistribution& distribution, const std::vector<double>& sorted);
+double kolmogorov_smirnov(const HeightDistribution& distribution, const std::vector<double>& sorted);
+
+struct AssessmentOptions {
+  int bootstrap = 199;         // B; 0: no p-values and no intervals
+  std::uint64_t seed = 1;
+  int threads = 0;             // 0: the hardware's
+  double confidence = 0.95;    // of the intervals
+  double significance = 0.05;  // of the tests, for the verdict
+  FitOptions fit;
+};
+
+struct Interval {
+  double lo = 0, hi = 0;
+};
+
+struct ModelAssessment {
+  FitResult fit;
+  double anderson_darling = 0, anderson_darling_p = 0;
+  double kolmogorov_smirnov = 0, kolmogorov_smirnov_p = 0;
+  double log_likelihood = 0, aic = 0, delta_aic = 0, akaike_weight = 0;
+  Interval location, scale, shape;  // percentile bootstrap intervals (shape: Weibull only)
+  int bootstrap = 0, failed_refits = 0;
+  bool rejected = false;            // the Anderson-Darling p-value is below the significance
+};
+
+struct Verdict {
+  bool gaussian_rejected = false;
+  HeightModel best = HeightModel::gaussian;  // lowest AIC among the models not rejected
+  bool best_rejected = false;                // every model was rejected: the best by AIC anyway
+  double aic_gain_over_gaussian = 0;         // AIC(Gaussian) - AIC(best)
+  std::string text;                          // the verdict with its evidence, in words
+};
+
+struct SampleAssessment {
+  std::string name;          // "summit heights", "heights (thinned)"
+  std::size_t n = 0;
+  std::vector<ModelAssessment> models;  // in all_height_models order
+  Verdict verdict;
+  AssessmentOptions options;
+  const ModelAssessment& model(HeightModel m) const { return models[static_cast<int>(m)]; }
+};
+
+// Fits the three models, bootstraps, and gives the verdict. `values` need not be sorted.
+SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options = {});
+
+// The parametric-bootstrap p-value of the Anderson-Darling (and KS) test of one model on one
+// sample: exposed for the size and power measurements.
+struct TestResult {
+  FitResult fit;
+  double anderson_darling = 0, anderson_darling_p = 0, kolmogorov_smirnov = 0, kolmogorov_smirnov_p = 0;
+  std::vector<double> refit_shapes, refit_locations, refit_scales;
+  int failed_refits = 0;
+};
+TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, int bootstrap, std::uint64_t seed,
+                          int threads, const FitOptions& fit = {});
+
+// Reproducible draws from a distribution (the same generator as the bootstrap).
+std::vector<double> draw_sample(const HeightDistribution& distribution, std::size_t n, std::uint64_t seed);
+
+}  // namespace asperity::topography

@@ -1,0 +1,220 @@
+#include "asperity/topography/goodness_of_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <thread>
+
+#include "asperity/error.hpp"
+
+namespace asperity::topography {
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// a uniform in (0, 1) from 53 bits, never 0 or 1
+double uniform(std::mt19937_64& engine) { return (static_cast<double>(engine() >> 11) + 0.5) * 0x1p-53; }
+
+double percentile(std::vector<double> values, double q) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const double position = q * static_cast<double>(values.size() - 1);
+  const std::size_t k = static_cast<std::size_t>(position);
+  const double fraction = position - static_cast<double>(k);
+  return k + 1 < values.size() ? values[k] * (1 - fraction) + values[k + 1] * fraction : values[k];
+}
+
+std::string format(const char* pattern, double a) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, a);
+  return buffer;
+}
+
+std::string p_text(double p, int bootstrap) {
+  if (bootstrap <= 0) return "p not computed";
+  const double floor = 1.0 / (bootstrap + 1);
+  if (p <= floor) return "p <= " + format("%.3g", floor);
+  return "p = " + format("%.3g", p);
+}
+
+}  // namespace
+
+double anderson_darling(const HeightDistribution& d, const std::vector<double>& sorted) {
+  const std::size_t n = sorted.size();
+  // clamp the logs so that a point far outside the fit adds a large but finite term
+  constexpr double floor = -745;
+  double sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double lower = std::max(d.log_cdf(sorted[i]), floor);
+    const double upper = std::max(d.log_sf(sorted[n - 1 - i]), floor);
+    sum += static_cast<double>(2 * i + 1) * (lower + upper);
+  }
+  return -static_cast<double>(n) - sum / static_cast<double>(n);
+}
+
+double kolmogorov_smirnov(const HeightDistribution& d, const std::vector<double>& sorted) {
+  const double n = static_cast<double>(sorted.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    const double f = d.cdf(sorted[i]);
+    worst = std::max({worst, static_cast<double>(i + 1) / n - f, f - static_cast<double>(i) / n});
+  }
+  return worst;
+}
+
+std::vector<double> draw_sample(const HeightDistribution& distribution, std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 engine(seed);
+  std::vector<double> sample(n);
+  for (double& x : sample) x = distribution.quantile(uniform(engine));
+  return sample;
+}
+
+TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, int bootstrap, std::uint64_t seed,
+                          int threads, const FitOptions& fit_options) {
+  TestResult result;
+  result.fit = fit_height_distribution(model, sorted, fit_options);
+  const HeightDistribution& fitted = result.fit.distribution;
+  result.anderson_darling = anderson_darling(fitted, sorted);
+  result.kolmogorov_smirnov = kolmogorov_smirnov(fitted, sorted);
+  if (bootstrap <= 0) return result;
+
+  struct Replicate {
+    double a2 = 0, d = 0, location = 0, scale = 0, shape = 0;
+    bool ok = false;
+  };
+  std::vector<Replicate> replicates(static_cast<std::size_t>(bootstrap));
+  FitOptions refit_options = fit_options;
+  refit_options.start = &fitted;
+  const auto work = [&](int first, int step) {
+    for (int b = first; b < bootstrap; b += step) {
+      const std::uint64_t replicate_seed =
+          splitmix64(splitmix64(seed) ^ splitmix64(static_cast<std::uint64_t>(model) * 1000003u + static_cast<std::uint64_t>(b)));
+      std::vector<double> sample = draw_sample(fitted, sorted.size(), replicate_seed);
+      std::sort(sample.begin(), sample.end());
+      Replicate& r = replicates[static_cast<std::size_t>(b)];
+      try {
+        const FitResult refit = fit_height_distribution(model, sample, refit_options);
+        r.a2 = anderson_darling(refit.distribution, sample);
+        r.d = kolmogorov_smirnov(refit.distribution, sample);
+        r.location = refit.distribution.location;
+        r.scale = refit.distribution.scale;
+        r.shape = refit.distribution.shape;
+        r.ok = true;
+      } catch (const Error&) {
+        r.ok = false;  // counted; a sample of identical values cannot happen from a continuous law
+      }
+    }
+  };
+  int workers = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  workers = std::min(workers, bootstrap);
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(work, w, workers);
+  work(0, workers);
+  for (std::thread& t : pool) t.join();
+
+  int exceed_a2 = 0, exceed_d = 0, ok = 0;
+  for (const Replicate& r : replicates) {
+    if (!r.ok) {
+      ++result.failed_refits;
+      continue;
+    }
+    ++ok;
+    exceed_a2 += r.a2 >= result.anderson_darling ? 1 : 0;
+    exceed_d += r.d >= result.kolmogorov_smirnov ? 1 : 0;
+    result.refit_locations.push_back(r.location);
+    result.refit_scales.push_back(r.scale);
+    result.refit_shapes.push_back(r.shape);
+  }
+  result.anderson_darling_p = static_cast<double>(1 + exceed_a2) / (ok + 1);
+  result.kolmogorov_smirnov_p = static_cast<double>(1 + exceed_d) / (ok + 1);
+  return result;
+}
+
+SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options) {
+  if (!(options.confidence > 0 && options.confidence < 1)) throw Error("assessment: confidence must be in (0, 1)");
+  if (!(options.significance > 0 && options.significance < 1)) throw Error("assessment: significance must be in (0, 1)");
+  std::sort(values.begin(), values.end());
+  SampleAssessment assessment;
+  assessment.name = name;
+  assessment.n = values.size();
+  assessment.options = options;
+  const double tail = 0.5 * (1 - options.confidence);
+  for (HeightModel model : all_height_models) {
+    const TestResult test = bootstrap_test(model, values, options.bootstrap, options.seed, options.threads, options.fit);
+    ModelAssessment m;
+    m.fit = test.fit;
+    m.anderson_darling = test.anderson_darling;
+    m.anderson_darling_p = test.anderson_darling_p;
+    m.kolmogorov_smirnov = test.kolmogorov_smirnov;
+    m.kolmogorov_smirnov_p = test.kolmogorov_smirnov_p;
+    m.log_likelihood = log_likelihood(test.fit.distribution, values);
+    m.aic = 2 * parameter_count(model) - 2 * m.log_likelihood;
+    m.bootstrap = options.bootstrap;
+    m.failed_refits = test.failed_refits;
+    m.location = {percentile(test.refit_locations, tail), percentile(test.refit_locations, 1 - tail)};
+    m.scale = {percentile(test.refit_scales, tail), percentile(test.refit_scales, 1 - tail)};
+    if (model != HeightModel::gaussian) m.shape = {percentile(test.refit_shapes, tail), percentile(test.refit_shapes, 1 - tail)};
+    else m.shape = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    m.rejected = options.bootstrap > 0 && m.anderson_darling_p < options.significance;
+    assessment.models.push_back(m);
+  }
+  // AIC differences and Akaike weights
+  double best_aic = std::numeric_limits<double>::infinity();
+  for (const ModelAssessment& m : assessment.models) best_aic = std::min(best_aic, m.aic);
+  double weight_sum = 0;
+  for (ModelAssessment& m : assessment.models) {
+    m.delta_aic = m.aic - best_aic;
+    m.akaike_weight = std::exp(-0.5 * m.delta_aic);
+    weight_sum += m.akaike_weight;
+  }
+  for (ModelAssessment& m : assessment.models) m.akaike_weight /= weight_sum;
+
+  Verdict& v = assessment.verdict;
+  const ModelAssessment& gaussian = assessment.model(HeightModel::gaussian);
+  v.gaussian_rejected = gaussian.rejected;
+  int best = -1;
+  for (int k = 0; k < 3; ++k)
+    if (!assessment.models[k].rejected && (best < 0 || assessment.models[k].aic < assessment.models[best].aic)) best = k;
+  v.best_rejected = best < 0;
+  if (best < 0)
+    for (int k = 0; k < 3; ++k)
+      if (best < 0 || assessment.models[k].aic < assessment.models[best].aic) best = k;
+  v.best = static_cast<HeightModel>(best);
+  const ModelAssessment& winner = assessment.models[best];
+  v.aic_gain_over_gaussian = gaussian.aic - winner.aic;
+
+  const int b = options.bootstrap;
+  std::string text = name + " (n = " + std::to_string(values.size()) + "): ";
+  if (b <= 0) {
+    text += "no bootstrap, so no test; by AIC alone the best is " + std::string(describe(v.best)) + ".";
+  } else {
+    text += v.gaussian_rejected ? "not Gaussian: Anderson-Darling rejects the Gaussian (" : "consistent with a Gaussian (Anderson-Darling ";
+    text += p_text(gaussian.anderson_darling_p, b) + ", KS " + p_text(gaussian.kolmogorov_smirnov_p, b) + ", " +
+            std::to_string(b) + " bootstrap samples). ";
+    if (v.best_rejected) {
+      text += "No model passes at the " + format("%.0f%%", 100 * options.significance) + " level; the least bad by AIC is " +
+              describe(v.best);
+    } else {
+      text += std::string("Best fit (lowest AIC among the models not rejected): ") + describe(v.best);
+    }
+    if (v.best != HeightModel::gaussian)
+      text += ", shape " + format("%.3g", winner.fit.distribution.shape) + " [" + format("%.3g", winner.shape.lo) + ", " +
+              format("%.3g", winner.shape.hi) + "] (" + format("%.0f%%", 100 * options.confidence) + ")";
+    text += " (Anderson-Darling " + p_text(winner.anderson_darling_p, b) + ")";
+    if (v.best != HeightModel::gaussian) {
+      text += "; its AIC is " + format("%.1f", v.aic_gain_over_gaussian) + " below the Gaussian's (Akaike weights " +
+              format("%.3g", winner.akaike_weight) + " against " + format("%.3g", gaussian.akaike_weight) + ")";
+    }
+    text += ".";
+  }
+  v.text = text;
+  return assessment;
+}
+
+}  // namespace asperity::topography

@@ -1,0 +1,121 @@
+// Gwyddion Simple Field (.gsf): magic line, "Key = value" header, 1-4 NUL bytes aligning the
+// data to a multiple of 4, then XRes x YRes little-endian float32, row by row, x fastest.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "asperity/topography/height_map_io.hpp"
+#include "asperity/topography/units.hpp"
+#include "reader_support.hpp"
+
+namespace asperity::topography {
+namespace {
+using detail::fail;
+constexpr char magic[] = "Gwyddion Simple Field 1.0\n";
+constexpr std::size_t magic_size = sizeof(magic) - 1;
+constexpr std::size_t max_header_bytes = std::size_t{1} << 20;
+}  // namespace
+
+HeightMap read_gsf(const std::string& path, const ReadOptions& options) {
+  const std::uint64_t file_size = detail::file_size_of(path);
+  const std::vector<unsigned char> head = detail::read_file_prefix(path, max_header_bytes);
+  if (head.size() < magic_size || std::memcmp(head.data(), magic, magic_size) != 0)
+    fail(path, "not a Gwyddion Simple Field file (no 'Gwyddion Simple Field 1.0' line)");
+  std::size_t nul = magic_size;
+  while (nul < head.size() && head[nul] != 0) ++nul;
+  if (nul == head.size())
+    fail(path, head.size() < max_header_bytes ? "the header is truncated (no NUL padding after it)"
+                                              : "the header is longer than 1 MiB");
+  // data start: the next multiple of 4 after the header, with at least one NUL
+  const std::size_t data_start = nul + (4 - nul % 4);
+  for (std::size_t k = nul; k < data_start; ++k)
+    if (k >= head.size() || head[k] != 0) fail(path, "the header's NUL padding is truncated or wrong");
+
+  std::map<std::string, std::string> fields;
+  std::istringstream header(std::string(head.begin() + magic_size, head.begin() + nul));
+  std::string line;
+  int line_number = 1;
+  while (std::getline(header, line)) {
+    ++line_number;
+    if (detail::trim(line).empty()) continue;
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos)
+      fail(path, "header line " + std::to_string(line_number) + " is not 'name = value': '" + line + "'");
+    fields[std::string(detail::trim(std::string_view(line).substr(0, equals)))] =
+        std::string(detail::trim(std::string_view(line).substr(equals + 1)));
+  }
+  std::uint64_t xres = 0, yres = 0;
+  for (const auto& [key, out] : {std::pair<const char*, std::uint64_t*>{"XRes", &xres}, {"YRes", &yres}}) {
+    const auto found = fields.find(key);
+    if (found == fields.end()) fail(path, std::string("the header has no ") + key);
+    if (!detail::parse_size(found->second, std::numeric_limits<std::uint32_t>::max(), *out))
+      fail(path, std::string(key) + " is not a positive integer ('" + found->second + "')");
+  }
+  detail::check_point_count(path, xres, yres, options.max_points);
+  const std::uint64_t expected = data_start + 4 * xres * yres;
+  if (file_size != expected)
+    fail(path, "holds " + std::to_string(file_size) + " bytes; its header (" + std::to_string(xres) + " x " +
+                   std::to_string(yres) + " float32) needs " + std::to_string(expected) +
+                   (file_size < expected ? ": truncated" : ": extra bytes at the end"));
+
+  HeightMap map;
+  map.source = path;
+  map.format = "gsf";
+  map.nx = static_cast<std::size_t>(xres);
+  map.ny = static_cast<std::size_t>(yres);
+  const auto lateral = fields.find("XYUnits");
+  const auto vertical = fields.find("ZUnits");
+  const double lateral_unit = lateral == fields.end() ? 1.0 : length_unit_in_metres(lateral->second);
+  const double height_unit = vertical == fields.end() ? 1.0 : length_unit_in_metres(vertical->second);
+  if (lateral == fields.end()) map.notes.push_back("GSF: no XYUnits, metres assumed (Gwyddion's base unit)");
+  if (vertical == fields.end()) map.notes.push_back("GSF: no ZUnits, metres assumed (Gwyddion's base unit)");
+  const auto xreal = fields.find("XReal"), yreal = fields.find("YReal");
+  const bool has_size = xreal != fields.end() && yreal != fields.end();
+  if (has_size) {
+    double x = 0, y = 0;
+    if (!detail::parse_double(xreal->second, x) || !(x > 0) || !detail::parse_double(yreal->second, y) || !(y > 0))
+      fail(path, "XReal and YReal must be positive numbers");
+    map.dx = x * lateral_unit / static_cast<double>(xres);
+    map.dy = y * lateral_unit / static_cast<double>(yres);
+  }
+  if (const auto title = fields.find("Title"); title != fields.end()) map.notes.push_back("channel: " + title->second);
+
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(data_start));
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(4 * xres * yres));
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!in || static_cast<std::size_t>(in.gcount()) != bytes.size()) fail(path, "the data are truncated");
+  map.heights.resize(map.nx * map.ny);
+  for (std::size_t k = 0; k < map.heights.size(); ++k) {
+    map.heights[k] = detail::load_le_float32(bytes.data() + 4 * k);
+    if (std::isinf(map.heights[k])) fail(path, "an infinite height at point " + std::to_string(k));
+  }
+  detail::apply_overrides(map, options, has_size, true, height_unit);
+  return map;
+}
+
+void write_gsf(const HeightMap& map, const std::string& path) {
+  std::ostringstream header;
+  header.precision(17);
+  header << magic << "XRes = " << map.nx << "\nYRes = " << map.ny << "\nXReal = " << map.width()
+         << "\nYReal = " << map.length() << "\nXYUnits = m\nZUnits = m\n";
+  std::string text = header.str();
+  text.append(4 - text.size() % 4, '\0');
+  std::vector<unsigned char> data(4 * map.heights.size());
+  for (std::size_t k = 0; k < map.heights.size(); ++k) {
+    const float value = static_cast<float>(map.heights[k]);
+    std::uint32_t bits;
+    std::memcpy(&bits, &value, 4);
+    for (int b = 0; b < 4; ++b) data[4 * k + b] = static_cast<unsigned char>(bits >> (8 * b));
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
+  out.close();
+  if (!out) throw Error(path + ": write error");
+}
+
+}  // namespace asperity::topography

@@ -1,0 +1,108 @@
+#include "asperity/topography/synthetic.hpp"
+
+#include <boost/math/special_functions/erf.hpp>
+#include <cmath>
+#include <random>
+
+#include "asperity/error.hpp"
+
+namespace asperity::topography {
+namespace {
+
+std::vector<double> kernel(double correlation) {
+  const int half = std::max(1, static_cast<int>(std::ceil(4 * correlation)));
+  std::vector<double> k(static_cast<std::size_t>(2 * half + 1));
+  double squares = 0;
+  for (int m = -half; m <= half; ++m) {
+    const double v = std::exp(-0.5 * m * m / (correlation * correlation));
+    k[static_cast<std::size_t>(m + half)] = v;
+    squares += v * v;
+  }
+  for (double& v : k) v /= std::sqrt(squares);
+  return k;
+}
+
+// Standard normal deviates from mt19937_64 bits through the quantile (portable).
+double normal(std::mt19937_64& engine) {
+  const double u = (static_cast<double>(engine() >> 11) + 0.5) * 0x1p-53;
+  return -std::sqrt(2.0) * boost::math::erfc_inv(2 * u);
+}
+
+}  // namespace
+
+HeightMap gaussian_random_field(std::size_t nx, std::size_t ny, double dx, double dy,
+                                const std::vector<SpectrumComponent>& spectrum, std::uint64_t seed) {
+  if (nx < 3 || ny < 3 || spectrum.empty()) throw Error("gaussian_random_field: needs 3 x 3 points and a spectrum");
+  HeightMap map;
+  map.nx = nx;
+  map.ny = ny;
+  map.dx = dx;
+  map.dy = dy;
+  map.format = "synthetic";
+  map.source = "synthetic Gaussian random field";
+  map.heights.assign(nx * ny, 0.0);
+  std::mt19937_64 engine(seed);
+  for (const SpectrumComponent& component : spectrum) {
+    if (!(component.correlation > 0) || !(component.variance > 0)) throw Error("gaussian_random_field: bad component");
+    const std::vector<double> k = kernel(component.correlation);
+    const std::size_t half = (k.size() - 1) / 2, wx = nx + 2 * half, wy = ny + 2 * half;
+    std::vector<double> noise(wx * wy);
+    for (double& v : noise) v = normal(engine);
+    // along x, then along y (separable)
+    std::vector<double> rows(nx * wy, 0.0);
+    for (std::size_t j = 0; j < wy; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        double sum = 0;
+        for (std::size_t m = 0; m < k.size(); ++m) sum += k[m] * noise[j * wx + i + m];
+        rows[j * nx + i] = sum;
+      }
+    const double amplitude = std::sqrt(component.variance);
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        double sum = 0;
+        for (std::size_t m = 0; m < k.size(); ++m) sum += k[m] * rows[(j + m) * nx + i];
+        map.heights[j * nx + i] += amplitude * sum;
+      }
+  }
+  return map;
+}
+
+SpectralMoments expected_spectral_moments(double dx, double dy, const std::vector<SpectrumComponent>& spectrum) {
+  SpectralMoments m;
+  for (const SpectrumComponent& component : spectrum) {
+    const std::vector<double> k = kernel(component.correlation);
+    // E[(central difference)^2] = sum_m (k[m-1] - k[m+1])^2 / 4 (per unit step), likewise the
+    // second difference; the other direction's kernel has unit sum of squares.
+    double first = 0, second = 0;
+    const auto at = [&](long m) { return m >= 0 && m < static_cast<long>(k.size()) ? k[static_cast<std::size_t>(m)] : 0.0; };
+    for (long n = -1; n <= static_cast<long>(k.size()); ++n) {
+      const double d1 = at(n - 1) - at(n + 1), d2 = at(n - 1) - 2 * at(n) + at(n + 1);
+      first += d1 * d1 / 4;
+      second += d2 * d2;
+    }
+    m.m0 += component.variance;
+    m.m2x += component.variance * first / (dx * dx);
+    m.m2y += component.variance * first / (dy * dy);
+    m.m4x += component.variance * second / (dx * dx * dx * dx);
+    m.m4y += component.variance * second / (dy * dy * dy * dy);
+  }
+  m.m2 = 0.5 * (m.m2x + m.m2y);
+  m.m4 = 0.5 * (m.m4x + m.m4y);
+  m.alpha = m.m0 * m.m4 / (m.m2 * m.m2);
+  return m;
+}
+
+void to_weibull_marginal(HeightMap& map, double shape, bool bounded) {
+  if (!(shape > 0)) throw Error("to_weibull_marginal: shape must be positive");
+  for (double& h : map.heights) {
+    if (std::isnan(h)) continue;
+    // W = (-ln(1 - Phi(h)))^(1/a) = (-ln Phi(-h))^(1/a), computed from the upper tail
+    const double log_sf = std::log(0.5 * boost::math::erfc(h / std::sqrt(2.0)));
+    const double w = std::pow(-log_sf, 1 / shape);
+    h = bounded ? -w : w;
+  }
+  map.notes.push_back(std::string("heights mapped to a unit Weibull marginal, shape ") + std::to_string(shape) +
+                      (bounded ? ", mirrored (bounded above)" : ", tail up"));
+}
+
+}  // namespace asperity::topography
