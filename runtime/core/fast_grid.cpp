@@ -192,7 +192,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
             throw Error("the lookup grid would need more than 2^22 intervals: the table's curve is not smooth");
           FastBinade& binade = grid.directory[side.offset + e];
           binade.knots = knots;
-          binade.first = static_cast<double>(grid.intervals - first);
+          binade.first = grid.intervals - first;
           grid.intervals += static_cast<std::int32_t>(count);
           for (int o = 0; o < builder.held; ++o)
             per_order[o].insert(per_order[o].end(), block.begin() + static_cast<std::ptrdiff_t>(o) * count * 6,

@@ -25,7 +25,7 @@ namespace asperity::detail {
 // so `first` may point before the allocated intervals: only the covered ones are read).
 struct FastBinade {
   double knots = 1;
-  double first = 0;  // an integer; a double so that the batch kernel's lanes stay 64 bits wide
+  std::int64_t first = 0;  // 64 bits wide, like every lane of the batch kernel
 };
 
 // The grid of one sign of s: |s| in [lower, upper]; the binade of biased exponent E is
@@ -65,8 +65,8 @@ static ASPERITY_ALWAYS_INLINE bool fast_position(const FastGrid& grid, double se
   double mantissa;  // in [1, 2)
   std::memcpy(&mantissa, &mantissa_bits, sizeof mantissa);
   const double position = (mantissa - 1.0) * binade.knots;  // exact: knots is a power of two
-  const std::int32_t cell = static_cast<std::int32_t>(position);
-  out.interval = static_cast<std::int32_t>(binade.first) + cell;
+  const std::int64_t cell = static_cast<std::int64_t>(position);
+  out.interval = static_cast<std::uint64_t>(binade.first + cell);
   out.y = position - static_cast<double>(cell) - 0.5;
   return true;
 }

@@ -65,11 +65,11 @@ __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const Fa
     const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
     const std::uint64_t entry = (offset + ((bits >> 52) & 0x7ff)) & keep;
     const double knots = directory[entry].knots;
-    const double first = directory[entry].first;
+    const std::uint64_t first = static_cast<std::uint64_t>(directory[entry].first);
     const double mantissa = double_of((bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
     const double position = (mantissa - 1.0) * knots;  // exact: knots is a power of two
     const double cell = __builtin_floor(position);
-    const std::uint64_t index = (bits_of(first + cell + round_shifter) - shifter_bits) & keep;
+    const std::uint64_t index = (first + (bits_of(cell + round_shifter) - shifter_bits)) & keep;
     const double log_value = fast_quintic(coefficients, index * fast_stride, position - cell - 0.5);
     out[j] = log_output ? log_value : Math::exp(log_value);
     outside += inside ? 0 : 1;
