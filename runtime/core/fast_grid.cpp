@@ -190,9 +190,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
           const std::int64_t count = last - first + 1;
           if (grid.intervals + count > largest_intervals)
             throw Error("the lookup grid would need more than 2^22 intervals: the table's curve is not smooth");
-          FastBinade& binade = grid.directory[side.offset + e];
-          binade.knots = knots;
-          binade.first = grid.intervals - first;
+          grid.directory[side.offset + e] = FastBinade::make(grid.intervals - first, std::ilogb(knots));
           grid.intervals += static_cast<std::int32_t>(count);
           for (int o = 0; o < builder.held; ++o)
             per_order[o].insert(per_order[o].end(), block.begin() + static_cast<std::ptrdiff_t>(o) * count * 6,

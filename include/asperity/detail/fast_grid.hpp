@@ -20,12 +20,19 @@
 
 namespace asperity::detail {
 
-// One binade of |s|: `knots` intervals (a power of two, as a double), the first at `first`
-// (an index into the coefficients; partial binades at the grid's ends keep their numbering,
-// so `first` may point before the allocated intervals: only the covered ones are read).
+// One binade of |s|, in one 64-bit word: 2^k intervals (k = log2_knots <= 16), the first at
+// index `first` of the coefficients (partial binades at the grid's ends keep their numbering,
+// so `first` may point before the allocated intervals: only the covered ones are read). The
+// top 52 bits of the mantissa of s then give the interval (its top k bits) and the position in
+// it (the rest): shifts and masks, no multiply, no conversion.
 struct FastBinade {
-  double knots = 1;
-  std::int64_t first = 0;  // 64 bits wide, like every lane of the batch kernel
+  static constexpr std::int64_t first_bias = std::int64_t(1) << 40;  // first + bias >= 0 always
+  std::uint64_t packed = 0;  // (first + first_bias) << 6 | k
+  static FastBinade make(std::int64_t first, int log2_knots) {
+    return {static_cast<std::uint64_t>(first + first_bias) << 6 | static_cast<std::uint64_t>(log2_knots)};
+  }
+  std::int64_t first() const { return static_cast<std::int64_t>(packed >> 6) - first_bias; }
+  int log2_knots() const { return static_cast<int>(packed & 63); }
 };
 
 // The grid of one sign of s: |s| in [lower, upper]; the binade of biased exponent E is
@@ -60,14 +67,14 @@ static ASPERITY_ALWAYS_INLINE bool fast_position(const FastGrid& grid, double se
   const FastSide& side = grid.sides[bits >> 63];
   const double magnitude = __builtin_fabs(separation);
   if (!(magnitude >= side.lower && magnitude <= side.upper)) return false;  // NaN fails too
-  const FastBinade& binade = grid.directory[side.offset + static_cast<std::int32_t>((bits >> 52) & 0x7ff)];
-  const std::uint64_t mantissa_bits = (bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull;
-  double mantissa;  // in [1, 2)
-  std::memcpy(&mantissa, &mantissa_bits, sizeof mantissa);
-  const double position = (mantissa - 1.0) * binade.knots;  // exact: knots is a power of two
-  const std::int64_t cell = static_cast<std::int64_t>(position);
-  out.interval = static_cast<std::uint64_t>(binade.first + cell);
-  out.y = position - static_cast<double>(cell) - 0.5;
+  const std::uint64_t packed = grid.directory[side.offset + static_cast<std::int32_t>((bits >> 52) & 0x7ff)].packed;
+  const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
+  const std::uint64_t cell = mantissa >> (52 - log2_knots);
+  const std::uint64_t fraction_bits = ((mantissa << log2_knots) & 0x000fffffffffffffull) | 0x3ff0000000000000ull;
+  double fraction;  // 1 + the position in the interval, in [1, 2)
+  std::memcpy(&fraction, &fraction_bits, sizeof fraction);
+  out.interval = (packed >> 6) - static_cast<std::uint64_t>(FastBinade::first_bias) + cell;
+  out.y = fraction - 1.5;
   return true;
 }
 

@@ -36,7 +36,7 @@ inline void exp4(const double* logs, double* out) noexcept {
 
 // Not inlined, and with restrict: the promise that the results do not overlap the
 // coefficients is what lets the compiler gather the coefficients in vectors. Every value is
-// 64 bits wide (doubles, and 64-bit integers made with the 2^52 shifter rather than by
+// 64 bits wide (doubles, and 64-bit integers from the bits of s by shifts and masks, never by
 // conversions, which AVX2 lacks), so that the loop vectorizes with one lane per query.
 // Queries off the grid read interval 0 (a valid load) and are counted; the caller answers them.
 template <bool log_output, class Math>
@@ -48,7 +48,7 @@ __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const Fa
   const std::uint64_t lower1_bits = bits_of(grid.sides[1].lower), upper1_bits = bits_of(grid.sides[1].upper);
   const std::uint64_t offset0 = static_cast<std::uint64_t>(grid.sides[0].offset);
   const std::uint64_t offset1 = static_cast<std::uint64_t>(grid.sides[1].offset);
-  const std::uint64_t shifter_bits = bits_of(round_shifter);
+  const std::uint64_t first_bias = static_cast<std::uint64_t>(FastBinade::first_bias);
   std::uint64_t outside = 0;
   for (int j = 0; j < count; ++j) {
     const double separation = separations[j];
@@ -64,13 +64,12 @@ __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const Fa
     const std::uint64_t keep = 0 - static_cast<std::uint64_t>(inside);
     const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
     const std::uint64_t entry = (offset + ((bits >> 52) & 0x7ff)) & keep;
-    const double knots = directory[entry].knots;
-    const std::uint64_t first = static_cast<std::uint64_t>(directory[entry].first);
-    const double mantissa = double_of((bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
-    const double position = (mantissa - 1.0) * knots;  // exact: knots is a power of two
-    const double cell = __builtin_floor(position);
-    const std::uint64_t index = (first + (bits_of(cell + round_shifter) - shifter_bits)) & keep;
-    const double log_value = fast_quintic(coefficients, index * fast_stride, position - cell - 0.5);
+    const std::uint64_t packed = directory[entry].packed;
+    const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
+    const std::uint64_t cell = mantissa >> (52 - log2_knots);
+    const double fraction = double_of(((mantissa << log2_knots) & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
+    const std::uint64_t index = ((packed >> 6) - first_bias + cell) & keep;
+    const double log_value = fast_quintic(coefficients, index * fast_stride, fraction - 1.5);
     out[j] = log_output ? log_value : Math::exp(log_value);
     outside += inside ? 0 : 1;
   }
