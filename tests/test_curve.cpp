@@ -81,6 +81,62 @@ TEST(Curve, RefusesALayoutItCannotInterpolate) {
                Error);
 }
 
+// Knots whose pieces do not meet (a crafted table): the lookup grid stops refining where its
+// error stalls and says what it reached, or refuses the curve, in bounded work either way.
+TEST(Curve, PiecesThatDoNotMeetAreServedHonestlyOrRefused) {
+  const CurveSet* set = table().find(Distribution::gaussian, Side::tail);
+  std::vector<double> knots(set->curve_stride());
+  for (std::size_t i = 0; i < knots.size(); ++i) knots[i] = 0.125 * static_cast<double>(i % 9) - 0.5;
+  try {
+    Curve(Distribution::gaussian, Side::tail, 2, set->layout, knots.data());
+    ADD_FAILURE() << "a curve with jumps of ~1 in ln X met a 1e-13 grid";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("not smooth"), std::string::npos) << error.what();
+  }
+  CurveOptions coarse;
+  coarse.grid_tolerance = 1e-2;
+  const Curve served(Distribution::gaussian, Side::tail, 2, set->layout, knots.data(), Curve::all_orders, coarse);
+  EXPECT_GT(served.grid_error(), 1e-2);  // it did not meet what was asked, and says so
+  EXPECT_LT(served.grid_intervals(), 20000u);
+}
+
+// A table's pieces meet to its own error, not to the grid's 1e-13: knots perturbed by 1e-9
+// stall the grid near there. What the grid reports as its error bounds what it adds to the
+// table's own curve (the table's layout alone: a grid range outside the table), at random
+// separations and toward s = 0; and the perturbed curve stays within ~1e-9 of the clean one.
+TEST(Curve, AGridThatStallsAtTheTablesErrorReportsIt) {
+  const CurveSet* set = table().find(Distribution::weibull, Side::tail);
+  std::size_t index = 0;
+  while (set->shapes[index] != 2.0) ++index;
+  const double* clean = &set->knots[index * set->curve_stride()];
+  std::vector<double> noisy(clean, clean + set->curve_stride());
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> noise(-1e-9, 1e-9);
+  for (std::size_t i = 0; i < noisy.size(); i += 3) noisy[i] += noise(rng);  // the values only
+  const Curve reference(Distribution::weibull, Side::tail, 2.0, set->layout, clean);
+  const Curve perturbed(Distribution::weibull, Side::tail, 2.0, set->layout, noisy.data());
+  CurveOptions no_grid;
+  no_grid.grid_min_separation = 1e299;
+  no_grid.grid_max_separation = 1e300;
+  const Curve table_layout(Distribution::weibull, Side::tail, 2.0, set->layout, noisy.data(), Curve::all_orders, no_grid);
+  EXPECT_EQ(table_layout.grid_intervals(), 0u);
+  EXPECT_LE(reference.grid_error(), 1.1e-13);
+  EXPECT_GT(perturbed.grid_error(), 1e-13);
+  EXPECT_LT(perturbed.grid_error(), 1e-8);
+  EXPECT_LT(perturbed.grid_intervals(), 1u << 17);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int i = 0; i < 20000; ++i) {
+    const double s = i < 200 ? std::ldexp(i % 2 ? -1.0 : 1.0, -i / 2) : std::sinh(4 * unit(rng));
+    if (!(s >= table_layout.table_min_separation() && s <= table_layout.table_max_separation())) continue;
+    for (int k = 0; k < order_count; ++k) {
+      const double served = perturbed.log_value(k, s), own = table_layout.log_value(k, s);
+      if (own < -230) continue;  // below 1e-100 the grid is allowed 100 times more
+      ASSERT_LE(std::fabs(served - own), perturbed.grid_error() + 4e-16 * std::fabs(own)) << s << " order " << k;
+      ASSERT_NEAR(served, reference.log_value(k, s), 1e-8) << s << " order " << k;
+    }
+  }
+}
+
 // A grid over part of the range (a scene's): inside it the grid answers, outside the table's
 // own layout; both agree with the full curve to the tables' error.
 TEST(Curve, AGridOverPartOfTheRange) {

@@ -48,7 +48,7 @@ inline constexpr int fast_stride = 6;  // coefficients per interval (see bench: 
 struct FastGrid {
   FastSide sides[2];                   // [0]: s > 0, [1]: s < 0 (the sign bit)
   std::vector<FastBinade> directory;
-  std::int32_t intervals = 0;          // per order (at most 2^22)
+  std::int32_t intervals = 0;          // per order (at most 2^17)
 };
 
 // The kernel below is `static` like fast_math.hpp's functions: each instruction-set build of
