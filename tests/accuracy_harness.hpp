@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -22,6 +23,8 @@ struct Probe {
   double tolerance;   // allowed relative error
   std::string label;  // for the message
   double reference = 0, value = 0, error = 0;
+  // Take the reference from closed_form_log where it holds (reference.hpp), else quadrature.
+  bool closed_form = false;
 };
 
 // Fills reference, value and error of every probe (relative error |X/X_ref - 1|, from logs).
@@ -41,8 +44,13 @@ inline void evaluate(std::vector<Probe>& probes) {
       for (std::size_t i = worker; i < probes.size(); i += threads) {
         Probe& probe = probes[i];
         const Curve& curve = *probe.curve;
-        probe.reference = static_cast<double>(reference_log(curve.distribution(), curve.side(), curve.shape(),
-                                                            order_of(probe.twice_order), probe.separation));
+        std::optional<Precise> exact;
+        if (probe.closed_form)
+          exact = closed_form_log(curve.distribution(), curve.side(), curve.shape(), probe.twice_order, probe.separation);
+        probe.reference = static_cast<double>(
+            exact ? *exact
+                  : reference_log(curve.distribution(), curve.side(), curve.shape(), order_of(probe.twice_order),
+                                  probe.separation));
         probe.value = curve.log_value(probe.twice_order, probe.separation);
         if (std::isinf(probe.reference) && probe.reference < 0)
           probe.error = (std::isinf(probe.value) && probe.value < 0) ? 0.0 : INFINITY;

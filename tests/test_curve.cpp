@@ -131,7 +131,10 @@ TEST(Curve, AGridThatStallsAtTheTablesErrorReportsIt) {
     for (int k = 0; k < order_count; ++k) {
       const double served = perturbed.log_value(k, s), own = table_layout.log_value(k, s);
       if (own < -230) continue;  // below 1e-100 the grid is allowed 100 times more
-      ASSERT_LE(std::fabs(served - own), perturbed.grid_error() + 4e-16 * std::fabs(own)) << s << " order " << k;
+      // (next to s = 0 the grid meets the exact X_n(0) instead of the table's own value there)
+      if (std::fabs(s) > 1e-6) {
+        ASSERT_LE(std::fabs(served - own), perturbed.grid_error() + 4e-16 * std::fabs(own)) << s << " order " << k;
+      }
       ASSERT_NEAR(served, reference.log_value(k, s), 1e-8) << s << " order " << k;
     }
   }

@@ -3,10 +3,13 @@
 // numbers), exact shapes, memory budgets, and serving a scene from the default table.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "asperity/asperity.h"
@@ -155,6 +158,96 @@ TEST(SceneTable, MeetsItsToleranceAgainstIndependentReferencesFrom1e4To1e12) {
                 views[0].curve.memory_bytes() / 1024.0, views[1].curve.memory_bytes() / 1024.0,
                 views[2].curve.memory_bytes() / 1024.0);
   }
+}
+
+// Issue #10: exact-shape scene tables at small shapes (the tail's power terms s^(n + a), the
+// bounded side's d^(n + a)) and at a large one (steep near s = 1), checked next to s = 0 and
+// near s = 1 against references computed here, within the tolerance asked. A scene per tolerance;
+// ranges that keep X >= 1e-100.
+std::string first_contact_scene(double tolerance, const std::vector<double>& shapes) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "name = \"first contact\"\nmax_rel_error = " << tolerance << "\n";
+  for (const char* side : {"tail", "bounded"})
+    for (double shape : shapes) {
+      const bool tail = std::string(side) == "tail";
+      text << "[[curve]]\ndistribution = \"weibull\"\nshape = " << shape << "\nside = \"" << side
+           << "\"\norders = [0, 0.5, 1, 1.5, 2, 2.5]\nseparation = "
+           << (tail ? (shape > 10 ? "[-1, 1.3]" : "[-1, 3]") : "[-2, -1e-15]") << "\n";
+    }
+  return text.str();
+}
+
+// The points of issue #10 inside a curve's range: +-1e-15 ... +-1e-3 (and s = 0), and near
+// s = 1 at large shapes.
+std::vector<double> first_contact_points(const SceneCurveView& view) {
+  std::vector<double> points = {0.0};
+  for (double magnitude : {1e-15, 1e-12, 1e-9, 1e-6, 1e-3}) points.insert(points.end(), {-magnitude, magnitude});
+  if (view.spec.shape > 10) points.insert(points.end(), {0.98, 1.0, 1.035, 1.07, 1.12, 1.2, 1.3});
+  std::vector<double> inside;
+  for (double point : points)
+    if (point >= view.separation_min && point <= view.separation_max) inside.push_back(point);
+  return inside;
+}
+
+// Generates the scenes at each tolerance and checks them; prints knots, memory, time.
+void check_first_contact_scenes(const std::vector<double>& tolerances, const std::vector<double>& shapes) {
+  std::map<std::tuple<int, double, int, double>, double> references;  // (side, shape, order, s)
+  auto reference = [&](const SceneCurveView& view, int twice_order, double separation) {
+    const auto key = std::make_tuple(static_cast<int>(view.spec.side), view.spec.shape, twice_order, separation);
+    auto found = references.find(key);
+    if (found != references.end()) return found->second;
+    const auto exact = test::closed_form_log(view.spec.distribution, view.spec.side, view.spec.shape, twice_order,
+                                             separation);
+    const double value = static_cast<double>(
+        exact ? *exact
+              : test::reference_log(view.spec.distribution, view.spec.side, view.spec.shape, order_of(twice_order),
+                                    separation));
+    references.emplace(key, value);
+    return value;
+  };
+  for (double tolerance : tolerances) {
+    const Scene scene = parse_scene(first_contact_scene(tolerance, shapes), "first-contact.toml");
+    const auto start = std::chrono::steady_clock::now();
+    const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 0);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/first-contact-scene.h5";
+    tablegen::write_table_file(result.table, path);
+    const Table table = Table::open(path);
+    const std::vector<SceneCurveView> views = serve_scene(table, scene);
+    ASSERT_EQ(views.size(), result.curves.size());
+    std::printf("first-contact scene at %.0e: generated in %.1f s\n", tolerance, seconds);
+    for (std::size_t c = 0; c < views.size(); ++c) {
+      const SceneCurveView& view = views[c];
+      EXPECT_LE(view.error_bound, tolerance);
+      double worst = 0;
+      std::string where;
+      for (double separation : first_contact_points(view))
+        for (int twice_order : view.spec.twice_orders) {
+          const double expected = reference(view, twice_order, separation);
+          const double got = view.curve.log_value(twice_order, separation);
+          const double error = std::fabs(std::expm1(got - expected));
+          char point[160];
+          std::snprintf(point, sizeof point, "%s shape %g order %g s %g", to_string(view.spec.side), view.spec.shape,
+                        order_of(twice_order), separation);
+          EXPECT_LE(error, tolerance) << point << " asked " << tolerance << ": value " << got << " reference "
+                                      << expected;
+          if (error > worst || where.empty()) worst = error, where = point;
+        }
+      std::printf("  %-8s a = %-5g asked %.0e: measured %.1e (%s), stored %.1e, %d knots, %.1f KiB\n",
+                  to_string(view.spec.side), view.spec.shape, tolerance, worst, where.c_str(),
+                  result.curves[c].achieved_error, result.curves[c].knots, result.curves[c].memory_bytes / 1024.0);
+    }
+  }
+}
+
+// The default run: every shape, at the middle tolerance. The full matrix is labelled slow.
+TEST(SceneTable, ExactShapesMeetTheirToleranceNextToFirstContact) {
+  check_first_contact_scenes({1e-8}, {0.3, 0.41, 0.77, 19.3});
+}
+
+TEST(SceneTableSlow, ExactShapesMeetTheirToleranceNextToFirstContactFrom1e6To1e10) {
+  check_first_contact_scenes({1e-6, 1e-8, 1e-10}, {0.3, 0.41, 0.77, 19.3});
 }
 
 TEST(SceneTable, ServesOnlyItsOwnShapesAndOpensFromC) {

@@ -88,11 +88,17 @@ struct Builder {
   std::array<int, order_count> orders{};  // the held orders
   int held = 0;
   double achieved = 0;
+  // per order, per side (0: s > 0, 1: s < 0): below this |s| the grid answers at_zero
+  std::array<std::array<double, 2>, order_count> first_contact_zone{};
 
-  void evaluate(double separation, double* out) const {  // ln X of the held orders
+  // ln X of the held orders at a point of the binade [base, 2 base) of |s| (the zone is whole
+  // binades: both ends of one answer alike)
+  void evaluate(double separation, double base, double* out) const {
     double all[order_count];
     reference.log_values(separation, all);
+    const int side = separation < 0;
     for (int k = 0; k < held; ++k) {
+      if (base < first_contact_zone[orders[k]][side]) all[orders[k]] = reference.next_to_zero[side][orders[k]];
       out[k] = all[orders[k]];
       if (!std::isfinite(out[k]))
         throw Error("the table gives ln X_" + std::to_string(order_of(orders[k])) + " = " + std::to_string(out[k]) +
@@ -119,13 +125,13 @@ struct Builder {
           continue;
         }
         double point[order_count];
-        evaluate(at(n.y[k]), point);
+        evaluate(at(n.y[k]), base, point);
         for (int o = 0; o < held; ++o) values[o * 6 + k] = point[o];
       }
       for (int o = 0; o < held; ++o) left[o] = values[o * 6 + 5];
       for (int g = 0; g < 3; ++g) {
         double point[order_count];
-        evaluate(at(n.check[g]), point);
+        evaluate(at(n.check[g]), base, point);
         for (int o = 0; o < held; ++o) checks[o * 3 + g] = point[o];
       }
       for (int o = 0; o < held; ++o) {
@@ -153,6 +159,41 @@ int biased_exponent(double magnitude) {
 }
 
 }  // namespace
+
+// Next to s = 0 the grid answers what the closed forms give just inside |s| = 2^-70 (X_n(0),
+// or exp(-s^a) there for the Weibull order 0), for |s| < z. With D the larger of the
+// tolerance and how far the table's value at 2^-69 is from that, past z (at every power of two
+// up to 2^-10) ln X_n has moved the right way by more than 2 D and monotonely, so the grid's
+// values (within the tolerance) lie beyond the zone's on their side: monotone across s = 0.
+// The table's own value wanders next to s = 0 at small shapes; the zone also covers that
+// wander where it stays within 20 D. Inside the zone the answer is within ~5 D of the truth.
+void find_first_contact_zones(Builder& builder, double upper_limit, int side) {
+  const GridReference& reference = builder.reference;
+  const double sign = side ? -1.0 : 1.0;
+  double near[order_count], previous[order_count], moved[order_count], allowed[order_count];
+  reference.log_values(sign * 2 * zero_zone, near);
+  for (int k = 0; k < order_count; ++k) {
+    const double closed_form = reference.next_to_zero[side][k];
+    const double difference = std::max(std::fabs(near[k] - closed_form),
+                                       builder.tolerance + 64 * 2.220446049250313e-16 * std::fabs(closed_form));
+    const bool applies = std::isfinite(difference) && std::isfinite(closed_form) && (reference.order_mask >> k & 1u);
+    allowed[k] = applies ? 2 * difference : 0;
+    builder.first_contact_zone[k][side] = applies ? 4 * zero_zone : 0;
+    previous[k] = near[k];
+  }
+  const double last = std::min(upper_limit, 1.0 / 1024);
+  for (double top = 4 * zero_zone; top <= last; top *= 2) {
+    reference.log_values(sign * top, moved);
+    for (int k = 0; k < order_count; ++k) {
+      if (allowed[k] == 0) continue;
+      // ln X_n falls with s: down on s > 0, up on s < 0
+      const double away = sign * (near[k] - moved[k]), step = sign * (previous[k] - moved[k]);
+      const bool clear = away > allowed[k] && step >= 0;
+      if (!clear && std::fabs(away) <= 10 * allowed[k]) builder.first_contact_zone[k][side] = 2 * top;
+      previous[k] = moved[k];
+    }
+  }
+}
 
 FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) {
   if (!(tolerance > 0)) throw Error("the lookup grid's tolerance must be positive");
@@ -182,6 +223,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
     if (!(upper >= lower) || !std::isfinite(upper)) continue;  // not covered
     side.lower = lower;
     side.upper = upper;
+    find_first_contact_zones(builder, upper, sign_bit);
     const int e_lo = biased_exponent(lower), e_hi = biased_exponent(upper);
     side.offset = static_cast<std::int32_t>(grid.directory.size()) - e_lo;
     grid.directory.resize(grid.directory.size() + (e_hi - e_lo + 1));

@@ -179,6 +179,12 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
   // weights: its variable u = sqrt(s1/s) does not depend on the shape.
   std::vector<double> blended(stride, 0.0);
   ShapeBlend blend;
+  CurveOptions options;  // a table that gives its grid shapes' tolerances: the largest of the stencil's
+  if (!set->grid_tolerance.empty()) {
+    options.grid_tolerance = 0;
+    for (std::size_t i = 0; i < points; ++i)
+      options.grid_tolerance = std::max(options.grid_tolerance, set->grid_tolerance[first + i]);
+  }
   for (std::size_t i = 0; i < points; ++i) {
     const double* source = &set->knots[(first + i) * stride];
     for (std::size_t k = 0; k < stride; ++k) blended[k] += weights[i] * source[k];
@@ -186,7 +192,7 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
     blend.knot_data.push_back(source);
     blend.weights.push_back(weights[i]);
   }
-  return Curve(distribution, side, shape, set->layout, blended.data(), blend, order_mask);
+  return Curve(distribution, side, shape, set->layout, blended.data(), blend, order_mask, options);
 }
 
 }  // namespace asperity

@@ -25,6 +25,10 @@ struct GridReference {
   unsigned order_mask = 0;
   double table_min = 0, table_max = 0;  // the grid covers these, cut to [grid_min, grid_max]
   double grid_min = -1.0 / 0.0, grid_max = 1.0 / 0.0;
+  // ln X_n as the curve answers it just inside |s| = 2^-70 on each side ([0]: s > 0, [1]:
+  // s < 0), where the closed forms answer: X_n(0), or exp(-s^a) for the Weibull order 0;
+  // -inf on the bounded side. What the grid meets next to s = 0.
+  std::array<std::array<double, order_count>, 2> next_to_zero{};
 };
 
 // The grid covers |s| from 2^-70 to the table's ends on each side the table covers. In each
@@ -32,7 +36,9 @@ struct GridReference {
 // points to `tolerance` in ln X (absolute: relative in X) where X >= 1e-100, and to 100 times
 // that below. A binade whose error stops falling (less than 16x over four doublings: the
 // table's pieces meet only to its own error there) keeps what it has, and the error is reported
-// (FastGridBuild::achieved, Curve::grid_error). Throws asperity::Error if the compact curve is
+// (FastGridBuild::achieved, Curve::grid_error). Next to s = 0 the grid answers the closed
+// form's value (next_to_zero) until ln X_n has moved by more than twice the tolerance and the
+// table's own difference there: every curve monotone across s = 0, within ~5 times that. Throws asperity::Error if the compact curve is
 // not finite somewhere inside its range, or if the grid would take more than 2^17 interval fits
 // (the default table's curves take at most ~3,100, those of shapes 0.34-35 ~7,600).
 FastGridBuild build_fast_grid(const GridReference& reference, double tolerance);
