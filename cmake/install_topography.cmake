@@ -16,3 +16,5 @@ if(NOT ASPERITY_SHARED)
 endif()
 install(PROGRAMS "${PROJECT_SOURCE_DIR}/topography/scripts/surface_plots.py"
         DESTINATION "${ASPERITY_INSTALL_TABLE_DIR}" COMPONENT runtime)
+# libasperity.so.0 beside it, wherever the installed tree is
+asperity_install_rpath(asperity_topography "${CMAKE_INSTALL_LIBDIR}")
