@@ -1,24 +1,26 @@
 ! asperity from Fortran (`use asperity`, include/asperity/asperity.f90): the Gaussian tail,
 ! Greenwood-Tripp F_5/2 for a mixed-lubrication code, a stiffness/load ratio, a batch of
-! separations, and the error path. Build against an installed tree with gfortran alone:
+! separations, a curve of two orders only, a physical surface given by its rms summit height,
+! and the error paths with their status codes. Build against an installed tree with gfortran alone:
 !   gfortran fortran_example.f90 $(pkg-config --cflags --libs asperity)
 program fortran_example
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use asperity
   implicit none
 
   character(kind=c_char, len=512) :: err
-  character(kind=c_char), dimension(:), pointer :: version
-  type(c_ptr) :: table, gaussian, missing
-  real(c_double) :: h, f52, ratio
+  character(kind=c_char, len=64), target :: path
+  type(c_ptr) :: table, gaussian, missing, worn, model
+  type(asperity_physical_state) :: state
+  real(c_double) :: h, f52, ratio, sigma
   real(c_double) :: separations(5), values(5)
   integer(c_int) :: status
   integer :: i
 
-  call c_f_pointer(asperity_version(), version, [16])
-  write (*, '(a, 16a)') 'asperity ', version(1:index_of_nul(version) - 1)
+  write (*, '(2a)') 'asperity ', c_text(asperity_version())
 
-  table = asperity_table_open(c_null_ptr, err, int(len(err), c_size_t))
-  if (.not. c_associated(table)) then
+  status = asperity_table_load(c_null_ptr, table, err, int(len(err), c_size_t))  ! the default table
+  if (status /= ASPERITY_OK) then
     write (*, '(a)') err(1:index(err, c_null_char) - 1)
     stop 1
   end if
@@ -46,20 +48,60 @@ program fortran_example
       stop 'the batch path disagrees with the scalar one'
   end do
 
+  ! A worn surface (Weibull a = 1.6, bounded side) holding only stiffness and load: less memory,
+  ! NaN for the orders it does not hold.
+  status = asperity_curve_load(table, "weibull"//c_null_char, "bounded"//c_null_char, 1.6_c_double, &
+                               ior(ASPERITY_ORDER_I1_2, ASPERITY_ORDER_I3_2), worn, err, int(len(err), c_size_t))
+  if (status /= ASPERITY_OK) stop 'cannot load the worn curve'
+  if (asperity_curve_order_mask(worn) /= ior(ASPERITY_ORDER_I1_2, ASPERITY_ORDER_I3_2)) stop 'wrong order mask'
+  if (.not. ieee_is_nan(asperity_eval(worn, 0_c_int, -0.5_c_double))) stop 'an order not held answered'
+  write (*, '(a, es16.7)') 'worn surface, K_3/2(-0.5) =', asperity_eval(worn, 3_c_int, -0.5_c_double)
+  call asperity_curve_close(worn)
+
+  ! A physical surface given by its rms summit height (0.5 um), as GW users measure it: the
+  ! Weibull scale sigma_s is rms / 0.574 for a = 1.6.
+  sigma = asperity_height_scale_from_rms("weibull"//c_null_char, 1.6_c_double, 0.5e-6_c_double)
+  write (*, '(a, es12.5, a)') 'rms summit height 0.5 um: Weibull scale sigma_s =', sigma, ' m'
+  model = asperity_model_open(table, "weibull"//c_null_char, "tail"//c_null_char, 1.6_c_double, sigma, &
+                              1e-4_c_double, 1e10_c_double, 1e-4_c_double, &
+                              asperity_contact_modulus(2.1e11_c_double, 0.3_c_double, 2.1e11_c_double, 0.3_c_double), &
+                              err, int(len(err), c_size_t))
+  if (.not. c_associated(model)) stop 'cannot open the model'
+  status = asperity_model_at_load(model, 1.0_c_double, state)
+  if (status /= ASPERITY_OK) stop 'the load query failed'
+  write (*, '(a, es12.5, a, es12.5, a)') 'at 1 N: separation from the mean summit height', state%mean_separation, &
+    ' m, stiffness', state%stiffness, ' N/m'
+  call asperity_model_close(model)
+
+  ! Errors: a status and a message.
   missing = asperity_curve_open(table, "weibull"//c_null_char, "tail"//c_null_char, 1000.0_c_double, &
                                 err, int(len(err), c_size_t))
   if (c_associated(missing)) stop 'a shape outside the table was accepted'
   write (*, '(a)') 'expected error: '//err(1:index(err, c_null_char) - 1)
+  path = "/nonexistent/table.h5"//c_null_char
+  status = asperity_table_load(c_loc(path), missing, err, int(len(err), c_size_t))
+  if (status /= ASPERITY_FILE_MISSING .or. c_associated(missing)) stop 'a missing file was not reported'
+  write (*, '(a)') 'expected status: '//c_text(asperity_status_string(status))
 
   call asperity_curve_close(gaussian)
   call asperity_table_close(table)
 
 contains
 
-  pure integer function index_of_nul(text)
-    character(kind=c_char), intent(in) :: text(:)
-    do index_of_nul = 1, size(text)
-      if (text(index_of_nul) == c_null_char) return
+  ! A NUL-terminated C string in static storage (asperity_version, asperity_status_string) as text.
+  function c_text(pointer) result(text)
+    type(c_ptr), intent(in) :: pointer
+    character(len=:), allocatable :: text
+    character(kind=c_char), dimension(:), pointer :: chars
+    integer :: n, k
+    call c_f_pointer(pointer, chars, [4096])
+    n = 0
+    do while (chars(n + 1) /= c_null_char)
+      n = n + 1
+    end do
+    allocate (character(len=n) :: text)
+    do k = 1, n
+      text(k:k) = chars(k)
     end do
   end function
 

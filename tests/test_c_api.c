@@ -124,6 +124,40 @@ static void overlapping_batches(const asperity_curve *curve) {
   }
 }
 
+/* The height scale from the rms summit height: against closed forms (Gamma by the C library). */
+static void rms_height_scale(const asperity_table *table) {
+  char err[512];
+  const double c2 = sqrt(1.0 - acos(-1.0) / 4.0); /* a = 2: Gamma(2) - Gamma(3/2)^2 = 1 - pi/4 */
+  const double c16 = sqrt(tgamma(1.0 + 2.0 / 1.6) - pow(tgamma(1.0 + 1.0 / 1.6), 2));
+  double scale;
+  asperity_model *model;
+  asperity_physical_state state;
+  CHECK(fabs(asperity_height_scale_from_rms("weibull", 2.0, 1e-6) - 1e-6 / c2) < 1e-14 * (1e-6 / c2));
+  scale = asperity_height_scale_from_rms("weibull", 1.6, 5e-7);
+  CHECK(fabs(scale - 5e-7 / c16) < 1e-13 * scale);
+  CHECK(fabs(scale - 8.715e-7) < 1e-3 * scale); /* what `asperity contact --rms` reports */
+  CHECK(asperity_height_scale_from_rms("gaussian", NAN, 3e-7) == 3e-7); /* the Gaussian's sigma is the rms */
+  CHECK(isnan(asperity_height_scale_from_rms(NULL, 2.0, 1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("beta", 2.0, 1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", 2.0, 0.0)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", 2.0, -1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", 2.0, NAN)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", 2.0, INFINITY)));
+  CHECK(isnan(asperity_height_scale_from_rms("gaussian", 2.0, -1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", 0.0, 1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", -1.6, 1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", NAN, 1e-6)));
+  CHECK(isnan(asperity_height_scale_from_rms("weibull", 1e-3, 1e-6))); /* c_a overflows */
+  /* a model with that scale: separations from the origin and from the mean summit height differ by
+   * the mean summit height Gamma(1 + 1/a) sigma_s */
+  model = asperity_model_open(table, "weibull", "tail", 1.6, scale, 1e-4, 1e10, 1e-4, 1e11, err, sizeof err);
+  CHECK(model != NULL);
+  if (!model) return;
+  CHECK(asperity_model_at_separation(model, 1e-6, &state) == ASPERITY_OK);
+  CHECK(fabs((state.separation - state.mean_separation) - tgamma(1.0 + 1.0 / 1.6) * scale) < 1e-12 * scale);
+  asperity_model_close(model);
+}
+
 int main(void) {
   char err[512];
   asperity_table *table = asperity_table_open(NULL, err, sizeof err);
@@ -197,6 +231,7 @@ int main(void) {
 
   table_statuses();
   curve_statuses(table);
+  rms_height_scale(table);
   overlapping_batches(curve);
 
   asperity_curve_close(curve);

@@ -162,4 +162,35 @@ TEST(Curve, AGridOverPartOfTheRange) {
   }
 }
 
+// Table::curve with the grid's options given: the same curve as made from the knots with them,
+// at a grid shape and between grid shapes.
+TEST(Curve, TableCurveWithOptions) {
+  CurveOptions options;
+  options.grid_min_separation = -1.5;
+  options.grid_max_separation = -0.5;
+  options.grid_tolerance = 1e-9;
+  const CurveSet* set = table().find(Distribution::weibull, Side::bounded);
+  std::size_t index = 0;
+  while (set->shapes[index] != 2.0) ++index;
+  const Curve from_knots(Distribution::weibull, Side::bounded, 2.0, set->layout,
+                         &set->knots[index * set->curve_stride()], Curve::all_orders, options);
+  const Curve from_table = table().curve(Distribution::weibull, Side::bounded, 2.0, Curve::all_orders, options);
+  EXPECT_EQ(from_table.grid_intervals(), from_knots.grid_intervals());
+  for (double s : {-3.0, -1.0, -0.3})
+    for (int k = 0; k < order_count; ++k) EXPECT_TRUE(same_bits(from_table.log_value(k, s), from_knots.log_value(k, s)));
+
+  CurveOptions coarse;
+  coarse.grid_tolerance = 1e-7;
+  const Curve between = table().curve(Distribution::weibull, Side::tail, 1.73, Curve::all_orders, coarse);
+  const Curve fine = table().curve(Distribution::weibull, Side::tail, 1.73);
+  EXPECT_LT(between.grid_intervals(), fine.grid_intervals());
+  EXPECT_LE(between.grid_error(), 1e-7);
+  for (double s = -3; s <= 6; s += 0.0625)
+    for (int k = 0; k < order_count; ++k) EXPECT_NEAR(between.log_value(k, s), fine.log_value(k, s), 2e-7) << s;
+  CurveOptions empty;
+  empty.grid_min_separation = 1;
+  empty.grid_max_separation = 0;
+  EXPECT_THROW(table().curve(Distribution::gaussian, Side::tail, 2.0, Curve::all_orders, empty), Error);
+}
+
 }  // namespace

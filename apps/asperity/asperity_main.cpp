@@ -19,8 +19,6 @@
 
 int main(int argc, char** argv) {
   using namespace asperity::cli;
-  // `surface` parses its own command line (surface_command.hpp) until it is registered like the others
-  if (argc >= 2 && std::string(argv[1]) == "surface") return surface_command(argc - 1, argv + 1);
   CLI::App app("asperity: Greenwood-Williamson asperity integrals from precomputed tables", "asperity");
   app.require_subcommand(1);
   app.get_formatter()->column_width(34);
@@ -28,8 +26,7 @@ int main(int argc, char** argv) {
   add_eval_command(app);
   add_summary_command(app);
   add_contact_command(app);
-  app.footer(std::string("Also: surface FILE ...  a measured height map to its statistics, fitted height\n"
-                         "  distributions and contact curves (asperity surface --help).\n"
-                         "Run 'asperity COMMAND --help' for a command's options.\n") + exit_status_help);
+  add_surface_command(app);
+  app.footer(std::string("Run 'asperity COMMAND --help' for a command's options.\n") + exit_status_help);
   return run(app, argc, argv);
 }

@@ -1,7 +1,8 @@
 #include "surface_command.hpp"
 
-#include <CLI/CLI.hpp>
+#include <cmath>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -11,139 +12,196 @@
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
+#include "command_line.hpp"
+#include "number_text.hpp"
 
 namespace asperity::cli {
 namespace {
 namespace topo = asperity::topography;
+
+constexpr double not_given = NAN;  // add_number only ever stores finite numbers
+
+struct Options {
+  std::string file, format, pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report;
+  double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given, area = not_given,
+         confidence = not_given;
+  long long window = 1, bootstrap = 199, seed = 1, threads = 0;
+  bool json = false, no_level = false, no_height_fit = false;
+};
+
+bool given(double value) { return !std::isnan(value); }
+
+[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
 std::vector<std::string> split_commas(const std::string& text) {
   std::vector<std::string> parts;
   std::stringstream in(text);
   std::string part;
   while (std::getline(in, part, ',')) parts.push_back(part);
+  if (!text.empty() && text.back() == ',') parts.push_back("");
   return parts;
 }
 
-double positive_number(const std::string& text, const char* what) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
+// A comma-separated list of positive numbers, each read by the one reader.
+std::vector<double> positive_numbers(const std::string& text, const std::string& name) {
+  std::vector<double> values;
+  for (const std::string& part : split_commas(text)) {
+    const double value = number_from_text(part, name);
+    if (!(value > 0)) usage(name + ": '" + quote_text(part) + "' is not a positive number");
+    values.push_back(value);
   }
-  if (used != text.size() || !(value > 0) || !std::isfinite(value))
-    throw Error(std::string(what) + ": '" + text + "' is not a positive number");
-  return value;
+  return values;
+}
+
+topo::ReadOptions read_options(const Options& o) {
+  topo::ReadOptions read;
+  if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
+    usage("--format: unknown format '" + quote_text(o.format) + "' (auto, x3p, gsf, matrix, xyz)");
+  read.lateral_unit = o.unit;
+  read.height_unit = o.height_unit;
+  if (!o.pixel_size.empty()) {
+    const std::vector<std::string> parts = split_commas(o.pixel_size);
+    if (parts.empty() || parts.size() > 2) usage("--pixel-size: one length, or two (x,y)");
+    read.pixel_size_x = topo::parse_length(parts[0], o.unit);
+    read.pixel_size_y = parts.size() == 2 ? topo::parse_length(parts[1], o.unit) : read.pixel_size_x;
+    if (!(read.pixel_size_x > 0 && read.pixel_size_y > 0 && std::isfinite(read.pixel_size_x) &&
+          std::isfinite(read.pixel_size_y)))
+      usage("--pixel-size must be positive");
+  }
+  return read;
+}
+
+int run_surface(const Options& o, const CLI::App& command) {
+  topo::AnalysisOptions options;
+  options.read = read_options(o);
+  options.level = !o.no_level;
+  options.summits.window = static_cast<int>(o.window);
+  if (!o.summit_threshold.empty()) options.summits.min_drop = topo::parse_length(o.summit_threshold);
+  options.assessment.bootstrap = static_cast<int>(o.bootstrap);
+  options.assessment.seed = static_cast<std::uint64_t>(o.seed);
+  options.assessment.threads = static_cast<int>(o.threads);
+  if (given(o.confidence)) {
+    if (!(o.confidence > 0 && o.confidence < 1)) usage("--confidence must lie between 0 and 1");
+    options.assessment.confidence = o.confidence;
+  }
+  options.fit_heights = !o.no_height_fit;
+  if (given(o.area) && !(o.area > 0)) usage("--area must be positive");
+
+  const bool four_moduli = given(o.e1) || given(o.nu1) || given(o.e2) || given(o.nu2);
+  if (four_moduli && given(o.modulus)) usage("give --modulus or --e1 --nu1 --e2 --nu2, not both");
+  if (four_moduli && !(given(o.e1) && given(o.nu1) && given(o.e2) && given(o.nu2)))
+    usage("--e1 --nu1 --e2 --nu2 go together");
+  const double modulus = four_moduli ? contact_modulus_from(o.e1, o.nu1, o.e2, o.nu2) : o.modulus;
+  const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area);
+  if (contact && !given(modulus))
+    usage("the contact curves (--pressure, --load, --area, --table) need the contact modulus: --modulus E* [Pa] "
+          "or --e1 --nu1 --e2 --nu2");
+  if (contact && !(modulus > 0)) usage("--modulus must be positive");
+  std::vector<double> pressures, loads;
+  if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
+  if (!o.loads.empty()) loads = positive_numbers(o.loads, "--load");
+
+  topo::HeightMap map = topo::read_height_map(o.file, options.read);
+  if (contact) {
+    topo::ContactOptions curves;
+    curves.contact_modulus = modulus;
+    curves.nominal_area = given(o.area) ? o.area : 0;
+    curves.table_path = o.table;
+    curves.threads = options.assessment.threads;
+    curves.pressures = pressures;
+    // loads over the nominal area: A0 given, or the measured area
+    const double a0 = given(o.area) ? o.area : map.width() * map.length();
+    for (double load : loads) curves.pressures.push_back(load / a0);
+    options.contact = curves;
+  }
+  const topo::SurfaceAnalysis analysis = topo::analyse_height_map(std::move(map), options);
+  std::cout << (o.json ? topo::analysis_json(analysis) : topo::analysis_summary(analysis));
+  if (!o.report.empty()) {
+    const topo::ReportOutcome outcome = topo::write_report(analysis, o.report);
+    if (!outcome.plots) note(command, outcome.plot_note);
+    if (!o.json) std::cout << "  report: " << outcome.files.front() << " (" << outcome.files.size() << " files)\n";
+  }
+  return exit_success;
 }
 
 }  // namespace
 
-int surface_command(int argc, char** argv, std::ostream& out, std::ostream& err) {
-  CLI::App app{
-      "asperity surface: a measured height map (X3P, Gwyddion .gsf or ASCII matrix, xyz) to its statistics, "
-      "summits, the Gaussian and the two three-parameter Weibulls fitted to its summit heights with their "
-      "goodness of fit, and (with --modulus) the contact curves of each fit side by side.",
-      "asperity surface"};
-  std::string file, format = "auto", pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report;
-  double modulus = 0, area = 0, confidence = 0.95, e1 = 0, nu1 = 0, e2 = 0, nu2 = 0;
-  int window = 1, bootstrap = 199, threads = 0;
-  std::uint64_t seed = 1;
-  bool json = false, no_level = false, no_height_fit = false;
-  app.add_option("file", file, "the height map")->required();
-  app.add_option("--format", format, "auto (default: by content, then extension), x3p, gsf, matrix, xyz");
-  app.add_option("--pixel-size", pixel_size,
-                 "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "
-                 "else it overrides the file's");
-  app.add_option("--unit", unit, "unit of x, y (and of heights unless --height-unit) for files without units (xyz), "
-                                 "and of a bare --pixel-size");
-  app.add_option("--height-unit", height_unit, "unit of the heights in the file (overrides the file's)");
-  app.add_flag("--no-level", no_level, "do not subtract the least-squares plane");
-  app.add_option("--summit-window", window, "summits: highest within this many points (1: the 8 neighbours)");
-  app.add_option("--summit-threshold", summit_threshold,
-                 "summits: at least this high above the mean of their 8 neighbours (a length with its unit, e.g. 2nm)");
-  app.add_option("--modulus", modulus, "contact modulus E* [Pa] (plane strain): gives the contact curves");
-  app.add_option("--e1", e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)");
-  app.add_option("--nu1", nu1, "Poisson's ratio of body 1");
-  app.add_option("--e2", e2, "Young's modulus of body 2 [Pa]");
-  app.add_option("--nu2", nu2, "Poisson's ratio of body 2");
-  app.add_option("--pressure", pressures, "nominal pressures of interest [Pa], comma-separated (default E* x 1e-5,1e-4,1e-3)");
-  app.add_option("--load", loads, "loads of interest [N], comma-separated (over the nominal area)");
-  app.add_option("--area", area, "nominal contact area A0 [m^2] (default: the measured area)");
-  app.add_option("--bootstrap", bootstrap, "parametric bootstrap samples for the p-values and intervals (default 199)");
-  app.add_option("--confidence", confidence, "of the intervals (default 0.95)");
-  app.add_option("--seed", seed, "of the bootstrap (default 1: reproducible)");
-  app.add_option("--threads", threads, "for the bootstrap and the scene tables (default: all cores)");
-  app.add_flag("--no-height-fit", no_height_fit, "fit the summit heights only");
-  app.add_option("--table", table, "a full table for the Weibull curves instead of exact-shape scene tables");
-  app.add_option("--report", report, "write a report directory: report.md, report.json, curves.csv, summits.csv, plots");
-  app.add_flag("--json", json, "write the JSON to standard output instead of the summary");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    std::ostringstream message, help;
-    const int status = app.exit(error, help, message);
-    out << help.str();
-    err << message.str();
-    return status == 0 ? 0 : 2;
-  }
-
-  try {
-    topo::AnalysisOptions options;
-    if (!topo::parse_height_map_format(format, options.read.format)) throw Error("--format: unknown format '" + format + "'");
-    options.read.lateral_unit = unit;
-    options.read.height_unit = height_unit;
-    if (!pixel_size.empty()) {
-      const std::vector<std::string> parts = split_commas(pixel_size);
-      if (parts.empty() || parts.size() > 2) throw Error("--pixel-size: one length, or two (x,y)");
-      options.read.pixel_size_x = topo::parse_length(parts[0], unit);
-      options.read.pixel_size_y = parts.size() == 2 ? topo::parse_length(parts[1], unit) : options.read.pixel_size_x;
-      if (!(options.read.pixel_size_x > 0 && options.read.pixel_size_y > 0)) throw Error("--pixel-size must be positive");
-    }
-    options.level = !no_level;
-    options.summits.window = window;
-    if (!summit_threshold.empty()) options.summits.min_drop = topo::parse_length(summit_threshold);
-    options.assessment.bootstrap = bootstrap;
-    options.assessment.seed = seed;
-    options.assessment.threads = threads;
-    options.assessment.confidence = confidence;
-    options.fit_heights = !no_height_fit;
-    if (bootstrap < 0) throw Error("--bootstrap must be >= 0");
-    if (e1 != 0 || e2 != 0) {
-      if (modulus != 0) throw Error("give --modulus or --e1 --nu1 --e2 --nu2, not both");
-      modulus = contact_modulus_from(e1, nu1, e2, nu2);
-    }
-    if (modulus != 0 || !pressures.empty() || !loads.empty()) {
-      if (!(modulus > 0)) throw Error("the contact curves need the contact modulus: --modulus E* [Pa]");
-      topo::ContactOptions contact;
-      contact.contact_modulus = modulus;
-      contact.nominal_area = area;
-      contact.table_path = table;
-      contact.threads = threads;
-      for (const std::string& p : split_commas(pressures)) contact.pressures.push_back(positive_number(p, "--pressure"));
-      if (!loads.empty()) {
-        // loads over the nominal area: A0 given, or the measured area (known after reading)
-        topo::HeightMap probe = topo::read_height_map(file, options.read);
-        const double a0 = area > 0 ? area : probe.width() * probe.length();
-        for (const std::string& l : split_commas(loads)) contact.pressures.push_back(positive_number(l, "--load") / a0);
-      }
-      options.contact = contact;
-    }
-    const topo::SurfaceAnalysis analysis = topo::analyse_surface_file(file, options);
-    if (json) out << topo::analysis_json(analysis);
-    else out << topo::analysis_summary(analysis);
-    if (!report.empty()) {
-      const topo::ReportOutcome outcome = topo::write_report(analysis, report);
-      if (!outcome.plots) err << "asperity surface: " << outcome.plot_note << "\n";
-      if (!json) out << "  report: " << outcome.files.front() << " (" << outcome.files.size() << " files)\n";
-    }
-    return 0;
-  } catch (const std::exception& error) {
-    err << "asperity surface: " << error.what() << "\n";
-    return 2;
-  }
+void add_surface_command(CLI::App& app) {
+  auto options = std::make_shared<Options>();
+  Options& o = *options;
+  CLI::App* command = app.add_subcommand(
+      "surface", "a measured height map (X3P, Gwyddion .gsf or ASCII matrix, xyz) to its statistics, summits, the "
+                 "Gaussian and two three-parameter Weibulls fitted to its summit heights with their goodness of "
+                 "fit, and (with --modulus) the contact curves of each fit side by side");
+  command->add_option("FILE", o.file, "the height map")
+      ->required()
+      ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
+                             ""));
+  const char* reading = "Reading";
+  add_text(*command, "--format", o.format, "auto (default: by content, then extension), x3p, gsf, matrix, xyz")
+      ->type_name("NAME")->group(reading);
+  add_text(*command, "--pixel-size", o.pixel_size,
+           "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "
+           "else it overrides the file's")
+      ->type_name("LENGTH[,LENGTH]")->group(reading);
+  add_text(*command, "--unit", o.unit,
+           "unit of x, y (and of heights unless --height-unit) for files without units (xyz), and of a bare "
+           "--pixel-size")
+      ->type_name("UNIT")->group(reading);
+  add_text(*command, "--height-unit", o.height_unit, "unit of the heights in the file (overrides the file's)")
+      ->type_name("UNIT")->group(reading);
+  const char* analysis = "Analysis";
+  command->add_flag("--no-level", o.no_level, "do not subtract the least-squares plane")->group(analysis);
+  add_whole_number(*command, "--summit-window", o.window, 1, 1000,
+                   "summits: highest within this many points (1: the 8 neighbours; default 1)")
+      ->group(analysis);
+  add_text(*command, "--summit-threshold", o.summit_threshold,
+           "summits: at least this high above the mean of their 8 neighbours (a length with its unit, e.g. 2nm)")
+      ->type_name("LENGTH")->group(analysis);
+  add_whole_number(*command, "--bootstrap", o.bootstrap, 0, 100000,
+                   "parametric bootstrap samples for the p-values and intervals (default 199; 0: none)")
+      ->group(analysis);
+  add_number(*command, "--confidence", o.confidence, "of the intervals (default 0.95)")->type_name("P")->group(analysis);
+  add_whole_number(*command, "--seed", o.seed, 0, 9223372036854775807LL, "of the bootstrap (default 1: reproducible)")
+      ->group(analysis);
+  add_whole_number(*command, "--threads", o.threads, 0, 4096,
+                   "for the bootstrap and the scene tables (default 0: all cores)")
+      ->group(analysis);
+  command->add_flag("--no-height-fit", o.no_height_fit, "fit the summit heights only")->group(analysis);
+  const char* contact = "Contact curves (SI units)";
+  add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (plane strain): gives the contact curves")
+      ->type_name("PA")->group(contact);
+  add_number(*command, "--e1", o.e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)")
+      ->type_name("PA")->group(contact);
+  add_number(*command, "--nu1", o.nu1, "Poisson's ratio of body 1")->group(contact);
+  add_number(*command, "--e2", o.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group(contact);
+  add_number(*command, "--nu2", o.nu2, "Poisson's ratio of body 2")->group(contact);
+  add_text(*command, "--pressure", o.pressures,
+           "nominal pressures of interest [Pa], comma-separated (default E* x 1e-5,1e-4,1e-3)")
+      ->type_name("PA[,PA...]")->group(contact);
+  add_text(*command, "--load", o.loads, "loads of interest [N], comma-separated (over the nominal area)")
+      ->type_name("N[,N...]")->group(contact);
+  add_number(*command, "--area", o.area, "nominal contact area A0 [m^2] (default: the measured area)")
+      ->type_name("M2")->group(contact);
+  add_text(*command, "--table", o.table,
+           "a full table for the Weibull curves instead of exact-shape scene tables (default: scene tables made "
+           "for the fitted shapes)")
+      ->type_name("FILE")->group(contact);
+  const char* output = "Output";
+  add_text(*command, "--report", o.report,
+           "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
+      ->type_name("DIR")->group(output);
+  command->add_flag("--json", o.json, "write the JSON (schema asperity-surface/1) instead of the summary")
+      ->group(output);
+  command->footer(
+      "Output: a summary on standard output (or the JSON with --json): the map and how it was read,\n"
+      "height statistics, spectral moments and Nayak's alpha, summits (density, radius, their\n"
+      "dependence on the sampling interval), the three fits of the summit heights with Anderson-Darling\n"
+      "and Kolmogorov-Smirnov p-values by parametric bootstrap, AIC and a verdict, and with a modulus\n"
+      "the contact curves of each fit and their ratios at the pressures of interest (docs/surfaces.md).\n" +
+      std::string(exit_status_help));
+  CLI::App* self = command;
+  set_action(*command, [options, self] { return run_surface(*options, *self); });
 }
-
-int surface_command(int argc, char** argv) { return surface_command(argc, argv, std::cout, std::cerr); }
 
 }  // namespace asperity::cli

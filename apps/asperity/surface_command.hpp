@@ -1,13 +1,13 @@
 // `asperity surface FILE ...`: a measured surface to its statistics, summits, fitted height
 // distributions with the evidence, and the contact curves of each fit (docs/surfaces.md).
 #pragma once
-#include <iosfwd>
+
+namespace CLI {
+class App;
+}
 
 namespace asperity::cli {
 
-// argv[0] is "surface"; returns the exit status (0 ok, 2 bad usage, input or file). Writes the
-// summary (or the JSON with --json) to `out`, messages to `err`.
-int surface_command(int argc, char** argv, std::ostream& out, std::ostream& err);
-int surface_command(int argc, char** argv);
+void add_surface_command(CLI::App& app);
 
 }  // namespace asperity::cli

@@ -28,12 +28,37 @@ module asperity
   private
   public :: c_ptr, c_null_ptr, c_char, c_null_char, c_int, c_double, c_size_t, c_associated, c_loc, c_f_pointer
 
-  ! Status codes (asperity_eval_batch, asperity_contact, asperity_model_at_*).
+  ! Status codes (enum asperity_status): returned by asperity_table_load, asperity_curve_load,
+  ! asperity_eval_batch, asperity_contact, asperity_model_at_*; asperity_status_string says each in words.
   integer(c_int), parameter, public :: ASPERITY_OK = 0
-  integer(c_int), parameter, public :: ASPERITY_BAD_HANDLE = 1      ! NULL curve or output
-  integer(c_int), parameter, public :: ASPERITY_BAD_ORDER = 2       ! twice_order outside 0..5
+  integer(c_int), parameter, public :: ASPERITY_BAD_HANDLE = 1      ! NULL curve, model, table or output
+  integer(c_int), parameter, public :: ASPERITY_BAD_ORDER = 2       ! twice_order outside 0..5, or a bad order mask
   integer(c_int), parameter, public :: ASPERITY_BAD_SEPARATION = 3  ! NaN or infinite: those outputs NaN
   integer(c_int), parameter, public :: ASPERITY_BAD_PARAMETER = 4   ! a physical parameter <= 0 or not finite
+  ! asperity_table_load: why a table file was refused
+  integer(c_int), parameter, public :: ASPERITY_FILE_MISSING = 5     ! no such file
+  integer(c_int), parameter, public :: ASPERITY_FILE_UNREADABLE = 6  ! not a regular file, no permission, read error
+  integer(c_int), parameter, public :: ASPERITY_NOT_HDF5 = 7         ! neither an asperity table nor any HDF5 file
+  integer(c_int), parameter, public :: ASPERITY_OTHER_SCHEMA = 8     ! an HDF5 file, but not an asperity table
+  integer(c_int), parameter, public :: ASPERITY_OTHER_VERSION = 9    ! another format version: regenerate it
+  integer(c_int), parameter, public :: ASPERITY_DAMAGED = 10         ! truncated, extended or changed since written
+  integer(c_int), parameter, public :: ASPERITY_INVALID_TABLE = 11   ! intact, but breaks the schema or its limits
+  ! asperity_curve_load, asperity_model_open
+  integer(c_int), parameter, public :: ASPERITY_BAD_NAME = 12        ! dist or side is not a known name
+  integer(c_int), parameter, public :: ASPERITY_NOT_IN_TABLE = 13    ! no such curve set, or the shape is outside it
+  integer(c_int), parameter, public :: ASPERITY_NO_MEMORY = 14
+  integer(c_int), parameter, public :: ASPERITY_FAILURE = 15         ! anything else: the message says what
+
+  ! Order masks for asperity_curve_load: bit 2**twice_order keeps X_(twice_order/2); combine with
+  ! ior(). A curve of fewer orders takes less memory and answers NaN for the others.
+  integer(c_int), parameter, public :: ASPERITY_ORDER_I0 = 1_c_int    ! count
+  integer(c_int), parameter, public :: ASPERITY_ORDER_I1_2 = 2_c_int  ! stiffness
+  integer(c_int), parameter, public :: ASPERITY_ORDER_I1 = 4_c_int    ! area
+  integer(c_int), parameter, public :: ASPERITY_ORDER_I3_2 = 8_c_int  ! load
+  integer(c_int), parameter, public :: ASPERITY_ORDER_I2 = 16_c_int
+  integer(c_int), parameter, public :: ASPERITY_ORDER_I5_2 = 32_c_int
+  integer(c_int), parameter, public :: ASPERITY_ALL_ORDERS = 63_c_int
+  integer(c_int), parameter, public :: ASPERITY_CONTACT_ORDERS = 15_c_int  ! what asperity_contact needs
 
   ! asperity_contact: N summits of radius R, height scale sigma_s, modulus E* (docs/model.md section 3)
   type, bind(c), public :: asperity_contact_state
@@ -53,15 +78,28 @@ module asperity
     real(c_double) :: stiffness_over_load  ! 1/m
   end type
 
-  public :: asperity_table_open, asperity_table_close, asperity_curve_open, asperity_curve_close
+  public :: asperity_table_load, asperity_table_open, asperity_table_close
+  public :: asperity_curve_load, asperity_curve_open, asperity_curve_order_mask, asperity_curve_close
   public :: asperity_eval, asperity_eval_log, asperity_eval_batch, asperity_eval_log_batch
   public :: asperity_contact, asperity_standardized_from_origin, asperity_origin_from_standardized
-  public :: asperity_version, asperity_status_string, asperity_contact_modulus
+  public :: asperity_version, asperity_status_string, asperity_contact_modulus, asperity_height_scale_from_rms
   public :: asperity_model_open, asperity_model_close, asperity_model_at_separation, asperity_model_at_load
   public :: asperity_model_at_pressure, asperity_model_at_real_area
 
   interface
-    ! path: c_null_ptr for the default table ($ASPERITY_TABLE if set). c_null_ptr on failure.
+    ! Loads a table: path c_null_ptr for the default table ($ASPERITY_TABLE if set). Returns
+    ! ASPERITY_OK and sets table, or a status saying why (ASPERITY_FILE_MISSING ..
+    ! ASPERITY_INVALID_TABLE), table = c_null_ptr and a message in err.
+    function asperity_table_load(path, table, err, err_size) bind(c, name="asperity_table_load")
+      import :: c_ptr, c_char, c_size_t, c_int
+      type(c_ptr), value :: path
+      type(c_ptr), intent(out) :: table
+      character(kind=c_char), dimension(*) :: err
+      integer(c_size_t), value :: err_size
+      integer(c_int) :: asperity_table_load
+    end function
+
+    ! The same, returning the table, or c_null_ptr on failure (the reason only as text in err).
     function asperity_table_open(path, err, err_size) bind(c, name="asperity_table_open")
       import :: c_ptr, c_char, c_size_t
       type(c_ptr), value :: path
@@ -76,6 +114,29 @@ module asperity
     end subroutine
 
     ! dist: "weibull" or "gaussian"; side: "tail" or "bounded"; shape ignored for the Gaussian.
+    ! order_mask: ASPERITY_ALL_ORDERS or an ior() of ASPERITY_ORDER_* bits. Returns ASPERITY_OK and
+    ! sets curve, or a status (ASPERITY_BAD_NAME, ASPERITY_NOT_IN_TABLE, ASPERITY_BAD_ORDER, ...),
+    ! curve = c_null_ptr and a message in err.
+    function asperity_curve_load(table, dist, side, shape, order_mask, curve, err, err_size) &
+        bind(c, name="asperity_curve_load")
+      import :: c_ptr, c_char, c_double, c_int, c_size_t
+      type(c_ptr), value :: table
+      character(kind=c_char), dimension(*) :: dist, side, err
+      real(c_double), value :: shape
+      integer(c_int), value :: order_mask
+      type(c_ptr), intent(out) :: curve
+      integer(c_size_t), value :: err_size
+      integer(c_int) :: asperity_curve_load
+    end function
+
+    ! The orders a curve holds (ASPERITY_ORDER_* bits: test with iand); 0 for c_null_ptr.
+    pure function asperity_curve_order_mask(curve) bind(c, name="asperity_curve_order_mask")
+      import :: c_ptr, c_int
+      type(c_ptr), value, intent(in) :: curve
+      integer(c_int) :: asperity_curve_order_mask
+    end function
+
+    ! asperity_curve_load with all orders, returning the curve or c_null_ptr (the reason in err).
     function asperity_curve_open(table, dist, side, shape, err, err_size) bind(c, name="asperity_curve_open")
       import :: c_ptr, c_char, c_double, c_size_t
       type(c_ptr), value :: table
@@ -170,6 +231,17 @@ module asperity
       import :: c_double
       real(c_double), value, intent(in) :: young1, poisson1, young2, poisson2
       real(c_double) :: asperity_contact_modulus
+    end function
+
+    ! The height scale asperity_model_open takes from the rms summit height GW users measure [m]:
+    ! for dist "weibull" the scale sigma_s = rms / c_a, c_a = sqrt(Gamma(1 + 2/a) - Gamma(1 + 1/a)**2)
+    ! (a = 1.6: rms = 0.574 sigma_s); for "gaussian" the rms itself (shape ignored). NaN for an
+    ! unknown dist, or an rms or Weibull shape that is not a positive finite number.
+    pure function asperity_height_scale_from_rms(dist, shape, rms) bind(c, name="asperity_height_scale_from_rms")
+      import :: c_char, c_double
+      character(kind=c_char), dimension(*), intent(in) :: dist
+      real(c_double), value, intent(in) :: shape, rms
+      real(c_double) :: asperity_height_scale_from_rms
     end function
 
     ! A physical surface (SI units): dist "weibull" (shape 0.3..50, side "tail" or "bounded") or

@@ -140,6 +140,12 @@ int asperity_model_at_pressure(const asperity_model *model, double pressure, asp
 int asperity_model_at_real_area(const asperity_model *model, double real_area, asperity_physical_state *out);
 /* 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; NaN for E <= 0 or nu outside (-1, 0.5]. */
 double asperity_contact_modulus(double young1, double poisson1, double young2, double poisson2);
+/* The height scale asperity_model_open takes, from the rms summit height GW users measure (about
+ * the mean, in m): for dist "weibull" the scale sigma_s = rms / c_a with
+ * c_a = sqrt(Gamma(1 + 2/a) - Gamma(1 + 1/a)^2) (docs/model.md section 1; for shape a = 1.6,
+ * rms = 0.574 sigma_s); for "gaussian" the rms itself (shape ignored). NaN for a NULL or unknown
+ * dist, or an rms or Weibull shape that is not a positive finite number. */
+double asperity_height_scale_from_rms(const char *dist, double shape, double rms);
 /* A message for a status code (static storage). */
 const char *asperity_status_string(int status);
 

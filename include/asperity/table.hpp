@@ -40,10 +40,16 @@ class Table {
   // Throws Error: no such set, shape not finite, or outside the grid. The Gaussian ignores shape.
   // order_mask (bit 1 << twice_order) keeps only the orders a program needs (less memory).
   Curve curve(Distribution distribution, Side side, double shape, unsigned order_mask = Curve::all_orders) const;
+  // The same with the lookup grid's options (curve.hpp) given, instead of the table's own (1e-13
+  // over the whole range, or a scene table's tolerance and range).
+  Curve curve(Distribution distribution, Side side, double shape, unsigned order_mask,
+              const CurveOptions& options) const;
 
  private:
   struct Validated {};
   Table(TableData data, Validated);  // from read_table_file, which has validated it
+  Curve make_curve(Distribution distribution, Side side, double shape, unsigned order_mask,
+                   const CurveOptions* options) const;  // options null: the table's
   TableData data_;
 };
 

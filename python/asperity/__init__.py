@@ -9,16 +9,27 @@ about 1e-12, and the physical contact built on them (docs/model.md has the conve
     curve = table.curve("weibull", "bounded", 1.73)  # distribution, side, shape
     load = curve.value(3, np.linspace(-1.0, -0.01, 100))   # X_3/2: an ndarray
 
+Measured surfaces -- reading height maps, statistics, summits, fitted height distributions with
+their evidence and the contact curves of each fit -- are in the submodule asperity.topography
+(docs/surfaces.md):
+
+    from asperity import topography
+    analysis = topography.analyse_surface_file("surface.x3p", contact=topography.ContactOptions(1e11))
+    analysis.to_dict()["fits"]["summit_heights"]["verdict"]
+
 Arrays of any shape go through the library's vectorized batch path (no Python loop; the GIL
 is released for large arrays); numbers give floats. Errors raise asperity.Error with the
 library's message. The names mirror the C++ API (include/asperity/*.hpp).
 """
+import sys as _sys
+
 from ._asperity import (  # noqa: F401
     ALL_ORDERS,
     ORDER_COUNT,
     ContactModel,
     ContactState,
     Curve,
+    CurveOptions,
     CurveSet,
     Distribution,
     Error,
@@ -40,6 +51,7 @@ from ._asperity import (  # noqa: F401
     contact_modulus_from,
     gaussian_log_density,
     gaussian_surface_from_moments,
+    height_scale_from_rms,
     order_of,
     origin_from_standardized,
     parse_scene,
@@ -53,13 +65,20 @@ from ._asperity import (  # noqa: F401
     weibull_moment,
     weibull_rms,
 )
+from ._asperity import topography  # noqa: F401
+
+# `import asperity.topography` and `from asperity.topography import ...`: the submodule lives in
+# the extension, so it is registered under its package name.
+_sys.modules[__name__ + ".topography"] = topography
 
 __all__ = [
-    "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveSet", "Distribution", "Error",
-    "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState", "PhysicalSurface", "Scene", "SceneCurve",
-    "SceneCurveView", "Side", "Surface", "Table", "bandwidth_alpha", "best_instruction_set", "contact_at",
-    "contact_modulus_from", "gaussian_log_density", "gaussian_surface_from_moments", "order_of",
-    "origin_from_standardized", "parse_scene", "quantity_twice_order", "read_scene_file", "separation_at_load",
-    "serve_scene", "standardized_from_origin", "weibull_log_density", "weibull_mean", "weibull_moment", "weibull_rms",
+    "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
+    "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
+    "PhysicalSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "Table", "bandwidth_alpha",
+    "best_instruction_set", "contact_at", "contact_modulus_from", "gaussian_log_density",
+    "gaussian_surface_from_moments", "height_scale_from_rms", "order_of", "origin_from_standardized",
+    "parse_scene", "quantity_twice_order", "read_scene_file", "separation_at_load", "serve_scene",
+    "standardized_from_origin", "topography", "weibull_log_density", "weibull_mean", "weibull_moment",
+    "weibull_rms",
 ]
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "bindings.hpp"
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
@@ -212,8 +213,37 @@ void bind(py::module_& m) {
                              "Where the knots start (below: the all-touching segment).")
       .def_property_readonly("table_max_separation", &Curve::table_max_separation,
                              "Where the knots end (beyond: the series).")
-      .def_property_readonly("memory_bytes", &Curve::memory_bytes)
+      .def_property_readonly("memory_bytes", &Curve::memory_bytes, "Bytes of the curve's data (shared by its copies).")
+      .def_property_readonly("grid_intervals", &Curve::grid_intervals,
+                             "Intervals of the lookup grid per order (CurveOptions.grid_tolerance sets how many).")
+      .def_property_readonly("grid_error", &Curve::grid_error,
+                             "The largest difference in ln X from the table the grid showed where it was checked.")
+      .def("__copy__", [](const Curve& curve) { return curve; }, "A handle sharing the same data (curves are immutable).")
+      .def("__deepcopy__", [](const Curve& curve, py::dict) { return curve; }, "memo"_a)
       .def("__repr__", &describe);
+
+  py::class_<CurveOptions>(m, "CurveOptions",
+                           "The lookup grid of a curve (Table.curve(..., options=)): the largest error it may add to\n"
+                           "the table's own, in ln X (relative in X where X >= 1e-100; 100 times that below), and the\n"
+                           "separations it covers (outside, the table's own layout answers). A smaller tolerance costs\n"
+                           "memory, never time.")
+      .def(py::init([](double grid_tolerance, double grid_min_separation, double grid_max_separation) {
+             CurveOptions options;
+             options.grid_tolerance = grid_tolerance;
+             options.grid_min_separation = grid_min_separation;
+             options.grid_max_separation = grid_max_separation;
+             return options;
+           }),
+           "grid_tolerance"_a = CurveOptions{}.grid_tolerance,
+           "grid_min_separation"_a = CurveOptions{}.grid_min_separation,
+           "grid_max_separation"_a = CurveOptions{}.grid_max_separation)
+      .def_readwrite("grid_tolerance", &CurveOptions::grid_tolerance)
+      .def_readwrite("grid_min_separation", &CurveOptions::grid_min_separation)
+      .def_readwrite("grid_max_separation", &CurveOptions::grid_max_separation)
+      .def("__repr__", [](const CurveOptions& o) {
+        return py::str("CurveOptions(grid_tolerance={!r}, grid_min_separation={!r}, grid_max_separation={!r})")
+            .format(o.grid_tolerance, o.grid_min_separation, o.grid_max_separation);
+      });
 
   // ---- tables (asperity/table.hpp) ----
   py::class_<CurveSet>(m, "CurveSet", "One (distribution, side) group of a table file.")
@@ -251,16 +281,19 @@ void bind(py::module_& m) {
       .def(
           "curve",
           [](const Table& table, const DistributionName& distribution, const SideName& side, std::optional<double> shape,
-             unsigned order_mask) {
+             unsigned order_mask, const std::optional<CurveOptions>& options) {
             const Distribution d = to_distribution(distribution.object);
             if (!shape && d == Distribution::weibull) throw py::value_error("a Weibull curve needs its shape");
+            if (options) return table.curve(d, to_side(side.object), shape.value_or(2.0), order_mask, *options);
             return table.curve(d, to_side(side.object), shape.value_or(2.0), order_mask);
           },
           "distribution"_a, "side"_a = "tail", "shape"_a = py::none(), "order_mask"_a = Curve::all_orders,
+          py::kw_only(), "options"_a = py::none(),
           "The curve of a distribution ('weibull' or 'gaussian'), a side ('tail' or 'bounded') and a Weibull\n"
           "shape (ignored for the Gaussian). A shape between grid nodes is resolved here, once. order_mask\n"
-          "(bit 1 << twice_order) keeps only the orders needed (less memory; NaN for the others).\n"
-          "Raises asperity.Error for a shape outside the table or a missing set.")
+          "(bit 1 << twice_order) keeps only the orders needed (less memory; NaN for the others). options: a\n"
+          "CurveOptions for the lookup grid (None: the table's, 1e-13 over the whole range or a scene table's).\n"
+          "Raises asperity.Error for a shape outside the table, a missing set or bad options.")
       .def_property_readonly(
           "sets",
           [](const py::object& self) {
@@ -328,23 +361,28 @@ void bind(py::module_& m) {
   py::class_<PhysicalSurface>(m, "PhysicalSurface",
                               "A physical rough surface in SI units: Weibull summit heights of shape a and scale "
                               "sigma_s, or Gaussian (rms sigma).")
-      .def(py::init([](const DistributionName& distribution, const SideName& side, double shape, double height_scale,
-                       double summit_radius, double summit_density, double nominal_area, double contact_modulus) {
+      .def(py::init([](const DistributionName& distribution, const SideName& side, double shape,
+                       std::optional<double> height_scale, double summit_radius, double summit_density,
+                       double nominal_area, double contact_modulus, std::optional<double> rms) {
              PhysicalSurface s;
              s.distribution = to_distribution(distribution.object);
              s.side = to_side(side.object);
              s.shape = shape;
-             s.height_scale = height_scale;
+             if (height_scale && rms) throw py::value_error("give the height scale once: height_scale or rms");
+             s.height_scale = rms ? height_scale_from_rms(s.distribution, shape, *rms) : height_scale.value_or(1e-6);
              s.summit_radius = summit_radius;
              s.summit_density = summit_density;
              s.nominal_area = nominal_area;
              s.contact_modulus = contact_modulus;
              return s;
            }),
-           "distribution"_a = "weibull", "side"_a = "tail", "shape"_a = 2.0, "height_scale"_a = 1e-6,
+           "distribution"_a = "weibull", "side"_a = "tail", "shape"_a = 2.0, "height_scale"_a = py::none(),
            "summit_radius"_a = 1e-4, "summit_density"_a = 1e10, "nominal_area"_a = 1e-4, "contact_modulus"_a = 1e11,
-           "height_scale sigma_s [m] (Gaussian: the rms summit height), summit_radius R [m], summit_density\n"
-           "[1/m^2], nominal_area A0 [m^2], contact_modulus E* [Pa] (plane strain).")
+           py::kw_only(), "rms"_a = py::none(),
+           "height_scale sigma_s [m]: the Weibull scale (not its rms), or the Gaussian's rms summit height (default\n"
+           "1e-6); or instead rms [m], the rms summit height GW users measure, which sets height_scale through\n"
+           "height_scale_from_rms (for a = 1.6, rms = 0.574 sigma_s). summit_radius R [m], summit_density [1/m^2],\n"
+           "nominal_area A0 [m^2], contact_modulus E* [Pa] (plane strain).")
       .def_property(
           "distribution", [](const PhysicalSurface& s) { return s.distribution; },
           [](PhysicalSurface& s, const DistributionName& value) { s.distribution = to_distribution(value.object); })
@@ -357,6 +395,14 @@ void bind(py::module_& m) {
       .def_readwrite("summit_density", &PhysicalSurface::summit_density)
       .def_readwrite("nominal_area", &PhysicalSurface::nominal_area)
       .def_readwrite("contact_modulus", &PhysicalSurface::contact_modulus)
+      .def_property(
+          "rms",
+          [](const PhysicalSurface& s) {
+            return s.distribution == Distribution::gaussian ? s.height_scale : s.height_scale * weibull_rms(s.shape);
+          },
+          [](PhysicalSurface& s, double rms) { s.height_scale = height_scale_from_rms(s.distribution, s.shape, rms); },
+          "The rms summit height [m] (about the mean): height_scale * weibull_rms(shape) for the Weibull, height_scale\n"
+          "for the Gaussian. Setting it sets height_scale for the current distribution and shape.")
       .def_property_readonly("summit_count", &PhysicalSurface::summit_count, "summit_density * nominal_area")
       .def("validate", &PhysicalSurface::validate, "Raises asperity.Error naming the first bad parameter.")
       .def("__repr__", [](const PhysicalSurface& s) {
@@ -368,6 +414,17 @@ void bind(py::module_& m) {
   m.def("contact_modulus_from", py::vectorize(&contact_modulus_from), "young1"_a, "poisson1"_a, "young2"_a, "poisson2"_a,
         "E* from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (broadcasts); raises asperity.Error for E <= 0 or nu\n"
         "outside (-1, 0.5].");
+  m.def(
+      "height_scale_from_rms",
+      [](const DistributionName& distribution, const ArrayLike& shape, const ArrayLike& rms) -> py::object {
+        const Distribution d = to_distribution(distribution.object);
+        return py::vectorize([d](double a, double r) { return height_scale_from_rms(d, a, r); })(shape.object,
+                                                                                                rms.object);
+      },
+      "distribution"_a, "shape"_a, "rms"_a,
+      "The height scale sigma_s that gives an rms summit height rms (about the mean, [m]): rms / c_a for the\n"
+      "Weibull, c_a = weibull_rms(shape) (for a = 1.6, rms = 0.574 sigma_s); the rms itself for the Gaussian\n"
+      "(shape ignored). Broadcasts over shape and rms. Raises asperity.Error for rms or a Weibull shape <= 0.");
   m.def("gaussian_surface_from_moments", &gaussian_surface_from_moments, "m0"_a, "m2"_a, "m4"_a, "nominal_area"_a,
         "contact_modulus"_a,
         "A Gaussian PhysicalSurface from its profile's spectral moments (Nayak's bandwidth, McCool's summit\n"
@@ -377,8 +434,9 @@ void bind(py::module_& m) {
   py::class_<InverseCurve>(m, "InverseCurve",
                            "The separation where X_n takes a value (n = twice_order/2 > 1/2): a tabulated inverse "
                            "and one Newton step on the curve, to the curve's accuracy.")
-      .def(py::init<const Curve&, int>(), "curve"_a, "twice_order"_a, py::keep_alive<1, 2>(),
-           "The curve must hold twice_order and twice_order - 2 (asperity.Error otherwise).")
+      .def(py::init<const Curve&, int>(), "curve"_a, "twice_order"_a,
+           "The curve must hold twice_order and twice_order - 2 (asperity.Error otherwise). The inverse holds\n"
+           "the curve's data: it may outlive the Curve and the Table.")
       .def(
           "separation_at",
           [](const InverseCurve& inverse, const ArrayLike& value) {
@@ -392,13 +450,18 @@ void bind(py::module_& m) {
           },
           "log_value"_a, "s with ln X_n(s) = log_value.")
       .def_property_readonly("twice_order", &InverseCurve::twice_order)
-      .def_property_readonly("memory_bytes", &InverseCurve::memory_bytes);
+      .def_property_readonly("curve", &InverseCurve::curve, py::return_value_policy::copy,
+                             "The curve it inverts (a handle sharing its data).")
+      .def_property_readonly("memory_bytes", &InverseCurve::memory_bytes)
+      .def("__copy__", [](const InverseCurve& inverse) { return inverse; })
+      .def("__deepcopy__", [](const InverseCurve& inverse, py::dict) { return inverse; }, "memo"_a);
 
   py::class_<ContactModel>(m, "ContactModel",
                            "Contact of a flat with a PhysicalSurface, forward and inverse, SI units. Separations "
                            "are lengths [m] in the origin convention (docs/model.md).")
       .def(py::init<const Table&, const PhysicalSurface&>(), "table"_a, "surface"_a,
-           "Raises asperity.Error for a bad surface or a table without its curve.")
+           "Raises asperity.Error for a bad surface or a table without its curve. The model holds its curve and\n"
+           "inverses (shared handles): it may outlive the Table, and copies (copy.copy) are cheap.")
       .def(
           "at_separation",
           [](const ContactModel& model, const ArrayLike& separation) {
@@ -425,7 +488,10 @@ void bind(py::module_& m) {
           "real_area"_a, "The PhysicalState with real contact areas A [m^2].")
       .def_property_readonly("surface", &ContactModel::surface, py::return_value_policy::copy,
                              "A copy of the surface (changing it does not change the model).")
-      .def_property_readonly("curve", &ContactModel::curve, py::return_value_policy::reference_internal)
+      .def_property_readonly("curve", &ContactModel::curve, py::return_value_policy::copy,
+                             "The model's curve (a handle sharing its data).")
+      .def("__copy__", [](const ContactModel& model) { return model; })
+      .def("__deepcopy__", [](const ContactModel& model, py::dict) { return model; }, "memo"_a)
       .def(
           "dimensionless",
           [](const ContactModel& model, const ArrayLike& separation) {
@@ -489,6 +555,9 @@ void bind(py::module_& m) {
       "curve"_a, "load"_a, "The separation where X_3/2 = load (NaN if not reached).");
   m.def("quantity_twice_order", &quantity_twice_order, "quantity"_a,
         "twice_order of a quantity's integral: count 0, stiffness 1, area 2, load 3, F2 4, F5/2 5; -1 otherwise.");
+
+  // ---- measured surfaces (asperity/topography/*.hpp): the submodule asperity.topography ----
+  bind_topography(m, physical_state_type);
 }
 
 }  // namespace asperity::python

@@ -2,6 +2,7 @@
 path, and its error messages; arrays of every shape and dtype; the type stubs against the module.
 Run by ctest (python_tests) with PYTHONPATH=build/python."""
 import ast
+import copy
 import gc
 import math
 import os
@@ -302,16 +303,95 @@ def test_physical_helpers():
     assert persson.stiffness_over_load() == 2.0
 
 
-def test_inverse_curve_keeps_its_curve_alive(table):
-    curve = table.curve("weibull", "tail", 2.0)
+def test_inverse_curve_holds_its_curve(table):
+    own_table = asperity.Table.open_default()
+    curve = own_table.curve("weibull", "tail", 2.0)
     inverse = asperity.InverseCurve(curve, 3)
     expected = curve.value(3, 0.8)
-    del curve
+    del curve, own_table  # the inverse holds the curve's data (a shared handle), not the Python objects
     gc.collect()
     assert close(inverse.separation_at(expected), 0.8, 1e-11)
     assert np.allclose(inverse.separation_at(np.array([expected] * 3)), 0.8, rtol=1e-11)
+    assert inverse.curve.value(3, 0.8) == expected and inverse.curve.shape == 2.0
+    copied = copy.copy(inverse)
+    del inverse
+    gc.collect()
+    assert close(copied.separation_at(expected), 0.8, 1e-11) and copy.deepcopy(copied).twice_order == 3
     with pytest.raises(asperity.Error):
         asperity.InverseCurve(table.curve("weibull", "tail", 2.0), 1)
+
+
+def test_contact_model_copies_outlive_the_table_and_the_model():
+    own_table = asperity.Table.open_default()
+    model = asperity.ContactModel(own_table, asperity.PhysicalSurface("weibull", "bounded", shape=1.6))
+    expected = model.at_load(0.5)
+    curve = model.curve
+    shallow, deep = copy.copy(model), copy.deepcopy(model)
+    del model, own_table
+    gc.collect()
+    for copied in (shallow, deep):
+        state = copied.at_load(0.5)
+        assert state.separation == expected.separation and state.stiffness == expected.stiffness
+        assert copied.surface.shape == 1.6
+    assert curve.value(3, expected.separation / 1e-6) > 0 and copy.copy(curve).shape == 1.6
+
+
+# ---- the lookup grid's options, and the rms summit height ----
+
+def test_curve_options(table):
+    default = table.curve("weibull", "tail", 2.0)
+    assert default.grid_intervals > 0 and 0 <= default.grid_error <= 1e-13
+    coarse = table.curve("weibull", "tail", 2.0, options=asperity.CurveOptions(grid_tolerance=1e-7))
+    assert coarse.grid_intervals < default.grid_intervals and coarse.memory_bytes < default.memory_bytes
+    assert coarse.grid_error <= 1e-7
+    s = np.linspace(-3.0, 6.0, 1001)
+    for twice_order in range(6):
+        assert np.allclose(coarse.log_value(twice_order, s), default.log_value(twice_order, s), rtol=0, atol=2e-7)
+    # a grid over part of the range: the table's own layout answers elsewhere, to its accuracy
+    partial = table.curve("weibull", "bounded", 1.73, asperity.ALL_ORDERS,
+                          options=asperity.CurveOptions(grid_min_separation=-1.0, grid_max_separation=-0.1))
+    between = table.curve("weibull", "bounded", 1.73)
+    s = np.linspace(-3.0, -0.001, 500)
+    assert np.allclose(partial.value(3, s), between.value(3, s), rtol=1e-11, atol=0)
+    options = asperity.CurveOptions()
+    assert options.grid_tolerance == 1e-13 and options.grid_min_separation == -math.inf
+    assert "grid_tolerance=1e-13" in repr(options)
+    with pytest.raises(asperity.Error):
+        table.curve("weibull", "tail", 2.0, options=asperity.CurveOptions(grid_min_separation=1.0,
+                                                                          grid_max_separation=0.0))
+
+
+def test_height_scale_from_rms():
+    c2 = math.sqrt(1 - math.pi / 4)  # a = 2: Gamma(2) - Gamma(3/2)^2
+    assert close(asperity.height_scale_from_rms("weibull", 2.0, 1e-6), 1e-6 / c2, 1e-14)
+    assert close(asperity.height_scale_from_rms(asperity.Distribution.weibull, 1.6, 5e-7), 8.715e-7, 1e-4)
+    assert asperity.height_scale_from_rms("gaussian", 2.0, 3e-7) == 3e-7
+    scales = asperity.height_scale_from_rms("weibull", np.array([1.0, 2.0]), 1e-6)  # broadcasts
+    assert scales.shape == (2,) and close(scales[0], 1e-6, 1e-14) and close(scales[1], 1e-6 / c2, 1e-14)
+    for shape, rms in ((2.0, 0.0), (2.0, -1e-6), (0.0, 1e-6), (2.0, math.nan)):
+        with pytest.raises(asperity.Error):
+            asperity.height_scale_from_rms("weibull", shape, rms)
+    with pytest.raises(ValueError):
+        asperity.height_scale_from_rms("weibul", 2.0, 1e-6)
+
+
+def test_physical_surface_from_its_rms(table):
+    surface = asperity.PhysicalSurface("weibull", "tail", shape=1.6, rms=5e-7)
+    assert close(surface.height_scale, asperity.height_scale_from_rms("weibull", 1.6, 5e-7), 1e-15)
+    assert close(surface.rms, 5e-7, 1e-14)
+    surface.rms = 1e-6
+    assert close(surface.height_scale, 2 * asperity.height_scale_from_rms("weibull", 1.6, 5e-7), 1e-14)
+    assert asperity.PhysicalSurface().height_scale == 1e-6  # the default is unchanged
+    gaussian = asperity.PhysicalSurface("gaussian", rms=2e-7)
+    assert gaussian.height_scale == 2e-7 and gaussian.rms == 2e-7
+    with pytest.raises(ValueError, match="once"):
+        asperity.PhysicalSurface(height_scale=1e-6, rms=1e-6)
+    with pytest.raises(asperity.Error):
+        asperity.PhysicalSurface(rms=-1.0)
+    # the model of `asperity contact --rms 5e-7 --shape 1.6` (Weibull scale 8.715e-7 m)
+    model = asperity.ContactModel(table, asperity.PhysicalSurface("weibull", shape=1.6, rms=5e-7, summit_radius=1e-4,
+                                                                   summit_density=1e10, nominal_area=1e-4))
+    assert close(model.surface.height_scale, 8.715e-7, 1e-4)
 
 
 # ---- scenes ----
@@ -371,6 +451,9 @@ def test_stubs_name_what_the_module_holds():
             defined[node.name] = node
         elif isinstance(node, ast.AnnAssign):
             defined[node.target.id] = node
+        elif isinstance(node, ast.ImportFrom) and node.module is None:  # from . import topography
+            for alias in node.names:
+                defined[alias.asname or alias.name] = node
     aliases = {"FloatArray", "PathLike", "DistributionLike", "SideLike"}
     assert public_names() | {"__version__"} == set(defined) - aliases
     for name, node in defined.items():
@@ -383,4 +466,5 @@ def test_stubs_name_what_the_module_holds():
                 bound = set(cls.__members__)
             else:
                 bound = {m for m in dir(cls) if not m.startswith("_")}
-            assert members - {"__init__"} == bound, name
+            assert {m for m in members if not m.startswith("_")} == bound, name
+            assert all(hasattr(cls, m) for m in members), name  # __copy__, __deepcopy__ too

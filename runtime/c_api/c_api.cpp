@@ -243,6 +243,18 @@ double asperity_contact_modulus(double young1, double poisson1, double young2, d
   }
 }
 
+double asperity_height_scale_from_rms(const char* dist, double shape, double rms) {
+  asperity::Distribution distribution;
+  if (!dist || !asperity::parse_distribution(dist, distribution)) return not_a_number;
+  try {
+    const double scale = asperity::height_scale_from_rms(distribution, shape, rms);
+    // a shape so small or large that c_a overflows or vanishes has no usable scale
+    return std::isfinite(scale) && scale > 0 ? scale : not_a_number;
+  } catch (const std::exception&) {
+    return not_a_number;
+  }
+}
+
 double asperity_eval(const asperity_curve* curve, int twice_order, double sep) {
   return curve ? curve->curve.value(twice_order, sep) : not_a_number;
 }

@@ -125,6 +125,16 @@ const CurveSet* Table::find(Distribution distribution, Side side) const noexcept
 }
 
 Curve Table::curve(Distribution distribution, Side side, double shape, unsigned order_mask) const {
+  return make_curve(distribution, side, shape, order_mask, nullptr);
+}
+
+Curve Table::curve(Distribution distribution, Side side, double shape, unsigned order_mask,
+                   const CurveOptions& options) const {
+  return make_curve(distribution, side, shape, order_mask, &options);
+}
+
+Curve Table::make_curve(Distribution distribution, Side side, double shape, unsigned order_mask,
+                        const CurveOptions* options) const {
   const CurveSet* set = find(distribution, side);
   if (!set) {
     if (distribution == Distribution::gaussian && side == Side::bounded)
@@ -132,7 +142,8 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
     throw Error(std::string("this table has no ") + to_string(distribution) + " " + to_string(side) + " curves");
   }
   if (distribution == Distribution::gaussian)
-    return Curve(distribution, side, 2.0, set->layout, set->knots.data(), order_mask, set->curve_options(0));
+    return Curve(distribution, side, 2.0, set->layout, set->knots.data(), order_mask,
+                 options ? *options : set->curve_options(0));
   if (data_.exact_shapes && std::none_of(set->shapes.begin(), set->shapes.end(), [&](double node) {
         return std::fabs(shape - node) <= 1e-12 * shape;
       })) {
@@ -155,7 +166,7 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
   for (std::size_t i = 0; i < count; ++i)
     if (std::fabs(shape - set->shapes[i]) <= 1e-12 * shape)
       return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride], order_mask,
-                   set->curve_options(i));
+                   options ? *options : set->curve_options(i));
 
   // Between grid shapes: Lagrange in q over the shape_stencil nearest nodes, centred.
   std::size_t upper = 1;
@@ -179,11 +190,11 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
   // weights: its variable u = sqrt(s1/s) does not depend on the shape.
   std::vector<double> blended(stride, 0.0);
   ShapeBlend blend;
-  CurveOptions options;  // a table that gives its grid shapes' tolerances: the largest of the stencil's
+  CurveOptions between;  // a table that gives its grid shapes' tolerances: the largest of the stencil's
   if (!set->grid_tolerance.empty()) {
-    options.grid_tolerance = 0;
+    between.grid_tolerance = 0;
     for (std::size_t i = 0; i < points; ++i)
-      options.grid_tolerance = std::max(options.grid_tolerance, set->grid_tolerance[first + i]);
+      between.grid_tolerance = std::max(between.grid_tolerance, set->grid_tolerance[first + i]);
   }
   for (std::size_t i = 0; i < points; ++i) {
     const double* source = &set->knots[(first + i) * stride];
@@ -192,7 +203,8 @@ Curve Table::curve(Distribution distribution, Side side, double shape, unsigned 
     blend.knot_data.push_back(source);
     blend.weights.push_back(weights[i]);
   }
-  return Curve(distribution, side, shape, set->layout, blended.data(), blend, order_mask, options);
+  return Curve(distribution, side, shape, set->layout, blended.data(), blend, order_mask,
+               options ? *options : between);
 }
 
 }  // namespace asperity

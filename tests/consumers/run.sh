@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Programs using an installed asperity from outside, against PREFIX only (CI: .ci/run):
-#   a C++ project through find_package, a C program through pkg-config with cc, a Fortran
+#   a C++ project through find_package (asperity::runtime, and asperity::topography reading a
+#   measured surface), a C program through pkg-config with cc, a Fortran
 #   program through pkg-config with gfortran, and the Python module from its installed place.
 # Each checks a value against a closed form and that the default table it found is PREFIX's.
 #   usage: tests/consumers/run.sh PREFIX [SOURCE_TREE]
@@ -12,6 +13,7 @@ source_tree="${2:-}"
 here="$(cd "$(dirname "$0")" && pwd)"
 work="$(mktemp -d)"
 cp -r "$here"/cxx "$here"/c "$here"/fortran "$here"/python "$work"/
+cp "$here"/../data/surfaces/digitalsurf-650x650.x3p "$work"/surface.x3p  # the source tree goes away
 
 restore() {
   if [ -n "$source_tree" ] && [ -d "$source_tree.away" ]; then mv "$source_tree.away" "$source_tree"; fi
@@ -33,10 +35,10 @@ check_table() {  # the program's output names the table it used: it must be the 
   grep -q "^table $prefix/" "$1" || { echo "not the installed table:"; cat "$1"; exit 1; }
 }
 
-echo "-- C++ (find_package(asperity 0.2), asperity::runtime)"
+echo "-- C++ (find_package(asperity 0.2), asperity::runtime, asperity::topography)"
 cmake -S cxx -B cxx/build -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build cxx/build >/dev/null
-cxx/build/cxx_consumer | tee cxx.out
+cxx/build/cxx_consumer surface.x3p | tee cxx.out
 check_table cxx.out
 
 echo "-- C (cc \$(pkg-config --cflags --libs asperity))"
@@ -54,7 +56,7 @@ fi
 pythondir="$(pkg-config --variable=pythondir asperity || true)"
 if [ -n "$pythondir" ]; then
   echo "-- Python (import asperity from $pythondir)"
-  PYTHONPATH="$pythondir" "$(pkg-config --variable=python asperity)" python/check_installed.py "$prefix" | tee python.out
+  PYTHONPATH="$pythondir" "$(pkg-config --variable=python asperity)" python/check_installed.py "$prefix" surface.x3p | tee python.out
   check_table python.out
 fi
 echo "-- all consumers passed"

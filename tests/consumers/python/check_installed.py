@@ -1,6 +1,6 @@
 """The installed Python module, imported from the installed tree only: the package and the
 default table both come from PREFIX, and a value matches the closed form J_0 = exp(-s^a).
-usage: check_installed.py PREFIX"""
+usage: check_installed.py PREFIX SURFACE.x3p"""
 import math
 import os
 import sys
@@ -26,3 +26,19 @@ try:
     sys.exit("a bad order was accepted")
 except ValueError as error:
     print("expected error:", error)
+
+# asperity.topography from the installed tree: a measured surface (argv[2]), and a report whose
+# plotting script is the installed one (share/asperity/surface_plots.py)
+import tempfile  # noqa: E402
+
+from asperity import topography  # noqa: E402
+
+surface = topography.read_height_map(sys.argv[2])
+print(f"{sys.argv[2]}: heights {surface.heights.shape}, dx {surface.dx:.4g} m")
+assert surface.heights.shape == (650, 650)
+field = topography.gaussian_random_field(64, 64, 1e-6, 1e-6, [topography.SpectrumComponent(2.0, 1e-16)], seed=1)
+analysis = topography.analyse_height_map(field, assessment=topography.AssessmentOptions(bootstrap=0), fit_heights=False)
+with tempfile.TemporaryDirectory() as directory:
+    outcome = analysis.write_report(directory)
+print("report plots:", outcome.plots, outcome.plot_note)
+assert outcome.plots or "not found" not in outcome.plot_note, "the installed plotting script was not found"
