@@ -1,0 +1,33 @@
+// Issue 13's question: the lookup grid's interval records are 48 bytes (6 doubles,
+// detail::fast_stride), so in an array they straddle 64-byte cache lines about half the time.
+// Would 64-byte records (8 doubles, 2 of them padding, the array 64-byte aligned: one line per
+// record) be faster? These are bench-local copies of the runtime's scalar lookup (Curve::value)
+// and batch loop (run_block in runtime/core/kernel/kernels.hpp) with the record stride as a
+// parameter, compiled per instruction set with the runtime's flags (bench/CMakeLists.txt), so
+// that both strides run the same code; the runtime itself is not changed. Keep them in step
+// with the runtime's (bench_lookup --check compares their answers with Curve's).
+#pragma once
+#include <cstdint>
+
+#include "asperity/detail/fast_grid.hpp"
+
+namespace asperity::bench {
+
+// ln X -> X by the C library's exp (what Curve::value uses), on the grid only: NaN off it.
+using ScalarLookup = double (*)(const detail::FastGrid& grid, const double* coefficients, double separation);
+// out[j] = X for j < count, every query through the branch-free loop; returns how many were
+// off the grid (their out[j] are to be answered by the caller).
+using BlockLookup = std::uint64_t (*)(const detail::FastGrid& grid, const double* coefficients,
+                                      const double* separations, double* out, int count);
+
+struct RecordKernels {
+  ScalarLookup scalar6, scalar8;  // records of 6 and 8 doubles
+  ScalarLookup scalar6_inline_exp;  // 6 doubles, the runtime's inline exp (fast_math.hpp) in place of the library's
+  BlockLookup block6, block8;
+};
+
+extern const RecordKernels record_kernels_generic;
+extern const RecordKernels record_kernels_avx2;    // built with -mavx2 -mfma
+extern const RecordKernels record_kernels_avx512;  // built with -mavx512f/dq/vl
+
+}  // namespace asperity::bench
