@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "asperity/error.hpp"
+#include "asperity/table_schema.hpp"
 #include "quadrature.hpp"
 
 namespace asperity::tablegen {
@@ -42,6 +43,12 @@ std::vector<double> shape_grid(const GenerateOptions& options) {
   if (!(options.shape_min > 0) || !(options.shape_max >= options.shape_min) || !(options.shape_log_step > 0))
     throw Error("the shape grid needs 0 < LO <= HI and STEP > 0");
   if (options.shape_min == options.shape_max) return {options.shape_min};
+  // Refuse a grid a table may not hold before making it (a step of 1e-9 would be 1e10 nodes).
+  const double nodes = (shape_grid_variable(options.shape_max) - shape_grid_variable(options.shape_min)) /
+                           options.shape_log_step + shape_stencil + 6;
+  if (!(nodes <= schema::max_shapes))
+    throw Error("the shape grid would have " + std::to_string(static_cast<long long>(std::min(nodes, 1e18))) +
+                " nodes, more than a table holds (" + std::to_string(schema::max_shapes) + "): use a larger STEP");
   // Nodes: LO, HI and the paper's shapes 1, 2, 3, 5 between them exactly; between those
   // anchors uniform in q = ln a - 1/a with spacing at most STEP; shape_stencil/2 nodes more past
   // each end (with the end spacing) so the interpolation stencil stays centred over [LO, HI].

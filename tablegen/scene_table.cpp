@@ -401,7 +401,7 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
           for (std::size_t r = 0; r < group.shapes[i].requirements.size(); ++r) {
             const Requirement& requirement = group.shapes[i].requirements[r];
             unsigned mask = 0;
-            for (int twice_order : requirement.twice_orders) mask |= 1u << twice_order;
+            for (int twice_order : requirement.twice_orders) mask |= order_bit(twice_order);
             // in memory as serve_scene gives it: the asked orders only
             const Curve curve(group.distribution, group.side, group.shapes[i].shape, layout, thinned[i].data(), mask,
                               grid_options(group.shapes[i]));

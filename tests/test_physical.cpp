@@ -149,12 +149,78 @@ TEST(ContactModel, InversesRoundTripAcrossTheRange) {
   }
 }
 
-TEST(ContactModel, MovesKeepTheInverses) {
-  ContactModel first(table(), weibull_surface(Side::tail, 3.0));
-  const double expected = first.at_load(0.5).separation;
-  ContactModel moved(std::move(first));
-  EXPECT_DOUBLE_EQ(moved.at_load(0.5).separation, expected);
+TEST(ContactModel, CopiesAndMovesKeepTheirCurvesAndInverses) {
+  ContactModel copy;
+  double expected;
+  {
+    // the model shares its curve and inverses: copies outlive the original and the table
+    const Table local = Table::open(ASPERITY_TEST_TABLE);
+    ContactModel first(local, weibull_surface(Side::tail, 3.0));
+    expected = first.at_load(0.5).separation;
+    copy = first;
+    ContactModel moved(std::move(first));
+    EXPECT_DOUBLE_EQ(moved.at_load(0.5).separation, expected);
+  }
+  EXPECT_DOUBLE_EQ(copy.at_load(0.5).separation, expected);
+  EXPECT_TRUE(std::isnan(ContactModel().at_load(1).load));  // no surface: NaN
   EXPECT_THROW(ContactModel(table(), weibull_surface(Side::tail, 25.0)), Error);  // beyond the default table
+}
+
+TEST(ContactModel, NoContactAndInfiniteContactAreStates) {
+  for (Side side : {Side::tail, Side::bounded}) {
+    const ContactModel model(table(), weibull_surface(side, 2.0));
+    const double past = side == Side::tail ? INFINITY : 1e-6;  // past the last summit
+    for (const PhysicalState& none : {model.at_load(0), model.at_load(-3), model.at_pressure(0), model.at_real_area(0),
+                                      model.at_separation(past)}) {
+      EXPECT_EQ(none.count, 0.0);
+      EXPECT_EQ(none.real_area, 0.0);
+      EXPECT_EQ(none.area_fraction, 0.0);
+      EXPECT_EQ(none.load, 0.0);
+      EXPECT_EQ(none.pressure, 0.0);
+      EXPECT_EQ(none.stiffness, 0.0);
+      EXPECT_TRUE(std::isnan(none.stiffness_over_load));  // 0/0
+      EXPECT_EQ(none.separation, side == Side::tail ? INFINITY : 0.0);
+    }
+    for (const PhysicalState& all : {model.at_load(INFINITY), model.at_real_area(INFINITY), model.at_separation(-INFINITY)}) {
+      EXPECT_DOUBLE_EQ(all.count, model.surface().summit_count());
+      EXPECT_EQ(all.load, INFINITY);
+      EXPECT_EQ(all.real_area, INFINITY);
+      EXPECT_EQ(all.separation, -INFINITY);
+    }
+    EXPECT_TRUE(std::isnan(model.at_separation(NAN).load));
+  }
+}
+
+TEST(Surface, RmsAndScaleAndTheFactorsOfTheModel) {
+  // GW users measure the rms summit height: for a = 1.6 it is 0.574 of the Weibull scale
+  EXPECT_NEAR(1e-6 / height_scale_from_rms(Distribution::weibull, 1.6, 1e-6), weibull_rms(1.6), 1e-15);
+  EXPECT_NEAR(weibull_rms(1.6), 0.574, 5e-4);
+  EXPECT_EQ(height_scale_from_rms(Distribution::gaussian, 0, 2e-6), 2e-6);
+  EXPECT_THROW(height_scale_from_rms(Distribution::weibull, 1.6, -1), Error);
+  // parameters whose products underflow or overflow are refused, naming the factor
+  PhysicalSurface tiny;
+  tiny.height_scale = 1e-300;
+  EXPECT_NE(error_of(tiny).find("factor"), std::string::npos) << error_of(tiny);
+  PhysicalSurface stiff;
+  stiff.contact_modulus = 1e308;
+  EXPECT_NE(error_of(stiff).find("factor"), std::string::npos) << error_of(stiff);
+}
+
+TEST(ContactModel, AgreesWithContactAtThroughOneComputation) {
+  const PhysicalSurface surface = weibull_surface(Side::bounded, 1.73);
+  const ContactModel model(table(), surface);
+  const Curve curve = table().curve(Distribution::weibull, Side::bounded, 1.73);
+  const Surface plain{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus};
+  for (double s : {-0.01, -0.3, -1.0, -4.0}) {
+    ContactState state;
+    ASSERT_TRUE(contact_at(curve, plain, s, state));
+    const PhysicalState physical = model.at_separation(s * surface.height_scale);
+    EXPECT_EQ(physical.load, state.load);
+    EXPECT_EQ(physical.stiffness, state.stiffness);
+    EXPECT_EQ(physical.real_area, state.area);
+    EXPECT_EQ(physical.count, state.count);
+    EXPECT_EQ(physical.stiffness_over_load, state.stiffness_ratio / surface.height_scale);
+  }
 }
 
 TEST(Persson, ExponentialLaw) {

@@ -14,14 +14,13 @@
 #include <memory>
 #include <vector>
 
+#include "asperity/detail/curve_data.hpp"
 #include "asperity/instruction_set.hpp"
 #include "asperity/layout.hpp"
 #include "asperity/model.hpp"
 
 namespace asperity {
 namespace detail {
-struct CurveData;
-class CompactCurve;
 struct GridReference;
 }
 
@@ -104,11 +103,35 @@ class Curve {
 
  private:
   void build(detail::CompactCurve& compact, const detail::GridReference& reference, const CurveOptions& options);
+  // off the grid: the table's own layout, the series, the values at 0 (not inlined: rare)
+  double log_value_outside(int twice_order, double separation) const noexcept;
+  double value_outside(int twice_order, double separation) const noexcept;
   void batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
              bool log_output) const noexcept;
 
   std::shared_ptr<const detail::CurveData> data_;
   unsigned order_mask_ = 0;  // here, so that a default Curve answers NaN before touching data_
 };
+
+// The hot path: one position on the grid (a few integer operations, two loads), one quintic,
+// one exp; the rare rest out of line.
+inline double Curve::log_value(int twice_order, double separation) const noexcept {
+  if (!has_order(twice_order)) return __builtin_nan("");  // also a default Curve: it holds no order
+  const detail::CurveData& data = *data_;
+  detail::FastPosition at;
+  if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1))
+    return detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
+  return log_value_outside(twice_order, separation);
+}
+
+inline double Curve::value(int twice_order, double separation) const noexcept {
+  if (!has_order(twice_order)) return __builtin_nan("");
+  const detail::CurveData& data = *data_;
+  detail::FastPosition at;
+  if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1))
+    return __builtin_exp(
+        detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y));
+  return value_outside(twice_order, separation);
+}
 
 }  // namespace asperity

@@ -1,5 +1,8 @@
 #include "asperity/asymptotic.hpp"
 
+// ln Gamma by Boost.Math: std::lgamma writes the global signgam (a data race when curves are
+// built on several threads at once).
+#include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 
 namespace asperity {
@@ -18,7 +21,7 @@ Series weibull_tail_series(double shape, double order) {
     c[k] = sum / k;
   }
   Series series;
-  series.log_constant = std::lgamma(order + 1) + order * std::log(r);
+  series.log_constant = boost::math::lgamma(order + 1) + order * std::log(r);
   double rising = 1;  // (n+1)_k = Gamma(n+k+1)/Gamma(n+1)
   for (int k = 0; k < series_terms; ++k) {
     series.coefficient[k] = c[k] * rising;
@@ -30,7 +33,7 @@ Series weibull_tail_series(double shape, double order) {
 Series gaussian_tail_series(double order) {
   // D_-nu(s) ~ s^-nu e^(-s^2/4) sum_k (-1)^k (nu)_2k / (k! 2^k s^2k), nu = n + 1.
   Series series;
-  series.log_constant = std::lgamma(order + 1);
+  series.log_constant = boost::math::lgamma(order + 1);
   double term = 1;
   for (int k = 0; k < series_terms; ++k) {
     series.coefficient[k] = term;
@@ -45,8 +48,8 @@ Series bounded_contact_series(double shape, double order) {
   series.log_constant = 0;
   for (int k = 0; k < series_terms; ++k) {
     const double magnitude =
-        std::exp(std::lgamma(order + 1) + std::log(shape) + std::lgamma(shape * (k + 1)) -
-                 std::lgamma(order + 1 + shape * (k + 1)) - std::lgamma(k + 1.0));
+        std::exp(boost::math::lgamma(order + 1) + std::log(shape) + boost::math::lgamma(shape * (k + 1)) -
+                 boost::math::lgamma(order + 1 + shape * (k + 1)) - boost::math::lgamma(k + 1.0));
     series.coefficient[k] = (k % 2 ? -magnitude : magnitude);
   }
   return series;

@@ -4,24 +4,12 @@
 #include <limits>
 
 #include "asperity/detail/compact_curve.hpp"
+#include "asperity/detail/curve_data.hpp"
 #include "asperity/detail/fast_grid_build.hpp"
 #include "asperity/error.hpp"
 #include "kernel/kernels.hpp"
 
 namespace asperity {
-namespace detail {
-
-// What a Curve shares: the lookup grid first (the hot data), then what answers off the grid.
-struct CurveData {
-  FastGrid grid;
-  std::vector<double> coefficients;                  // [held order][interval][fast_stride]
-  std::array<const double*, order_count> order_coefficients{};  // null: not held
-  CompactCurve outside;  // the all-touching segment, the series, the values at 0
-  const Kernels* kernels = nullptr;
-  double grid_error = 0;
-};
-
-}  // namespace detail
 
 namespace {
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
@@ -82,7 +70,9 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
     throw Error("CurveOptions: the grid's separations must be an interval (min < max)");
   auto data = std::make_shared<detail::CurveData>();
   detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
-  compact.keep_outside_only();
+  // where the grid covers the whole table, the table's own layout answers only outside it
+  if (options.grid_min_separation <= compact.table_min() && options.grid_max_separation >= compact.table_max())
+    compact.keep_outside_only();
   data->grid = std::move(build.grid);
   data->coefficients = std::move(build.coefficients);
   for (int order = 0; order < order_count; ++order)
@@ -109,20 +99,12 @@ std::size_t Curve::memory_bytes() const noexcept {
          data_->grid.directory.capacity() * sizeof(detail::FastBinade) + data_->outside.memory_bytes();
 }
 
-double Curve::log_value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order)) return not_a_number;  // also a default Curve: it holds no order
-  const detail::CurveData& data = *data_;
-  detail::FastPosition at;
-  if (!detail::fast_position(data.grid, separation, at)) return data.outside.log_value(twice_order, separation);
-  return detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
+double Curve::log_value_outside(int twice_order, double separation) const noexcept {
+  return data_->outside.log_value(twice_order, separation);
 }
 
-double Curve::value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order)) return not_a_number;
-  const detail::CurveData& data = *data_;
-  detail::FastPosition at;
-  if (!detail::fast_position(data.grid, separation, at)) return std::exp(data.outside.log_value(twice_order, separation));
-  return std::exp(detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y));
+double Curve::value_outside(int twice_order, double separation) const noexcept {
+  return std::exp(data_->outside.log_value(twice_order, separation));
 }
 
 void Curve::log_values(double separation, double out[order_count]) const noexcept {

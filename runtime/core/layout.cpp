@@ -81,28 +81,4 @@ std::vector<SegmentMap> SegmentMap::resolve(const std::vector<SegmentSpec>& layo
   return maps;
 }
 
-double SegmentMap::u_of_s(double separation) const {
-  return visit_segment_kind(kind, [&](auto k) { return decltype(k)::u_of_s(*this, separation); });
-}
-
-void SegmentMap::s_of_u(double u, double& separation, double& ds_du, double& d2s_du2) const {
-  visit_segment_kind(kind, [&](auto k) { decltype(k)::s_of_u(*this, u, separation, ds_du, d2s_du2); });
-}
-
-double SegmentMap::separation_of_u(double u) const {
-  double separation, d1, d2;
-  s_of_u(u, separation, d1, d2);
-  return separation;
-}
-
-void SegmentMap::offset(double order, double u, double& value, double& d1, double& d2) const {
-  visit_segment_kind(kind, [&](auto k) { decltype(k)::offset(*this, order, u, value, d1, d2); });
-}
-
-double SegmentMap::offset_value(double order, double u) const {
-  double value, d1, d2;
-  offset(order, u, value, d1, d2);
-  return value;
-}
-
 }  // namespace asperity

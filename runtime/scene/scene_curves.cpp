@@ -43,20 +43,20 @@ std::vector<SceneCurveView> serve_scene(const Table& table, const Scene& scene) 
   std::vector<SceneCurveView> views;
   for (const SceneCurve& spec : scene.curves) {
     unsigned mask = 0;
-    for (int twice_order : spec.twice_orders) mask |= 1u << twice_order;
+    for (int twice_order : spec.twice_orders) mask |= order_bit(twice_order);
     const std::string label = spec.name.empty() ? "curve at line " + std::to_string(spec.line) : "curve '" + spec.name + "'";
     const CurveSet* set = table.find(spec.distribution, spec.side);
     if (!set) throw Error("scene " + scene.source + ": the table has no " + to_string(spec.distribution) + " " +
                           to_string(spec.side) + " curves (" + label + ")");
     // by_load needs X_3/2 even when the scene does not ask for it
-    Curve curve = table.curve(spec.distribution, spec.side, spec.shape, spec.by_load ? mask | 1u << 3 : mask);
+    Curve curve = table.curve(spec.distribution, spec.side, spec.shape, spec.by_load ? mask | order_bit(orders::load) : mask);
     SceneCurveView view{spec, curve, spec.range_min, spec.range_max, between_grid_bound};
     if (spec.by_load) {
       view.separation_min = separation_at_load(curve, spec.range_max);
       view.separation_max = separation_at_load(curve, spec.range_min);
       if (std::isnan(view.separation_min) || std::isnan(view.separation_max))
         throw Error("scene " + scene.source + ": " + label + ": its load range is not reached on this curve");
-      if (!(mask >> 3 & 1u)) view.curve = table.curve(spec.distribution, spec.side, spec.shape, mask);
+      if (!(mask & order_bit(orders::load))) view.curve = table.curve(spec.distribution, spec.side, spec.shape, mask);
     }
     for (std::size_t i = 0; i < set->shapes.size(); ++i)
       if (std::fabs(set->shapes[i] - spec.shape) <= 1e-12 * spec.shape || spec.distribution == Distribution::gaussian) {
