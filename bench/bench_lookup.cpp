@@ -37,12 +37,13 @@
 //   BM_Record/PATH/RECORD/KIND       issue 13: bench-local copies of the lookup (record_kernels.hpp)
 //                                    with 48-byte records as the runtime holds them (48B), 48-byte
 //                                    records from a 64-byte aligned base (48B_aligned64) and 64-byte
-//                                    records, padded, aligned (64B_aligned64); PATH = scalar or
-//                                    batch_ISA. The 48B rows are the runtime's code: compare with
-//                                    BM_ScalarKind and BM_Batch to see that the copy is faithful.
-//   BM_ScalarHostIsa/ISA/EXP/KIND    the scalar lookup built for ISA, with the library's exp (libm) or
-//                                    the runtime's inline one (inline_exp): what a scalar kernel chosen
-//                                    at load time would give
+//                                    records, padded, aligned (64B_aligned64); PATH = scalar (inline,
+//                                    as Curve::value) or batch_ISA (through value_batch's blocks). The
+//                                    48B rows are the runtime's code: compare with BM_ScalarKind and
+//                                    BM_Batch to see that the copy is faithful.
+//   BM_ScalarHostIsa/ISA/EXP/KIND    the scalar lookup built for ISA (out of line, through a pointer),
+//                                    with the library's exp (libm) or the runtime's inline one
+//                                    (inline_exp): what a scalar kernel chosen at load time would give
 //   BM_StdExp, BM_FastExp, BM_StdLog, BM_FastLog   the elementary functions alone
 //   BM_OursSameSegment, BM_Boost*    the far-tail segment of Weibull a = 2 X_3/2: ours against
 //                                    Boost.Math's interpolators on the table's knots and map
@@ -429,11 +430,14 @@ void BM_Record(benchmark::State& state, const IsaKernels* isa, Records layout, c
   if (isa) {
     run_block_lookup(state, data, wide ? isa->kernels->block8 : isa->kernels->block6, coefficients);
   } else {
-    const bench::ScalarLookup lookup = wide ? bench::record_kernels_generic.scalar8 : bench::record_kernels_generic.scalar6;
     const detail::FastGrid& grid = data.grid.grid;
     std::size_t i = 0;
-    for (auto _ : state)
-      benchmark::DoNotOptimize(lookup(grid, coefficients, data.separations[i++ & (query_count - 1)]));
+    if (wide)
+      for (auto _ : state)
+        benchmark::DoNotOptimize(bench::record_lookup<8>(grid, coefficients, data.separations[i++ & (query_count - 1)]));
+    else
+      for (auto _ : state)
+        benchmark::DoNotOptimize(bench::record_lookup<6>(grid, coefficients, data.separations[i++ & (query_count - 1)]));
     state.SetItemsProcessed(state.iterations());
   }
   state.counters["base_mod_64"] = static_cast<double>(reinterpret_cast<std::uintptr_t>(coefficients) % 64);
@@ -667,11 +671,13 @@ int run_checks() {
         batch.what = batch_label.c_str();
         batch_through(wide ? k.block8 : k.block6, data, coefficients, s.data(), out.data(), query_count);
         for (std::size_t i = 0; i < query_count; ++i) {
-          const double one = (wide ? k.scalar8 : k.scalar6)(data.grid.grid, coefficients, s[i]);
+          const double one = wide ? bench::record_lookup<8>(data.grid.grid, coefficients, s[i])
+                                  : bench::record_lookup<6>(data.grid.grid, coefficients, s[i]);
           if (!std::isnan(one)) scalar.worst = std::max(scalar.worst, rounding_units(one, reference[i]));
-          if (!wide) {  // and with the inline exp
-            const double inline_exp = k.scalar6_inline_exp(data.grid.grid, coefficients, s[i]);
-            if (!std::isnan(inline_exp)) scalar.worst = std::max(scalar.worst, rounding_units(inline_exp, reference[i]));
+          if (!wide) {  // the out-of-line builds, with either exp
+            for (const double other : {k.scalar6(data.grid.grid, coefficients, s[i]),
+                                       k.scalar6_inline_exp(data.grid.grid, coefficients, s[i])})
+              if (!std::isnan(other)) scalar.worst = std::max(scalar.worst, rounding_units(other, reference[i]));
           }
           batch.worst = std::max(batch.worst, rounding_units(out[i], reference[i]));
         }

@@ -17,7 +17,7 @@ struct InlineExp {
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
 };
 
-// Curve::value on the grid (runtime/core/curve.cpp), with the stride as a parameter.
+// Curve::value on the grid, out of line, with the stride as a parameter.
 template <int stride, class Math>
 __attribute__((noinline)) double scalar_lookup(const FastGrid& grid, const double* coefficients, double separation) {
   FastPosition at;
@@ -71,8 +71,8 @@ std::uint64_t block_lookup(const FastGrid& grid, const double* coefficients, con
 // one: as the runtime does (kernels_<isa>.cpp).
 template <class BatchMath>
 constexpr RecordKernels make_record_kernels() {
-  return RecordKernels{scalar_lookup<6, LibraryExp>, scalar_lookup<8, LibraryExp>, scalar_lookup<6, InlineExp>,
-                       block_lookup<6, BatchMath>, block_lookup<8, BatchMath>};
+  return RecordKernels{scalar_lookup<6, LibraryExp>, scalar_lookup<6, InlineExp>, block_lookup<6, BatchMath>,
+                       block_lookup<8, BatchMath>};
 }
 
 }  // namespace
