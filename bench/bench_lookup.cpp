@@ -1,71 +1,246 @@
-// Lookup latency, in one binary and one run, against the alternatives a user has:
-// Boost.Math's interpolators on the same knots, direct adaptive quadrature, and the one-line
-// curve fit lubrication codes use for the Gaussian F_5/2. Random separations over the whole
-// range (not a sweep), so branch prediction and caches see what a solver's inner loop sees.
-//   build/bench/bench_lookup --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Lookup speed, in one binary and one run, as ratios: every goal of issue 14 has its rows here.
+// Random separations (4096, uniform over each curve's whole table range [table_min_separation,
+// table_max_separation], not a sweep), so branch prediction and caches see what a solver's
+// inner loop sees. Run on a quiet machine, interleaved, medians:
+//   build/bench/bench_lookup --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
+//     --benchmark_report_aggregates_only=true      (one command line)
+//   build/bench/bench_lookup --check      (no timing: every copy and baseline below against Curve)
+//
+// Curve kinds (KIND): weibull_tail_a0.5, weibull_tail_a2, weibull_tail_a20, weibull_bounded_a0.5,
+// weibull_bounded_a2, weibull_bounded_a20 (X_3/2, the load), gaussian (F_5/2 over the table's
+// range) and gaussian_fit_domain (F_5/2 over h in [0, 4), where the lubrication codes' fit holds).
+//
+// Rows (names are kept from run to run; items_per_second counts queries, so every row is per query):
+//   BM_ScalarKind/KIND               Curve::value, one order, one query a call
+//   BM_Scalar/twice_order:N          the same, Weibull a = 2 tail, each order
+//   BM_GaussianF52CurveFit           the one-line fit 4.4086e-5 (4 - h)^6.804 on gaussian_fit_domain's
+//                                    separations (goal: BM_ScalarKind/gaussian_fit_domain <= 0.8x,
+//                                    every Weibull BM_ScalarKind <= 1.0x)
+//   BM_ContactAllFour                contact_at (count, area, load, stiffness), Weibull a = 2 tail
+//                                    (goal: <= 1.5x BM_ScalarKind/weibull_tail_a2)
+//   BM_ContactOrders                 Curve::contact_orders, the four orders' logs and values alone
+//   BM_Batch/ISA                     Curve::value_batch per instruction set (generic, avx2, avx512),
+//                                    Weibull a = 2 tail, 4096 queries a call (goal avx512 <= 3 ns,
+//                                    avx2 >= 3x scalar)
+//   BM_BatchGaussian/ISA             the same, gaussian (goal avx512 <= 2 ns)
+//   BM_BatchKind/KIND                Curve::value_batch, the best instruction set, every kind
+//   BM_BatchCApi                     asperity_eval_batch, Weibull a = 2 tail
+//   BM_BatchThreads/real_time/threads:T   one Curve's batch path from T threads at once (throughput:
+//                                    items_per_second; goal threads:2 >= 1.8x threads:1)
+//   BM_CoreProbe/real_time/threads:T pure floating-point work, no memory: whether this machine's
+//                                    CPUs scale at all (two hyperthreads of one core would not)
+//   BM_DirectQuadrature/KIND         Boost exp_sinh (tanh_sinh on the bounded side's finite range) at
+//                                    1e-14 on the defining integrals, written for any shape
+//                                    (direct_quadrature.hpp) (goal: >= 1000x BM_ScalarKind/KIND)
+//   BM_HighwayBatch/TARGET/KIND      the batch loop written with Highway (highway_kernel.hpp), per
+//                                    Highway target, and TARGET = dispatched (HWY_DYNAMIC_DISPATCH)
+//   BM_Record/PATH/RECORD/KIND       issue 13: bench-local copies of the lookup (record_kernels.hpp)
+//                                    with 48-byte records as the runtime holds them (48B), 48-byte
+//                                    records from a 64-byte aligned base (48B_aligned64) and 64-byte
+//                                    records, padded, aligned (64B_aligned64); PATH = scalar (inline,
+//                                    as Curve::value) or batch_ISA (through value_batch's blocks). The
+//                                    48B rows are the runtime's code: compare with BM_ScalarKind and
+//                                    BM_Batch to see that the copy is faithful.
+//   BM_ScalarHostIsa/ISA/EXP/KIND    the scalar lookup built for ISA (out of line, through a pointer),
+//                                    with the library's exp (libm) or the runtime's inline one
+//                                    (inline_exp): what a scalar kernel chosen at load time would give
+//   BM_StdExp, BM_FastExp, BM_StdLog, BM_FastLog   the elementary functions alone
+//   BM_OursSameSegment, BM_Boost*    the far-tail segment of Weibull a = 2 X_3/2: ours against
+//                                    Boost.Math's interpolators on the table's knots and map
+//   BM_PhysicalForward, BM_PhysicalInverseLoad     ContactModel forward (separation) and inverse (load)
+// Counters: curve_bytes (Curve::memory_bytes, all six orders), grid_intervals (per order),
+// underflow_fraction (quadrature: share of queries whose X underflows to 0 in double).
 #include <benchmark/benchmark.h>
 
 #include <boost/math/interpolators/cubic_hermite.hpp>
 #include <boost/math/interpolators/makima.hpp>
 #include <boost/math/interpolators/quintic_hermite.hpp>
+#include <algorithm>
 #include <cmath>
-#include <random>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
 #include <vector>
 
+#include "direct_quadrature.hpp"
+#include "grid_copy.hpp"
+#include "highway_kernel.hpp"
 #include "random_separations.hpp"
+#include "record_kernels.hpp"
 #include "asperity/asperity.h"
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/detail/fast_math.hpp"
 #include "asperity/table.hpp"
-#include "quadrature.hpp"
 
 namespace {
 using namespace asperity;
+using bench::uniform;
 
 constexpr std::size_t query_count = 4096;  // a power of two: index with a mask
+constexpr int batch_block = 256;           // as the runtime's Curve::value_batch
 
 const Table& table() {
   static const Table instance = Table::open_default();
   return instance;
 }
 
-using bench::uniform;
+// ---- the curve kinds ----
 
-// Weibull a = 2, tail side: separations across the whole tabulated range.
-const Curve& weibull_curve() {
-  static const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
-  return curve;
+struct Kind {
+  const char* name;
+  Distribution distribution;
+  Side side;
+  double shape;
+  int twice_order;
+  bool fit_domain;  // separations on [0, 4) instead of the table's range
+};
+const Kind kinds[] = {
+    {"weibull_tail_a0.5", Distribution::weibull, Side::tail, 0.5, 3, false},
+    {"weibull_tail_a2", Distribution::weibull, Side::tail, 2.0, 3, false},
+    {"weibull_tail_a20", Distribution::weibull, Side::tail, 20.0, 3, false},
+    {"weibull_bounded_a0.5", Distribution::weibull, Side::bounded, 0.5, 3, false},
+    {"weibull_bounded_a2", Distribution::weibull, Side::bounded, 2.0, 3, false},
+    {"weibull_bounded_a20", Distribution::weibull, Side::bounded, 20.0, 3, false},
+    {"gaussian", Distribution::gaussian, Side::tail, 0.0, 5, false},
+    {"gaussian_fit_domain", Distribution::gaussian, Side::tail, 0.0, 5, true},
+};
+constexpr std::size_t kind_count = sizeof kinds / sizeof kinds[0];
+
+// A block of doubles at a chosen alignment (std::vector gives malloc's 16 bytes).
+struct AlignedDoubles {
+  explicit AlignedDoubles(std::size_t count)
+      : data(static_cast<double*>(std::aligned_alloc(64, (count * sizeof(double) + 63) / 64 * 64 + 64)), &std::free) {}
+  std::unique_ptr<double, decltype(&std::free)> data;
+};
+
+// Issue 13's record layouts: 6 doubles an interval where the runtime's allocation puts them,
+// 6 doubles from a 64-byte aligned base (half the records still straddle two cache lines), and
+// 8 doubles (2 of padding) from a 64-byte aligned base (one line each).
+enum class Records { runtime48, aligned48, aligned64 };
+const char* to_string(Records records) {
+  return records == Records::runtime48 ? "48B" : records == Records::aligned48 ? "48B_aligned64" : "64B_aligned64";
 }
-const std::vector<double>& weibull_separations() {
-  static const std::vector<double> values =
-      uniform(weibull_curve().table_min_separation(), weibull_curve().table_max_separation(), query_count, 1);
-  return values;
+
+struct KindData {
+  const Kind* kind;
+  Curve curve;
+  std::vector<double> separations;
+  bench::GridCopy grid;  // the same grid, for the bench-local kernels
+  // the kind's order as 48-byte records from a 64-byte aligned base, and as 64-byte records
+  AlignedDoubles records48{0}, records64{0};
+  const double* records(Records layout) const {
+    return layout == Records::aligned48   ? records48.data.get()
+           : layout == Records::aligned64 ? records64.data.get()
+                                          : grid.order(kind->twice_order);
+  }
+};
+
+KindData make_kind(const Kind& kind) {
+  KindData data;
+  data.kind = &kind;
+  data.curve = table().curve(kind.distribution, kind.side, kind.shape);
+  const unsigned seed = static_cast<unsigned>(&kind - kinds) + 1;
+  data.separations = kind.fit_domain ? uniform(0.0, std::nextafter(4.0, 0.0), query_count, seed)
+                                     : uniform(data.curve.table_min_separation(), data.curve.table_max_separation(),
+                                               query_count, seed);
+  data.grid = bench::copy_grid(table(), kind.distribution, kind.side, kind.shape);
+  const std::size_t intervals = static_cast<std::size_t>(data.grid.grid.intervals);
+  const double* order = data.grid.order(kind.twice_order);
+  data.records48 = AlignedDoubles(intervals * 6);
+  data.records64 = AlignedDoubles(intervals * 8);
+  for (std::size_t i = 0; i < intervals; ++i)
+    for (int k = 0; k < 8; ++k) {
+      if (k < 6) data.records48.data.get()[i * 6 + k] = order[i * 6 + k];
+      data.records64.data.get()[i * 8 + k] = k < 6 ? order[i * 6 + k] : 0.0;
+    }
+  return data;
+}
+
+const std::vector<KindData>& all_kinds() {
+  static const std::vector<KindData> data = [] {
+    std::vector<KindData> out;
+    for (const Kind& kind : kinds) out.push_back(make_kind(kind));
+    return out;
+  }();
+  return data;
+}
+const KindData& kind_data(const char* name) {
+  for (const KindData& data : all_kinds())
+    if (std::strcmp(data.kind->name, name) == 0) return data;
+  std::fprintf(stderr, "no curve kind %s\n", name);
+  std::abort();
+}
+
+void describe(benchmark::State& state, const KindData& data) {
+  state.counters["curve_bytes"] = static_cast<double>(data.curve.memory_bytes());
+  state.counters["grid_intervals"] = static_cast<double>(data.curve.grid_intervals());
+}
+
+// ---- the scalar lookup, per kind, and the fit ----
+
+void BM_ScalarKind(benchmark::State& state, const char* name) {
+  const KindData& data = kind_data(name);
+  const Curve& curve = data.curve;
+  const int order = data.kind->twice_order;
+  const double* separations = data.separations.data();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curve.value(order, separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  describe(state, data);
 }
 
 void BM_Scalar(benchmark::State& state) {
-  const Curve& curve = weibull_curve();
+  const KindData& data = kind_data("weibull_tail_a2");
   const int order = static_cast<int>(state.range(0));
-  const std::vector<double>& separations = weibull_separations();
   std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(curve.value(order, separations[i++ & (query_count - 1)]));
+  for (auto _ : state) benchmark::DoNotOptimize(data.curve.value(order, data.separations[i++ & (query_count - 1)]));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_Scalar)->DenseRange(0, 5)->ArgName("twice_order");
 
+// The lubrication codes' F_5/2 fit; past h = 4 it answers 0 without computing anything.
+void BM_GaussianF52CurveFit(benchmark::State& state) {
+  const std::vector<double>& separations = kind_data("gaussian_fit_domain").separations;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const double h = separations[i++ & (query_count - 1)];
+    benchmark::DoNotOptimize(h < 4 ? 4.4086e-5 * std::pow(4 - h, 6.804) : 0.0);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_GaussianF52CurveFit);
+
+// ---- four quantities ----
+
 void BM_ContactAllFour(benchmark::State& state) {
-  const Curve& curve = weibull_curve();
-  const std::vector<double>& separations = weibull_separations();
+  const KindData& data = kind_data("weibull_tail_a2");
   const Surface surface{1e4, 1e-4, 1e-6, 1e11};
   ContactState out;
   std::size_t i = 0;
   for (auto _ : state) {
-    contact_at(curve, surface, separations[i++ & (query_count - 1)], out);
+    contact_at(data.curve, surface, data.separations[i++ & (query_count - 1)], out);
     benchmark::DoNotOptimize(out);
   }
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ContactAllFour);
+
+void BM_ContactOrders(benchmark::State& state) {
+  const KindData& data = kind_data("weibull_tail_a2");
+  double logs[4], values[4];
+  std::size_t i = 0;
+  for (auto _ : state) {
+    data.curve.contact_orders(data.separations[i++ & (query_count - 1)], logs, values);
+    benchmark::DoNotOptimize(values);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactOrders);
 
 // The physical layer: forward (a separation) against inverse (a load): a tabulated inverse and
 // one Newton step, against the same queries (the loads the separations give).
@@ -79,7 +254,7 @@ const ContactModel& physical_model() {
 }
 void BM_PhysicalForward(benchmark::State& state) {
   const ContactModel& model = physical_model();
-  const std::vector<double>& separations = weibull_separations();
+  const std::vector<double>& separations = kind_data("weibull_tail_a2").separations;
   const double sigma = model.surface().height_scale;
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(model.at_separation(sigma * separations[i++ & (query_count - 1)]));
@@ -92,7 +267,7 @@ void BM_PhysicalInverseLoad(benchmark::State& state) {
   static const std::vector<double> loads = [&] {
     std::vector<double> out;
     const double sigma = model.surface().height_scale;
-    for (double s : weibull_separations()) {
+    for (double s : kind_data("weibull_tail_a2").separations) {
       const double load = model.at_separation(sigma * s).load;
       out.push_back(load > 1e-290 ? load : 1e-290);
     }
@@ -104,39 +279,186 @@ void BM_PhysicalInverseLoad(benchmark::State& state) {
 }
 BENCHMARK(BM_PhysicalInverseLoad);
 
-// The batch path, per instruction set (the same separations, order 3/2).
-void BM_Batch(benchmark::State& state, InstructionSet isa) {
+// ---- the batch path ----
+
+void run_batch(benchmark::State& state, const KindData& data, InstructionSet isa) {
   if (!instruction_set_available(isa)) {
     state.SkipWithError("instruction set not available on this CPU");
     return;
   }
-  const Curve& curve = weibull_curve();
-  const std::vector<double>& separations = weibull_separations();
   std::vector<double> out(query_count);
   for (auto _ : state) {
-    curve.value_batch(3, separations.data(), out.data(), query_count, isa);
+    data.curve.value_batch(data.kind->twice_order, data.separations.data(), out.data(), query_count, isa);
     benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * query_count);
+  describe(state, data);
 }
+void BM_Batch(benchmark::State& state, InstructionSet isa) { run_batch(state, kind_data("weibull_tail_a2"), isa); }
 BENCHMARK_CAPTURE(BM_Batch, generic, InstructionSet::generic);
 BENCHMARK_CAPTURE(BM_Batch, avx2, InstructionSet::avx2);
 BENCHMARK_CAPTURE(BM_Batch, avx512, InstructionSet::avx512);
+void BM_BatchGaussian(benchmark::State& state, InstructionSet isa) { run_batch(state, kind_data("gaussian"), isa); }
+BENCHMARK_CAPTURE(BM_BatchGaussian, generic, InstructionSet::generic);
+BENCHMARK_CAPTURE(BM_BatchGaussian, avx2, InstructionSet::avx2);
+BENCHMARK_CAPTURE(BM_BatchGaussian, avx512, InstructionSet::avx512);
+void BM_BatchKind(benchmark::State& state, const char* name) {
+  run_batch(state, kind_data(name), InstructionSet::automatic);
+}
 
 void BM_BatchCApi(benchmark::State& state) {
   static asperity_table* handle = asperity_table_open(nullptr, nullptr, 0);
   static asperity_curve* curve = asperity_curve_open(handle, "weibull", "tail", 2.0, nullptr, 0);
-  const std::vector<double>& separations = weibull_separations();
+  const std::vector<double>& separations = kind_data("weibull_tail_a2").separations;
   std::vector<double> out(query_count);
   for (auto _ : state) {
     asperity_eval_batch(curve, 3, separations.data(), out.data(), query_count);
     benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * query_count);
 }
 BENCHMARK(BM_BatchCApi);
 
-// Our exp and log (detail/fast_math.hpp) against the library's, which stay the baseline.
+// Threads share the curve (and the queries); each writes its own output.
+void BM_BatchThreads(benchmark::State& state) {
+  const KindData& data = kind_data("weibull_tail_a2");
+  std::vector<double> out(query_count);
+  for (auto _ : state) {
+    data.curve.value_batch(data.kind->twice_order, data.separations.data(), out.data(), query_count);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * query_count);
+}
+BENCHMARK(BM_BatchThreads)->Threads(1)->Threads(2)->UseRealTime();
+
+// 24 independent multiply-add chains in registers: limited by the floating-point ports, so two
+// threads on two real cores do twice the work of one, and two hyperthreads of one core do not.
+void BM_CoreProbe(benchmark::State& state) {
+  double accumulator[24];
+  for (int k = 0; k < 24; ++k) accumulator[k] = 1.0 + k;
+  for (auto _ : state) {
+    for (int round = 0; round < 64; ++round)
+      for (double& value : accumulator) value = value * 0.9999999 + 1e-7;
+    benchmark::DoNotOptimize(accumulator);
+  }
+  state.SetItemsProcessed(state.iterations() * 64 * 24);
+}
+BENCHMARK(BM_CoreProbe)->Threads(1)->Threads(2)->UseRealTime();
+
+// ---- direct quadrature, per kind ----
+
+void BM_DirectQuadrature(benchmark::State& state, const char* name) {
+  const KindData& data = kind_data(name);
+  const bench::DirectQuadrature quadrature(data.kind->distribution, data.kind->side, data.kind->shape,
+                                           data.kind->twice_order);
+  std::size_t i = 0, underflow = 0, count = 0;
+  for (auto _ : state) {
+    const double value = quadrature(data.separations[i++ & (query_count - 1)]);
+    benchmark::DoNotOptimize(value);
+    underflow += value == 0;
+    ++count;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["underflow_fraction"] = count ? static_cast<double>(underflow) / count : 0.0;
+}
+
+// ---- bench-local kernels: Highway and the record layouts, through Curve::value_batch's blocks ----
+
+// What Curve::value_batch does around its kernel: blocks of 256 copied in, queries off the
+// grid answered one by one (here by the Curve itself).
+void batch_through(bench::BlockLookup block, const KindData& data, const double* coefficients, const double* separations,
+                   double* out, std::size_t count) {
+  double block_separations[batch_block];
+  for (std::size_t start = 0; start < count; start += batch_block) {
+    const int size = static_cast<int>(std::min<std::size_t>(batch_block, count - start));
+    for (int j = 0; j < size; ++j) block_separations[j] = separations[start + j];
+    if (block(data.grid.grid, coefficients, block_separations, out + start, size) == 0) continue;
+    detail::FastPosition unused;
+    for (int j = 0; j < size; ++j)
+      if (!detail::fast_position(data.grid.grid, block_separations[j], unused))
+        out[start + j] = data.curve.value(data.kind->twice_order, block_separations[j]);
+  }
+}
+
+void run_block_lookup(benchmark::State& state, const KindData& data, bench::BlockLookup block,
+                      const double* coefficients) {
+  std::vector<double> out(query_count);
+  for (auto _ : state) {
+    batch_through(block, data, coefficients, data.separations.data(), out.data(), query_count);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * query_count);
+}
+
+void BM_HighwayBatch(benchmark::State& state, const char* target, const char* name) {
+  const KindData& data = kind_data(name);
+  bench::BlockLookup block = bench::highway_block_dispatched;
+  if (std::strcmp(target, "dispatched") != 0)
+    for (const bench::HighwayTarget& candidate : bench::highway_targets())
+      if (std::strcmp(candidate.name, target) == 0) {
+        if (!candidate.available) {
+          state.SkipWithError("Highway target not available on this CPU");
+          return;
+        }
+        block = candidate.block;
+      }
+  run_block_lookup(state, data, block, data.grid.order(data.kind->twice_order));
+}
+
+struct IsaKernels {
+  const char* name;
+  InstructionSet isa;
+  const bench::RecordKernels* kernels;
+};
+const IsaKernels isa_kernels[] = {{"generic", InstructionSet::generic, &bench::record_kernels_generic},
+                                  {"avx2", InstructionSet::avx2, &bench::record_kernels_avx2},
+                                  {"avx512", InstructionSet::avx512, &bench::record_kernels_avx512}};
+
+// isa: the batch loop built for it, or null: the scalar lookup
+void BM_Record(benchmark::State& state, const IsaKernels* isa, Records layout, const char* name) {
+  const KindData& data = kind_data(name);
+  const double* coefficients = data.records(layout);
+  const bool wide = layout == Records::aligned64;
+  if (isa && !instruction_set_available(isa->isa)) {
+    state.SkipWithError("instruction set not available on this CPU");
+    return;
+  }
+  if (isa) {
+    run_block_lookup(state, data, wide ? isa->kernels->block8 : isa->kernels->block6, coefficients);
+  } else {
+    const detail::FastGrid& grid = data.grid.grid;
+    std::size_t i = 0;
+    if (wide)
+      for (auto _ : state)
+        benchmark::DoNotOptimize(bench::record_lookup<8>(grid, coefficients, data.separations[i++ & (query_count - 1)]));
+    else
+      for (auto _ : state)
+        benchmark::DoNotOptimize(bench::record_lookup<6>(grid, coefficients, data.separations[i++ & (query_count - 1)]));
+    state.SetItemsProcessed(state.iterations());
+  }
+  state.counters["base_mod_64"] = static_cast<double>(reinterpret_cast<std::uintptr_t>(coefficients) % 64);
+}
+
+void BM_ScalarHostIsa(benchmark::State& state, const IsaKernels* isa, bool inline_exp, const char* name) {
+  if (!instruction_set_available(isa->isa)) {
+    state.SkipWithError("instruction set not available on this CPU");
+    return;
+  }
+  const KindData& data = kind_data(name);
+  const bench::ScalarLookup lookup = inline_exp ? isa->kernels->scalar6_inline_exp : isa->kernels->scalar6;
+  const double* coefficients = data.grid.order(data.kind->twice_order);
+  std::size_t i = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(lookup(data.grid.grid, coefficients, data.separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+
+// ---- elementary functions: ours (detail/fast_math.hpp) against the library's ----
+
 const std::vector<double>& exponents() {
   static const std::vector<double> values = uniform(-700.0, 700.0, query_count, 4);
   return values;
@@ -159,6 +481,8 @@ BENCHMARK(run_elementary<std_exp, false>)->Name("BM_StdExp");
 BENCHMARK(run_elementary<our_exp, false>)->Name("BM_FastExp");
 BENCHMARK(run_elementary<std_log, true>)->Name("BM_StdLog");
 BENCHMARK(run_elementary<our_log, true>)->Name("BM_FastLog");
+
+// ---- one segment: ours against Boost.Math's interpolators ----
 
 // The far-tail segment of X_3/2 (a = 2) as knot arrays, for the Boost interpolators. Every
 // method answers the same queries: u = ln(s^a), value = exp(H(u) - t).
@@ -198,7 +522,7 @@ void run_interpolator(benchmark::State& state, const Interpolator& interpolator)
   const std::vector<double>& queries = far_tail_segment().queries;
   std::size_t i = 0;
   for (auto _ : state) {
-    // the same map to the segment variable as the runtime's: u = a ln s, t = e^u
+    // the table's map to the segment variable: u = a ln s, t = e^u
     const double s = queries[i++ & (query_count - 1)], u = 2.0 * std::log(s), t = std::exp(u);
     benchmark::DoNotOptimize(std::exp(interpolator(u) - t));
   }
@@ -207,8 +531,9 @@ void run_interpolator(benchmark::State& state, const Interpolator& interpolator)
 
 void BM_OursSameSegment(benchmark::State& state) {
   const std::vector<double>& queries = far_tail_segment().queries;
+  const Curve& curve = kind_data("weibull_tail_a2").curve;
   std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(weibull_curve().value(3, queries[i++ & (query_count - 1)]));
+  for (auto _ : state) benchmark::DoNotOptimize(curve.value(3, queries[i++ & (query_count - 1)]));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_OursSameSegment);
@@ -247,59 +572,164 @@ void BM_BoostMakima(benchmark::State& state) {
 }
 BENCHMARK(BM_BoostMakima);
 
-// Direct evaluation: adaptive double-exponential quadrature (Boost exp_sinh, tolerance 1e-14).
-void BM_DirectQuadrature(benchmark::State& state) {
-  const tablegen::CurveId id{Distribution::weibull, Side::tail, 2.0};
-  const std::vector<double>& separations = weibull_separations();
-  std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(tablegen::log_integral(id, 1.5, separations[i++ & (query_count - 1)]));
-  state.SetItemsProcessed(state.iterations());
-}
-BENCHMARK(BM_DirectQuadrature);
+// ---- registration of the per-kind rows ----
 
-// The same, in a batch (one call for 4096 queries): what a solver's inner loop would use.
-void BM_BatchWeibullOrder3(benchmark::State& state) { BM_Batch(state, InstructionSet::automatic); }
-BENCHMARK(BM_BatchWeibullOrder3);
+const char* const record_kinds[] = {"weibull_tail_a0.5", "weibull_tail_a2", "gaussian"};
+const char* const highway_kinds[] = {"weibull_tail_a2", "gaussian"};
+const char* const host_isa_kinds[] = {"weibull_tail_a2", "gaussian_fit_domain"};
 
-// The Gaussian F_5/2: our lookup against the lubrication codes' fit 4.4086e-5 (4 - h)^6.804,
-// over the fit's own domain h in [0, 4) (past 4 it answers 0 without computing anything).
-const std::vector<double>& gaussian_separations() {
-  static const std::vector<double> values = uniform(0.0, 4.0, query_count, 3);
-  return values;
-}
-
-void BM_GaussianF52Ours(benchmark::State& state) {
-  static const Curve curve = table().curve(Distribution::gaussian, Side::tail, 0);
-  const std::vector<double>& separations = gaussian_separations();
-  std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(curve.value(5, separations[i++ & (query_count - 1)]));
-  state.SetItemsProcessed(state.iterations());
-}
-BENCHMARK(BM_GaussianF52Ours);
-
-void BM_GaussianF52OursBatch(benchmark::State& state) {
-  static const Curve curve = table().curve(Distribution::gaussian, Side::tail, 0);
-  const std::vector<double>& separations = gaussian_separations();
-  std::vector<double> out(query_count);
-  for (auto _ : state) {
-    curve.value_batch(5, separations.data(), out.data(), query_count);
-    benchmark::DoNotOptimize(out.data());
+void register_kind_rows() {
+  for (const Kind& kind : kinds) {
+    benchmark::RegisterBenchmark((std::string("BM_ScalarKind/") + kind.name).c_str(), BM_ScalarKind, kind.name);
+    benchmark::RegisterBenchmark((std::string("BM_BatchKind/") + kind.name).c_str(), BM_BatchKind, kind.name);
+    benchmark::RegisterBenchmark((std::string("BM_DirectQuadrature/") + kind.name).c_str(), BM_DirectQuadrature,
+                                 kind.name);
   }
-  state.SetItemsProcessed(state.iterations() * query_count);
-}
-BENCHMARK(BM_GaussianF52OursBatch);
-
-void BM_GaussianF52CurveFit(benchmark::State& state) {
-  const std::vector<double>& separations = gaussian_separations();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const double h = separations[i++ & (query_count - 1)];
-    benchmark::DoNotOptimize(h < 4 ? 4.4086e-5 * std::pow(4 - h, 6.804) : 0.0);
+  for (const char* kind : highway_kinds) {
+    for (const bench::HighwayTarget& target : bench::highway_targets())
+      benchmark::RegisterBenchmark((std::string("BM_HighwayBatch/") + target.name + "/" + kind).c_str(),
+                                   BM_HighwayBatch, target.name, kind);
+    benchmark::RegisterBenchmark((std::string("BM_HighwayBatch/dispatched/") + kind).c_str(), BM_HighwayBatch,
+                                 "dispatched", kind);
   }
-  state.SetItemsProcessed(state.iterations());
+  for (const char* kind : record_kinds)
+    for (Records layout : {Records::runtime48, Records::aligned48, Records::aligned64}) {
+      const std::string suffix = std::string("/") + to_string(layout) + "/" + kind;
+      benchmark::RegisterBenchmark(("BM_Record/scalar" + suffix).c_str(), BM_Record,
+                                   static_cast<const IsaKernels*>(nullptr), layout, kind);
+      for (const IsaKernels& isa : isa_kernels)
+        benchmark::RegisterBenchmark((std::string("BM_Record/batch_") + isa.name + suffix).c_str(), BM_Record, &isa,
+                                     layout, kind);
+    }
+  for (const char* kind : host_isa_kinds)
+    for (const IsaKernels& isa : isa_kernels)
+      for (bool inline_exp : {false, true})
+        benchmark::RegisterBenchmark((std::string("BM_ScalarHostIsa/") + isa.name + (inline_exp ? "/inline_exp/" : "/libm/") +
+                                      kind).c_str(),
+                                     BM_ScalarHostIsa, &isa, inline_exp, kind);
 }
-BENCHMARK(BM_GaussianF52CurveFit);
+
+// ---- --check: every copy and baseline above against Curve (no timing) ----
+
+// |a - b| relative to |b|, with values below the normal range compared absolutely
+double difference(double a, double b) {
+  if (a == b) return 0;
+  const double scale = std::max(std::fabs(b), std::numeric_limits<double>::min());
+  const double d = std::fabs(a - b) / scale;
+  return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
+}
+// The same in units of the rounding of ln X: X = e^(ln X) carries the rounding of ln X (one
+// ulp of |ln X|, which differs with and without fused multiply-adds) as a relative error.
+double rounding_units(double a, double b) {
+  const double log_magnitude = b > 0 ? std::fabs(std::log(b)) : 745.0;
+  return difference(a, b) / (std::numeric_limits<double>::epsilon() * std::max(1.0, log_magnitude));
+}
+
+struct Worst {
+  const char* what;
+  double bound;
+  double worst = 0;
+  bool report(std::FILE* out) const {
+    const bool ok = worst <= bound;
+    std::fprintf(out, "  %-66s %.3g (bound %g) %s\n", what, worst, bound, ok ? "ok" : "FAILED");
+    return ok;
+  }
+};
+
+int run_checks() {
+  bool ok = true;
+  constexpr double rounding = 8;  // units of rounding_units: FMA or not, another exp
+  for (const KindData& data : all_kinds()) {
+    const int order = data.kind->twice_order;
+    const std::vector<double>& s = data.separations;
+    std::printf("%s (X_%g, s in [%g, %g], %zu grid intervals, %zu curve bytes)\n", data.kind->name, 0.5 * order,
+                *std::min_element(s.begin(), s.end()), *std::max_element(s.begin(), s.end()),
+                data.curve.grid_intervals(), data.curve.memory_bytes());
+    std::vector<double> reference(query_count), logs(query_count), out(query_count);
+    for (std::size_t i = 0; i < query_count; ++i) reference[i] = data.curve.value(order, s[i]);
+    // the grid copy is the Curve's grid: the same ln X, bit for bit
+    Worst copy{"grid copy: ln X vs Curve::log_value (1 where not bitwise equal)", 0};
+    for (std::size_t i = 0; i < query_count; ++i) {
+      detail::FastPosition at;
+      const double mine = detail::fast_position(data.grid.grid, s[i], at)
+                              ? detail::fast_quintic(data.grid.order(order), at.interval * detail::fast_stride, at.y)
+                              : data.curve.log_value(order, s[i]);
+      copy.worst = std::max(copy.worst, mine == data.curve.log_value(order, s[i]) ? 0.0 : 1.0);
+    }
+    ok &= copy.report(stdout);
+    for (Records layout : {Records::runtime48, Records::aligned48, Records::aligned64}) {
+      const double* coefficients = data.records(layout);
+      const bool wide = layout == Records::aligned64;
+      for (const IsaKernels& isa : isa_kernels) {
+        if (!instruction_set_available(isa.isa)) continue;
+        const bench::RecordKernels& k = *isa.kernels;
+        const std::string label = std::string("record copy ") + to_string(layout) + ", " + isa.name;
+        Worst scalar{nullptr, rounding}, batch{nullptr, rounding};
+        const std::string scalar_label = label + ": scalar vs Curve::value (rounding units)";
+        const std::string batch_label = label + ": batch vs Curve::value (rounding units)";
+        scalar.what = scalar_label.c_str();
+        batch.what = batch_label.c_str();
+        batch_through(wide ? k.block8 : k.block6, data, coefficients, s.data(), out.data(), query_count);
+        for (std::size_t i = 0; i < query_count; ++i) {
+          const double one = wide ? bench::record_lookup<8>(data.grid.grid, coefficients, s[i])
+                                  : bench::record_lookup<6>(data.grid.grid, coefficients, s[i]);
+          if (!std::isnan(one)) scalar.worst = std::max(scalar.worst, rounding_units(one, reference[i]));
+          if (!wide) {  // the out-of-line builds, with either exp
+            for (const double other : {k.scalar6(data.grid.grid, coefficients, s[i]),
+                                       k.scalar6_inline_exp(data.grid.grid, coefficients, s[i])})
+              if (!std::isnan(other)) scalar.worst = std::max(scalar.worst, rounding_units(other, reference[i]));
+          }
+          batch.worst = std::max(batch.worst, rounding_units(out[i], reference[i]));
+        }
+        ok &= scalar.report(stdout) & batch.report(stdout);
+      }
+    }
+    for (const IsaKernels& isa : isa_kernels) {
+      if (!instruction_set_available(isa.isa)) continue;
+      const std::string label = std::string("Curve::value_batch, ") + isa.name + ", vs Curve::value (rounding units)";
+      Worst batch{label.c_str(), rounding};
+      data.curve.value_batch(order, s.data(), out.data(), query_count, isa.isa);
+      for (std::size_t i = 0; i < query_count; ++i) batch.worst = std::max(batch.worst, rounding_units(out[i], reference[i]));
+      ok &= batch.report(stdout);
+    }
+    for (const bench::HighwayTarget& target : bench::highway_targets()) {
+      if (!target.available) continue;
+      const std::string label = std::string("Highway ") + target.name + " vs Curve::value (rounding units)";
+      Worst highway{label.c_str(), rounding};
+      batch_through(target.block, data, data.grid.order(order), s.data(), out.data(), query_count);
+      for (std::size_t i = 0; i < query_count; ++i)
+        highway.worst = std::max(highway.worst, rounding_units(out[i], reference[i]));
+      ok &= highway.report(stdout);
+    }
+    // the quadrature baseline computes the right thing (where X is a normal double): the
+    // table's error (~1e-11) plus the quadrature's
+    const bench::DirectQuadrature quadrature(data.kind->distribution, data.kind->side, data.kind->shape, order);
+    // (every query: the timing loop must not meet one that throws)
+    Worst direct{"direct quadrature vs Curve::value (relative, where X > 1e-300)", 1e-9};
+    for (std::size_t i = 0; i < query_count; ++i) {
+      const double value = quadrature(s[i]);
+      if (reference[i] > 1e-300) direct.worst = std::max(direct.worst, difference(value, reference[i]));
+    }
+    ok &= direct.report(stdout);
+  }
+  std::printf(ok ? "all checks passed\n" : "SOME CHECKS FAILED\n");
+  return ok ? 0 : 1;
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--check") == 0) return run_checks();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("instruction_set", to_string(best_instruction_set()));
+  std::string highway;
+  for (const bench::HighwayTarget& target : bench::highway_targets())
+    highway += std::string(highway.empty() ? "" : " ") + target.name + (target.available ? "" : "(unavailable)");
+  benchmark::AddCustomContext("highway_targets", highway);
+  register_kind_rows();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,8 +1,11 @@
-// Speed against error: for each method a user could use to get X_n(s), the time per query
-// (Google Benchmark, random separations) and the maximum relative error over the range,
-// measured against 50-digit references (Boost.Multiprecision quadrature of the defining
-// integrals, tests/reference.hpp) at the same fixed set of points for every method.
-//   Methods: ours (scalar and batch) at several knot densities; Boost.Math's interpolators
+// Speed against error against memory: for each method a user could use to get X_n(s), the
+// time per query (Google Benchmark, random separations), the maximum relative error over the
+// range, measured against 50-digit references (Boost.Multiprecision quadrature of the defining
+// integrals, tests/reference.hpp) at the same fixed set of points for every method, and the
+// bytes the method holds for the curve.
+//   Methods: ours (scalar and batch) at several knot densities of the table (tablegen
+//   --density) and several grid tolerances (CurveOptions::grid_tolerance), each curve holding
+//   the one order studied (order_mask) as Boost's interpolators do; Boost.Math's interpolators
 //   on the default knots with our map to the segment variable; direct quadrature (Boost
 //   exp_sinh/tanh_sinh in double); for the Gaussian F_5/2 the lubrication codes' curve fit.
 // Run by scripts/speed-vs-error.sh, which turns the JSON into docs/speed-vs-error.md and a plot.
@@ -100,8 +103,11 @@ struct Method {
       : study(std::move(study_name)), name(std::move(method_name)), family(std::move(method_family)),
         density(knot_density), table_bytes(bytes) {}
   std::string study, name, family;
-  double density = 0;        // knots relative to the default layout (0: no table)
-  double table_bytes = 0;    // one curve, all six orders (ours) or one order (Boost)
+  double density = 0;         // knots relative to the default layout (0: no table)
+  double table_bytes = 0;     // the knot data of the one order: 3 doubles a knot (ours), Boost's own
+  double grid_tolerance = 0;  // ours: CurveOptions::grid_tolerance
+  double memory_bytes = 0;    // what the method holds to answer the one order (ours: Curve::memory_bytes)
+  double memory_all_orders = 0;  // ours: the same curve holding all six orders
   std::function<double(double)> log_value;          // ln X at one separation
   std::function<void(const double*, double*, std::size_t)> batch;  // X for many (optional)
   std::function<double(double)> value;              // X (for the timing of scalar methods)
@@ -144,24 +150,40 @@ void add_methods(const Study& study) {
   for (double density : {0.125, 0.25, 0.5, 1.0, 2.0}) {
     const std::vector<SegmentSpec> layout = scale_knot_density(base, density);
     const std::vector<double> knots = knots_for(study, layout);
-    curves().push_back(std::make_unique<Curve>(study.distribution, study.side, study.shape, layout, knots.data()));
-    const Curve* curve = curves().back().get();
-    if (density == 1.0) {
-      default_curve = curve;
-      default_knots = knots;
+    int total = 0;
+    for (const SegmentSpec& spec : layout) total += spec.knots;
+    if (density == 1.0) default_knots = knots;
+    for (double tolerance : {1e-13, 1e-11, 1e-9, 1e-7}) {
+      CurveOptions options;
+      options.grid_tolerance = tolerance;
+      curves().push_back(std::make_unique<Curve>(study.distribution, study.side, study.shape, layout, knots.data(),
+                                                 order_bit(order), options));
+      const Curve* curve = curves().back().get();
+      const Curve all_orders(study.distribution, study.side, study.shape, layout, knots.data(), Curve::all_orders,
+                             options);
+      if (density == 1.0 && tolerance == CurveOptions{}.grid_tolerance) default_curve = curve;
+      for (bool is_batch : {false, true}) {
+        const char* name = is_batch ? "asperity batch" : "asperity scalar";
+        Method method{study.name, name, name, density, 24.0 * total};
+        method.grid_tolerance = tolerance;
+        method.memory_bytes = static_cast<double>(curve->memory_bytes());
+        method.memory_all_orders = static_cast<double>(all_orders.memory_bytes());
+        if (is_batch) {
+          method.log_value = [curve, order](double s) {
+            double out;
+            curve->log_value_batch(order, &s, &out, 1);
+            return out;
+          };
+          method.batch = [curve, order](const double* s, double* out, std::size_t n) {
+            curve->value_batch(order, s, out, n);
+          };
+        } else {
+          method.log_value = [curve, order](double s) { return curve->log_value(order, s); };
+          method.value = [curve, order](double s) { return curve->value(order, s); };
+        }
+        added.push_back(method);
+      }
     }
-    Method scalar{study.name, "asperity scalar", "asperity scalar", density, double(curve->memory_bytes())};
-    scalar.log_value = [curve, order](double s) { return curve->log_value(order, s); };
-    scalar.value = [curve, order](double s) { return curve->value(order, s); };
-    Method batch{study.name, "asperity batch", "asperity batch", density, double(curve->memory_bytes())};
-    batch.log_value = [curve, order](double s) {
-      double out;
-      curve->log_value_batch(order, &s, &out, 1);
-      return out;
-    };
-    batch.batch = [curve, order](const double* s, double* out, std::size_t n) { curve->value_batch(order, s, out, n); };
-    added.push_back(scalar);
-    added.push_back(batch);
   }
   const std::vector<SegmentSpec>& layout = base;
   const Curve& ours = *default_curve;
@@ -170,6 +192,7 @@ void add_methods(const Study& study) {
     int total = 0;
     for (const SegmentSpec& spec : layout) total += spec.knots;
     method.table_bytes = bytes_per_knot * total;
+    method.memory_bytes = method.table_bytes;  // the knot vectors it holds (and little else)
     std::shared_ptr<std::remove_pointer_t<decltype(curve_pointer)>> shared(curve_pointer);
     method.log_value = [shared](double s) { return shared->log_value(s); };
     method.value = [shared](double s) { return std::exp(shared->log_value(s)); };
@@ -229,6 +252,9 @@ void run(benchmark::State& state, const Method* method, const std::vector<double
   state.counters["max_rel_error"] = method->max_error;
   state.counters["density"] = method->density;
   state.counters["table_bytes"] = method->table_bytes;
+  state.counters["memory_bytes"] = method->memory_bytes;
+  state.counters["memory_all_orders"] = method->memory_all_orders;
+  state.counters["grid_tolerance"] = method->grid_tolerance;
   state.counters["batch"] = method->batch ? 1 : 0;
   state.SetLabel(method->study + "|" + method->name + "|" + method->family);
 }
@@ -258,8 +284,9 @@ int main(int argc, char** argv) {
     const Method* method = &methods()[i];
     const std::vector<double>* study_queries = &queries[i < per_first ? 0 : 1];
     char name[160];
-    std::snprintf(name, sizeof name, "%s/%s/density:%g", i < per_first ? "weibull2_load" : "gaussian_F52",
-                  method->name.c_str(), method->density);
+    std::snprintf(name, sizeof name, "%s/%s/density:%g/grid_tolerance:%g",
+                  i < per_first ? "weibull2_load" : "gaussian_F52", method->name.c_str(), method->density,
+                  method->grid_tolerance);
     benchmark::RegisterBenchmark(name, run, method, study_queries);
   }
   benchmark::RunSpecifiedBenchmarks();
