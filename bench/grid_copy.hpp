@@ -33,11 +33,7 @@ inline GridCopy copy_grid(const Table& table, Distribution distribution, Side si
   reference.log_values = [&compact](double separation, double* out) {
     compact.log_values(separation, 0, order_count - 1, out);
   };
-  reference.order_mask = compact.order_mask();
-  reference.table_min = compact.table_min();
-  reference.table_max = compact.table_max();
-  reference.grid_min = options.grid_min_separation;
-  reference.grid_max = options.grid_max_separation;
+  detail::describe_grid(reference, compact, options.grid_min_separation, options.grid_max_separation);
   detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
   GridCopy copy;
   copy.grid = std::move(build.grid);

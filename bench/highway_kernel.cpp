@@ -15,7 +15,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // One vector of queries: what run_block does for one query, lane by lane.
 template <class D>
-HWY_INLINE hn::Vec<D> lookup(D d, const detail::FastGrid& grid, const double* HWY_RESTRICT directory,
+HWY_INLINE hn::Vec<D> lookup(D d, const detail::FastGrid& grid, const std::int64_t* HWY_RESTRICT directory,
                              const double* HWY_RESTRICT coefficients, hn::Vec<D> separation,
                              hn::Mask<D>& inside) {
   const hn::RebindToUnsigned<D> du;
@@ -34,19 +34,21 @@ HWY_INLINE hn::Vec<D> lookup(D d, const detail::FastGrid& grid, const double* HW
                                      hn::Set(di, grid.sides[0].offset));
   const auto exponent = hn::BitCast(di, hn::And(hn::ShiftRight<52>(bits), hn::Set(du, 0x7ff)));
   // off the grid: directory entry 0 and interval 0, valid loads whose answers the caller replaces
-  const auto entry = hn::ShiftLeft<1>(hn::IfThenElseZero(keep, hn::Add(offset, exponent)));  // 2 doubles an entry
-  const auto knots = hn::GatherIndex(d, directory, entry);
-  const auto first = hn::GatherIndex(d, directory + 1, entry);
-  const auto mantissa = hn::BitCast(
-      d, hn::Or(hn::And(bits, hn::Set(du, 0x000fffffffffffffull)), hn::Set(du, 0x3ff0000000000000ull)));
-  const auto position = hn::Mul(hn::Sub(mantissa, hn::Set(d, 1.0)), knots);  // exact: knots is a power of two
-  const auto cell = hn::Floor(position);
-  // first + cell as an integer by the 2^52 shifter, as the runtime does (no i64 conversion on AVX2)
-  const auto shifter = hn::Set(d, detail::round_shifter);
+  const auto entry = hn::IfThenElseZero(keep, hn::Add(offset, exponent));
+  const auto packed = hn::BitCast(du, hn::GatherIndex(di, directory, entry));  // one 64-bit word an entry
+  // as the runtime: log2 of the knots in the low 6 bits, the first interval (biased) above
+  const auto log2_knots = hn::And(packed, hn::Set(du, 63));
+  const auto mantissa = hn::And(bits, hn::Set(du, 0x000fffffffffffffull));
+  const auto cell = hn::Shr(mantissa, hn::Sub(hn::Set(du, 52), log2_knots));
+  const auto fraction = hn::BitCast(
+      d, hn::Or(hn::And(hn::Shl(mantissa, log2_knots), hn::Set(du, 0x000fffffffffffffull)),
+                hn::Set(du, 0x3ff0000000000000ull)));
   const auto interval = hn::IfThenElseZero(
-      keep, hn::Sub(hn::BitCast(di, hn::Add(hn::Add(first, cell), shifter)), hn::BitCast(di, shifter)));
+      keep, hn::BitCast(di, hn::Add(hn::Sub(hn::ShiftRight<6>(packed),
+                                            hn::Set(du, static_cast<std::uint64_t>(detail::FastBinade::first_bias))),
+                                    cell)));
   const auto at = hn::Add(hn::ShiftLeft<2>(interval), hn::ShiftLeft<1>(interval));  // 6 doubles an interval
-  const auto y = hn::Sub(hn::Sub(position, cell), hn::Set(d, 0.5));
+  const auto y = hn::Sub(fraction, hn::Set(d, 1.5));
   const auto y2 = hn::Mul(y, y);
   // Estrin, as detail::fast_quintic
   const auto low = hn::MulAdd(y, hn::GatherIndex(d, coefficients + 1, at), hn::GatherIndex(d, coefficients, at));
@@ -59,8 +61,8 @@ std::uint64_t HighwayBlock(const detail::FastGrid& grid, const double* HWY_RESTR
                            const double* HWY_RESTRICT separations, double* HWY_RESTRICT out, int count) {
   const hn::ScalableTag<double> d;
   const std::size_t lanes = hn::Lanes(d);
-  const double* directory = reinterpret_cast<const double*>(grid.directory.data());
-  static_assert(sizeof(detail::FastBinade) == 2 * sizeof(double), "a directory entry is two doubles");
+  const std::int64_t* directory = reinterpret_cast<const std::int64_t*>(grid.directory.data());
+  static_assert(sizeof(detail::FastBinade) == sizeof(std::int64_t), "a directory entry is one 64-bit word");
   std::uint64_t outside = 0;
   std::size_t j = 0;
   const std::size_t total = static_cast<std::size_t>(count);

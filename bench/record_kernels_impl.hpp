@@ -35,7 +35,6 @@ __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const Fa
   const std::uint64_t lower1_bits = bits_of(grid.sides[1].lower), upper1_bits = bits_of(grid.sides[1].upper);
   const std::uint64_t offset0 = static_cast<std::uint64_t>(grid.sides[0].offset);
   const std::uint64_t offset1 = static_cast<std::uint64_t>(grid.sides[1].offset);
-  const std::uint64_t shifter_bits = bits_of(round_shifter);
   std::uint64_t outside = 0;
   for (int j = 0; j < count; ++j) {
     const double separation = separations[j];
@@ -48,13 +47,12 @@ __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const Fa
     const std::uint64_t keep = 0 - static_cast<std::uint64_t>(inside);
     const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
     const std::uint64_t entry = (offset + ((bits >> 52) & 0x7ff)) & keep;
-    const double knots = directory[entry].knots;
-    const double first = directory[entry].first;
-    const double mantissa = double_of((bits & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
-    const double position = (mantissa - 1.0) * knots;
-    const double cell = __builtin_floor(position);
-    const std::uint64_t index = (bits_of(first + cell + round_shifter) - shifter_bits) & keep;
-    const double log_value = fast_quintic(coefficients, index * stride, position - cell - 0.5);
+    const std::uint64_t packed = directory[entry].packed;
+    const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
+    const std::uint64_t cell = mantissa >> (52 - log2_knots);
+    const double fraction = double_of(((mantissa << log2_knots) & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
+    const std::uint64_t index = ((packed >> 6) - static_cast<std::uint64_t>(FastBinade::first_bias) + cell) & keep;
+    const double log_value = fast_quintic(coefficients, index * stride, fraction - 1.5);
     out[j] = Math::exp(log_value);
     outside += inside ? 0 : 1;
   }

@@ -61,14 +61,7 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
 void Curve::build(detail::CompactCurve& compact, const detail::GridReference& reference_in,
                   const CurveOptions& options) {
   detail::GridReference reference = reference_in;
-  reference.order_mask = compact.order_mask();
-  reference.table_min = compact.table_min();
-  reference.table_max = compact.table_max();
-  reference.grid_min = options.grid_min_separation;
-  reference.grid_max = options.grid_max_separation;
-  const double inside_zero_zone = 8.4703294725430019e-22;  // the double below 2^-70
-  compact.log_values(inside_zero_zone, 0, order_count - 1, reference.next_to_zero[0].data());
-  compact.log_values(-inside_zero_zone, 0, order_count - 1, reference.next_to_zero[1].data());
+  detail::describe_grid(reference, compact, options.grid_min_separation, options.grid_max_separation);
   if (!(options.grid_min_separation < options.grid_max_separation))
     throw Error("CurveOptions: the grid's separations must be an interval (min < max)");
   auto data = std::make_shared<detail::CurveData>();

@@ -195,6 +195,17 @@ void find_first_contact_zones(Builder& builder, double upper_limit, int side) {
   }
 }
 
+void describe_grid(GridReference& reference, const CompactCurve& compact, double grid_min, double grid_max) {
+  reference.order_mask = compact.order_mask();
+  reference.table_min = compact.table_min();
+  reference.table_max = compact.table_max();
+  reference.grid_min = grid_min;
+  reference.grid_max = grid_max;
+  const double inside_zero_zone = std::nextafter(zero_zone, 0.0);  // the compact curve's closed forms
+  compact.log_values(inside_zero_zone, 0, order_count - 1, reference.next_to_zero[0].data());
+  compact.log_values(-inside_zero_zone, 0, order_count - 1, reference.next_to_zero[1].data());
+}
+
 FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) {
   if (!(tolerance > 0)) throw Error("the lookup grid's tolerance must be positive");
   Builder builder{reference, tolerance};

@@ -31,6 +31,10 @@ struct GridReference {
   std::array<std::array<double, order_count>, 2> next_to_zero{};
 };
 
+// Fills what `reference` says about the curve from its compact form (all but log_values): the
+// orders, the table's range, the grid's range [grid_min, grid_max], the closed forms next to 0.
+void describe_grid(GridReference& reference, const CompactCurve& compact, double grid_min, double grid_max);
+
 // The grid covers |s| from 2^-70 to the table's ends on each side the table covers. In each
 // binade the knot count is doubled until the quintics reproduce the compact curve at the check
 // points to `tolerance` in ln X (absolute: relative in X) where X >= 1e-100, and to 100 times
