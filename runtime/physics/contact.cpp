@@ -13,14 +13,16 @@ ContactScales contact_scales(const Surface& surface) noexcept {
   const double modulus = surface.contact_modulus;
   ContactScales scales;
   scales.count = n;
+  const double root = std::sqrt(radius * scale);  // one square root: R^(1/2) sigma^(3/2) = sigma sqrt(R sigma)
   scales.area = M_PI * n * radius * scale;
-  scales.load = (4.0 / 3.0) * n * modulus * std::sqrt(radius) * scale * std::sqrt(scale);
-  scales.stiffness = 2 * n * modulus * std::sqrt(radius * scale);
+  scales.load = (4.0 / 3.0) * n * modulus * scale * root;
+  scales.stiffness = 2 * n * modulus * root;
   return scales;
 }
 
-// The one rule for the stiffness/load ratio: from the logs, so that it stays finite where X_1/2
-// and X_3/2 underflow; NaN where X_3/2 is exactly 0 (no contact: 0/0).
+// The one rule for the stiffness/load ratio: X_1/2 / X_3/2 where both are normal doubles (one
+// division), from the logs where they underflow (so that it stays finite there); NaN where
+// X_3/2 is exactly 0 (no contact: 0/0).
 ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept {
   ContactState state;
   state.count = scales.count * values[orders::count];
@@ -28,8 +30,13 @@ ContactState contact_state_from_logs(const ContactScales& scales, const double l
   state.area = scales.area * values[orders::area];
   state.load = scales.load * values[orders::load];
   const double no_contact = -std::numeric_limits<double>::infinity();
-  state.stiffness_ratio = logs[orders::load] == no_contact ? std::numeric_limits<double>::quiet_NaN()
-                                                           : 1.5 * std::exp(logs[orders::stiffness] - logs[orders::load]);
+  const double smallest_normal = std::numeric_limits<double>::min(), largest = std::numeric_limits<double>::max();
+  const double stiffness = values[orders::stiffness], load = values[orders::load];
+  if (stiffness >= smallest_normal && load >= smallest_normal && stiffness <= largest && load <= largest)
+    state.stiffness_ratio = 1.5 * (stiffness / load);
+  else
+    state.stiffness_ratio = logs[orders::load] == no_contact ? std::numeric_limits<double>::quiet_NaN()
+                                                             : 1.5 * std::exp(logs[orders::stiffness] - logs[orders::load]);
   return state;
 }
 
