@@ -39,6 +39,34 @@ TEST(Curve, AllOrdersAtOnceMatchOneAtATime) {
     }
 }
 
+// contact_orders: the four orders 0, 1/2, 1, 3/2 as log_value and value give them, on the
+// grid, off it (the all-touching segment, the series, |s| < 2^-70), for bad input, and NaN for
+// an order a curve does not hold.
+TEST(Curve, ContactOrdersAreLogValueAndValueOfTheFourOrders) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const Curve curves[] = {table().curve(Distribution::weibull, Side::tail, 2.0),
+                          table().curve(Distribution::weibull, Side::bounded, 0.5),
+                          table().curve(Distribution::gaussian, Side::tail, 0),
+                          table().curve(Distribution::weibull, Side::tail, 1.3, order_bit(0) | order_bit(3))};
+  const double special[] = {NAN, 0.0, -1e-300, 1e300, -1e6, INFINITY};
+  for (const Curve& curve : curves)
+    for (int i = 0; i < 3000; ++i) {
+      const double separation = i < 6 ? special[i] : std::sinh(14 * unit(rng));
+      double logs[4], values[4];
+      curve.contact_orders(separation, logs, values);
+      for (int k = 0; k < 4; ++k) {
+        EXPECT_TRUE(same_bits(logs[k], curve.log_value(k, separation))) << separation << " order " << k;
+        // the values by one vector exp (fast_math.hpp, within 1.1e-16 of exp), value() by the C library's
+        const double expected = curve.value(k, separation);
+        if (std::isnan(expected) || std::isinf(expected) || expected == 0)
+          EXPECT_TRUE(same_bits(values[k], expected)) << separation << " order " << k;
+        else
+          EXPECT_NEAR(values[k] / expected, 1.0, 4e-16) << separation << " order " << k;
+      }
+    }
+}
+
 TEST(Curve, ReportsItsRangeAndMemory) {
   const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
   EXPECT_EQ(curve.table_min_separation(), -3.0);
