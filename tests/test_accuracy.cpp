@@ -218,7 +218,7 @@ std::string curve_name(const Curve& curve) {
 }
 
 // Issue #10: at every grid node (not only the anchors 0.5, 1, 2, 3, 5, 20) ln X_n at s = 0
-// against the closed forms, and at s = +-1e-15, 1e-12, 1e-9, 1e-6 (the bounded side: s < 0)
+// against the closed forms, and at s = +-1e-20, 1e-15, 1e-12, 1e-9, 1e-6 (the bounded side: s < 0)
 // against the references: the tail's power terms s^(n + a) and the bounded side's first-contact
 // terms d^(n + a) live there.
 TEST(Accuracy, EveryGridNodeAtAndNearFirstContact) {
@@ -250,7 +250,7 @@ TEST(Accuracy, EveryGridNodeAtAndNearFirstContact) {
     }
   std::vector<Probe> probes;
   for (const Curve& curve : curves)
-    for (double magnitude : {1e-15, 1e-12, 1e-9, 1e-6})
+    for (double magnitude : {1e-20, 1e-15, 1e-12, 1e-9, 1e-6})
       for (double separation : {-magnitude, magnitude}) {
         if (curve.side() == Side::bounded && separation > 0) continue;
         for (int k = 0; k < order_count; ++k) {

@@ -201,6 +201,10 @@ void describe_grid(GridReference& reference, const CompactCurve& compact, double
   reference.table_max = compact.table_max();
   reference.grid_min = grid_min;
   reference.grid_max = grid_max;
+  if (compact.side() == Side::bounded) {  // X_n -> 0 like d^(n+a): no value at 0 to meet
+    for (auto& side : reference.next_to_zero) side.fill(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
   const double inside_zero_zone = std::nextafter(zero_zone, 0.0);  // the compact curve's closed forms
   compact.log_values(inside_zero_zone, 0, order_count - 1, reference.next_to_zero[0].data());
   compact.log_values(-inside_zero_zone, 0, order_count - 1, reference.next_to_zero[1].data());

@@ -26,8 +26,8 @@ struct GridReference {
   double table_min = 0, table_max = 0;  // the grid covers these, cut to [grid_min, grid_max]
   double grid_min = -1.0 / 0.0, grid_max = 1.0 / 0.0;
   // ln X_n as the curve answers it just inside |s| = 2^-70 on each side ([0]: s > 0, [1]:
-  // s < 0), where the closed forms answer: X_n(0), or exp(-s^a) for the Weibull order 0;
-  // -inf on the bounded side. What the grid meets next to s = 0.
+  // s < 0), where the closed forms answer: X_n(0), or exp(-s^a) for the Weibull order 0; NaN
+  // on the bounded side (X_n -> 0 there: nothing to meet). What the grid meets next to s = 0.
   std::array<std::array<double, order_count>, 2> next_to_zero{};
 };
 
