@@ -10,20 +10,10 @@ seconds="${1:-60}"
 build_dir="${BUILD_DIR:-build-fuzz}"
 targets="fuzz_table_file fuzz_table_contents fuzz_scene fuzz_eval_csv"
 
-# Clang 14 and its libFuzzer runtime (Debian), installed if missing, as scripts/setup.sh does.
+# Clang 14 and its libFuzzer runtime (Debian), installed if missing.
 packages="clang-14 libclang-rt-14-dev"
-missing=""
-for package in $packages; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing="$missing $package"
-done
-if [ -n "$missing" ]; then
-  echo "installing:$missing" >&2
-  sudo=""
-  [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  $sudo apt-get update -qq
-  # shellcheck disable=SC2086
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing >/dev/null
-fi
+# shellcheck disable=SC2086
+bash scripts/install-packages.sh $packages
 
 CC=clang-14 CXX=clang++-14 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DASPERITY_BUILD_FUZZERS=ON -DASPERITY_SANITIZE=ON -DASPERITY_BUILD_TESTS=OFF \

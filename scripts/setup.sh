@@ -8,17 +8,8 @@ cd "$(dirname "$0")/.."
 packages="g++ gfortran cmake make libboost-dev libhdf5-dev pkg-config libgtest-dev libbenchmark-dev libtoml11-dev libssl-dev libcli11-dev libzip-dev libpugixml-dev libnlopt-dev nlohmann-json3-dev libhwy-dev"
 # the Python module (pybind11 from Debian, no PyPI), its tests, its example and its benchmark
 packages="$packages python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib python3-scipy"
-missing=""
-for package in $packages; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing="$missing $package"
-done
-if [ -n "$missing" ]; then
-  echo "installing:$missing" >&2
-  sudo=""
-  [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing >/dev/null
-fi
+# shellcheck disable=SC2086
+bash scripts/install-packages.sh $packages
 
 build_dir="${BUILD_DIR:-build}"
 # shellcheck disable=SC2086
