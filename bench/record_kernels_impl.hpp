@@ -14,7 +14,7 @@ struct LibraryExp {
   static double exp(double x) noexcept { return __builtin_exp(x); }
 };
 struct InlineExp {
-  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
+  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp_lanes(x); }
 };
 
 // Curve::value on the grid, out of line, with the stride as a parameter.

@@ -12,6 +12,15 @@
 
 namespace {
 using asperity::detail::fast_exp;
+using asperity::detail::fast_exp_lanes;
+
+// The two forms of exp (one call at a time, and the one written for vectorized loops)
+struct ExpForm {
+  const char* name;
+  double (*exp)(double);
+};
+const ExpForm exp_forms[] = {{"fast_exp", [](double x) { return fast_exp(x); }},
+                             {"fast_exp_lanes", [](double x) { return fast_exp_lanes(x); }}};
 using asperity::detail::fast_log;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -21,31 +30,59 @@ double relative_error(double value, long double reference) {
 }
 
 TEST(FastMath, ExpWithinBoundOverTheNormalRange) {
-  std::mt19937_64 rng(1);
-  std::uniform_real_distribution<double> pick(-708.3, 709.7);
-  double worst = 0;
-  for (int i = 0; i < 2000000; ++i) {
-    const double x = pick(rng);
-    worst = std::fmax(worst, relative_error(fast_exp(x), std::exp(static_cast<long double>(x))));
+  for (const ExpForm& form : exp_forms) {
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> pick(-708.3, 709.7);
+    double worst = 0;
+    for (int i = 0; i < 2000000; ++i) {
+      const double x = pick(rng);
+      worst = std::fmax(worst, relative_error(form.exp(x), std::exp(static_cast<long double>(x))));
+    }
+    for (double x : {0.0, -0.0, 1e-300, -1e-300, 1.0, -1.0, 0.5 * std::log(2.0), 709.78, -708.39})
+      worst = std::fmax(worst, relative_error(form.exp(x), std::exp(static_cast<long double>(x))));
+    RecordProperty(std::string(form.name) + "_max_relative_error", std::to_string(worst));
+    EXPECT_LT(worst, 2.5e-16) << form.name;  // measured 1.6e-16
   }
-  for (double x : {0.0, -0.0, 1e-300, -1e-300, 1.0, -1.0, 0.5 * std::log(2.0), 709.78, -708.39})
-    worst = std::fmax(worst, relative_error(fast_exp(x), std::exp(static_cast<long double>(x))));
-  RecordProperty("max_relative_error", std::to_string(worst));
-  EXPECT_LT(worst, 2.5e-16);  // measured 1.6e-16
 }
 
 TEST(FastMath, ExpSpecialValuesAndSubnormals) {
-  EXPECT_EQ(fast_exp(0.0), 1.0);
-  EXPECT_EQ(fast_exp(-inf), 0.0);
-  EXPECT_EQ(fast_exp(inf), inf);
-  EXPECT_EQ(fast_exp(710.0), inf);
-  EXPECT_EQ(fast_exp(-746.0), 0.0);
-  EXPECT_EQ(fast_exp(-1e308), 0.0);
-  EXPECT_TRUE(std::isnan(fast_exp(std::nan(""))));
-  // below the normal range the result is subnormal, to the subnormal's absolute precision
-  for (double x = -744.0; x < -708.4; x += 0.37) {
-    const double reference = std::exp(x);
-    EXPECT_NEAR(fast_exp(x), reference, 1e-323 + 4e-16 * reference) << x;
+  for (const ExpForm& form : exp_forms) {
+    SCOPED_TRACE(form.name);
+    const auto fast_exp = form.exp;
+    EXPECT_EQ(fast_exp(0.0), 1.0);
+    EXPECT_EQ(fast_exp(-inf), 0.0);
+    EXPECT_EQ(fast_exp(inf), inf);
+    EXPECT_EQ(fast_exp(710.0), inf);
+    EXPECT_EQ(fast_exp(-746.0), 0.0);
+    EXPECT_EQ(fast_exp(-1e308), 0.0);
+    EXPECT_TRUE(std::isnan(fast_exp(std::nan(""))));
+    EXPECT_EQ(fast_exp(-1100.0), 0.0);
+    EXPECT_EQ(fast_exp(1100.0), inf);
+    EXPECT_EQ(fast_exp(1e308), inf);
+    EXPECT_EQ(fast_exp(709.79), inf);
+    EXPECT_EQ(fast_exp(std::log(std::numeric_limits<double>::max())), std::exp(std::log(std::numeric_limits<double>::max())));
+    EXPECT_EQ(fast_exp(-745.2), 0.0);
+    EXPECT_EQ(fast_exp(-745.1), 4.9406564584124654e-324);  // the smallest subnormal
+    // below the normal range the result is subnormal (built in the bits), within one subnormal
+    // spacing (2^-1074) of the reference, and at most one above the smallest normal
+    constexpr long double spacing = 4.9406564584124654e-324L;
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> pick(-745.2, -708.3);
+    long double worst = 0;
+    for (int i = 0; i < 200000; ++i) {
+      const double x = pick(rng);
+      worst = std::fmax(worst, std::fabs(static_cast<long double>(fast_exp(x)) - std::exp(static_cast<long double>(x))));
+  }
+  RecordProperty(std::string(form.name) + "_max_subnormal_error_spacings", std::to_string(static_cast<double>(worst / spacing)));
+  EXPECT_LE(worst, spacing);  // measured 0.75
+  // the normal range's lowest end: the rounding of the significand carries into the exponent
+  double x = -708.3964185322641;  // ln of the smallest normal; 2000 doubles either side
+  for (int i = 0; i < 2000; ++i) x = std::nextafter(x, 0.0);
+  for (int i = 0; i < 4000; ++i, x = std::nextafter(x, -inf)) {
+    const long double reference = std::exp(static_cast<long double>(x));
+    EXPECT_LE(std::fabs(static_cast<long double>(fast_exp(x)) - reference), spacing) << x;
+  }
+  EXPECT_GE(fast_exp(-708.3964185322641), std::numeric_limits<double>::min());
   }
 }
 
@@ -77,15 +114,19 @@ TEST(FastMath, LogSpecialValues) {
   EXPECT_NEAR(fast_log(std::numeric_limits<double>::max()), 709.78271289338397, 1e-13);
 }
 
-// The same function in a loop (which the compiler may vectorize) and one call at a time.
+// The same function in a loop (which the compiler may vectorize) and one call at a time; and
+// exp's two forms, bit for bit (densely where the result leaves the normal range).
 TEST(FastMath, LoopAgreesWithSingleCalls) {
   std::vector<double> inputs;
   for (double x = -800; x < 800; x += 0.731) inputs.push_back(x);
+  for (double x = -746.5; x < -707; x += 0.0137) inputs.push_back(x);
+  for (double x = 709; x < 711; x += 0.0137) inputs.push_back(x);
+  for (double x : {1e300, -1e300, 1e15, -1e15, 5e-324, -0.0}) inputs.push_back(x);
   inputs.push_back(std::nan(""));
   inputs.push_back(inf);
   inputs.push_back(-inf);
   std::vector<double> exps(inputs.size()), logs(inputs.size());
-  for (std::size_t i = 0; i < inputs.size(); ++i) exps[i] = fast_exp(inputs[i]);
+  for (std::size_t i = 0; i < inputs.size(); ++i) exps[i] = fast_exp_lanes(inputs[i]);
   for (std::size_t i = 0; i < inputs.size(); ++i) logs[i] = fast_log(std::fabs(inputs[i]));
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     volatile double x = inputs[i];  // a call the compiler cannot fold into the loop above

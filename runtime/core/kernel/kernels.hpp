@@ -24,14 +24,14 @@ struct Kernels {
 // What each instruction-set build instantiates: internal linkage (see fast_math.hpp).
 namespace {
 struct FastMath {
-  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
+  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp_lanes(x); }
 };
 struct LibraryMath {
   static double exp(double x) noexcept { return __builtin_exp(x); }
 };
 
 inline void exp4(const double* logs, double* out) noexcept {
-  for (int k = 0; k < 4; ++k) out[k] = fast_exp(logs[k]);
+  for (int k = 0; k < 4; ++k) out[k] = fast_exp_lanes(logs[k]);
 }
 
 // Not inlined, and with restrict: the promise that the results do not overlap the
