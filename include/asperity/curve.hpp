@@ -32,6 +32,10 @@ struct CurveOptions {
   // layout answers (a scene table: the scene's range).
   double grid_min_separation = -1.0 / 0.0;
   double grid_max_separation = 1.0 / 0.0;
+  // contact_orders (and contact_at) from a second copy of orders 0..3 laid out for one 4-lane
+  // vector: 192 bytes more per grid interval (+67% of the grid), for four quantities at ~1.3x
+  // the cost of one (docs/speed-vs-error.md). Off: they cost four lookups' worth of loads.
+  bool contact_records = true;
 };
 
 // A curve between the shapes of a grid (Table::curve): Lagrange interpolation across shapes at
@@ -70,7 +74,9 @@ class Curve {
   // ln X_n(s) for twice_order = first..last (inclusive): out[twice_order - first].
   void log_values(double separation, int first_twice_order, int last_twice_order, double* out) const noexcept;
   // Orders 0, 1/2, 1, 3/2 (count, stiffness, area, load: what contact_at needs), logs and
-  // values, from one position and one vector exp.
+  // values, from one position and (with CurveOptions::contact_records) one 4-lane vector: the
+  // logs are log_value's to the rounding of fused multiply-adds (measured within
+  // 1.7e-16 (1 + |ln X|), tested to 1e-15), the same bits without the records.
   void contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept;
 
   // The batch path: out[i] = value / log_value(twice_order, separations[i]) for i < count,

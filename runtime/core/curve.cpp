@@ -1,6 +1,7 @@
 #include "asperity/curve.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "asperity/detail/compact_curve.hpp"
@@ -76,6 +77,20 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
         build.order_offset[order] < 0 ? nullptr : data->coefficients.data() + build.order_offset[order];
   data->outside = std::move(compact);
   data->kernels = &detail::kernels_for(InstructionSet::automatic);
+  bool all_contact_orders = options.contact_records;
+  for (int k = 0; k < 4; ++k) all_contact_orders = all_contact_orders && data->order_coefficients[k];
+  if (all_contact_orders) {
+    const std::size_t intervals = static_cast<std::size_t>(data->grid.intervals);
+    constexpr std::size_t line = 64 / sizeof(double);  // room to start on a cache line
+    data->contact_storage.assign(intervals * detail::contact_record_size + line, 0.0);
+    double* records = data->contact_storage.data();
+    while (reinterpret_cast<std::uintptr_t>(records) % 64 != 0) ++records;
+    for (std::size_t i = 0; i < intervals; ++i)
+      for (int j = 0; j < detail::fast_stride; ++j)
+        for (int k = 0; k < 4; ++k)
+          records[i * detail::contact_record_size + j * 4 + k] = data->order_coefficients[k][i * detail::fast_stride + j];
+    data->contact_records = records;
+  }
   data->grid_error = build.achieved;
   order_mask_ = data->outside.order_mask();
   data_ = std::move(data);
@@ -91,7 +106,8 @@ double Curve::grid_error() const noexcept { return data_ ? data_->grid_error : n
 
 std::size_t Curve::memory_bytes() const noexcept {
   if (!data_) return sizeof(*this);
-  return sizeof(*this) + sizeof(detail::CurveData) + data_->coefficients.capacity() * sizeof(double) +
+  return sizeof(*this) + sizeof(detail::CurveData) +
+         (data_->coefficients.capacity() + data_->contact_storage.capacity()) * sizeof(double) +
          data_->grid.directory.capacity() * sizeof(detail::FastBinade) + data_->outside.memory_bytes();
 }
 
@@ -127,11 +143,30 @@ void Curve::log_values(double separation, int first, int last, double* out) cons
   }
 }
 
+// One position; then the four orders' quintics and exps as one 4-lane vector from the contact
+// records, or (without them) one quintic each and four independent exps.
 void Curve::contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept {
-  log_values(separation, 0, 3, log_out);
-  if (data_) data_->kernels->exp4(log_out, value_out);
-  else
-    for (int k = 0; k < 4; ++k) value_out[k] = not_a_number;
+  if (!data_) {
+    for (int k = 0; k < 4; ++k) log_out[k] = value_out[k] = not_a_number;
+    return;
+  }
+  const detail::CurveData& data = *data_;
+  detail::FastPosition at;
+  if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1)) {
+    if (data.contact_records) {
+      data.kernels->contact4(data.contact_records + at.interval * detail::contact_record_size, at.y, log_out,
+                             value_out);
+      return;
+    }
+    const std::uint64_t start = at.interval * detail::fast_stride;
+    for (int k = 0; k < 4; ++k) {
+      const double* c = data.order_coefficients[k];
+      log_out[k] = c ? detail::fast_quintic(c, start, at.y) : not_a_number;
+    }
+  } else {
+    data.outside.log_values(separation, 0, 3, log_out);
+  }
+  for (int k = 0; k < 4; ++k) value_out[k] = detail::fast_exp(log_out[k]);
 }
 
 void Curve::value_batch(int twice_order, const double* separations, double* out, std::size_t count,

@@ -15,6 +15,11 @@ struct CurveData {
   FastGrid grid;
   std::array<const double*, order_count> order_coefficients{};  // into coefficients; null: not held
   std::vector<double> coefficients;  // [held order][interval][fast_stride]
+  // orders 0..3 again, [interval][coefficient][order] from a 64-byte boundary (three cache lines
+  // an interval): contact_orders' four quintics as one 4-lane vector. Null: not all four held,
+  // or CurveOptions::contact_records off.
+  const double* contact_records = nullptr;
+  std::vector<double> contact_storage;
   CompactCurve outside;              // the all-touching segment, the series, the values at 0
   const Kernels* kernels = nullptr;  // the batch kernel of the widest instruction set here
   double grid_error = 0;

@@ -103,14 +103,15 @@ static ASPERITY_ALWAYS_INLINE ExpParts exp_parts(double x) noexcept {
 static ASPERITY_ALWAYS_INLINE std::uint64_t exp_normal(ExpParts parts) noexcept {
   return parts.scale + ((parts.exponent - (parts.scale >> 52)) << 52);
 }
-// Below it (exponent <= 0): the significand shifted right by 1 - exponent (at most 63),
-// rounded; by one place less and then a rounded halving (a variable left shift for the
-// rounding bit does not vectorize in GCC); & 63 keeps the shift defined for any exponent.
+// Below it (exponent <= 0): the subnormal's bit pattern is the integer nearest
+// e^x 2^1074 = scale 2^(m + 1074) < 2^52, which adding 2^52 rounds to (once, to nearest even)
+// and puts in the low bits. Every operand and result is a normal double (2^(m + 1074) is made in
+// the exponent field, m clamped at -1100 where the result is 0 anyway), so there is no assist.
 static ASPERITY_ALWAYS_INLINE std::uint64_t exp_below_normal(ExpParts parts) noexcept {
-  const std::int64_t shift = static_cast<std::int64_t>(1 - parts.exponent);  // no signed overflow
-  const std::uint64_t shift_less_one = static_cast<std::uint64_t>((shift < 63 ? shift : 63) - 1) & 63;
-  const std::uint64_t significand = (parts.scale & 0x000fffffffffffffULL) | 0x0010000000000000ULL;
-  return ((significand >> shift_less_one) + 1) >> 1;
+  constexpr double two_52 = 4503599627370496.0;
+  const std::int64_t m = static_cast<std::int64_t>(parts.exponent - (parts.scale >> 52));
+  const std::uint64_t scaled_exponent = static_cast<std::uint64_t>((m < -1100 ? -1100 : m) + 1074 + 1023);
+  return bits_of(double_of(parts.scale) * double_of(scaled_exponent << 52) + two_52) - bits_of(two_52);
 }
 
 // Between -746 and 710 the arithmetic itself gives the subnormals, 0 and inf; beyond, and for

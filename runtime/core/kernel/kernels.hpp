@@ -12,9 +12,13 @@ namespace asperity::detail {
 
 inline constexpr int batch_block = 256;
 
+inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
+
 struct Kernels {
-  // out[k] = exp(logs[k]) for k < 4, as one vector (the four quantities of contact_at).
-  void (*exp4)(const double* logs, double* out) noexcept;
+  // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
+  // one interval's contact record (curve_data.hpp): logs[k] and values[k] = exp(logs[k]), as
+  // one 4-lane vector where the instruction set has one.
+  void (*contact4)(const double* record, double y, double* logs, double* values) noexcept;
   // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
   // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.
   int (*block)(const FastGrid& grid, const double* order_coefficients, const double* separations, double* out,
@@ -26,12 +30,23 @@ namespace {
 struct FastMath {
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp_lanes(x); }
 };
-struct LibraryMath {
-  static double exp(double x) noexcept { return __builtin_exp(x); }
+// One call at a time (the baseline build, where vectors of two doubles do not pay for the
+// masked form: bench_lookup BM_Batch/generic)
+struct ScalarMath {
+  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
 };
 
-inline void exp4(const double* logs, double* out) noexcept {
-  for (int k = 0; k < 4; ++k) out[k] = fast_exp_lanes(logs[k]);
+template <class Math>
+void contact4(const double* __restrict record, double y, double* __restrict logs, double* __restrict values) noexcept {
+  const double y2 = y * y;
+  for (int k = 0; k < 4; ++k) {  // the quintic of fast_quintic, four orders a lane
+    const double low = record[k] + y * record[4 + k];
+    const double middle = record[8 + k] + y * record[12 + k];
+    const double high = record[16 + k] + y * record[20 + k];
+    const double log_value = low + y2 * (middle + y2 * high);
+    logs[k] = log_value;
+    values[k] = Math::exp(log_value);
+  }
 }
 
 // Not inlined, and with restrict: the promise that the results do not overlap the

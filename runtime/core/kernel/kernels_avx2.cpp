@@ -2,5 +2,5 @@
 #include "kernels.hpp"
 
 namespace asperity::detail {
-const Kernels avx2_kernels{exp4, block<FastMath>};
+const Kernels avx2_kernels{contact4<FastMath>, block<FastMath>};
 }

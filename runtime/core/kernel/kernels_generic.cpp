@@ -1,8 +1,9 @@
 // The kernels built for the compiler's baseline (see kernels.hpp). With two doubles a vector
-// the inline exp does not pay (one at a time the C library's is faster: bench_lookup
-// BM_StdExp / BM_FastExp), so this build calls the library's.
+// (and no 64-bit variable shifts) the masked exp does not pay: this build calls the inline
+// exp one at a time (bench_lookup BM_StdExp / BM_FastExp: faster than the C library's, which
+// also slows below e^-512 and for subnormal results).
 #include "kernels.hpp"
 
 namespace asperity::detail {
-const Kernels generic_kernels{exp4, block<LibraryMath>};
+const Kernels generic_kernels{contact4<ScalarMath>, block<ScalarMath>};
 }
