@@ -41,11 +41,13 @@ ContactState contact_state_from_logs(const ContactScales& scales, const double l
 }
 
 bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  out = {nan, nan, nan, nan, nan};
-  if (!positive(surface.summit_count) || !positive(surface.summit_radius) ||
-      !positive(surface.height_scale) || !positive(surface.contact_modulus) || !std::isfinite(separation))
+  // & rather than &&: one branch on all five checks
+  if (!(positive(surface.summit_count) & positive(surface.summit_radius) & positive(surface.height_scale) &
+        positive(surface.contact_modulus) & std::isfinite(separation))) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    out = {nan, nan, nan, nan, nan};
     return false;
+  }
   double logs[4], values[4];
   curve.contact_orders(separation, logs, values);  // one lookup for orders 0, 1/2, 1, 3/2
   out = contact_state_from_logs(contact_scales(surface), logs, values);
