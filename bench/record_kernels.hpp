@@ -20,7 +20,7 @@ ASPERITY_ALWAYS_INLINE double record_lookup(const detail::FastGrid& grid, const 
                                             double separation) noexcept {
   detail::FastPosition at;
   if (__builtin_expect(!detail::fast_position(grid, separation, at), 0)) return __builtin_nan("");
-  return __builtin_exp(detail::fast_quintic(coefficients, at.interval * stride, at.y));
+  return detail::fast_exp(detail::fast_quintic(coefficients, at.interval * stride, at.y));
 }
 
 // The same, 6 doubles a record, as a function built for one instruction set (what a scalar

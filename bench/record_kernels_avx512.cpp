@@ -2,5 +2,5 @@
 #include "record_kernels_impl.hpp"
 
 namespace asperity::bench {
-const RecordKernels record_kernels_avx512 = make_record_kernels<InlineExp>();
+const RecordKernels record_kernels_avx512 = make_record_kernels<LanesExp>();
 }

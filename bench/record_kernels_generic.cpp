@@ -2,5 +2,5 @@
 #include "record_kernels_impl.hpp"
 
 namespace asperity::bench {
-const RecordKernels record_kernels_generic = make_record_kernels<LibraryExp>();
+const RecordKernels record_kernels_generic = make_record_kernels<InlineExp>();
 }

@@ -13,7 +13,10 @@ using namespace asperity::detail;
 struct LibraryExp {
   static double exp(double x) noexcept { return __builtin_exp(x); }
 };
-struct InlineExp {
+struct InlineExp {  // one call at a time, as Curve::value
+  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
+};
+struct LanesExp {  // the form for vectorized loops, as the runtime's AVX2 / AVX-512 kernels
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp_lanes(x); }
 };
 
@@ -65,8 +68,8 @@ std::uint64_t block_lookup(const FastGrid& grid, const double* coefficients, con
   return run_block<stride, Math>(grid, grid.directory.data(), coefficients, separations, out, count);
 }
 
-// The generic build calls the library's exp in the batch loop, the vector builds the inline
-// one: as the runtime does (kernels_<isa>.cpp).
+// The generic build calls the inline exp one call at a time in the batch loop, the vector
+// builds its masked form: as the runtime does (kernels_<isa>.cpp).
 template <class BatchMath>
 constexpr RecordKernels make_record_kernels() {
   return RecordKernels{scalar_lookup<6, LibraryExp>, scalar_lookup<6, InlineExp>, block_lookup<6, BatchMath>,

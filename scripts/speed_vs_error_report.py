@@ -309,12 +309,18 @@ def lookup_section(lookup):
         f"{four / one:.2f}x", four / one <= 1.5)
     if has("BM_ContactOrders"):
         orders = ns("BM_ContactOrders")
-        row("(`Curve::contact_orders` alone: the four orders' logs and values)", f"{orders:.1f} ns",
-            f"{orders / one:.2f}x", True)
+        row("`Curve::contact_orders` (the four integrals X_0, X_1/2, X_1, X_3/2, logs and values) <= 1.5x one order",
+            f"{orders:.1f} ns", f"{orders / one:.2f}x", orders / one <= 1.5)
     for name, limit, label in (("BM_Batch/avx512", 3.0, "Weibull a = 2"), ("BM_BatchGaussian/avx512", 2.0, "Gaussian F_5/2")):
         if has(name):
             value = ns(name)
             row(f"batch {label} on AVX-512 <= {limit:g} ns a query", f"{value:.2f} ns", "", value <= limit)
+    for name, limit, label in (("BM_Batch/avx512", 3.0, "Weibull a = 2"), ("BM_BatchGaussian/avx512", 2.0, "Gaussian F_5/2")):
+        if has(name):  # the issue's ns were measured beside a fit of 10.1 ns: the same targets as fractions of the fit
+            value = ns(name)
+            row(f"(batch {label} on AVX-512 against the fit in this run; the issue's {limit:g} ns was "
+                f"{limit / 10.1:.2f}x its fit)", f"{value:.2f} ns vs fit {fit:.1f} ns", f"{value / fit:.2f}x",
+                value / fit <= limit / 10.1)
     for name, scalar, label in (("BM_Batch/avx2", "BM_ScalarKind/weibull_tail_a2", "Weibull a = 2"),
                                 ("BM_BatchGaussian/avx2", "BM_ScalarKind/gaussian", "Gaussian F_5/2")):
         if has(name):

@@ -67,7 +67,9 @@ class Curve {
 
   // ln X_n(s), twice_order = 2n in 0..5, s in the origin convention of docs/model.md.
   double log_value(int twice_order, double separation) const noexcept;
-  // X_n(s); underflows to 0 below ~1e-308 (use log_value there).
+  // X_n(s); underflows to 0 below ~1e-308 (use log_value there). On the grid through a kernel
+  // built for this CPU (fused multiply-adds where it has them), so exp(log_value) to the
+  // rounding of the quintic: measured within 2.2e-16 (1 + |ln X|) (tests/test_curve.cpp).
   double value(int twice_order, double separation) const noexcept;
   // ln X_n(s) of all six orders at once (one position on the grid): out[twice_order].
   void log_values(double separation, double out[order_count]) const noexcept;
@@ -135,6 +137,11 @@ inline double Curve::log_value(int twice_order, double separation) const noexcep
 inline double Curve::value(int twice_order, double separation) const noexcept {
   if (!has_order(twice_order)) return __builtin_nan("");
   const detail::CurveData& data = *data_;
+  if (data.scalar_value) {  // built for this CPU (fused multiply-adds): faster despite the call
+    const double value = data.scalar_value(data.grid, data.order_coefficients[twice_order], separation);
+    if (__builtin_expect(value == value, 1)) return value;
+    return value_outside(twice_order, separation);
+  }
   detail::FastPosition at;
   if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1))
     return detail::fast_exp(

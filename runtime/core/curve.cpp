@@ -77,6 +77,7 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
         build.order_offset[order] < 0 ? nullptr : data->coefficients.data() + build.order_offset[order];
   data->outside = std::move(compact);
   data->kernels = &detail::kernels_for(InstructionSet::automatic);
+  data->scalar_value = data->kernels->value;
   bool all_contact_orders = options.contact_records;
   for (int k = 0; k < 4; ++k) all_contact_orders = all_contact_orders && data->order_coefficients[k];
   if (all_contact_orders) {

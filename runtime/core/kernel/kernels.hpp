@@ -14,7 +14,13 @@ inline constexpr int batch_block = 256;
 
 inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
 
+// Curve::value on the grid, built for an instruction set (fused multiply-adds in the quintic
+// and the exp): X, or NaN off the grid (never on it: finite coefficients give a finite ln X).
+using ScalarValue = double (*)(const FastGrid& grid, const double* order_coefficients, double separation) noexcept;
+
 struct Kernels {
+  // null: the baseline build, where Curve::value's inline code is the faster
+  ScalarValue value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
   // one interval's contact record (curve_data.hpp): logs[k] and values[k] = exp(logs[k]), as
   // one 4-lane vector where the instruction set has one.
@@ -47,6 +53,13 @@ void contact4(const double* __restrict record, double y, double* __restrict logs
     logs[k] = log_value;
     values[k] = Math::exp(log_value);
   }
+}
+
+template <class Math>
+double scalar_value(const FastGrid& grid, const double* coefficients, double separation) noexcept {
+  FastPosition at;
+  if (__builtin_expect(!fast_position(grid, separation, at), 0)) return __builtin_nan("");
+  return Math::exp(fast_quintic(coefficients, at.interval * fast_stride, at.y));
 }
 
 // Not inlined, and with restrict: the promise that the results do not overlap the

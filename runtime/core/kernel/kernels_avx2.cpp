@@ -2,5 +2,5 @@
 #include "kernels.hpp"
 
 namespace asperity::detail {
-const Kernels avx2_kernels{contact4<FastMath>, block<FastMath>};
+const Kernels avx2_kernels{scalar_value<ScalarMath>, contact4<FastMath>, block<FastMath>};
 }

@@ -5,5 +5,5 @@
 #include "kernels.hpp"
 
 namespace asperity::detail {
-const Kernels generic_kernels{contact4<ScalarMath>, block<ScalarMath>};
+const Kernels generic_kernels{nullptr, contact4<ScalarMath>, block<ScalarMath>};
 }
