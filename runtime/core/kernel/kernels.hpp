@@ -1,6 +1,7 @@
-// The batch kernels, one build per instruction set (kernels_<isa>.cpp), and the choice among
-// them (kernels_dispatch.cpp). Every query runs the same branch-free arithmetic on the fast
-// grid (fast_grid.hpp): bits of s -> binade -> interval -> quintic -> exp, which the compiler
+// The kernels, one build per instruction set (kernels_<isa>.cpp), and the choice among them
+// (kernels_dispatch.cpp): the batch loop, Curve::value's scalar lookup and contact_orders'
+// four-lane one. Every batch query runs the same branch-free arithmetic on the fast grid
+// (fast_grid.hpp): bits of s -> binade -> interval -> quintic -> exp, which the compiler
 // vectorizes 2, 4 or 8 queries at a time (the directory and coefficient loads become gathers).
 #pragma once
 #include <cstdint>
