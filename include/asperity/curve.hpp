@@ -122,9 +122,9 @@ class Curve {
 };
 
 // The hot path: one position on the grid (a few integer operations, two loads), one quintic,
-// one exp (fast_math.hpp's, inline and branch-free: the library's takes a slow path below
-// e^-512 and both pay ~100 ns for a subnormal made by floating-point arithmetic, where the
-// tail's curves reach); the rare rest out of line.
+// one exp (fast_math.hpp's: the library's takes a slow path below e^-512, and both would pay
+// ~100 ns for a subnormal made by floating-point arithmetic, where the tails reach); value()
+// through the kernel built for this CPU where there is one; the rare rest out of line.
 inline double Curve::log_value(int twice_order, double separation) const noexcept {
   if (!has_order(twice_order)) return __builtin_nan("");  // also a default Curve: it holds no order
   const detail::CurveData& data = *data_;

@@ -22,9 +22,8 @@ struct CurveData {
   std::vector<double> contact_storage;
   CompactCurve outside;              // the all-touching segment, the series, the values at 0
   const Kernels* kernels = nullptr;  // the batch kernel of the widest instruction set here
-  // Curve::value on the grid built for this CPU's instruction set (NaN off the grid), or null:
-  // the inline code (kernel/kernels.hpp, ScalarValue)
-  double (*scalar_value)(const FastGrid& grid, const double* order_coefficients, double separation) noexcept = nullptr;
+  // Curve::value on the grid built for this CPU's instruction set, or null: the inline code
+  ScalarValue scalar_value = nullptr;
   double grid_error = 0;
 };
 

@@ -51,6 +51,10 @@ struct FastGrid {
   std::int32_t intervals = 0;          // per order (at most 2^17)
 };
 
+// Curve::value on the grid, as built for one instruction set (runtime/core/kernel/): X, or NaN
+// off the grid (never on it: finite coefficients give a finite ln X).
+using ScalarValue = double (*)(const FastGrid& grid, const double* order_coefficients, double separation) noexcept;
+
 // The kernel below is `static` like fast_math.hpp's functions: each instruction-set build of
 // the batch kernel (runtime/core/kernel/) keeps its own copy.
 

@@ -15,12 +15,9 @@ inline constexpr int batch_block = 256;
 
 inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
 
-// Curve::value on the grid, built for an instruction set (fused multiply-adds in the quintic
-// and the exp): X, or NaN off the grid (never on it: finite coefficients give a finite ln X).
-using ScalarValue = double (*)(const FastGrid& grid, const double* order_coefficients, double separation) noexcept;
-
 struct Kernels {
-  // null: the baseline build, where Curve::value's inline code is the faster
+  // Curve::value's lookup (fast_grid.hpp), with fused multiply-adds where the set has them;
+  // null in the baseline build, where Curve::value's inline code is the faster
   ScalarValue value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
   // one interval's contact record (curve_data.hpp): logs[k] and values[k] = exp(logs[k]), as
