@@ -44,7 +44,9 @@
 //   BM_ScalarHostIsa/ISA/EXP/KIND    the scalar lookup built for ISA (out of line, through a pointer),
 //                                    with the library's exp (libm) or the runtime's inline one
 //                                    (inline_exp): what a scalar kernel chosen at load time would give
-//   BM_StdExp, BM_FastExp, BM_StdLog, BM_FastLog   the elementary functions alone
+//   BM_StdExp, BM_FastExp, BM_StdLog, BM_FastLog   the elementary functions alone (x in
+//                                    [-700, 700]); BM_FastExpLanes: exp's masked form (for vector
+//                                    loops) one call at a time; .../subnormal_results: x in [-745, -709]
 //   BM_OursSameSegment, BM_Boost*    the far-tail segment of Weibull a = 2 X_3/2: ours against
 //                                    Boost.Math's interpolators on the table's knots and map
 //   BM_PhysicalForward, BM_PhysicalInverseLoad     ContactModel forward (separation) and inverse (load)
@@ -476,9 +478,22 @@ void run_elementary(benchmark::State& state) {
 double std_exp(double x) { return std::exp(x); }
 double std_log(double x) { return std::log(x); }
 double our_exp(double x) { return detail::fast_exp(x); }
+double our_exp_lanes(double x) { return detail::fast_exp_lanes(x); }
 double our_log(double x) { return detail::fast_log(x); }
 BENCHMARK(run_elementary<std_exp, false>)->Name("BM_StdExp");
 BENCHMARK(run_elementary<our_exp, false>)->Name("BM_FastExp");
+BENCHMARK(run_elementary<our_exp_lanes, false>)->Name("BM_FastExpLanes");
+
+// exp where its result is subnormal (x in [-745, -709]): the tails' X < 1e-308
+template <double (*function)(double)>
+void run_exp_below_normal(benchmark::State& state) {
+  static const std::vector<double> arguments = uniform(-745.0, -709.0, query_count, 5);
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(function(arguments[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(run_exp_below_normal<std_exp>)->Name("BM_StdExp/subnormal_results");
+BENCHMARK(run_exp_below_normal<our_exp>)->Name("BM_FastExp/subnormal_results");
 BENCHMARK(run_elementary<std_log, true>)->Name("BM_StdLog");
 BENCHMARK(run_elementary<our_log, true>)->Name("BM_FastLog");
 

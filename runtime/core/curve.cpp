@@ -144,8 +144,8 @@ void Curve::log_values(double separation, int first, int last, double* out) cons
   }
 }
 
-// One position; then the four orders' quintics and exps as one 4-lane vector from the contact
-// records, or (without them) one quintic each and four independent exps.
+// One position, then the four orders' quintics and exps as one 4-lane vector from the contact
+// records; without them (or off the grid), log_values and four independent exps.
 void Curve::contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept {
   if (!data_) {
     for (int k = 0; k < 4; ++k) log_out[k] = value_out[k] = not_a_number;
@@ -153,20 +153,12 @@ void Curve::contact_orders(double separation, double log_out[4], double value_ou
   }
   const detail::CurveData& data = *data_;
   detail::FastPosition at;
-  if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1)) {
-    if (data.contact_records) {
-      data.kernels->contact4(data.contact_records + at.interval * detail::contact_record_size, at.y, log_out,
-                             value_out);
-      return;
-    }
-    const std::uint64_t start = at.interval * detail::fast_stride;
-    for (int k = 0; k < 4; ++k) {
-      const double* c = data.order_coefficients[k];
-      log_out[k] = c ? detail::fast_quintic(c, start, at.y) : not_a_number;
-    }
-  } else {
-    data.outside.log_values(separation, 0, 3, log_out);
+  if (data.contact_records && __builtin_expect(detail::fast_position(data.grid, separation, at), 1)) {
+    data.kernels->contact4(data.contact_records + at.interval * detail::contact_record_size, at.y, log_out,
+                           value_out);
+    return;
   }
+  log_values(separation, 0, 3, log_out);
   for (int k = 0; k < 4; ++k) value_out[k] = detail::fast_exp(log_out[k]);
 }
 

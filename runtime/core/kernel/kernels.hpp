@@ -17,7 +17,8 @@ inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coeffi
 
 struct Kernels {
   // Curve::value's lookup (fast_grid.hpp), with fused multiply-adds where the set has them;
-  // null in the baseline build, where Curve::value's inline code is the faster
+  // null in the baseline build, where Curve::value's inline code is the faster (bench_lookup:
+  // BM_Record/scalar/48B, inline, against BM_ScalarHostIsa/generic/inline_exp, through a pointer)
   ScalarValue value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
   // one interval's contact record (curve_data.hpp): logs[k] and values[k] = exp(logs[k]), as
@@ -34,8 +35,8 @@ namespace {
 struct FastMath {
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp_lanes(x); }
 };
-// One call at a time (the baseline build, where vectors of two doubles do not pay for the
-// masked form: bench_lookup BM_Batch/generic)
+// One call at a time (the baseline build: two doubles a vector and no 64-bit variable shifts
+// do not pay for the masked form; bench_lookup BM_FastExp against BM_FastExpLanes)
 struct ScalarMath {
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
 };
