@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "asperity/contact.hpp"
 #include "asperity/table.hpp"
@@ -62,6 +63,29 @@ TEST(Contact, NonPhysicalInputIsRejectedByValue) {
   EXPECT_FALSE(contact_at(curve, Surface{1, 1, 1, INFINITY}, 1.0, state));
   EXPECT_FALSE(contact_at(curve, Surface{}, NAN, state));
   EXPECT_FALSE(contact_at(curve, Surface{}, -INFINITY, state));
+  // the checks read the bits: every edge of "finite and > 0", in each field
+  const double largest = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  double Surface::*const fields[] = {&Surface::summit_count, &Surface::summit_radius, &Surface::height_scale,
+                                     &Surface::contact_modulus};
+  for (int field = 0; field < 4; ++field) {
+    for (double bad : {0.0, -0.0, -tiny, -largest, inf, -inf, nan, -nan}) {
+      Surface surface;
+      surface.*fields[field] = bad;
+      EXPECT_FALSE(contact_at(curve, surface, 1.0, state)) << "field " << field << " = " << bad;
+      EXPECT_TRUE(std::isnan(state.count) && std::isnan(state.stiffness_ratio));
+    }
+    for (double good : {tiny, std::numeric_limits<double>::min(), 1.0, largest}) {
+      Surface surface;
+      surface.*fields[field] = good;
+      EXPECT_TRUE(contact_at(curve, surface, 1.0, state)) << "field " << field << " = " << good;
+    }
+  }
+  EXPECT_FALSE(contact_at(curve, Surface{}, inf, state));
+  EXPECT_FALSE(contact_at(curve, Surface{}, -nan, state));
+  EXPECT_TRUE(contact_at(curve, Surface{}, -largest, state));
+  EXPECT_TRUE(contact_at(curve, Surface{}, largest, state));
+  EXPECT_TRUE(contact_at(curve, Surface{}, -0.0, state));
 }
 
 TEST(Contact, SeparationConventionsRoundTrip) {

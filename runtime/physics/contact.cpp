@@ -1,14 +1,29 @@
 #include "asperity/contact.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+
+#include "asperity/detail/fast_math.hpp"
 
 namespace asperity {
 namespace {
-bool positive(double value) { return std::isfinite(value) && value > 0; }
-}  // namespace
+// finite and > 0: as an unsigned integer, the bits of such a double lie in [1, bits of +inf)
+ASPERITY_ALWAYS_INLINE std::uint64_t positive_finite(double value) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits - 1 < 0x7ff0000000000000ull - 1;
+}
+ASPERITY_ALWAYS_INLINE std::uint64_t finite(double value) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  return (bits & 0x7fffffffffffffffull) < 0x7ff0000000000000ull;
+}
 
-ContactScales contact_scales(const Surface& surface) noexcept {
+// The bodies of contact_scales and contact_state_from_logs, inlined into contact_at (its cost is
+// that of contact_orders plus a few multiplies: bench_lookup BM_ContactAllFour/BM_ContactOrders).
+ASPERITY_ALWAYS_INLINE ContactScales scales_of(const Surface& surface) noexcept {
   const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
   const double modulus = surface.contact_modulus;
   ContactScales scales;
@@ -23,8 +38,8 @@ ContactScales contact_scales(const Surface& surface) noexcept {
 // The one rule for the stiffness/load ratio: X_1/2 / X_3/2 where both are normal doubles (one
 // division), from the logs where they underflow (so that it stays finite there); NaN where
 // X_3/2 is exactly 0 (no contact: 0/0).
-ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept {
-  ContactState state;
+ASPERITY_ALWAYS_INLINE void state_of(const ContactScales& scales, const double logs[4], const double values[4],
+                                     ContactState& state) noexcept {
   state.count = scales.count * values[orders::count];
   state.stiffness = scales.stiffness * values[orders::stiffness];
   state.area = scales.area * values[orders::area];
@@ -32,25 +47,37 @@ ContactState contact_state_from_logs(const ContactScales& scales, const double l
   const double no_contact = -std::numeric_limits<double>::infinity();
   const double smallest_normal = std::numeric_limits<double>::min(), largest = std::numeric_limits<double>::max();
   const double stiffness = values[orders::stiffness], load = values[orders::load];
-  if (stiffness >= smallest_normal && load >= smallest_normal && stiffness <= largest && load <= largest)
+  if (__builtin_expect((stiffness >= smallest_normal) & (load >= smallest_normal) & (stiffness <= largest) &
+                           (load <= largest),
+                       1))
     state.stiffness_ratio = 1.5 * (stiffness / load);
   else
     state.stiffness_ratio = logs[orders::load] == no_contact ? std::numeric_limits<double>::quiet_NaN()
                                                              : 1.5 * std::exp(logs[orders::stiffness] - logs[orders::load]);
+}
+}  // namespace
+
+ContactScales contact_scales(const Surface& surface) noexcept { return scales_of(surface); }
+
+ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept {
+  ContactState state;
+  state_of(scales, logs, values, state);
   return state;
 }
 
 bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
-  // & rather than &&: one branch on all five checks
-  if (!(positive(surface.summit_count) & positive(surface.summit_radius) & positive(surface.height_scale) &
-        positive(surface.contact_modulus) & std::isfinite(separation))) {
+  // on the bits, & rather than &&: one well-predicted branch for all five checks
+  if (__builtin_expect(!(positive_finite(surface.summit_count) & positive_finite(surface.summit_radius) &
+                         positive_finite(surface.height_scale) & positive_finite(surface.contact_modulus) &
+                         finite(separation)),
+                       0)) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     out = {nan, nan, nan, nan, nan};
     return false;
   }
   double logs[4], values[4];
   curve.contact_orders(separation, logs, values);  // one lookup for orders 0, 1/2, 1, 3/2
-  out = contact_state_from_logs(contact_scales(surface), logs, values);
+  state_of(scales_of(surface), logs, values, out);
   return true;
 }
 
