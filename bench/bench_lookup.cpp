@@ -34,6 +34,9 @@
 //                                    (direct_quadrature.hpp) (goal: >= 1000x BM_ScalarKind/KIND)
 //   BM_HighwayBatch/TARGET/KIND      the batch loop written with Highway (highway_kernel.hpp), per
 //                                    Highway target, and TARGET = dispatched (HWY_DYNAMIC_DISPATCH)
+//   BM_IntrinsicsBatch/avx512/KIND   the batch loop written by hand in AVX-512 intrinsics
+//                                    (intrinsics_kernel.hpp), against BM_Batch/avx512 and
+//                                    BM_BatchGaussian/avx512 (the compiler's loop)
 //   BM_Record/PATH/RECORD/KIND       issue 13: bench-local copies of the lookup (record_kernels.hpp)
 //                                    with 48-byte records as the runtime holds them (48B), 48-byte
 //                                    records from a 64-byte aligned base (48B_aligned64) and 64-byte
@@ -71,6 +74,7 @@
 #include "direct_quadrature.hpp"
 #include "grid_copy.hpp"
 #include "highway_kernel.hpp"
+#include "intrinsics_kernel.hpp"
 #include "random_separations.hpp"
 #include "record_kernels.hpp"
 #include "asperity/asperity.h"
@@ -411,6 +415,15 @@ void BM_HighwayBatch(benchmark::State& state, const char* target, const char* na
   run_block_lookup(state, data, block, data.grid.order(data.kind->twice_order));
 }
 
+void BM_IntrinsicsBatch(benchmark::State& state, const char* name) {
+  if (!bench::intrinsics_block_avx512 || !instruction_set_available(InstructionSet::avx512)) {
+    state.SkipWithError("no AVX-512 here");
+    return;
+  }
+  const KindData& data = kind_data(name);
+  run_block_lookup(state, data, bench::intrinsics_block_avx512, data.grid.order(data.kind->twice_order));
+}
+
 struct IsaKernels {
   const char* name;
   InstructionSet isa;
@@ -606,6 +619,8 @@ void register_kind_rows() {
                                    BM_HighwayBatch, target.name, kind);
     benchmark::RegisterBenchmark((std::string("BM_HighwayBatch/dispatched/") + kind).c_str(), BM_HighwayBatch,
                                  "dispatched", kind);
+    benchmark::RegisterBenchmark((std::string("BM_IntrinsicsBatch/avx512/") + kind).c_str(), BM_IntrinsicsBatch,
+                                 kind);
   }
   for (const char* kind : record_kinds)
     for (Records layout : {Records::runtime48, Records::aligned48, Records::aligned64}) {
@@ -715,6 +730,13 @@ int run_checks() {
       for (std::size_t i = 0; i < query_count; ++i)
         highway.worst = std::max(highway.worst, rounding_units(out[i], reference[i]));
       ok &= highway.report(stdout);
+    }
+    if (bench::intrinsics_block_avx512 && instruction_set_available(InstructionSet::avx512)) {
+      Worst intrinsics{"AVX-512 intrinsics vs Curve::value (rounding units)", rounding};
+      batch_through(bench::intrinsics_block_avx512, data, data.grid.order(order), s.data(), out.data(), query_count);
+      for (std::size_t i = 0; i < query_count; ++i)
+        intrinsics.worst = std::max(intrinsics.worst, rounding_units(out[i], reference[i]));
+      ok &= intrinsics.report(stdout);
     }
     // the quadrature baseline computes the right thing (where X is a normal double): the
     // table's error (~1e-11) plus the quadrature's

@@ -349,16 +349,22 @@ def lookup_section(lookup):
         row("(the machine: two threads of register-only arithmetic against one)", "", f"{ratio:.2f}x", True)
     lines.append("")
 
-    # Highway against the runtime's own code, per instruction set
-    lines += ["Highway (`bench/highway_kernel.cpp`: the same loop with Highway 1.0.3's gathers and Exp) against",
-              "`Curve::value_batch`, ns a query (ratio < 1: Highway faster):", "",
-              "| kind | instruction set | ours | Highway (target) | Highway / ours |", "|---|---|---:|---:|---:|"]
+    # Highway and hand-written intrinsics against the runtime's own code, per instruction set
+    lines += ["Highway (`bench/highway_kernel.cpp`: the same loop with Highway 1.0.3's gathers and Exp) and the",
+              "loop written by hand in AVX-512 intrinsics (`bench/intrinsics_kernel_avx512.cpp`: all six",
+              "coefficients by masked gathers) against `Curve::value_batch` (the loop the compiler vectorizes),",
+              "ns a query (ratio < 1: the other code faster):", "",
+              "| kind | instruction set | ours | Highway (target) | Highway / ours | intrinsics | intrinsics / ours |",
+              "|---|---|---:|---:|---:|---:|---:|"]
     for kind, ours_row in (("weibull_tail_a2", "BM_Batch/"), ("gaussian", "BM_BatchGaussian/")):
         for isa, target in ISA_TO_HIGHWAY.items():
             name = f"BM_HighwayBatch/{target}/{kind}"
+            hand = f"BM_IntrinsicsBatch/{isa}/{kind}"
             if has(ours_row + isa) and has(name):
-                lines.append(f"| {kind} | {isa} | {ns(ours_row + isa):.2f} | {ns(name):.2f} ({target}) | "
-                             f"{ns(name) / ns(ours_row + isa):.2f}x |")
+                ours = ns(ours_row + isa)
+                intrinsics = f"{ns(hand):.2f} | {ns(hand) / ours:.2f}x" if has(hand) else "- | -"
+                lines.append(f"| {kind} | {isa} | {ours:.2f} | {ns(name):.2f} ({target}) | "
+                             f"{ns(name) / ours:.2f}x | {intrinsics} |")
     lines.append("")
 
     # issue 13: 48-byte against 64-byte records
