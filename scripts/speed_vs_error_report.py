@@ -337,13 +337,13 @@ def lookup_section(lookup):
         quadrature, scalar = ns(f"BM_DirectQuadrature/{kind}"), ns(f"BM_ScalarKind/{kind}")
         row(f"scalar >= 1000x direct quadrature, `{kind}`", f"{quadrature / 1000:.1f} us vs {scalar:.1f} ns",
             f"{quadrature / scalar:.0f}x", quadrature / scalar >= 1000)
-    threads = "BM_BatchThreads/real_time/threads:"
+    threads = "BM_BatchThreads/min_time:1.000/real_time/threads:"
     if has(threads + "1") and has(threads + "2"):
         ratio = lookup.rate(threads + "2") / lookup.rate(threads + "1")
         row("two threads on one curve's batch path >= 1.8x one thread (throughput)",
             f"{lookup.rate(threads + '2') / 1e6:.0f} vs {lookup.rate(threads + '1') / 1e6:.0f} M queries/s",
             f"{ratio:.2f}x", ratio >= 1.8)
-    probe = "BM_CoreProbe/real_time/threads:"
+    probe = "BM_CoreProbe/min_time:1.000/real_time/threads:"
     if has(probe + "1") and has(probe + "2"):
         ratio = lookup.rate(probe + "2") / lookup.rate(probe + "1")
         row("(the machine: two threads of register-only arithmetic against one)", "", f"{ratio:.2f}x", True)
