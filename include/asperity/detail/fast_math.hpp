@@ -68,14 +68,16 @@ static constexpr Exp2Table exp2_table = make_exp2_table();
 // e^x: x = (128 m + j) ln2 / 128 + r with |r| <= ln2 / 256 (Cody-Waite, ln2 / 128 split so
 // that k ln2_hi / 128 is exact), e^x = 2^m 2^(j/128) e^r, e^r by its degree-5 Taylor polynomial
 // (truncation below 6e-19). The table is what keeps the dependency chain short (a scalar call
-// is latency-bound). 2^m goes into the result's bits by integer arithmetic, and subnormal
+// is latency-bound). 2^m goes into the result's bits by integer arithmetic (fast_exp: by one
+// exact multiplication where the result is surely normal), and subnormal
 // results are made from normal doubles (exp_below_normal): a floating-point operation that makes
 // a subnormal costs a microcode assist of ~100 ns on x86, and the tails reach X < 1e-308
-// (bench_lookup: BM_StdExp/subnormal_results 108 ns, BM_FastExp/subnormal_results 11 ns).
+// (bench_lookup: BM_StdExp/subnormal_results 98 ns, BM_FastExp/subnormal_results 10 ns).
 // Two forms of the same arithmetic: fast_exp_lanes for loops that vectorize (the special
 // values by bit masks, every load unconditional) and fast_exp for one call at a time (the
-// special values by branches, which predict well and are cheaper there: BM_FastExp 8.9 ns,
-// BM_FastExpLanes 16 ns, one call at a time, baseline x86-64). Same bits for every x.
+// special values by branches, which predict well and are cheaper there: BM_FastExp 7.0 ns,
+// BM_FastExpLanes 15 ns, BM_StdExp 12 ns, one call at a time, baseline x86-64). Same bits for
+// every x.
 struct ExpParts {
   std::uint64_t scale;     // 2^(j/128) e^r, in [0.99, 2.01]
   std::uint64_t exponent;  // the result's biased exponent: that of scale + m (two's complement)
