@@ -130,6 +130,17 @@ TEST(FastMath, LoopAgreesWithSingleCalls) {
   for (double x = -800; x < 800; x += 0.731) inputs.push_back(x);
   for (double x = -746.5; x < -707; x += 0.0137) inputs.push_back(x);
   for (double x = 709; x < 711; x += 0.0137) inputs.push_back(x);
+  // fast_exp's exact multiplication by 2^m (x in [-708, 709]) against the lanes' integer
+  // addition: across the normal range, and the doubles on both sides of its two edges
+  for (double x = -708; x <= 709; x += 0.0731) inputs.push_back(x);
+  for (double edge : {-708.0, 709.0}) {
+    double below = edge, above = edge;
+    for (int k = 0; k < 2000; ++k) {
+      inputs.push_back(below = std::nextafter(below, -inf));
+      inputs.push_back(above = std::nextafter(above, inf));
+    }
+    inputs.push_back(edge);
+  }
   for (double x : {1e300, -1e300, 1e15, -1e15, 5e-324, -0.0}) inputs.push_back(x);
   inputs.push_back(std::nan(""));
   inputs.push_back(inf);

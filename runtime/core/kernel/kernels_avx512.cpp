@@ -1,6 +1,6 @@
 // The kernels built for AVX-512 F/DQ/VL (compile options in runtime/CMakeLists.txt; see kernels.hpp).
-#include "kernels.hpp"
+#include "contact4_x86.hpp"
 
 namespace asperity::detail {
-const Kernels avx512_kernels{scalar_value<ScalarMath>, contact4<FastMath>, block<FastMath>};
+const Kernels avx512_kernels{scalar_value<ScalarMath>, contact4_x86, block<FastMath>};
 }

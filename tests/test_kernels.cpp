@@ -1,0 +1,116 @@
+// The per-instruction-set kernels (runtime/core/kernel/) on their own, for every set this CPU
+// runs: contact4 on synthetic contact records whose logs sweep the whole range of exp (normal,
+// both edges of its fast path, subnormal, underflow, overflow, -inf), against the scalar
+// quintic and a long double exp of the kernel's own logs; the AVX2 and AVX-512 builds of the
+// same code give the same bits. (Curve-level checks are test_curve's and test_batch's; those only
+// reach the kernels the CPU's best instruction set selects.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "../runtime/core/kernel/kernels.hpp"
+
+namespace {
+using namespace asperity;
+using detail::contact_record_size;
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
+}
+
+// the quintic of one order (lane k) at y, as fast_quintic writes it
+double quintic(const double* record, int k, double y) {
+  const double c[6] = {record[k], record[4 + k], record[8 + k], record[12 + k], record[16 + k], record[20 + k]};
+  const double y2 = y * y;
+  return (c[0] + y * c[1]) + y2 * ((c[2] + y * c[3]) + y2 * (c[4] + y * c[5]));
+}
+
+struct alignas(64) Record {
+  double coefficients[contact_record_size];
+};
+
+TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
+  std::uniform_real_distribution<double> unit(-1, 1), y_of(-0.5, 0.5);
+  // constant terms: where exp's fast path ends (-708, 709) and every other regime
+  std::vector<double> levels;
+  for (double level = -760; level <= 720; level += 0.37) levels.push_back(level);
+  for (double edge : {-708.0, 709.0, -745.13, -708.3964, 709.7827}) {
+    double below = edge, above = edge;
+    for (int k = 0; k < 200; ++k) {
+      levels.push_back(below = std::nextafter(below, -inf));
+      levels.push_back(above = std::nextafter(above, inf));
+    }
+  }
+  int sets = 0;
+  std::vector<double> first_x86;  // the AVX2 build's values, to compare the AVX-512 build's with
+  for (InstructionSet isa : {InstructionSet::generic, InstructionSet::avx2, InstructionSet::avx512}) {
+    if (!instruction_set_available(isa)) continue;
+    ++sets;
+    const detail::Kernels& kernels = detail::kernels_for(isa);
+    std::mt19937_64 random(14);  // the same records for every set
+    double worst_log = 0, worst_exp = 0;
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      Record record;
+      for (int k = 0; k < 4; ++k) {
+        // lanes near each other (one interval of a curve) or far apart (one lane alone in the
+        // slow regime), slopes and curvature of a real interval's size
+        record.coefficients[k] = (i % 3 == 0) ? levels[(i + 97 * k) % levels.size()] : levels[i] + unit(random);
+        for (int c = 1; c < 6; ++c) record.coefficients[4 * c + k] = unit(random) * 4.0 / (1 << c);
+      }
+      if (i % 101 == 0) record.coefficients[3] = -inf;  // an order at exactly 0 (no contact)
+      // y = 0 makes the log the constant term exactly: the levels' edges land on the fast path's
+      const double y = (i % 2) ? 0.0 : y_of(random);
+      double logs[4], values[4];
+      kernels.contact4(record.coefficients, y, logs, values);
+      if (isa == InstructionSet::avx2) first_x86.insert(first_x86.end(), values, values + 4);
+      if (isa == InstructionSet::avx512 && !first_x86.empty()) {
+        for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(values[k], first_x86[4 * i + k])) << "lane " << k;
+      }
+      for (int k = 0; k < 4; ++k) {
+        const double expected = quintic(record.coefficients, k, y);
+        if (std::isinf(expected)) {
+          EXPECT_EQ(logs[k], expected);
+        } else {
+          // fused multiply-adds where the set has them: the rounding of the quintic's terms
+          const double error = std::fabs(logs[k] - expected) / (1 + std::fabs(expected));
+          worst_log = std::max(worst_log, error);
+          EXPECT_LE(error, 2e-15) << to_string(isa) << " lane " << k << " at " << expected;
+        }
+        // the exp of the kernel's own log, to fast_exp's accuracy (test_fast_math: 1.1e-16 on
+        // the normal range, 0.75 of the spacing below); the generic set is fast_exp itself
+        // (this file is built like it), the others round with fused multiply-adds
+        if (isa == InstructionSet::generic) {
+          EXPECT_TRUE(same_bits(values[k], detail::fast_exp(logs[k]))) << "lane " << k << " at " << logs[k];
+        }
+        const long double exact = std::exp(static_cast<long double>(logs[k]));
+        const double smallest_normal = std::numeric_limits<double>::min();
+        if (exact >= smallest_normal && exact <= std::numeric_limits<double>::max()) {
+          const double error = static_cast<double>(std::fabs((values[k] - exact) / exact));
+          worst_exp = std::max(worst_exp, error);
+          EXPECT_LE(error, 2.3e-16) << to_string(isa) << " lane " << k << ": exp(" << logs[k] << ") = " << values[k];
+        } else if (exact < smallest_normal) {
+          EXPECT_LE(static_cast<double>(std::fabs(values[k] - exact)), 0.75 * std::numeric_limits<double>::denorm_min())
+              << to_string(isa) << " lane " << k << ": exp(" << logs[k] << ") = " << values[k];
+        } else {
+          EXPECT_EQ(values[k], inf) << to_string(isa) << " lane " << k << ": exp(" << logs[k] << ")";
+        }
+        ++checked;
+      }
+    }
+    char figures[64];
+    std::snprintf(figures, sizeof figures, "%.3g / %.3g", worst_log, worst_exp);
+    RecordProperty(std::string("worst_log_and_exp_error_") + to_string(isa), figures);
+    EXPECT_GT(checked, 10000u);
+  }
+  EXPECT_GE(sets, 1);
+}
+
+}  // namespace
