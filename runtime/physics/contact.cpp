@@ -21,8 +21,8 @@ ASPERITY_ALWAYS_INLINE std::uint64_t finite(double value) {
   return (bits & 0x7fffffffffffffffull) < 0x7ff0000000000000ull;
 }
 
-// The bodies of contact_scales and contact_state_from_logs, inlined into contact_at (its cost is
-// that of contact_orders plus a few multiplies: bench_lookup BM_ContactAllFour/BM_ContactOrders).
+// The bodies of contact_scales and contact_state_from_logs, inlined into contact_at, where no
+// call or copy separates them from the lookup (bench_lookup BM_ContactAllFour).
 ASPERITY_ALWAYS_INLINE ContactScales scales_of(const Surface& surface) noexcept {
   const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
   const double modulus = surface.contact_modulus;

@@ -3,7 +3,8 @@
 // are surely normal (ln X in [-708, 709]: nearly every query), exp_parts with 2^m applied by
 // one exact multiplication; otherwise fast_exp lane by lane. The same bits as the generic
 // form (tests/test_kernels.cpp), with no masks to blend on the way: contact_orders is
-// latency-bound, and the compiler's masked 4-lane exp was 8-24% slower (A/B in one binary).
+// latency-bound (with the compiler's masked 4-lane exp it took 1.29x one order, now 1.16x:
+// docs/speed-vs-error.md, BM_ContactOrders against BM_ScalarKind/weibull_tail_a2).
 #pragma once
 #include "kernels.hpp"
 
