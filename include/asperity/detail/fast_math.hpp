@@ -131,12 +131,16 @@ static ASPERITY_ALWAYS_INLINE double fast_exp_lanes(double x) noexcept {
   return double_of((result & ~is_nan) | (bits_of(x) & is_nan));
 }
 
+// Where e^x is surely a normal double, with m = floor(k / 128) in [-1022, 1022] (fast_exp's
+// and the x86 contact kernel's test for their exact-multiplication path)
+static constexpr double exp_surely_normal_min = -708.0, exp_surely_normal_max = 709.0;
+
 static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept {
   // Where the result is surely normal (m in [-1022, 1022]), 2^m is a normal double made from
   // k's bits beside the polynomial, and one exact multiplication applies it: the same bits as
   // exp_normal, decided by a test on x that resolves at once, and no trip through the
   // integer registers after the polynomial (the latency a lookup waits on).
-  if (__builtin_expect(x >= -708.0 && x <= 709.0, 1)) {
+  if (__builtin_expect(x >= exp_surely_normal_min && x <= exp_surely_normal_max, 1)) {
     const ExpParts parts = exp_parts(x);
     const std::uint64_t power = (parts.exponent - (parts.scale >> 52) + 1023) << 52;
     return double_of(parts.scale) * double_of(power);

@@ -1,8 +1,8 @@
 // contact4 (kernels.hpp) for AVX2 + FMA, shared by the AVX2 and AVX-512 builds (each compiles
 // its own copy): the four orders' quintics as one 4-lane vector and, where all four results
-// are surely normal (ln X in [-708, 709]: nearly every query), exp_parts with 2^m applied by
-// one exact multiplication; otherwise fast_exp lane by lane. The same bits as the generic
-// form (tests/test_kernels.cpp), with no masks to blend on the way: contact_orders is
+// are surely normal (fast_math.hpp's exp_surely_normal_min/max: nearly every query), exp_parts with 2^m applied by
+// one exact multiplication; otherwise fast_exp lane by lane. The same bits as fast_exp built
+// with the same flags (tests/test_kernels.cpp), with no masks to blend on the way: contact_orders is
 // latency-bound (with the compiler's masked 4-lane exp it took 1.29x one order, now 1.16x:
 // docs/speed-vs-error.md, BM_ContactOrders against BM_ScalarKind/weibull_tail_a2).
 #pragma once
@@ -31,8 +31,8 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
   const __m256d high = _mm256_fmadd_pd(at, _mm256_load_pd(record + 20), _mm256_load_pd(record + 16));
   const __m256d x = _mm256_fmadd_pd(at2, _mm256_fmadd_pd(at2, high, middle), low);
   _mm256_storeu_pd(logs, x);
-  const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(-708.0), _CMP_GE_OQ),
-                                         _mm256_cmp_pd(x, _mm256_set1_pd(709.0), _CMP_LE_OQ));
+  const __m256d in_range = _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
+                                         _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ));
   if (__builtin_expect(_mm256_movemask_pd(in_range) != 0xf, 0)) {
     for (int lane = 0; lane < 4; ++lane) values[lane] = fast_exp(logs[lane]);
     return;
