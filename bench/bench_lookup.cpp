@@ -42,8 +42,9 @@
 //                                    records from a 64-byte aligned base (48B_aligned64) and 64-byte
 //                                    records, padded, aligned (64B_aligned64); PATH = scalar (inline,
 //                                    as Curve::value) or batch_ISA (through value_batch's blocks). The
-//                                    48B rows are the runtime's code: compare with BM_ScalarKind and
-//                                    BM_Batch to see that the copy is faithful.
+//                                    scalar 48B rows are the runtime's code (compare with
+//                                    BM_ScalarKind); the batch 48B rows are the runtime's former
+//                                    fused loop, the baseline of BM_Batch's three passes.
 //   BM_ScalarHostIsa/ISA/EXP/KIND    the scalar lookup built for ISA (out of line, through a pointer),
 //                                    with the library's exp (libm) or the runtime's inline one
 //                                    (inline_exp): what a scalar kernel chosen at load time would give

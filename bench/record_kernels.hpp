@@ -2,10 +2,13 @@
 // detail::fast_stride), so in an array they straddle 64-byte cache lines about half the time.
 // Would 64-byte records (8 doubles, 2 of them padding, the array 64-byte aligned: one line per
 // record) be faster? These are bench-local copies of the runtime's scalar lookup (Curve::value)
-// and batch loop (run_block in runtime/core/kernel/kernels.hpp) with the record stride as a
-// parameter, the batch loop compiled per instruction set with the runtime's flags
-// (bench/CMakeLists.txt), so that both strides run the same code; the runtime is not changed. Keep them in step
-// with the runtime's (bench_lookup --check compares their answers with Curve's).
+// and of its former batch loop, one fused loop the compiler vectorizes (run_block: position,
+// six coefficient gathers, quintic, exp; the runtime now runs three passes,
+// runtime/core/kernel/kernels.hpp), with the record stride as a parameter, compiled per
+// instruction set with the flags the runtime used (bench/CMakeLists.txt), so that both strides
+// run the same code. The fused loop stays as the baseline the three passes are measured
+// against (BM_Record/batch_ISA/48B against BM_Batch/ISA). bench_lookup --check compares their
+// answers with Curve's.
 #pragma once
 #include <cstdint>
 

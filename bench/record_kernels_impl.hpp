@@ -28,7 +28,7 @@ __attribute__((noinline)) double scalar_lookup(const FastGrid& grid, const doubl
   return Math::exp(fast_quintic(coefficients, at.interval * stride, at.y));
 }
 
-// run_block (runtime/core/kernel/kernels.hpp), value output, with the stride as a parameter.
+// The runtime's former fused batch loop (record_kernels.hpp), value output, with the stride as a parameter.
 template <int stride, class Math>
 __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const FastBinade* __restrict directory,
                                                   const double* __restrict coefficients,

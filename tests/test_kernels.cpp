@@ -2,10 +2,13 @@
 // runs: contact4 on synthetic contact records whose logs sweep the whole range of exp (normal,
 // both edges of its fast path, subnormal, underflow, overflow, -inf), against the scalar
 // quintic and a long double exp of the kernel's own logs; the AVX2 and AVX-512 builds of the
-// same code give the same bits. (Curve-level checks are test_curve's and test_batch's; those only
+// same code give the same bits. The batch path's exp pass (Kernels::exps: a table-free
+// polynomial for AVX2, a register table for AVX-512) over the same range, lanes of every
+// regime mixed in one vector, and partial vectors. (Curve-level checks are test_curve's and test_batch's; those only
 // reach the kernels the CPU's best instruction set selects.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -109,6 +112,81 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
     std::snprintf(figures, sizeof figures, "%.3g / %.3g", worst_log, worst_exp);
     RecordProperty(std::string("worst_log_and_exp_error_") + to_string(isa), figures);
     EXPECT_GT(checked, 10000u);
+  }
+  EXPECT_GE(sets, 1);
+}
+
+// exp's accuracy as the kernels' tests state it: 2.3e-16 relative where e^x is a normal
+// double, 0.75 of the subnormal spacing below, inf above, NaN for NaN
+// (returns the relative error where it is normal, else 0)
+double expect_exp(double x, double value, const char* what) {
+  const long double exact = std::exp(static_cast<long double>(x));
+  const double smallest_normal = std::numeric_limits<double>::min();
+  if (std::isnan(x)) {
+    EXPECT_TRUE(std::isnan(value)) << what << ": exp(NaN) = " << value;
+  } else if (exact >= smallest_normal && exact <= std::numeric_limits<double>::max()) {
+    const double error = static_cast<double>(std::fabs((value - exact) / exact));
+    EXPECT_LE(error, 2.3e-16) << what << ": exp(" << x << ") = " << value;
+    return error;
+  } else if (exact < smallest_normal) {
+    EXPECT_LE(static_cast<double>(std::fabs(value - exact)), 0.75 * std::numeric_limits<double>::denorm_min())
+        << what << ": exp(" << x << ") = " << value;
+  } else {
+    EXPECT_EQ(value, inf) << what << ": exp(" << x << ")";
+  }
+  return 0;
+}
+
+TEST(Kernels, BatchExpOnEverySetOverTheWholeRange) {
+  std::vector<double> inputs;
+  for (double x = -760; x <= 720; x += 0.0373) inputs.push_back(x);
+  for (double edge : {-708.0, 709.0, -745.13, -708.3964, 709.7827, -746.0, 710.0, 0.0}) {
+    double below = edge, above = edge;
+    for (int k = 0; k < 200; ++k) {
+      inputs.push_back(below = std::nextafter(below, -inf));
+      inputs.push_back(above = std::nextafter(above, inf));
+    }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double special : {-inf, inf, nan, -nan, -0.0, 1e300, -1e300, std::numeric_limits<double>::denorm_min(),
+                         -std::numeric_limits<double>::max()})
+    inputs.push_back(special);
+  // lanes of every regime side by side: a random order puts the slow ones in fast vectors
+  std::mt19937_64 random(17);
+  std::shuffle(inputs.begin(), inputs.end(), random);
+  const std::size_t sorted_part = inputs.size();
+  for (std::size_t i = 0; i < sorted_part; i += 7) inputs.push_back(-700 + 1e-3 * static_cast<double>(i % 1400));
+  int sets = 0;
+  for (InstructionSet isa : {InstructionSet::generic, InstructionSet::avx2, InstructionSet::avx512}) {
+    if (!instruction_set_available(isa)) continue;
+    ++sets;
+    const detail::Kernels& kernels = detail::kernels_for(isa);
+    std::size_t checked = 0;
+    double worst = 0;
+    // blocks of every length up to a few vectors (partial vectors at the end), then whole ones
+    for (std::size_t start = 0; start < inputs.size();) {
+      const int count = start < 4000 ? static_cast<int>(1 + start % 19) : detail::batch_block;
+      const int used = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(count), inputs.size() - start));
+      std::vector<double> logs(static_cast<std::size_t>(used + detail::batch_pad), 0.0);
+      std::copy(inputs.begin() + static_cast<long>(start), inputs.begin() + static_cast<long>(start) + used, logs.begin());
+      std::vector<double> out(static_cast<std::size_t>(used + detail::batch_pad), -1.0);
+      kernels.exps(logs.data(), out.data(), used);
+      for (int j = 0; j < used; ++j) {
+        const double x = logs[static_cast<std::size_t>(j)], value = out[static_cast<std::size_t>(j)];
+        worst = std::max(worst, expect_exp(x, value, to_string(isa)));
+        if (isa == InstructionSet::generic) {  // the baseline's pass is fast_exp itself
+          EXPECT_TRUE(same_bits(value, detail::fast_exp(x))) << x;
+        }
+        ++checked;
+      }
+      for (std::size_t j = static_cast<std::size_t>(used); j < out.size(); ++j)
+        EXPECT_EQ(out[j], -1.0) << to_string(isa) << ": wrote past " << used;
+      start += static_cast<std::size_t>(used);
+    }
+    EXPECT_EQ(checked, inputs.size());
+    char figure[32];
+    std::snprintf(figure, sizeof figure, "%.3g", worst);
+    RecordProperty(std::string("worst_batch_exp_error_") + to_string(isa), figure);
   }
   EXPECT_GE(sets, 1);
 }

@@ -1,8 +1,9 @@
 // The kernels, one build per instruction set (kernels_<isa>.cpp), and the choice among them
-// (kernels_dispatch.cpp): the batch loop, Curve::value's scalar lookup and contact_orders'
+// (kernels_dispatch.cpp): the batch path, Curve::value's scalar lookup and contact_orders'
 // four-lane one. Every batch query runs the same branch-free arithmetic on the fast grid
-// (fast_grid.hpp): bits of s -> binade -> interval -> quintic -> exp, which the compiler
-// vectorizes 2, 4 or 8 queries at a time (the directory and coefficient loads become gathers).
+// (fast_grid.hpp): bits of s -> binade -> interval (positions, which the compiler vectorizes
+// 2, 4 or 8 queries at a time, the directory loads becoming gathers) -> quintic -> exp (the
+// passes written for x86 in batch_x86.hpp, one call at a time in the baseline build).
 #pragma once
 #include <cstdint>
 
@@ -28,13 +29,13 @@ struct Kernels {
   // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.
   int (*block)(const FastGrid& grid, const double* order_coefficients, const double* separations, double* out,
                int count, bool log_output, int* rest) noexcept;
+  // block's exp pass: out[j] = e^logs[j], j < count, logs readable up to the next multiple of
+  // batch_pad (here so that tests/test_kernels.cpp checks it on every set)
+  void (*exps)(const double* logs, double* out, int count) noexcept;
 };
 
 // What each instruction-set build instantiates: internal linkage (see fast_math.hpp).
 namespace {
-struct FastMath {
-  static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp_lanes(x); }
-};
 // One call at a time (the baseline build: two doubles a vector and no 64-bit variable shifts
 // do not pay for the masked form; bench_lookup BM_FastExp against BM_FastExpLanes)
 struct ScalarMath {
@@ -61,55 +62,83 @@ double scalar_value(const FastGrid& grid, const double* coefficients, double sep
   return Math::exp(fast_quintic(coefficients, at.interval * fast_stride, at.y));
 }
 
-// Not inlined, and with restrict: the promise that the results do not overlap the
-// coefficients is what lets the compiler gather the coefficients in vectors. Every value is
-// 64 bits wide (doubles, and 64-bit integers from the bits of s by shifts and masks, never by
-// conversions, which AVX2 lacks), so that the loop vectorizes with one lane per query.
-// Queries off the grid read interval 0 (a valid load) and are counted; the caller answers them.
-template <bool log_output, class Math>
-__attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const FastBinade* __restrict directory,
-                                                  const double* __restrict coefficients,
-                                                  const double* __restrict separations, double* __restrict out,
-                                                  int count) noexcept {
-  const std::uint64_t lower0_bits = bits_of(grid.sides[0].lower), upper0_bits = bits_of(grid.sides[0].upper);
-  const std::uint64_t lower1_bits = bits_of(grid.sides[1].lower), upper1_bits = bits_of(grid.sides[1].upper);
-  const std::uint64_t offset0 = static_cast<std::uint64_t>(grid.sides[0].offset);
-  const std::uint64_t offset1 = static_cast<std::uint64_t>(grid.sides[1].offset);
-  const std::uint64_t first_bias = static_cast<std::uint64_t>(FastBinade::first_bias);
-  std::uint64_t outside = 0;
-  for (int j = 0; j < count; ++j) {
-    const double separation = separations[j];
-    const std::uint64_t bits = bits_of(separation);
-    // the sign's grid by bit masks (all ones for s < 0), not by selects on a bool
-    const std::uint64_t negative = static_cast<std::uint64_t>(static_cast<std::int64_t>(bits) >> 63);
-    const double magnitude = double_of(bits & 0x7fffffffffffffffull);
-    const double lower = double_of((lower1_bits & negative) | (lower0_bits & ~negative));
-    const double upper = double_of((upper1_bits & negative) | (upper0_bits & ~negative));
-    const bool inside = (magnitude >= lower) & (magnitude <= upper);  // no branch: &, not &&
-    // all ones on the grid, 0 off it: the indices are masked, not selected (a select would
-    // become a conditional load, which does not vectorize)
-    const std::uint64_t keep = 0 - static_cast<std::uint64_t>(inside);
-    const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
-    const std::uint64_t entry = (offset + ((bits >> 52) & 0x7ff)) & keep;
-    const std::uint64_t packed = directory[entry].packed;
-    const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
-    const std::uint64_t cell = mantissa >> (52 - log2_knots);
-    const double fraction = double_of(((mantissa << log2_knots) & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
-    const std::uint64_t index = ((packed >> 6) - first_bias + cell) & keep;
-    const double log_value = fast_quintic(coefficients, index * fast_stride, fraction - 1.5);
-    out[j] = log_output ? log_value : Math::exp(log_value);
-    outside += inside ? 0 : 1;
-  }
-  return outside;
-}
+// The batch path in three passes over a block of queries: where each query falls
+// (Passes::positions), ln X there (Passes::quintics) and, for values, e^(ln X) (Passes::exps).
+// Apart, each pass is a short chain of independent work, which the out-of-order core overlaps
+// across queries; fused, one query's chain (a directory load, six coefficient loads, the
+// quintic, the exp) outlasted the window (bench_lookup BM_Batch against
+// BM_Record/batch_*/48B, the fused loop).
+inline constexpr int batch_pad = 8;  // the passes run whole vectors: the arrays are padded to it
 
-template <class Math>
+// The three passes one call at a time (the baseline build; the x86 builds: batch_x86.hpp).
+struct ScalarPasses {
+  // at[j]: the element offset of query j's record (0 off the grid: a valid record, the caller
+  // answers those queries), y[j] its position in it; returns how many were off the grid.
+  // Not inlined, and with restrict: the promise that the outputs do not overlap the directory
+  // is what lets the compiler vectorize the loop (two queries a step in the baseline build).
+  // Every value is 64 bits wide (doubles, and 64-bit integers from the bits of s by shifts and
+  // masks, never by conversions), so that the loop vectorizes with one lane per query.
+  __attribute__((noinline)) static std::uint64_t positions(const FastGrid& grid, const double* __restrict separations,
+                                                           std::uint64_t* __restrict at, double* __restrict y,
+                                                           int count) noexcept {
+    const FastBinade* __restrict directory = grid.directory.data();
+    const std::uint64_t lower0_bits = bits_of(grid.sides[0].lower), upper0_bits = bits_of(grid.sides[0].upper);
+    const std::uint64_t lower1_bits = bits_of(grid.sides[1].lower), upper1_bits = bits_of(grid.sides[1].upper);
+    const std::uint64_t offset0 = static_cast<std::uint64_t>(grid.sides[0].offset);
+    const std::uint64_t offset1 = static_cast<std::uint64_t>(grid.sides[1].offset);
+    const std::uint64_t first_bias = static_cast<std::uint64_t>(FastBinade::first_bias);
+    std::uint64_t outside = 0;
+    for (int j = 0; j < count; ++j) {
+      const std::uint64_t bits = bits_of(separations[j]);
+      // the sign's grid by bit masks (all ones for s < 0), not by selects on a bool
+      const std::uint64_t negative = static_cast<std::uint64_t>(static_cast<std::int64_t>(bits) >> 63);
+      const double magnitude = double_of(bits & 0x7fffffffffffffffull);
+      const double lower = double_of((lower1_bits & negative) | (lower0_bits & ~negative));
+      const double upper = double_of((upper1_bits & negative) | (upper0_bits & ~negative));
+      const bool inside = (magnitude >= lower) & (magnitude <= upper);  // no branch: &, not &&
+      // all ones on the grid, 0 off it: the indices are masked, not selected (a select would
+      // become a conditional load, which does not vectorize)
+      const std::uint64_t keep = 0 - static_cast<std::uint64_t>(inside);
+      const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
+      const std::uint64_t entry = (offset + ((bits >> 52) & 0x7ff)) & keep;
+      const std::uint64_t packed = directory[entry].packed;
+      const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
+      const std::uint64_t cell = mantissa >> (52 - log2_knots);
+      const double fraction = double_of(((mantissa << log2_knots) & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
+      at[j] = (((packed >> 6) - first_bias + cell) & keep) * fast_stride;
+      y[j] = fraction - 1.5;
+      outside += inside ? 0 : 1;
+    }
+    return outside;
+  }
+  // logs[j] = ln X at (at[j], y[j]), j < count
+  static void quintics(const double* __restrict coefficients, const std::uint64_t* __restrict at,
+                       const double* __restrict y, double* __restrict logs, int count) noexcept {
+    for (int j = 0; j < count; ++j) logs[j] = fast_quintic(coefficients, at[j], y[j]);
+  }
+  // out[j] = e^logs[j], j < count
+  static void exps(const double* logs, double* out, int count) noexcept {
+    for (int j = 0; j < count; ++j) out[j] = fast_exp(logs[j]);
+  }
+};
+
+template <class Passes>
 int block(const FastGrid& grid, const double* coefficients, const double* separations, double* out, int count,
           bool log_output, int* rest) noexcept {
-  const FastBinade* directory = grid.directory.data();
-  const std::uint64_t outside =
-      log_output ? run_block<true, Math>(grid, directory, coefficients, separations, out, count)
-                 : run_block<false, Math>(grid, directory, coefficients, separations, out, count);
+  alignas(64) std::uint64_t at[batch_block + batch_pad];
+  alignas(64) double y[batch_block + batch_pad];
+  alignas(64) double logs[batch_block + batch_pad];
+  const std::uint64_t outside = Passes::positions(grid, separations, at, y, count);
+  const int padded = (count + batch_pad - 1) / batch_pad * batch_pad;
+  for (int j = count; j < padded; ++j) {
+    at[j] = 0;
+    y[j] = 0;
+  }
+  Passes::quintics(coefficients, at, y, logs, padded);
+  if (log_output)
+    for (int j = 0; j < count; ++j) out[j] = logs[j];
+  else
+    Passes::exps(logs, out, count);
   if (outside == 0) return 0;
   int found = 0;
   FastPosition unused;

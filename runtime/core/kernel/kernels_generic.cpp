@@ -1,9 +1,9 @@
 // The kernels built for the compiler's baseline (see kernels.hpp). With two doubles a vector
-// (and no 64-bit variable shifts) the masked exp does not pay: this build calls the inline
-// exp one at a time (bench_lookup BM_StdExp / BM_FastExp: faster than the C library's, which
-// also slows below e^-512 and for subnormal results).
+// (and no 64-bit variable shifts) vector code does not pay beyond the positions: the quintics
+// and the inline exp run one call at a time (bench_lookup BM_StdExp / BM_FastExp: the inline
+// exp is faster than the C library's, which also slows below e^-512 and for subnormal results).
 #include "kernels.hpp"
 
 namespace asperity::detail {
-const Kernels generic_kernels{nullptr, contact4<ScalarMath>, block<ScalarMath>};
+const Kernels generic_kernels{nullptr, contact4<ScalarMath>, block<ScalarPasses>, ScalarPasses::exps};
 }
