@@ -22,8 +22,8 @@ struct Kernels {
   // BM_Record/scalar/48B, inline, against BM_ScalarHostIsa/generic/inline_exp, through a pointer)
   ScalarValue value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
-  // one interval's contact record (curve_data.hpp): logs[k] and values[k] = fast_exp(logs[k])
-  // (the same bits as fast_exp built for the set), as one 4-lane vector where the instruction set has one (contact4_x86.hpp).
+  // one interval's contact record (curve_data.hpp): logs[k] and values[k] = e^logs[k] (fast_exp
+  // in the baseline build; on x86 one 4-lane vector, contact4_x86.hpp).
   void (*contact4)(const double* record, double y, double* logs, double* values) noexcept;
   // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
   // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.

@@ -1,0 +1,163 @@
+// e^x on vectors for the x86 kernels (batch_x86.hpp, contact4_x86.hpp), without a table in
+// memory (a table lookup per lane is a gather, which costs more than the arithmetic it saves:
+// bench_lookup BM_Batch, BM_ContactOrders):
+// - exp4 (AVX2 + FMA, four lanes): x = k ln 2 + r, |r| <= ln2 / 2, e^r by its Taylor
+//   polynomial to degree 13 (truncation below 5e-18).
+// - exp8 (AVX-512, eight lanes): x = (16 m + j) ln2 / 16 + r, |r| <= ln2 / 32, 2^(j/16) from a
+//   16-entry table held in four registers (vpermt2pd), e^r to degree 7 (truncation below 2e-18).
+// Where every lane is surely normal (fast_math.hpp's exp_surely_normal_min/max), 2^m is
+// applied by one exact multiplication; otherwise the lanes go through fast_exp_lanes' masks:
+// subnormal results made from normal doubles (no assist), 0 below -746, inf above 710, NaN kept.
+// Accuracy (tests/test_kernels.cpp, against a long double exp over [-760, 720] and each edge):
+// within 2.3e-16 relative where the result is normal, 0.75 of the subnormal spacing below. Not
+// bit-identical to fast_exp (a table of 128 entries), which the scalar path uses.
+#pragma once
+#include "kernels.hpp"
+
+// GCC 12's AVX-512 headers initialize their placeholder operands from themselves, which
+// -Wmaybe-uninitialized reports at every use (GCC bug 105593, fixed in GCC 13)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <immintrin.h>
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace asperity::detail {
+namespace {
+
+// The result's bits from scale (in [0.7, 1.5]) and m = k, every regime (fast_exp_lanes' masks,
+// with compares and blends: AVX2 has no mask registers and no 64-bit max)
+ASPERITY_ALWAYS_INLINE __m256d exp4_finish_any(__m256d x, __m256i scale, __m256i m) noexcept {
+  const __m256i exponent = _mm256_add_epi64(_mm256_srli_epi64(scale, 52), m);
+  const __m256i normal = _mm256_add_epi64(scale, _mm256_slli_epi64(m, 52));
+  const __m256d two_52 = _mm256_set1_pd(4503599627370496.0);
+  const __m256i floor = _mm256_set1_epi64x(-1100);
+  const __m256i clamped = _mm256_blendv_epi8(m, floor, _mm256_cmpgt_epi64(floor, m));
+  const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(clamped, _mm256_set1_epi64x(1074 + 1023)), 52));
+  const __m256i below = _mm256_sub_epi64(
+      _mm256_castpd_si256(_mm256_fmadd_pd(_mm256_castsi256_pd(scale), power, two_52)), _mm256_castpd_si256(two_52));
+  const __m256i is_below = _mm256_cmpgt_epi64(_mm256_set1_epi64x(1), exponent);
+  const __m256i is_zero = _mm256_castpd_si256(_mm256_cmp_pd(x, _mm256_set1_pd(-746.0), _CMP_LT_OQ));
+  const __m256i is_inf = _mm256_andnot_si256(
+      is_zero, _mm256_or_si256(_mm256_cmpgt_epi64(exponent, _mm256_set1_epi64x(2046)),
+                               _mm256_castpd_si256(_mm256_cmp_pd(x, _mm256_set1_pd(710.0), _CMP_GT_OQ))));
+  const __m256d is_nan = _mm256_cmp_pd(x, x, _CMP_UNORD_Q);
+  __m256i result = _mm256_blendv_epi8(normal, below, is_below);
+  result = _mm256_blendv_epi8(result, _mm256_set1_epi64x(0x7ff0000000000000ll), is_inf);
+  result = _mm256_andnot_si256(is_zero, result);
+  return _mm256_blendv_pd(_mm256_castsi256_pd(result), x, is_nan);
+}
+
+// e^r by the polynomial, for e^x = e^r 2^k: returns e^r (in [0.7, 1.5]) and k (two's
+// complement; garbage where x is beyond [-746, 710] or NaN, which exp4_finish_any masks)
+ASPERITY_ALWAYS_INLINE __m256d exp4_scale(__m256d x, __m256i& k_bits) noexcept {
+  const __m256d shifter = _mm256_set1_pd(round_shifter);
+  const __m256d shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
+  const __m256d k = _mm256_sub_pd(shifted, shifter);
+  k_bits = _mm256_sub_epi64(_mm256_castpd_si256(shifted), _mm256_castpd_si256(shifter));
+  // ln2 in two parts, the first with 32 significant bits: k ln2_hi is exact
+  __m256d r = _mm256_fnmadd_pd(k, _mm256_set1_pd(6.93147180369123816490e-01), x);
+  r = _mm256_fnmadd_pd(k, _mm256_set1_pd(1.90821492927058770002e-10), r);
+  // e^r - 1 = r + r^2 P(r), P(r) = sum of r^(i-2) / i!, i = 2..13 (Estrin's scheme)
+  const __m256d r2 = _mm256_mul_pd(r, r), r4 = _mm256_mul_pd(r2, r2);
+  const auto pair = [r](double c0, double c1) { return _mm256_fmadd_pd(r, _mm256_set1_pd(c1), _mm256_set1_pd(c0)); };
+  const __m256d p23 = pair(1.0 / 2, 1.0 / 6), p45 = pair(1.0 / 24, 1.0 / 120);
+  const __m256d p67 = pair(1.0 / 720, 1.0 / 5040), p89 = pair(1.0 / 40320, 1.0 / 362880);
+  const __m256d p1011 = pair(1.0 / 3628800, 1.0 / 39916800), p1213 = pair(1.0 / 479001600, 1.0 / 6227020800.0);
+  const __m256d q2 = _mm256_fmadd_pd(r2, p45, p23), q6 = _mm256_fmadd_pd(r2, p89, p67);
+  const __m256d q10 = _mm256_fmadd_pd(r2, p1213, p1011);
+  const __m256d poly = _mm256_fmadd_pd(r4, _mm256_fmadd_pd(r4, q10, q6), q2);
+  return _mm256_add_pd(_mm256_set1_pd(1.0), _mm256_fmadd_pd(r2, poly, r));
+}
+// Whether every lane's e^x is surely a normal double (fast_math.hpp's range)
+ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept {
+  const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
+                                       _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ));
+  return _mm256_movemask_pd(inside) == 0xf;
+}
+// e^r 2^k for k in [-1022, 1023]: 2^k made in the exponent field, applied by one exact multiplication
+ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d scale, __m256i k_bits) noexcept {
+  return _mm256_mul_pd(scale, _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k_bits, _mm256_set1_epi64x(1023)), 52)));
+}
+ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
+  __m256i k_bits;
+  const __m256d scale = exp4_scale(x, k_bits);
+  if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(scale, k_bits);
+  return exp4_finish_any(x, _mm256_castpd_si256(scale), k_bits);
+}
+
+#if defined(__AVX512F__)
+// 2^(j/16), j = 0..15, as hi + lo (the Taylor series in long double, as make_exp2_table)
+struct Exp2Table16 {
+  alignas(64) double hi[16];
+  alignas(64) double lo[16];
+};
+constexpr Exp2Table16 make_exp2_table16() {
+  Exp2Table16 table{};
+  constexpr long double ln2 = 0.693147180559945309417232121458176568L;
+  for (int j = 0; j < 16; ++j) {
+    const long double x = j * ln2 / 16;
+    long double term = 1, sum = 1;
+    for (int k = 1; k < 30; ++k) {
+      term *= x / k;
+      sum += term;
+    }
+    table.hi[j] = static_cast<double>(sum);
+    table.lo[j] = static_cast<double>(sum - table.hi[j]);
+  }
+  return table;
+}
+constexpr Exp2Table16 exp2_table16 = make_exp2_table16();
+
+// The result's bits from scale (in [0.7, 2.1]) and m, every regime (fast_exp_lanes' masks)
+ASPERITY_ALWAYS_INLINE __m512d exp8_finish_any(__m512d x, __m512i scale, __m512i m) noexcept {
+  const __m512i exponent = _mm512_add_epi64(_mm512_srli_epi64(scale, 52), m);
+  const __m512i normal = _mm512_add_epi64(scale, _mm512_slli_epi64(m, 52));
+  const __m512d two_52 = _mm512_set1_pd(4503599627370496.0);
+  const __m512i clamped = _mm512_max_epi64(m, _mm512_set1_epi64(-1100));
+  const __m512d power = _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_add_epi64(clamped, _mm512_set1_epi64(1074 + 1023)), 52));
+  const __m512i below = _mm512_sub_epi64(
+      _mm512_castpd_si512(_mm512_fmadd_pd(_mm512_castsi512_pd(scale), power, two_52)), _mm512_castpd_si512(two_52));
+  const __mmask8 is_below = _mm512_cmple_epi64_mask(exponent, _mm512_setzero_si512());
+  const __mmask8 is_zero = _mm512_cmp_pd_mask(x, _mm512_set1_pd(-746.0), _CMP_LT_OQ);
+  const __mmask8 is_inf =
+      (_mm512_cmpge_epi64_mask(exponent, _mm512_set1_epi64(2047)) | _mm512_cmp_pd_mask(x, _mm512_set1_pd(710.0), _CMP_GT_OQ)) &
+      static_cast<__mmask8>(~is_zero);
+  const __mmask8 is_nan = _mm512_cmp_pd_mask(x, x, _CMP_UNORD_Q);
+  __m512i result = _mm512_mask_blend_epi64(is_below, normal, below);
+  result = _mm512_mask_mov_epi64(result, is_inf, _mm512_set1_epi64(0x7ff0000000000000ll));
+  result = _mm512_mask_mov_epi64(result, is_zero, _mm512_setzero_si512());
+  return _mm512_mask_mov_pd(_mm512_castsi512_pd(result), is_nan, x);
+}
+
+ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
+  const __m512d shifter = _mm512_set1_pd(round_shifter);
+  const __m512d shifted = _mm512_fmadd_pd(x, _mm512_set1_pd(23.083120654223414), shifter);  // 16 / ln 2
+  const __m512d k = _mm512_sub_pd(shifted, shifter);
+  const __m512i k_bits = _mm512_sub_epi64(_mm512_castpd_si512(shifted), _mm512_castpd_si512(shifter));
+  // ln2 / 16 in two parts, the first with 32 significant bits: k ln2_hi / 16 is exact
+  __m512d r = _mm512_fnmadd_pd(k, _mm512_set1_pd(6.93147180369123816490e-01 / 16), x);
+  r = _mm512_fnmadd_pd(k, _mm512_set1_pd(1.90821492927058770002e-10 / 16), r);
+  const __m512d r2 = _mm512_mul_pd(r, r), r4 = _mm512_mul_pd(r2, r2);
+  const __m512d p01 = _mm512_fmadd_pd(r, _mm512_set1_pd(1.0 / 6), _mm512_set1_pd(0.5));
+  const __m512d p23 = _mm512_fmadd_pd(r, _mm512_set1_pd(1.0 / 120), _mm512_set1_pd(1.0 / 24));
+  const __m512d p45 = _mm512_fmadd_pd(r, _mm512_set1_pd(1.0 / 5040), _mm512_set1_pd(1.0 / 720));
+  const __m512d expm1 = _mm512_fmadd_pd(r2, _mm512_fmadd_pd(r4, p45, _mm512_fmadd_pd(r2, p23, p01)), r);
+  // the low four bits of k pick the entry (vpermt2pd reads only those)
+  const __m512d hi = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.hi), k_bits, _mm512_load_pd(exp2_table16.hi + 8));
+  const __m512d lo = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.lo), k_bits, _mm512_load_pd(exp2_table16.lo + 8));
+  const __m512d scale = _mm512_add_pd(hi, _mm512_fmadd_pd(hi, expm1, lo));
+  const __m512i m = _mm512_srai_epi64(k_bits, 4);  // floor(k / 16)
+  const __mmask8 surely_normal = _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp_surely_normal_min), _CMP_GE_OQ) &
+                                 _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp_surely_normal_max), _CMP_LE_OQ);
+  if (__builtin_expect(surely_normal == 0xff, 1))
+    return _mm512_mul_pd(scale, _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_add_epi64(m, _mm512_set1_epi64(1023)), 52)));
+  return exp8_finish_any(x, _mm512_castpd_si512(scale), m);
+}
+#endif
+
+}  // namespace
+}  // namespace asperity::detail
