@@ -352,7 +352,8 @@ def lookup_section(lookup):
     # Highway and hand-written intrinsics against the runtime's own code, per instruction set
     lines += ["Highway (`bench/highway_kernel.cpp`: the same loop with Highway 1.0.3's gathers and Exp) and the",
               "loop written by hand in AVX-512 intrinsics (`bench/intrinsics_kernel_avx512.cpp`: all six",
-              "coefficients by masked gathers) against `Curve::value_batch` (the loop the compiler vectorizes),",
+              "coefficients by masked gathers), both one fused loop, against `Curve::value_batch` (the runtime's",
+              "three passes, `runtime/core/kernel/`),",
               "ns a query (ratio < 1: the other code faster):", "",
               "| kind | instruction set | ours | Highway (target) | Highway / ours | intrinsics | intrinsics / ours |",
               "|---|---|---:|---:|---:|---:|---:|"]
@@ -365,6 +366,20 @@ def lookup_section(lookup):
                 intrinsics = f"{ns(hand):.2f} | {ns(hand) / ours:.2f}x" if has(hand) else "- | -"
                 lines.append(f"| {kind} | {isa} | {ours:.2f} | {ns(name):.2f} ({target}) | "
                              f"{ns(name) / ours:.2f}x | {intrinsics} |")
+    lines.append("")
+
+    # the runtime's three passes against its former fused loop
+    lines += ["The runtime's batch path (three passes: positions, quintics by row loads and a transpose, a",
+              "vector `exp` without a table in memory) against its former single loop that the compiler",
+              "vectorized (gathers for the coefficients and the `exp` table; kept in `bench/record_kernels.hpp`,",
+              "`BM_Record/batch_ISA/48B`), ns a query:", "",
+              "| kind | instruction set | three passes | fused loop | fused / three passes |", "|---|---|---:|---:|---:|"]
+    for kind, ours_row in (("weibull_tail_a2", "BM_Batch/"), ("gaussian", "BM_BatchGaussian/")):
+        for isa in ("generic", "avx2", "avx512"):
+            fused = f"BM_Record/batch_{isa}/48B/{kind}"
+            if has(ours_row + isa) and has(fused):
+                ours = ns(ours_row + isa)
+                lines.append(f"| {kind} | {isa} | {ours:.2f} | {ns(fused):.2f} | {ns(fused) / ours:.2f}x |")
     lines.append("")
 
     # issue 13: 48-byte against 64-byte records

@@ -93,6 +93,41 @@ TEST(Batch, EveryInstructionSetAgreesWithTheScalarPath) {
   }
 }
 
+// A grid that covers nothing (CurveOptions' separations beside the table): no directory, no
+// record; the batch path answers every query from the table's layout, as the scalar path does.
+// And every block length from 1 to 19 (partial vectors), with the values at the edges of the
+// grid's sign test: -0.0, NaN of either sign, the table's ends.
+TEST(Batch, EmptyGridAndShortBlocksAgreeWithTheScalarPath) {
+  CurveOptions beside;
+  beside.grid_min_separation = 1e6;
+  beside.grid_max_separation = 2e6;
+  const Curve empty = table().curve(Distribution::weibull, Side::tail, 2.0, Curve::all_orders, beside);
+  EXPECT_EQ(empty.grid_intervals(), 0u);
+  const Curve full = table().curve(Distribution::weibull, Side::bounded, 1.3);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Curve* curve : {&empty, &full}) {
+    const double lo = curve->table_min_separation(), hi = curve->table_max_separation();
+    const double edges[] = {-0.0, 0.0, nan, -nan, lo, hi, std::nextafter(lo, -1e300), std::nextafter(hi, 1e300),
+                            0.5, -0.5, 1e-300, -1e-300, 3.0, 1e6, 1.5e6};
+    std::vector<double> inputs;
+    for (int i = 0; i < 19; ++i) inputs.push_back(edges[i % 15] * (i < 15 ? 1.0 : 0.75));
+    for (InstructionSet isa : available_sets())
+      for (std::size_t length = 1; length <= inputs.size(); ++length) {
+        std::vector<double> values(length), logs(length);
+        curve->value_batch(3, inputs.data(), values.data(), length, isa);
+        curve->log_value_batch(3, inputs.data(), logs.data(), length, isa);
+        for (std::size_t i = 0; i < length; ++i) {
+          EXPECT_TRUE(agrees(logs[i], curve->log_value(3, inputs[i])))
+              << to_string(isa) << " length " << length << " s=" << inputs[i] << ": " << logs[i];
+          const double scalar = curve->value(3, inputs[i]);
+          EXPECT_TRUE(std::isnan(scalar) ? std::isnan(values[i])
+                                         : std::fabs(values[i] - scalar) <= 1e-13 * scalar + 1e-320)
+              << to_string(isa) << " length " << length << " s=" << inputs[i] << ": " << values[i] << " vs " << scalar;
+        }
+      }
+  }
+}
+
 TEST(Batch, OutputMayAliasInputAndEmptyOrBadOrderAreHandled) {
   const Curve curve = table().curve(Distribution::weibull, Side::tail, 3.0);
   std::vector<double> inputs = separations(curve, 700);

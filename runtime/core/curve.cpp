@@ -183,11 +183,17 @@ void Curve::batch(int twice_order, const double* separations, double* out, std::
   const double* coefficients = data.order_coefficients[twice_order];
   int rest[detail::batch_block];
   double block_separations[detail::batch_block];  // a copy, so that out may be separations
+  // a grid that covers nothing (CurveOptions' separations beside the table) has no directory
+  // and no record for the kernels' off-grid lanes to read: every query is answered outside it
+  const bool empty_grid = data.grid.intervals == 0;
   for (std::size_t start = 0; start < count; start += detail::batch_block) {
     const int block = static_cast<int>(count - start < detail::batch_block ? count - start : detail::batch_block);
     for (int j = 0; j < block; ++j) block_separations[j] = separations[start + j];
-    const int rest_count =
-        kernels.block(data.grid, coefficients, block_separations, out + start, block, log_output, rest);
+    int rest_count = block;
+    if (empty_grid)
+      for (int j = 0; j < block; ++j) rest[j] = j;
+    else
+      rest_count = kernels.block(data.grid, coefficients, block_separations, out + start, block, log_output, rest);
     for (int r = 0; r < rest_count; ++r) {
       const double log_value = data.outside.log_value(twice_order, block_separations[rest[r]]);
       out[start + rest[r]] = log_output ? log_value : std::exp(log_value);

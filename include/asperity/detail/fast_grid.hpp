@@ -82,8 +82,9 @@ static ASPERITY_ALWAYS_INLINE bool fast_position(const FastGrid& grid, double se
   return true;
 }
 
-// The quintic of one interval at y (Estrin's scheme: three independent pairs, then y^2). The
-// coefficients are read by index from one base (the form a vectorizer turns into gathers).
+// The quintic of one interval at y (Estrin's scheme: three independent pairs, then y^2), the
+// coefficients read by index from one base. The x86 batch kernel computes the same sums four
+// queries a vector (runtime/core/kernel/batch_x86.hpp).
 static ASPERITY_ALWAYS_INLINE double fast_quintic(const double* coefficients, std::uint64_t at, double y) noexcept {
   const double y2 = y * y;
   const double low = coefficients[at] + y * coefficients[at + 1];

@@ -1,8 +1,10 @@
-// exp and log for the hot path: branch-free, inlinable, and written so that a compiler
-// vectorizes a loop of them (only double arithmetic, selects, and 64-bit integer add, and,
-// or and logical shifts on the bit patterns: no int64 <-> double conversions, which SSE2
-// and AVX2 lack). The library versions (std::exp, std::log) are the baseline they are
-// benchmarked against (bench/bench_lookup.cpp) and tested against (tests/test_fast_math.cpp).
+// exp and log for the hot path: inlinable, and fast_exp_lanes written so that a compiler
+// vectorizes a loop of it (only double arithmetic, selects, and 64-bit integer add, and, or
+// and logical shifts on the bit patterns: no int64 <-> double conversions, which SSE2 and AVX2
+// lack). The library versions (std::exp, std::log) are the baseline they are benchmarked
+// against (bench/bench_lookup.cpp) and tested against (tests/test_fast_math.cpp). The runtime's
+// scalar lookups call fast_exp; its x86 vector kernels have their own exps without a table in
+// memory (runtime/core/kernel/exp_x86.hpp), with fast_exp_lanes' handling of special values.
 //
 // Accuracy (measured in the test against long double references): exp within 1 ulp on
 // [-708.39, 709.78] and within 1 ulp of the subnormal spacing below; log within 1 ulp on all
@@ -131,8 +133,8 @@ static ASPERITY_ALWAYS_INLINE double fast_exp_lanes(double x) noexcept {
   return double_of((result & ~is_nan) | (bits_of(x) & is_nan));
 }
 
-// Where e^x is surely a normal double, with m = floor(k / 128) in [-1022, 1022] (fast_exp's
-// and the x86 contact kernel's test for their exact-multiplication path)
+// Where e^x is surely a normal double (fast_exp's m = floor(k / 128) in [-1022, 1022]; exp_x86.hpp's
+// exp4 k in [-1021, 1023], exp8 m in [-1022, 1022]): the test of their exact-multiplication paths
 static constexpr double exp_surely_normal_min = -708.0, exp_surely_normal_max = 709.0;
 
 static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept {

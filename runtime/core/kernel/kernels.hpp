@@ -1,9 +1,10 @@
 // The kernels, one build per instruction set (kernels_<isa>.cpp), and the choice among them
 // (kernels_dispatch.cpp): the batch path, Curve::value's scalar lookup and contact_orders'
 // four-lane one. Every batch query runs the same branch-free arithmetic on the fast grid
-// (fast_grid.hpp): bits of s -> binade -> interval (positions, which the compiler vectorizes
-// 2, 4 or 8 queries at a time, the directory loads becoming gathers) -> quintic -> exp (the
-// passes written for x86 in batch_x86.hpp, one call at a time in the baseline build).
+// (fast_grid.hpp): bits of s -> binade -> interval -> quintic -> exp, in three passes
+// (block): written with AVX2 intrinsics for the x86 builds (batch_x86.hpp, four queries a
+// step), plain C++ for the baseline (ScalarPasses: the compiler vectorizes the positions two
+// queries a step, the rest runs one call at a time).
 #pragma once
 #include <cstdint>
 
@@ -36,8 +37,9 @@ struct Kernels {
 
 // What each instruction-set build instantiates: internal linkage (see fast_math.hpp).
 namespace {
-// One call at a time (the baseline build: two doubles a vector and no 64-bit variable shifts
-// do not pay for the masked form; bench_lookup BM_FastExp against BM_FastExpLanes)
+// The exp of one call at a time (scalar_value in every build, contact4 in the baseline one):
+// fast_exp's branches, cheaper there than fast_exp_lanes' masks (bench_lookup BM_FastExp
+// against BM_FastExpLanes)
 struct ScalarMath {
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
 };
