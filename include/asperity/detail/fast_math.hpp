@@ -44,17 +44,20 @@ static ASPERITY_ALWAYS_INLINE double double_of(std::uint64_t bits) noexcept {
 // in the low bits of the pattern.
 static constexpr double round_shifter = 6755399441055744.0;
 
-// 2^(j/128), j = 0..127, as a double and the rest (hi + lo carries ~64 bits), computed at
-// compile time by the Taylor series of e^(j ln2 / 128) in long double.
+// 2^(j/N), j = 0..N-1, as a double and the rest (hi + lo carries ~64 bits), computed at
+// compile time by the Taylor series of e^(j ln2 / N) in long double (N = 128 here; the x86
+// kernels' AVX-512 exp holds N = 16 in registers, runtime/core/kernel/exp_x86.hpp).
+template <int entries>
 struct Exp2Table {
-  double hi[128];
-  double lo[128];
+  double hi[entries];
+  double lo[entries];
 };
-constexpr Exp2Table make_exp2_table() {
-  Exp2Table table{};
+template <int entries>
+constexpr Exp2Table<entries> make_exp2_table() {
+  Exp2Table<entries> table{};
   constexpr long double ln2 = 0.693147180559945309417232121458176568L;
-  for (int j = 0; j < 128; ++j) {
-    const long double x = j * ln2 / 128;
+  for (int j = 0; j < entries; ++j) {
+    const long double x = j * ln2 / entries;
     long double term = 1, sum = 1;
     for (int k = 1; k < 30; ++k) {
       term *= x / k;
@@ -65,7 +68,7 @@ constexpr Exp2Table make_exp2_table() {
   }
   return table;
 }
-static constexpr Exp2Table exp2_table = make_exp2_table();
+static constexpr Exp2Table<128> exp2_table = make_exp2_table<128>();
 
 // e^x: x = (128 m + j) ln2 / 128 + r with |r| <= ln2 / 256 (Cody-Waite, ln2 / 128 split so
 // that k ln2_hi / 128 is exact), e^x = 2^m 2^(j/128) e^r, e^r by its degree-5 Taylor polynomial

@@ -90,27 +90,8 @@ ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
 }
 
 #if defined(__AVX512F__)
-// 2^(j/16), j = 0..15, as hi + lo (the Taylor series in long double, as make_exp2_table)
-struct Exp2Table16 {
-  alignas(64) double hi[16];
-  alignas(64) double lo[16];
-};
-constexpr Exp2Table16 make_exp2_table16() {
-  Exp2Table16 table{};
-  constexpr long double ln2 = 0.693147180559945309417232121458176568L;
-  for (int j = 0; j < 16; ++j) {
-    const long double x = j * ln2 / 16;
-    long double term = 1, sum = 1;
-    for (int k = 1; k < 30; ++k) {
-      term *= x / k;
-      sum += term;
-    }
-    table.hi[j] = static_cast<double>(sum);
-    table.lo[j] = static_cast<double>(sum - table.hi[j]);
-  }
-  return table;
-}
-constexpr Exp2Table16 exp2_table16 = make_exp2_table16();
+// 2^(j/16), j = 0..15: hi and lo 64-byte aligned (four aligned loads fill the four registers)
+alignas(64) constexpr Exp2Table<16> exp2_table16 = make_exp2_table<16>();
 
 // The result's bits from scale (in [0.7, 2.1]) and m, every regime (fast_exp_lanes' masks)
 ASPERITY_ALWAYS_INLINE __m512d exp8_finish_any(__m512d x, __m512i scale, __m512i m) noexcept {
