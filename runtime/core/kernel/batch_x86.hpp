@@ -41,7 +41,6 @@ ASPERITY_ALWAYS_INLINE __m256d quintic_rows4(const double* coefficients, const s
 }
 
 #if defined(__AVX512F__)
-using Wide = __m512d;
 constexpr int wide_lanes = 8;
 ASPERITY_ALWAYS_INLINE __m512d exp_wide(__m512d x) noexcept { return exp8(x); }
 ASPERITY_ALWAYS_INLINE __m512d load_wide(const double* from) noexcept { return _mm512_loadu_pd(from); }
@@ -50,7 +49,6 @@ ASPERITY_ALWAYS_INLINE void store_wide_first(double* to, __m512d value, int coun
   _mm512_mask_storeu_pd(to, static_cast<__mmask8>((1u << count) - 1), value);
 }
 #else
-using Wide = __m256d;
 constexpr int wide_lanes = 4;
 ASPERITY_ALWAYS_INLINE __m256d exp_wide(__m256d x) noexcept { return exp4(x); }
 ASPERITY_ALWAYS_INLINE __m256d load_wide(const double* from) noexcept { return _mm256_loadu_pd(from); }
