@@ -16,7 +16,9 @@
 //   BM_GaussianF52CurveFit           the one-line fit 4.4086e-5 (4 - h)^6.804 on gaussian_fit_domain's
 //                                    separations (goal: BM_ScalarKind/gaussian_fit_domain <= 0.8x,
 //                                    every Weibull BM_ScalarKind <= 1.0x)
-//   BM_ContactAllFour                contact_at (count, area, load, stiffness), Weibull a = 2 tail
+//   BM_ContactAllFour                contact_at (count, area, load, stiffness, their ratio), Weibull
+//                                    a = 2 tail, from a Surface (its factors on every query)
+//   BM_ContactAllFourScales          the same from the factors computed once (contact_at_scales)
 //                                    (goal: <= 1.5x BM_ScalarKind/weibull_tail_a2)
 //   BM_ContactOrders                 Curve::contact_orders, the four orders' logs and values alone
 //   BM_Batch/ISA                     Curve::value_batch per instruction set (generic, avx2, avx512),
@@ -236,6 +238,19 @@ void BM_ContactAllFour(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ContactAllFour);
+
+void BM_ContactAllFourScales(benchmark::State& state) {
+  const KindData& data = kind_data("weibull_tail_a2");
+  const ContactScales scales = contact_scales(Surface{1e4, 1e-4, 1e-6, 1e11});
+  ContactState out;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    contact_at_scales(data.curve, scales, data.separations[i++ & (query_count - 1)], out);
+    benchmark::DoNotOptimize(out);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactAllFourScales);
 
 void BM_ContactOrders(benchmark::State& state) {
   const KindData& data = kind_data("weibull_tail_a2");

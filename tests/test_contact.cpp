@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <vector>
 
 #include "asperity/contact.hpp"
 #include "asperity/table.hpp"
@@ -86,6 +88,105 @@ TEST(Contact, NonPhysicalInputIsRejectedByValue) {
   EXPECT_TRUE(contact_at(curve, Surface{}, -largest, state));
   EXPECT_TRUE(contact_at(curve, Surface{}, largest, state));
   EXPECT_TRUE(contact_at(curve, Surface{}, -0.0, state));
+}
+
+// contact_at's kernel (the products where the exps are, Curve::contact_products) against the
+// model from the same curve's logs in long double: every kind, the whole range and off it,
+// densely where an order's exp leaves the surely-normal range (ln X = -708) and underflows
+// (-745), where the kernel's products and ratio change method.
+TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
+  struct Kind {
+    Distribution distribution;
+    Side side;
+    double shape;
+  };
+  const Kind kinds[] = {{Distribution::gaussian, Side::tail, 0},     {Distribution::weibull, Side::tail, 0.5},
+                        {Distribution::weibull, Side::tail, 2.0},    {Distribution::weibull, Side::tail, 20.0},
+                        {Distribution::weibull, Side::bounded, 0.5}, {Distribution::weibull, Side::bounded, 2.0},
+                        {Distribution::weibull, Side::bounded, 20.0}};
+  const Surface surfaces[] = {{1e4, 1e-4, 1e-6, 1e11}, {1, 1, 1, 1}, {1e-300, 1e-5, 1e-5, 1e-3}};
+  const double denorm = std::numeric_limits<double>::denorm_min();
+  long checked = 0;
+  for (const Kind& kind : kinds) {
+    const Curve curve = table().curve(kind.distribution, kind.side, kind.shape);
+    const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
+    std::vector<double> separations;
+    for (int i = 0; i <= 4000; ++i) separations.push_back(lo - 0.5 + (hi - lo + 1.0) * i / 4000);
+    // where ln X of each order crosses -708 and -745 (bisection on log_value), and around it
+    for (int order = 0; order < 4; ++order)
+      for (double level : {-708.0, -745.0}) {
+        double a = lo, b = hi;
+        if (!(curve.log_value(order, a) > level && curve.log_value(order, b) < level)) continue;
+        for (int step = 0; step < 200 && b - a > 0; ++step) {
+          const double middle = 0.5 * (a + b);
+          if (middle <= a || middle >= b) break;
+          (curve.log_value(order, middle) > level ? a : b) = middle;
+        }
+        for (int i = -300; i <= 300; ++i) separations.push_back(a + i * 1e-4);
+      }
+    for (const Surface& surface : surfaces) {
+      const ContactScales scales = contact_scales(surface);
+      const double factors[4] = {scales.count, scales.stiffness, scales.area, scales.load};  // order 0, 1/2, 1, 3/2
+      for (double s : separations) {
+        ContactState state, from_scales;
+        ASSERT_TRUE(contact_at(curve, surface, s, state)) << s;
+        ASSERT_TRUE(contact_at_scales(curve, scales, s, from_scales)) << s;
+        ASSERT_EQ(std::memcmp(&state, &from_scales, sizeof state), 0) << s;  // the same arithmetic
+        double logs[4], values[4];
+        curve.contact_orders(s, logs, values);
+        const double got[4] = {state.count, state.stiffness, state.area, state.load};
+        for (int k = 0; k < 4; ++k) {
+          const long double expected = static_cast<long double>(factors[k]) * std::exp(static_cast<long double>(logs[k]));
+          // the exp within 2.3e-16 where normal, 0.75 of the subnormal spacing below; the product's rounding
+          const long double bound = 4.5e-16L * std::fabs(expected) + (factors[k] + 1.0L) * denorm;
+          ASSERT_LE(std::fabs(got[k] - expected), bound) << "order " << k << " s = " << s << " ln X = " << logs[k];
+        }
+        if (logs[3] == -std::numeric_limits<double>::infinity()) {
+          EXPECT_TRUE(std::isnan(state.stiffness_ratio)) << s;
+        } else {
+          const long double difference = static_cast<long double>(logs[1]) - logs[3];
+          const long double expected = 1.5L * std::exp(difference);
+          const long double bound = (8e-16L + 1.2e-16L * std::fabs(difference)) * expected;
+          ASSERT_LE(std::fabs(state.stiffness_ratio - expected), bound) << "s = " << s << " logs " << logs[1] << " " << logs[3];
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 80000);
+}
+
+TEST(Contact, ScalesOutsideTheirRangeAreRejectedByValue) {
+  const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
+  ContactState state;
+  const double largest = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  double ContactScales::*const fields[] = {&ContactScales::count, &ContactScales::area, &ContactScales::load,
+                                           &ContactScales::stiffness};
+  for (int field = 0; field < 4; ++field) {
+    for (double bad : {0.0, -0.0, -tiny, -1.0, -largest, inf, -inf, nan, -nan})
+      for (double s : {-1.0, 1.0, 40.0}) {  // on the grid, and beyond it
+        ContactScales scales = contact_scales(Surface{});
+        scales.*fields[field] = bad;
+        EXPECT_FALSE(contact_at_scales(curve, scales, s, state)) << "field " << field << " = " << bad;
+        EXPECT_TRUE(std::isnan(state.count) && std::isnan(state.load) && std::isnan(state.stiffness_ratio));
+      }
+    for (double good : {tiny, std::numeric_limits<double>::min(), 1.0, largest}) {
+      ContactScales scales = contact_scales(Surface{});
+      scales.*fields[field] = good;
+      EXPECT_TRUE(contact_at_scales(curve, scales, 1.0, state)) << "field " << field << " = " << good;
+    }
+  }
+  const ContactScales unit = contact_scales(Surface{});
+  EXPECT_FALSE(contact_at_scales(curve, unit, nan, state));
+  EXPECT_FALSE(contact_at_scales(curve, unit, -inf, state));
+  EXPECT_TRUE(contact_at_scales(curve, unit, largest, state));
+  // a physical surface whose factors overflow is answered (inf), as before the kernel
+  EXPECT_TRUE(contact_at(curve, Surface{largest, 1, 1, largest}, 1.0, state));
+  EXPECT_TRUE(std::isinf(state.load));
+  // a default Curve holds no order: NaN quantities
+  EXPECT_TRUE(contact_at(Curve{}, Surface{}, 1.0, state));
+  EXPECT_TRUE(std::isnan(state.count) && std::isnan(state.stiffness_ratio));
 }
 
 TEST(Contact, SeparationConventionsRoundTrip) {

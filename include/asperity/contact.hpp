@@ -2,6 +2,8 @@
 // conventions of section 6. contact_at and ContactModel (contact_model.hpp) compute through the
 // one function here, contact_state_from_logs.
 #pragma once
+#include <cmath>
+
 #include "asperity/curve.hpp"
 
 namespace asperity {
@@ -37,8 +39,58 @@ ContactScales contact_scales(const Surface& surface) noexcept;
 ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept;
 
 // Returns false (and NaNs) for a non-physical surface (a value <= 0 or not finite) or a
-// NaN/infinite separation. Never throws or allocates.
+// NaN/infinite separation. Never throws or allocates. Inline (below): the factors, then one call
+// to the kernel built for this CPU (Curve::contact_products); the rare rest out of line.
 bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept;
+// The same with the factors computed once (contact_scales(surface)): a surface queried at many
+// separations saves their square root and products on every query (bench_lookup
+// BM_ContactAllFour against BM_ContactAllFourScales). False (and NaNs) where a factor is not in
+// (0, DBL_MAX] or the separation is NaN or infinite.
+// (A name of its own: braces, contact_at(curve, {N, R, sigma_s, E*}, s, out), stay a Surface.)
+bool contact_at_scales(const Curve& curve, const ContactScales& scales, double separation, ContactState& out) noexcept;
+
+namespace detail {
+// contact_scales' arithmetic (one square root: R^(1/2) sigma^(3/2) = sigma sqrt(R sigma))
+inline ContactScales contact_scales_of(const Surface& surface) noexcept {
+  const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
+  const double modulus = surface.contact_modulus;
+  const double root = std::sqrt(radius * scale);
+  ContactScales scales;
+  scales.count = n;
+  scales.area = M_PI * n * radius * scale;
+  scales.load = (4.0 / 3.0) * n * modulus * scale * root;
+  scales.stiffness = 2 * n * modulus * root;
+  return scales;
+}
+// contact_at off its fast path: the surface (or the factors) and the separation checked, then
+// contact_orders and contact_state_from_logs
+bool contact_at_checked(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept;
+bool contact_at_checked(const Curve& curve, const ContactScales& scales, double separation,
+                        ContactState& out) noexcept;
+}  // namespace detail
+
+// The kernel tests the factors: all four in (0, DBL_MAX] holds only where N, R, sigma_s and E*
+// are all > 0 and finite (count = N, area ~ N R sigma_s, stiffness ~ N E* (R sigma_s)^(1/2),
+// load ~ stiffness sigma_s); where it fails, contact_at_checked tests the surface itself.
+inline bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
+  static_assert(sizeof(ContactScales) == 4 * sizeof(double) && sizeof(ContactState) == 5 * sizeof(double),
+                "Curve::contact_products writes the state as five doubles");
+  const ContactScales scales = detail::contact_scales_of(surface);
+  if (__builtin_expect(curve.contact_products(separation, scales.count, scales.area, scales.load, scales.stiffness,
+                                              &out.count),
+                       1))
+    return true;
+  return detail::contact_at_checked(curve, surface, separation, out);
+}
+
+inline bool contact_at_scales(const Curve& curve, const ContactScales& scales, double separation,
+                              ContactState& out) noexcept {
+  if (__builtin_expect(curve.contact_products(separation, scales.count, scales.area, scales.load, scales.stiffness,
+                                              &out.count),
+                       1))
+    return true;
+  return detail::contact_at_checked(curve, scales, separation, out);
+}
 
 // Standardized separation (s - mu_a)/c_a (from the mean summit height, in rms units) and back.
 // For the Gaussian both conventions coincide.

@@ -80,6 +80,12 @@ class Curve {
   // logs are log_value's to the rounding of fused multiply-adds (measured within
   // 1.7e-16 (1 + |ln X|), tested to 1e-15), the same bits without the records.
   void contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept;
+  // contact_at's arithmetic (contact.hpp) where it is plain: state[0..3] = the factors times X_n
+  // for n = 0, 1, 3/2, 1/2 and state[4] = 1.5 X_1/2 / X_3/2, the bits contact_orders' values give,
+  // computed where the exps are; false, nothing written, where it does not apply (no contact
+  // records, off the grid, an X not surely normal: contact_orders and the logs answer there).
+  bool contact_products(double separation, double count_factor, double area_factor, double load_factor,
+                        double stiffness_factor, double state[5]) const noexcept;
 
   // The batch path: out[i] = value / log_value(twice_order, separations[i]) for i < count,
   // vectorized for the widest instruction set this CPU has (or the one named; a set it lacks
@@ -147,6 +153,14 @@ inline double Curve::value(int twice_order, double separation) const noexcept {
     return detail::fast_exp(
         detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y));
   return value_outside(twice_order, separation);
+}
+
+inline bool Curve::contact_products(double separation, double count_factor, double area_factor, double load_factor,
+                                    double stiffness_factor, double state[5]) const noexcept {
+  const detail::CurveData* data = data_.get();
+  return data && data->contact_products &&
+         data->contact_products(data->grid, data->contact_records, separation, count_factor, area_factor, load_factor,
+                                stiffness_factor, state);
 }
 
 }  // namespace asperity

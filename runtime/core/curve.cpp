@@ -91,6 +91,7 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
         for (int k = 0; k < 4; ++k)
           records[i * detail::contact_record_size + j * 4 + k] = data->order_coefficients[k][i * detail::fast_stride + j];
     data->contact_records = records;
+    data->contact_products = data->kernels->contact_products;
   }
   data->grid_error = build.achieved;
   order_mask_ = data->outside.order_mask();

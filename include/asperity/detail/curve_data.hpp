@@ -24,6 +24,8 @@ struct CurveData {
   const Kernels* kernels = nullptr;  // the batch kernel of the widest instruction set here
   // Curve::value on the grid built for this CPU's instruction set, or null: the inline code
   ScalarValue scalar_value = nullptr;
+  // contact_at's fast path (Curve::contact_products), or null without contact records
+  ContactProducts contact_products = nullptr;
   double grid_error = 0;
 };
 

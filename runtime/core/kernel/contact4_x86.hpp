@@ -12,14 +12,18 @@
 namespace asperity::detail {
 namespace {
 
-void contact4_x86(const double* __restrict record, double y, double* __restrict logs,
-                  double* __restrict values) noexcept {
-  // fast_quintic's Estrin scheme, one order a lane (the record is 64-byte aligned)
+// fast_quintic's Estrin scheme, one order a lane (the record is 64-byte aligned)
+ASPERITY_ALWAYS_INLINE __m256d contact4_logs(const double* __restrict record, double y) noexcept {
   const __m256d at = _mm256_set1_pd(y), at2 = _mm256_mul_pd(at, at);
   const __m256d low = _mm256_fmadd_pd(at, _mm256_load_pd(record + 4), _mm256_load_pd(record));
   const __m256d middle = _mm256_fmadd_pd(at, _mm256_load_pd(record + 12), _mm256_load_pd(record + 8));
   const __m256d high = _mm256_fmadd_pd(at, _mm256_load_pd(record + 20), _mm256_load_pd(record + 16));
-  const __m256d x = _mm256_fmadd_pd(at2, _mm256_fmadd_pd(at2, high, middle), low);
+  return _mm256_fmadd_pd(at2, _mm256_fmadd_pd(at2, high, middle), low);
+}
+
+void contact4_x86(const double* __restrict record, double y, double* __restrict logs,
+                  double* __restrict values) noexcept {
+  const __m256d x = contact4_logs(record, y);
   _mm256_storeu_pd(logs, x);
   if (__builtin_expect(!exp4_surely_normal(x), 0)) {
     for (int lane = 0; lane < 4; ++lane) values[lane] = fast_exp(logs[lane]);
@@ -28,6 +32,44 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
   __m256i k_bits;
   const __m256d scale = exp4_scale(x, k_bits);
   _mm256_storeu_pd(values, exp4_normal(scale, k_bits));
+}
+
+// fast_grid.hpp's ContactProducts: the position, then contact4_x86's exps, the lanes (0, 1/2, 1,
+// 3/2) permuted to (0, 1, 3/2, 1/2) and multiplied in the register. One mask tests the
+// factors (each in (0, DBL_MAX]) and the exps (surely normal) at once; where an exp is not,
+// exp4's masks and contact_ratio answer, without a second lookup.
+bool contact_products_x86(const FastGrid& grid, const double* __restrict contact_records, double separation,
+                          double count_factor, double area_factor, double load_factor, double stiffness_factor,
+                          double* __restrict state) noexcept {
+  FastPosition at;
+  if (__builtin_expect(!fast_position(grid, separation, at), 0)) return false;
+  const __m256d x = contact4_logs(contact_records + at.interval * contact_record_size, at.y);
+  const __m256d factors = _mm256_set_pd(stiffness_factor, load_factor, area_factor, count_factor);
+  const int usable_factors =
+      _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(factors, _mm256_setzero_pd(), _CMP_GT_OQ),
+                                       _mm256_cmp_pd(factors, _mm256_set1_pd(std::numeric_limits<double>::max()), _CMP_LE_OQ)));
+  const int normal = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
+                                                      _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
+  __m256i k_bits;
+  const __m256d scale = exp4_scale(x, k_bits);
+  if (__builtin_expect((usable_factors & normal) == 0xf, 1)) {
+    const __m256d values = exp4_normal(scale, k_bits);
+    _mm256_storeu_pd(state, _mm256_mul_pd(_mm256_permute4x64_pd(values, 0 | 2 << 2 | 3 << 4 | 1 << 6), factors));
+    // lane 1: 1.5 (X_1/2 / X_3/2) (both normal), stored from the low half
+    const __m256d ratio = _mm256_mul_pd(_mm256_div_pd(values, _mm256_permute4x64_pd(values, 3 << 2)), _mm256_set1_pd(1.5));
+    _mm_storeh_pd(state + 4, _mm256_castpd256_pd128(ratio));
+    return true;
+  }
+  if (usable_factors != 0xf) return false;
+  alignas(32) double logs[4], values[4];
+  _mm256_store_pd(logs, x);
+  _mm256_store_pd(values, exp4_finish_any(x, _mm256_castpd_si256(scale), k_bits));
+  state[0] = count_factor * values[0];
+  state[1] = area_factor * values[2];
+  state[2] = load_factor * values[3];
+  state[3] = stiffness_factor * values[1];
+  state[4] = contact_ratio(logs, values);
+  return true;
 }
 
 }  // namespace

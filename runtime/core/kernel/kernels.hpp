@@ -7,7 +7,9 @@
 // queries a step, the rest runs one call at a time).
 #pragma once
 #include <cstdint>
+#include <limits>
 
+#include "asperity/detail/contact_ratio.hpp"
 #include "asperity/detail/fast_grid.hpp"
 #include "asperity/instruction_set.hpp"
 
@@ -26,6 +28,10 @@ struct Kernels {
   // one interval's contact record (curve_data.hpp): logs[k] and values[k] = e^logs[k] (fast_exp
   // in the baseline build; on x86 one 4-lane vector, contact4_x86.hpp).
   void (*contact4)(const double* record, double y, double* logs, double* values) noexcept;
+  // Curve::contact_products (fast_grid.hpp's ContactProducts): contact4's exps, multiplied where
+  // they are (contact4, then the products from its values in memory: 2.2x one order, bench_lookup
+  // BM_ContactAllFour).
+  ContactProducts contact_products;
   // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
   // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.
   int (*block)(const FastGrid& grid, const double* order_coefficients, const double* separations, double* out,
@@ -55,6 +61,25 @@ void contact4(const double* __restrict record, double y, double* __restrict logs
     logs[k] = log_value;
     values[k] = Math::exp(log_value);
   }
+}
+
+template <class Math>
+bool contact_products(const FastGrid& grid, const double* __restrict contact_records, double separation,
+                      double count_factor, double area_factor, double load_factor, double stiffness_factor,
+                      double* __restrict state) noexcept {
+  const double factors[4] = {count_factor, area_factor, load_factor, stiffness_factor};
+  for (int k = 0; k < 4; ++k)
+    if (!(factors[k] > 0 && factors[k] <= std::numeric_limits<double>::max())) return false;
+  FastPosition at;
+  if (__builtin_expect(!fast_position(grid, separation, at), 0)) return false;
+  double logs[4], values[4];
+  contact4<Math>(contact_records + at.interval * contact_record_size, at.y, logs, values);
+  state[0] = count_factor * values[0];
+  state[1] = area_factor * values[2];
+  state[2] = load_factor * values[3];
+  state[3] = stiffness_factor * values[1];
+  state[4] = contact_ratio(logs, values);
+  return true;
 }
 
 template <class Math>

@@ -3,5 +3,5 @@
 #include "contact4_x86.hpp"
 
 namespace asperity::detail {
-const Kernels avx2_kernels{scalar_value<ScalarMath>, contact4_x86, block<X86Passes>, X86Passes::exps};
+const Kernels avx2_kernels{scalar_value<ScalarMath>, contact4_x86, contact_products_x86, block<X86Passes>, X86Passes::exps};
 }
