@@ -1,5 +1,5 @@
 // The per-instruction-set kernels (runtime/core/kernel/) on their own, for every set this CPU
-// runs: contact4 on synthetic contact records whose logs sweep the whole range of exp (normal,
+// runs: contact4 (and contact_products, on a grid made here) on synthetic contact records whose logs sweep the whole range of exp (normal,
 // both edges of its fast path, subnormal, underflow, overflow, -inf), against the scalar
 // quintic and a long double exp of the kernel's own logs; the AVX2 and AVX-512 builds of the
 // same code give the same bits. The batch path's exp pass (Kernels::exps: exp_x86.hpp's exp4
@@ -113,6 +113,100 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
     std::snprintf(figures, sizeof figures, "%.3g / %.3g", worst_log, worst_exp);
     RecordProperty(std::string("worst_log_and_exp_error_") + to_string(isa), figures);
     EXPECT_GT(checked, 10000u);
+  }
+  EXPECT_GE(sets, 1);
+}
+
+// Curve::contact_products' kernels (fast_grid.hpp's ContactProducts) on a grid made here: one
+// binade, s in [1, 2), 64 intervals whose records sweep the same logs as above (one order alone
+// in a slow regime, X_3/2 exactly 0). Against a long double exp of contact4's logs: the
+// products within 4.5e-16 (the exp's 2.3e-16 and the product's rounding) or the subnormal
+// spacing times the factor, the ratio within 8e-16 + 1.2e-16 |ln X_1/2 - ln X_3/2| of
+// 1.5 e^(ln X_1/2 - ln X_3/2) (NaN where X_3/2 = 0); false for a bad factor or off the grid.
+TEST(Kernels, ContactProductsOnEverySet) {
+  constexpr int log2_intervals = 6, intervals = 1 << log2_intervals;
+  detail::FastGrid grid;
+  grid.sides[0].lower = 1.0;
+  grid.sides[0].upper = std::nextafter(2.0, 0.0);
+  grid.directory.assign(2048, detail::FastBinade{});
+  grid.directory[1023] = detail::FastBinade::make(0, log2_intervals);  // the binade of [1, 2)
+  grid.intervals = intervals;
+  std::vector<Record> records(intervals);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::mt19937_64 random(15);
+  const double levels[] = {-760, -746, -745.13, -720, -708.5, -708, -707.5, -700, -300, -1, 0, 3, 500, 709, 709.5};
+  for (int i = 0; i < intervals; ++i)
+    for (int k = 0; k < 4; ++k) {
+      const int n = static_cast<int>(sizeof levels / sizeof levels[0]);
+      records[i].coefficients[k] = (i % 4 == 0) ? levels[(i + 5 * k) % n] : levels[i % n] + unit(random);
+      for (int c = 1; c < 6; ++c) records[i].coefficients[4 * c + k] = unit(random) * 2.0 / (1 << c);
+      if (i % 9 == 4) records[i].coefficients[3] = -inf;  // X_3/2 = 0
+    }
+  const double denorm = std::numeric_limits<double>::denorm_min(), largest = std::numeric_limits<double>::max();
+  const double factor_sets[][4] = {{1, 1, 1, 1}, {1e4, 3.1e-6, 1.3e4, 2e10}, {1e-300, 1e300, 5e-324, 1.7e308}};
+  int sets = 0;
+  std::vector<double> first_x86;
+  for (InstructionSet isa : {InstructionSet::generic, InstructionSet::avx2, InstructionSet::avx512}) {
+    if (!instruction_set_available(isa)) continue;
+    ++sets;
+    const detail::Kernels& kernels = detail::kernels_for(isa);
+    std::size_t checked = 0, at = 0;
+    for (const auto& factors : factor_sets)
+      for (int step = 0; step < 20000; ++step) {
+        const double s = 1.0 + step / 20000.0;
+        double state[5];
+        ASSERT_TRUE(kernels.contact_products(grid, records[0].coefficients, s, factors[0], factors[1], factors[2],
+                                             factors[3], state))
+            << to_string(isa) << " s = " << s;
+        if (isa == InstructionSet::avx2) first_x86.insert(first_x86.end(), state, state + 5);
+        if (isa == InstructionSet::avx512 && !first_x86.empty()) {
+          for (int k = 0; k < 5; ++k) ASSERT_TRUE(same_bits(state[k], first_x86[at + k])) << "s = " << s << " " << k;
+        }
+        at += 5;
+        // the logs as contact4 gives them at the same position
+        const int interval = static_cast<int>((s - 1.0) * intervals);
+        const double y = (s - 1.0) * intervals - interval - 0.5;
+        double logs[4], values[4];
+        kernels.contact4(records[interval].coefficients, y, logs, values);
+        const int order_of[4] = {0, 2, 3, 1};  // the state's count, area, load, stiffness
+        for (int j = 0; j < 4; ++j) {
+          const long double x = std::exp(static_cast<long double>(logs[order_of[j]]));
+          const long double expected = factors[j] * x;
+          const long double bound = 4.5e-16L * std::fabs(expected) + (factors[j] + 1.0L) * denorm;
+          if (x > largest || expected > largest)  // X itself overflows (ln X > 709.78): inf, as X is
+            EXPECT_TRUE(std::isinf(state[j])) << to_string(isa) << " s = " << s << " quantity " << j;
+          else
+            ASSERT_LE(std::fabs(state[j] - expected), bound)
+                << to_string(isa) << " s = " << s << " quantity " << j << " ln X = " << logs[order_of[j]];
+        }
+        if (logs[3] == -inf) {
+          EXPECT_TRUE(std::isnan(state[4])) << to_string(isa) << " s = " << s;
+        } else {
+          const long double difference = static_cast<long double>(logs[1]) - logs[3];
+          const long double expected = 1.5L * std::exp(difference);
+          if (expected > largest) {
+            EXPECT_TRUE(std::isinf(state[4]) || state[4] >= largest / 2) << to_string(isa) << " s = " << s;
+          } else {
+            const long double bound = (8e-16L + 1.2e-16L * std::fabs(difference)) * expected + denorm;
+            ASSERT_LE(std::fabs(state[4] - expected), bound) << to_string(isa) << " s = " << s << " logs " << logs[1]
+                                                              << " " << logs[3];
+          }
+        }
+        ++checked;
+      }
+    // off the grid, and factors outside (0, DBL_MAX]: false
+    double state[5];
+    for (double s : {0.999, 2.0, -1.5, 0.0, inf, -inf, std::numeric_limits<double>::quiet_NaN()})
+      EXPECT_FALSE(kernels.contact_products(grid, records[0].coefficients, s, 1, 1, 1, 1, state)) << s;
+    for (int k = 0; k < 4; ++k)
+      for (double bad : {0.0, -0.0, -denorm, -1.0, inf, -inf, std::numeric_limits<double>::quiet_NaN()}) {
+        double factors[4] = {1, 1, 1, 1};
+        factors[k] = bad;
+        EXPECT_FALSE(kernels.contact_products(grid, records[0].coefficients, 1.25, factors[0], factors[1], factors[2],
+                                              factors[3], state))
+            << to_string(isa) << " factor " << k << " = " << bad;
+      }
+    EXPECT_EQ(checked, 60000u);
   }
   EXPECT_GE(sets, 1);
 }
