@@ -64,11 +64,7 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
   alignas(32) double logs[4], values[4];
   _mm256_store_pd(logs, x);
   _mm256_store_pd(values, exp4_finish_any(x, _mm256_castpd_si256(scale), k_bits));
-  state[0] = count_factor * values[0];
-  state[1] = area_factor * values[2];
-  state[2] = load_factor * values[3];
-  state[3] = stiffness_factor * values[1];
-  state[4] = contact_ratio(logs, values);
+  contact_state(logs, values, count_factor, area_factor, load_factor, stiffness_factor, state);
   return true;
 }
 

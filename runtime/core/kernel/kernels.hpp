@@ -63,6 +63,18 @@ void contact4(const double* __restrict record, double y, double* __restrict logs
   }
 }
 
+// ContactProducts' state from the four orders' logs and values (order 0, 1/2, 1, 3/2), where
+// the kernels do not take their vector path
+ASPERITY_ALWAYS_INLINE void contact_state(const double logs[4], const double values[4], double count_factor,
+                                          double area_factor, double load_factor, double stiffness_factor,
+                                          double* __restrict state) noexcept {
+  state[0] = count_factor * values[0];
+  state[1] = area_factor * values[2];
+  state[2] = load_factor * values[3];
+  state[3] = stiffness_factor * values[1];
+  state[4] = contact_ratio(logs, values);
+}
+
 template <class Math>
 bool contact_products(const FastGrid& grid, const double* __restrict contact_records, double separation,
                       double count_factor, double area_factor, double load_factor, double stiffness_factor,
@@ -74,11 +86,7 @@ bool contact_products(const FastGrid& grid, const double* __restrict contact_rec
   if (__builtin_expect(!fast_position(grid, separation, at), 0)) return false;
   double logs[4], values[4];
   contact4<Math>(contact_records + at.interval * contact_record_size, at.y, logs, values);
-  state[0] = count_factor * values[0];
-  state[1] = area_factor * values[2];
-  state[2] = load_factor * values[3];
-  state[3] = stiffness_factor * values[1];
-  state[4] = contact_ratio(logs, values);
+  contact_state(logs, values, count_factor, area_factor, load_factor, stiffness_factor, state);
   return true;
 }
 
