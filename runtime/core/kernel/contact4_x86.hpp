@@ -54,10 +54,11 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
   const __m256d scale = exp4_scale(x, k_bits);
   if (__builtin_expect((usable_factors & normal) == 0xf, 1)) {
     const __m256d values = exp4_normal(scale, k_bits);
-    _mm256_storeu_pd(state, _mm256_mul_pd(_mm256_permute4x64_pd(values, 0 | 2 << 2 | 3 << 4 | 1 << 6), factors));
-    // lane 1: 1.5 (X_1/2 / X_3/2) (both normal), stored from the low half
-    const __m256d ratio = _mm256_mul_pd(_mm256_div_pd(values, _mm256_permute4x64_pd(values, 3 << 2)), _mm256_set1_pd(1.5));
-    _mm_storeh_pd(state + 4, _mm256_castpd256_pd128(ratio));
+    const __m256d permuted = _mm256_permute4x64_pd(values, 0 | 2 << 2 | 3 << 4 | 1 << 6);  // X_0, X_1, X_3/2, X_1/2
+    _mm256_storeu_pd(state, _mm256_mul_pd(permuted, factors));
+    // lane 3 of permuted / values: X_1/2 / X_3/2 (both normal)
+    const __m256d ratio = _mm256_mul_pd(_mm256_div_pd(permuted, values), _mm256_set1_pd(1.5));
+    _mm_storeh_pd(state + 4, _mm256_extractf128_pd(ratio, 1));
     return true;
   }
   if (usable_factors != 0xf) return false;
