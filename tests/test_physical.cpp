@@ -211,7 +211,8 @@ TEST(ContactModel, AgreesWithContactAtThroughOneComputation) {
   const ContactModel model(table(), surface);
   const Curve curve = table().curve(Distribution::weibull, Side::bounded, 1.73);
   const Surface plain{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus};
-  for (double s : {-0.01, -0.3, -1.0, -4.0}) {
+  // on the grid, and off it (|s| < 2^-70, past the table's end): both paths of each
+  for (double s : {-1e-30, -1e-12, -1e-5, -0.01, -0.3, -1.0, -4.0, -1e3}) {
     ContactState state;
     ASSERT_TRUE(contact_at(curve, plain, s, state));
     const PhysicalState physical = model.at_separation(s * surface.height_scale);

@@ -1,6 +1,7 @@
 // Physical quantities of docs/model.md section 3 from a resolved curve, and the two separation
-// conventions of section 6. contact_at and ContactModel (contact_model.hpp) compute through the
-// one function here, contact_state_from_logs.
+// conventions of section 6. contact_at and ContactModel (contact_model.hpp) compute the same way:
+// Curve::contact_products (one kernel call) where it applies, else contact_state_from_logs; both
+// take the ratio by detail/contact_ratio.hpp's rule.
 #pragma once
 #include <cmath>
 

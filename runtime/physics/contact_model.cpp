@@ -45,9 +45,13 @@ PhysicalState ContactModel::state_at_dimensionless(double s) const noexcept {
   if (std::isnan(s)) return PhysicalState{nan, nan, nan, nan, nan, nan, nan, nan, nan};
   if (s == -std::numeric_limits<double>::infinity()) return infinite_contact();
   if (s == std::numeric_limits<double>::infinity() || (surface_.side == Side::bounded && s >= 0)) return no_contact();
-  double logs[4], values[4];
-  curve_.contact_orders(s, logs, values);
-  const ContactState contact = contact_state_from_logs(scales_, logs, values);  // the one computation
+  // contact_at's computation: one kernel call where it applies, else the logs and values
+  ContactState contact;
+  if (!curve_.contact_products(s, scales_.count, scales_.area, scales_.load, scales_.stiffness, &contact.count)) {
+    double logs[4], values[4];
+    curve_.contact_orders(s, logs, values);
+    contact = contact_state_from_logs(scales_, logs, values);
+  }
   const double sigma = surface_.height_scale;
   PhysicalState state;
   state.separation = s * sigma;
