@@ -58,7 +58,7 @@ inline ContactScales contact_scales_of(const Surface& surface) noexcept {
   const double root = std::sqrt(radius * scale);
   ContactScales scales;
   scales.count = n;
-  scales.area = M_PI * n * radius * scale;
+  scales.area = 3.14159265358979323846 * n * radius * scale;  // pi (M_PI is not standard C++)
   scales.load = (4.0 / 3.0) * n * modulus * scale * root;
   scales.stiffness = 2 * n * modulus * root;
   return scales;
