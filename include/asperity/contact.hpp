@@ -74,8 +74,7 @@ bool contact_at_checked(const Curve& curve, const ContactScales& scales, double 
 // are all > 0 and finite (count = N, area ~ N R sigma_s, stiffness ~ N E* (R sigma_s)^(1/2),
 // load ~ stiffness sigma_s); where it fails, contact_at_checked tests the surface itself.
 inline bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
-  static_assert(sizeof(ContactScales) == 4 * sizeof(double) && sizeof(ContactState) == 5 * sizeof(double),
-                "Curve::contact_products writes the state as five doubles");
+  static_assert(sizeof(ContactState) == 5 * sizeof(double), "Curve::contact_products writes the state as five doubles");
   const ContactScales scales = detail::contact_scales_of(surface);
   if (__builtin_expect(curve.contact_products(separation, scales.count, scales.area, scales.load, scales.stiffness,
                                               &out.count),

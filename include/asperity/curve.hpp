@@ -80,10 +80,11 @@ class Curve {
   // logs are log_value's to the rounding of fused multiply-adds (measured within
   // 1.7e-16 (1 + |ln X|), tested to 1e-15), the same bits without the records.
   void contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept;
-  // contact_at's arithmetic (contact.hpp) where it is plain: state[0..3] = the factors times X_n
-  // for n = 0, 1, 3/2, 1/2 and state[4] = 1.5 X_1/2 / X_3/2, the bits contact_orders' values give,
-  // computed where the exps are; false, nothing written, where it does not apply (no contact
-  // records, off the grid, an X not surely normal: contact_orders and the logs answer there).
+  // contact_at's arithmetic (contact.hpp) in one kernel call: state[0..3] = the factors times X_n
+  // for n = 0, 1, 3/2, 1/2 and state[4] = 1.5 X_1/2 / X_3/2 (detail/contact_ratio.hpp's rule),
+  // from contact_orders' exps where all four are surely normal (the same bits), from the vector
+  // exp's masks elsewhere (docs/accuracy.md); false, nothing written, without contact records,
+  // off the grid, or for a factor outside (0, DBL_MAX].
   bool contact_products(double separation, double count_factor, double area_factor, double load_factor,
                         double stiffness_factor, double state[5]) const noexcept;
 

@@ -57,8 +57,7 @@ using ScalarValue = double (*)(const FastGrid& grid, const double* order_coeffic
 // contact_at's arithmetic on the grid (Curve::contact_products), as built for one instruction
 // set: state[0..3] = the factors times X of order 0, 1, 3/2, 1/2 (count, area, load, stiffness)
 // and state[4] = 1.5 X_1/2 / X_3/2, from one position and one 4-lane vector of contact records
-// (curve_data.hpp); false, nothing written, off the grid, where an X is not surely normal or
-// a factor is not in (0, DBL_MAX].
+// (curve_data.hpp); false, nothing written, off the grid or for a factor outside (0, DBL_MAX].
 // The factors come in registers: a vector load of four doubles that the caller has just stored
 // one or two at a time cannot be forwarded from those stores.
 using ContactProducts = bool (*)(const FastGrid& grid, const double* contact_records, double separation,

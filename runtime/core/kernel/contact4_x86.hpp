@@ -35,9 +35,9 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
 }
 
 // fast_grid.hpp's ContactProducts: the position, then contact4_x86's exps, the lanes (0, 1/2, 1,
-// 3/2) permuted to (0, 1, 3/2, 1/2) and multiplied in the register. One mask tests the
-// factors (each in (0, DBL_MAX]) and the exps (surely normal) at once; where an exp is not,
-// exp4's masks and contact_ratio answer, without a second lookup.
+// 3/2) permuted to (0, 1, 3/2, 1/2) and multiplied in the register, one branch for the
+// factors' test (each in (0, DBL_MAX]) and the exps' (all surely normal); where an exp is not,
+// exp4's masks and contact_ratio answer in the same call, without a second lookup.
 bool contact_products_x86(const FastGrid& grid, const double* __restrict contact_records, double separation,
                           double count_factor, double area_factor, double load_factor, double stiffness_factor,
                           double* __restrict state) noexcept {
