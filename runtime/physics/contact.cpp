@@ -1,7 +1,6 @@
 #include "asperity/contact.hpp"
 
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
