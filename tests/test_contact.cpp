@@ -112,6 +112,15 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
     const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
     std::vector<double> separations;
     for (int i = 0; i <= 4000; ++i) separations.push_back(lo - 0.5 + (hi - lo + 1.0) * i / 4000);
+    // s -> 0 from both sides, where the grid's binades get small, and across its end at 2^-70
+    for (int e = 1; e <= 80; ++e)
+      for (double sign : {-1.0, 1.0}) {
+        separations.push_back(sign * std::ldexp(1.0, -e));
+        separations.push_back(sign * std::nextafter(std::ldexp(1.0, -e), 1.0));
+        separations.push_back(sign * 3 * std::ldexp(1.0, -e - 2));
+      }
+    separations.push_back(0.0);
+    separations.push_back(-0.0);
     // where ln X of each order crosses -708 and -745 (bisection on log_value), and around it
     for (int order = 0; order < 4; ++order)
       for (double level : {-708.0, -745.0}) {
