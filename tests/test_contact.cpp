@@ -103,7 +103,10 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
   const Kind kinds[] = {{Distribution::gaussian, Side::tail, 0},     {Distribution::weibull, Side::tail, 0.5},
                         {Distribution::weibull, Side::tail, 2.0},    {Distribution::weibull, Side::tail, 20.0},
                         {Distribution::weibull, Side::bounded, 0.5}, {Distribution::weibull, Side::bounded, 2.0},
-                        {Distribution::weibull, Side::bounded, 20.0}};
+                        {Distribution::weibull, Side::bounded, 20.0},
+                        // shapes between the grid's nodes (blended curves; 0.5 and 20 are its ends)
+                        {Distribution::weibull, Side::tail, 1.73},   {Distribution::weibull, Side::bounded, 0.77},
+                        {Distribution::weibull, Side::tail, 13.3},   {Distribution::weibull, Side::bounded, 19.1}};
   const Surface surfaces[] = {{1e4, 1e-4, 1e-6, 1e11}, {1, 1, 1, 1}, {1e-300, 1e-5, 1e-5, 1e-3}};
   const double denorm = std::numeric_limits<double>::denorm_min();
   long checked = 0;
@@ -163,6 +166,32 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
     }
   }
   EXPECT_GT(checked, 80000);
+}
+
+// Without contact records (CurveOptions::contact_records off) contact_at takes contact_orders
+// and the logs: the same quantities within the kernels' bounds
+TEST(Contact, WithoutContactRecordsTheSameQuantities) {
+  CurveOptions options;
+  options.contact_records = false;
+  const Curve plain = table().curve(Distribution::weibull, Side::tail, 2.0, Curve::all_orders, options);
+  const Curve with_records = table().curve(Distribution::weibull, Side::tail, 2.0);
+  const Surface surface{1e4, 1e-4, 1e-6, 1e11};
+  for (int i = 0; i <= 2000; ++i) {
+    const double s = -3.5 + 31.5 * i / 2000;
+    ContactState a, b;
+    ASSERT_TRUE(contact_at(plain, surface, s, a));
+    ASSERT_TRUE(contact_at(with_records, surface, s, b));
+    const double pairs[][2] = {{a.count, b.count}, {a.area, b.area}, {a.load, b.load}, {a.stiffness, b.stiffness},
+                               {a.stiffness_ratio, b.stiffness_ratio}};
+    for (const auto& pair : pairs) {
+      if (std::isnan(pair[1])) {
+        EXPECT_TRUE(std::isnan(pair[0])) << s;
+        continue;
+      }
+      // both from the same logs to 1e-15 (1 + |ln X|) (test_curve), and the exps' 2.3e-16
+      EXPECT_LE(std::fabs(pair[0] - pair[1]), 2e-13 * std::fabs(pair[1]) + 1e-300) << s;
+    }
+  }
 }
 
 TEST(Contact, ScalesOutsideTheirRangeAreRejectedByValue) {
