@@ -72,6 +72,17 @@ TEST(FastMath, ExpSpecialValuesAndSubnormals) {
     EXPECT_EQ(fast_exp(std::log(std::numeric_limits<double>::max())), std::exp(std::log(std::numeric_limits<double>::max())));
     EXPECT_EQ(fast_exp(-745.2), 0.0);
     EXPECT_EQ(fast_exp(-745.1), 4.9406564584124654e-324);  // the smallest subnormal
+    // every binade beyond the range, where the reduction's k, and with it m, is garbage: the
+    // test on m must still send these to 0 and inf (a few significands a binade, both signs)
+    for (double magnitude = 746.0; magnitude < inf; magnitude *= 2)
+      for (double significand : {1.0, 1.1, 1.5, 1.9999999999999998}) {
+        const double x = magnitude * significand;
+        if (x == inf) continue;
+        EXPECT_EQ(fast_exp(-x), 0.0) << -x;
+        EXPECT_EQ(fast_exp(x), inf) << x;
+      }
+    EXPECT_TRUE(std::isnan(fast_exp(-std::nan(""))));
+    EXPECT_TRUE(std::isnan(fast_exp(std::nan("0x7ffff"))));
     // below the normal range the result is subnormal (built in the bits), within one subnormal
     // spacing (2^-1074) of the reference, and at most one above the smallest normal
     constexpr long double spacing = 4.9406564584124654e-324L;
