@@ -13,10 +13,16 @@
 namespace asperity::bench {
 
 struct GridCopy {
-  detail::FastGrid grid;
+  detail::FastGrid grid;                  // its directory points into `directory`
+  std::vector<detail::FastBinade> directory;
   std::vector<double> coefficients;  // [held order][interval][fast_stride], as Curve holds them
   std::array<std::int64_t, order_count> order_offset{};
   const double* order(int twice_order) const { return coefficients.data() + order_offset[twice_order]; }
+  GridCopy() = default;
+  GridCopy(GridCopy&&) = default;  // moves keep the directory where grid points
+  GridCopy& operator=(GridCopy&&) = default;
+  GridCopy(const GridCopy&) = delete;
+  GridCopy& operator=(const GridCopy&) = delete;
 };
 
 // The grid of the table's curve at a grid shape (the Gaussian ignores shape), all six orders.
@@ -36,7 +42,8 @@ inline GridCopy copy_grid(const Table& table, Distribution distribution, Side si
   detail::describe_grid(reference, compact, options.grid_min_separation, options.grid_max_separation);
   detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
   GridCopy copy;
-  copy.grid = std::move(build.grid);
+  copy.grid = build.grid;
+  copy.directory = std::move(build.directory);  // a move: copy.grid.directory still points into it
   copy.coefficients = std::move(build.coefficients);
   copy.order_offset = build.order_offset;
   return copy;

@@ -61,7 +61,7 @@ std::uint64_t HighwayBlock(const detail::FastGrid& grid, const double* HWY_RESTR
                            const double* HWY_RESTRICT separations, double* HWY_RESTRICT out, int count) {
   const hn::ScalableTag<double> d;
   const std::size_t lanes = hn::Lanes(d);
-  const std::int64_t* directory = reinterpret_cast<const std::int64_t*>(grid.directory.data());
+  const std::int64_t* directory = reinterpret_cast<const std::int64_t*>(grid.directory);
   static_assert(sizeof(detail::FastBinade) == sizeof(std::int64_t), "a directory entry is one 64-bit word");
   std::uint64_t outside = 0;
   std::size_t j = 0;

@@ -62,7 +62,7 @@ ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) {
 // load nothing (masked gathers) and are counted.
 std::uint64_t run_block_avx512(const FastGrid& grid, const double* coefficients, const double* separations,
                                double* out, int count) {
-  const FastBinade* directory = grid.directory.data();
+  const FastBinade* directory = grid.directory;
   const __m512d lower0 = _mm512_set1_pd(grid.sides[0].lower), upper0 = _mm512_set1_pd(grid.sides[0].upper);
   const __m512d lower1 = _mm512_set1_pd(grid.sides[1].lower), upper1 = _mm512_set1_pd(grid.sides[1].upper);
   const __m512i offset0 = _mm512_set1_epi64(grid.sides[0].offset), offset1 = _mm512_set1_epi64(grid.sides[1].offset);

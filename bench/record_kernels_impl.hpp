@@ -65,7 +65,7 @@ __attribute__((noinline)) std::uint64_t run_block(const FastGrid& grid, const Fa
 template <int stride, class Math>
 std::uint64_t block_lookup(const FastGrid& grid, const double* coefficients, const double* separations, double* out,
                            int count) {
-  return run_block<stride, Math>(grid, grid.directory.data(), coefficients, separations, out, count);
+  return run_block<stride, Math>(grid, grid.directory, coefficients, separations, out, count);
 }
 
 // The generic build calls the inline exp one call at a time in the batch loop, the vector

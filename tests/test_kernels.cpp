@@ -128,8 +128,9 @@ TEST(Kernels, ContactProductsOnEverySet) {
   detail::FastGrid grid;
   grid.sides[0].lower = 1.0;
   grid.sides[0].upper = std::nextafter(2.0, 0.0);
-  grid.directory.assign(2048, detail::FastBinade{});
-  grid.directory[1023] = detail::FastBinade::make(0, log2_intervals);  // the binade of [1, 2)
+  std::vector<detail::FastBinade> directory(2048);
+  directory[1023] = detail::FastBinade::make(0, log2_intervals);  // the binade of [1, 2)
+  grid.directory = directory.data();
   grid.intervals = intervals;
   std::vector<Record> records(intervals);
   std::uniform_real_distribution<double> unit(-1, 1);

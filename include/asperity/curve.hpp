@@ -51,6 +51,11 @@ struct ShapeBlend {
 class Curve {
  public:
   Curve() = default;  // holds no order: every query answers NaN
+  Curve(const Curve&) = default;
+  Curve& operator=(const Curve&) = default;
+  // A moved-from Curve is a default one (holds no order), not one whose pointers outlive its data.
+  Curve(Curve&& other) noexcept;
+  Curve& operator=(Curve&& other) noexcept;
   static constexpr unsigned all_orders = (1u << order_count) - 1;
   // Builds a curve from knot data [order][knot][3] (H, dH/du, d2H/du2) laid out by `layout`,
   // keeping the orders whose bit (1 << twice_order, see model.hpp's order_bit) is set in
@@ -101,9 +106,10 @@ class Curve {
   Distribution distribution() const noexcept;
   Side side() const noexcept;
   double shape() const noexcept;
-  unsigned order_mask() const noexcept { return order_mask_; }
+  unsigned order_mask() const noexcept { return lookup_.order_mask; }
   bool has_order(int twice_order) const noexcept {
-    return static_cast<unsigned>(twice_order) < static_cast<unsigned>(order_count) && (order_mask_ >> twice_order & 1u);
+    return static_cast<unsigned>(twice_order) < static_cast<unsigned>(order_count) &&
+           (lookup_.order_mask >> twice_order & 1u);
   }
   // The separations the table's knots span, from the end of the all-touching segment (which
   // reaches -inf) to the start of the series beyond the table (see asymptotic.hpp).
@@ -120,13 +126,27 @@ class Curve {
   void build(detail::CompactCurve& compact, const detail::GridReference& reference, const CurveOptions& options);
   // off the grid: the table's own layout, the series, the values at 0 (not inlined: rare)
   double log_value_outside(int twice_order, double separation) const noexcept;
-  double value_outside(int twice_order, double separation) const noexcept;
   void batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
              bool log_output) const noexcept;
 
+  // The lookup's hot part, held here and not behind data_ (one dependent load fewer a query);
+  // its pointers are into *data_. Its order mask is 0 in a default Curve, which so answers
+  // NaN without touching data_.
+  detail::CurveLookup lookup_;
   std::shared_ptr<const detail::CurveData> data_;
-  unsigned order_mask_ = 0;  // here, so that a default Curve answers NaN before touching data_
 };
+
+inline Curve::Curve(Curve&& other) noexcept : lookup_(other.lookup_), data_(std::move(other.data_)) {
+  other.lookup_ = {};
+}
+inline Curve& Curve::operator=(Curve&& other) noexcept {
+  if (this != &other) {
+    lookup_ = other.lookup_;
+    data_ = std::move(other.data_);
+    other.lookup_ = {};
+  }
+  return *this;
+}
 
 // The hot path: one position on the grid (a few integer operations, two loads), one quintic,
 // one exp (fast_math.hpp's: the library's takes a slow path below e^-512, and both would pay
@@ -134,34 +154,21 @@ class Curve {
 // through the kernel built for this CPU where there is one; the rare rest out of line.
 inline double Curve::log_value(int twice_order, double separation) const noexcept {
   if (!has_order(twice_order)) return __builtin_nan("");  // also a default Curve: it holds no order
-  const detail::CurveData& data = *data_;
   detail::FastPosition at;
-  if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1))
-    return detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
+  if (__builtin_expect(detail::fast_position(lookup_.grid, separation, at), 1))
+    return detail::fast_quintic(lookup_.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
   return log_value_outside(twice_order, separation);
 }
 
 inline double Curve::value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order)) return __builtin_nan("");
-  const detail::CurveData& data = *data_;
-  if (data.scalar_value) {  // built for this CPU (fused multiply-adds): faster despite the call
-    const double value = data.scalar_value(data.grid, data.order_coefficients[twice_order], separation);
-    if (__builtin_expect(value == value, 1)) return value;
-    return value_outside(twice_order, separation);
-  }
-  detail::FastPosition at;
-  if (__builtin_expect(detail::fast_position(data.grid, separation, at), 1))
-    return detail::fast_exp(
-        detail::fast_quintic(data.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y));
-  return value_outside(twice_order, separation);
+  return lookup_.value(lookup_, twice_order, separation);
 }
 
 inline bool Curve::contact_products(double separation, double count_factor, double area_factor, double load_factor,
                                     double stiffness_factor, double state[5]) const noexcept {
-  const detail::CurveData* data = data_.get();
-  return data && data->contact_products &&
-         data->contact_products(data->grid, data->contact_records, separation, count_factor, area_factor, load_factor,
-                                stiffness_factor, state);
+  return lookup_.contact_products &&
+         lookup_.contact_products(lookup_.grid, lookup_.contact_records, separation, count_factor, area_factor,
+                                  load_factor, stiffness_factor, state);
 }
 
 }  // namespace asperity

@@ -14,7 +14,12 @@ namespace asperity {
 
 namespace {
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+
+// CurveLookup::value_outside: off the grid, the table's own layout, the series, the values at 0
+double value_outside(const detail::CurveData& data, int twice_order, double separation) noexcept {
+  return std::exp(data.outside.log_value(twice_order, separation));
 }
+}  // namespace
 
 Curve::Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
              const double* knot_data, unsigned order_mask, const CurveOptions& options) {
@@ -70,18 +75,22 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
   // where the grid covers the whole table, the table's own layout answers only outside it
   if (options.grid_min_separation <= compact.table_min() && options.grid_max_separation >= compact.table_max())
     compact.keep_outside_only();
-  data->grid = std::move(build.grid);
+  detail::CurveLookup lookup;
+  lookup.grid = build.grid;
+  data->directory = std::move(build.directory);  // a move: lookup.grid.directory still points into it
   data->coefficients = std::move(build.coefficients);
   for (int order = 0; order < order_count; ++order)
-    data->order_coefficients[order] =
+    lookup.order_coefficients[order] =
         build.order_offset[order] < 0 ? nullptr : data->coefficients.data() + build.order_offset[order];
   data->outside = std::move(compact);
   data->kernels = &detail::kernels_for(InstructionSet::automatic);
-  data->scalar_value = data->kernels->value;
+  lookup.value = data->kernels->value;
+  lookup.value_outside = value_outside;
+  lookup.data = data.get();
   bool all_contact_orders = options.contact_records;
-  for (int k = 0; k < 4; ++k) all_contact_orders = all_contact_orders && data->order_coefficients[k];
+  for (int k = 0; k < 4; ++k) all_contact_orders = all_contact_orders && lookup.order_coefficients[k];
   if (all_contact_orders) {
-    const std::size_t intervals = static_cast<std::size_t>(data->grid.intervals);
+    const std::size_t intervals = static_cast<std::size_t>(lookup.grid.intervals);
     constexpr std::size_t line = 64 / sizeof(double);  // room to start on a cache line
     data->contact_storage.assign(intervals * detail::contact_record_size + line, 0.0);
     double* records = data->contact_storage.data();
@@ -89,13 +98,14 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
     for (std::size_t i = 0; i < intervals; ++i)
       for (int j = 0; j < detail::fast_stride; ++j)
         for (int k = 0; k < 4; ++k)
-          records[i * detail::contact_record_size + j * 4 + k] = data->order_coefficients[k][i * detail::fast_stride + j];
-    data->contact_records = records;
-    data->contact_products = data->kernels->contact_products;
+          records[i * detail::contact_record_size + j * 4 + k] = lookup.order_coefficients[k][i * detail::fast_stride + j];
+    lookup.contact_records = records;
+    lookup.contact_products = data->kernels->contact_products;
   }
   data->grid_error = build.achieved;
-  order_mask_ = data->outside.order_mask();
+  lookup.order_mask = data->outside.order_mask();
   data_ = std::move(data);
+  lookup_ = lookup;
 }
 
 Distribution Curve::distribution() const noexcept { return data_ ? data_->outside.distribution() : Distribution::weibull; }
@@ -103,23 +113,20 @@ Side Curve::side() const noexcept { return data_ ? data_->outside.side() : Side:
 double Curve::shape() const noexcept { return data_ ? data_->outside.shape() : 0.0; }
 double Curve::table_min_separation() const noexcept { return data_ ? data_->outside.table_min() : not_a_number; }
 double Curve::table_max_separation() const noexcept { return data_ ? data_->outside.table_max() : not_a_number; }
-std::size_t Curve::grid_intervals() const noexcept { return data_ ? static_cast<std::size_t>(data_->grid.intervals) : 0; }
+std::size_t Curve::grid_intervals() const noexcept { return data_ ? static_cast<std::size_t>(lookup_.grid.intervals) : 0; }
 double Curve::grid_error() const noexcept { return data_ ? data_->grid_error : not_a_number; }
 
 std::size_t Curve::memory_bytes() const noexcept {
   if (!data_) return sizeof(*this);
   return sizeof(*this) + sizeof(detail::CurveData) +
          (data_->coefficients.capacity() + data_->contact_storage.capacity()) * sizeof(double) +
-         data_->grid.directory.capacity() * sizeof(detail::FastBinade) + data_->outside.memory_bytes();
+         data_->directory.capacity() * sizeof(detail::FastBinade) + data_->outside.memory_bytes();
 }
 
 double Curve::log_value_outside(int twice_order, double separation) const noexcept {
   return data_->outside.log_value(twice_order, separation);
 }
 
-double Curve::value_outside(int twice_order, double separation) const noexcept {
-  return std::exp(data_->outside.log_value(twice_order, separation));
-}
 
 void Curve::log_values(double separation, double out[order_count]) const noexcept {
   log_values(separation, 0, order_count - 1, out);
@@ -133,14 +140,13 @@ void Curve::log_values(double separation, int first, int last, double* out) cons
     for (int k = first; k <= last; ++k) out[k - first] = not_a_number;
     return;
   }
-  const detail::CurveData& data = *data_;
   detail::FastPosition at;
-  if (!detail::fast_position(data.grid, separation, at)) {
-    data.outside.log_values(separation, first, last, out);
+  if (!detail::fast_position(lookup_.grid, separation, at)) {
+    data_->outside.log_values(separation, first, last, out);
     return;
   }
   for (int k = first; k <= last; ++k) {
-    const double* c = data.order_coefficients[k];
+    const double* c = lookup_.order_coefficients[k];
     out[k - first] = c ? detail::fast_quintic(c, at.interval * detail::fast_stride, at.y) : not_a_number;
   }
 }
@@ -152,11 +158,10 @@ void Curve::contact_orders(double separation, double log_out[4], double value_ou
     for (int k = 0; k < 4; ++k) log_out[k] = value_out[k] = not_a_number;
     return;
   }
-  const detail::CurveData& data = *data_;
   detail::FastPosition at;
-  if (data.contact_records && __builtin_expect(detail::fast_position(data.grid, separation, at), 1)) {
-    data.kernels->contact4(data.contact_records + at.interval * detail::contact_record_size, at.y, log_out,
-                           value_out);
+  if (lookup_.contact_records && __builtin_expect(detail::fast_position(lookup_.grid, separation, at), 1)) {
+    data_->kernels->contact4(lookup_.contact_records + at.interval * detail::contact_record_size, at.y, log_out,
+                             value_out);
     return;
   }
   log_values(separation, 0, 3, log_out);
@@ -181,12 +186,12 @@ void Curve::batch(int twice_order, const double* separations, double* out, std::
   }
   const detail::CurveData& data = *data_;
   const detail::Kernels& kernels = isa == InstructionSet::automatic ? *data.kernels : detail::kernels_for(isa);
-  const double* coefficients = data.order_coefficients[twice_order];
+  const double* coefficients = lookup_.order_coefficients[twice_order];
   int rest[detail::batch_block];
   double block_separations[detail::batch_block];  // a copy, so that out may be separations
   // a grid that covers nothing (CurveOptions' separations beside the table) has no directory
   // and no record for the kernels' off-grid lanes to read: every query is answered outside it
-  const bool empty_grid = data.grid.intervals == 0;
+  const bool empty_grid = lookup_.grid.intervals == 0;
   for (std::size_t start = 0; start < count; start += detail::batch_block) {
     const int block = static_cast<int>(count - start < detail::batch_block ? count - start : detail::batch_block);
     for (int j = 0; j < block; ++j) block_separations[j] = separations[start + j];
@@ -194,7 +199,7 @@ void Curve::batch(int twice_order, const double* separations, double* out, std::
     if (empty_grid)
       for (int j = 0; j < block; ++j) rest[j] = j;
     else
-      rest_count = kernels.block(data.grid, coefficients, block_separations, out + start, block, log_output, rest);
+      rest_count = kernels.block(lookup_.grid, coefficients, block_separations, out + start, block, log_output, rest);
     for (int r = 0; r < rest_count; ++r) {
       const double log_value = data.outside.log_value(twice_order, block_separations[rest[r]]);
       out[start + rest[r]] = log_output ? log_value : std::exp(log_value);

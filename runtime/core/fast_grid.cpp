@@ -240,8 +240,8 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
     side.upper = upper;
     find_first_contact_zones(builder, upper, sign_bit);
     const int e_lo = biased_exponent(lower), e_hi = biased_exponent(upper);
-    side.offset = static_cast<std::int32_t>(grid.directory.size()) - e_lo;
-    grid.directory.resize(grid.directory.size() + (e_hi - e_lo + 1));
+    side.offset = static_cast<std::int32_t>(build.directory.size()) - e_lo;
+    build.directory.resize(build.directory.size() + (e_hi - e_lo + 1));
     double knots = 1;
     std::vector<double> block;
     // From the top binade down: the knots a binade needs shrink toward s = 0.
@@ -285,7 +285,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
       }
       builder.achieved = std::max(builder.achieved, worst * tolerance);
       const std::int64_t count = last - first + 1;
-      grid.directory[side.offset + e] = FastBinade::make(grid.intervals - first, std::ilogb(knots));
+      build.directory[side.offset + e] = FastBinade::make(grid.intervals - first, std::ilogb(knots));
       grid.intervals += static_cast<std::int32_t>(count);
       for (int o = 0; o < builder.held; ++o)
         per_order[o].insert(per_order[o].end(), block.begin() + static_cast<std::ptrdiff_t>(o) * count * 6,
@@ -298,6 +298,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
     build.coefficients.insert(build.coefficients.end(), per_order[o].begin(), per_order[o].end());
   }
   build.achieved = builder.achieved;
+  grid.directory = build.directory.empty() ? nullptr : build.directory.data();
   return build;
 }
 

@@ -1,5 +1,6 @@
-// What a Curve shares (curve.hpp): the lookup grid first (the hot data), then what answers off
-// the grid. In a header so that the hot path inlines into a caller's loop.
+// What a Curve holds (curve.hpp): the lookup's hot part by value (CurveLookup), and, shared,
+// the storage it points into and what answers off the grid (CurveData). In a header so that
+// the hot path inlines into a caller's loop.
 #pragma once
 #include <array>
 #include <vector>
@@ -10,22 +11,47 @@
 namespace asperity::detail {
 
 struct Kernels;
+struct CurveData;
+struct CurveLookup;
 
-struct CurveData {
+// Curve::value, whole, as built for one instruction set (runtime/core/kernel/): NaN for an
+// order not held, the grid's answer on it, CurveLookup::value_outside's off it. The caller
+// tests nothing: each test it made (the order, a null kernel, the NaN off the grid) cost
+// ~0.3-0.6 ns of 8.5 (bench_lookup: the lookup is bound by the instructions it issues).
+using ScalarValue = double (*)(const CurveLookup& lookup, int twice_order, double separation) noexcept;
+// What a default CurveLookup's kernel answers: NaN (it holds no order)
+inline double no_curve_value(const CurveLookup&, int, double) noexcept { return __builtin_nan(""); }
+
+// Everything a query on the grid reads before its data, in the Curve itself: the grid's sides
+// and directory pointer, the orders' coefficients, the kernels. Behind the shared pointer they
+// cost one more dependent load at the head of every lookup's chain (the Curve's pointer, then
+// these), which bench_lookup measured at ~1 ns of 8.5 (BM_ScalarKind against the kernel called
+// with the same grid in registers). Trivially copied; every pointer is into the CurveData the
+// same Curve shares.
+struct CurveLookup {
   FastGrid grid;
-  std::array<const double*, order_count> order_coefficients{};  // into coefficients; null: not held
-  std::vector<double> coefficients;  // [held order][interval][fast_stride]
+  unsigned order_mask = 0;  // bit 1 << twice_order: the orders held
+  std::array<const double*, order_count> order_coefficients{};  // null: not held
+  // Curve::value, built for this CPU's instruction set
+  ScalarValue value = no_curve_value;
+  // X off the grid, from `data` (the table's own layout, the series, the values at 0): rare,
+  // out of line
+  double (*value_outside)(const CurveData& data, int twice_order, double separation) noexcept = nullptr;
+  const CurveData* data = nullptr;
+  // contact_at's fast path (Curve::contact_products), or null without contact records
+  ContactProducts contact_products = nullptr;
   // orders 0..3 again, [interval][coefficient][order] from a 64-byte boundary (three cache lines
   // an interval): contact_orders' four quintics as one 4-lane vector. Null: not all four held,
   // or CurveOptions::contact_records off.
   const double* contact_records = nullptr;
-  std::vector<double> contact_storage;
-  CompactCurve outside;              // the all-touching segment, the series, the values at 0
-  const Kernels* kernels = nullptr;  // the batch kernel of the widest instruction set here
-  // Curve::value on the grid built for this CPU's instruction set, or null: the inline code
-  ScalarValue scalar_value = nullptr;
-  // contact_at's fast path (Curve::contact_products), or null without contact records
-  ContactProducts contact_products = nullptr;
+};
+
+struct CurveData {
+  std::vector<FastBinade> directory;  // the grid's (CurveLookup::grid points into it)
+  std::vector<double> coefficients;   // [held order][interval][fast_stride]
+  std::vector<double> contact_storage;  // CurveLookup::contact_records, aligned inside it
+  CompactCurve outside;               // the all-touching segment, the series, the values at 0
+  const Kernels* kernels = nullptr;   // the batch kernel of the widest instruction set here
   double grid_error = 0;
 };
 

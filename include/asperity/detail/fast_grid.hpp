@@ -14,7 +14,6 @@
 #pragma once
 #include <cstdint>
 #include <cstring>
-#include <vector>
 
 #include "asperity/detail/fast_math.hpp"
 
@@ -45,15 +44,15 @@ struct FastSide {
 
 inline constexpr int fast_stride = 6;  // coefficients per interval (see bench: 48-byte records)
 
+// A view, trivially copied: the directory's storage is its owner's (FastGridBuild, then
+// CurveData). So a Curve holds the grid itself (curve_data.hpp's CurveLookup), and a lookup's
+// first loads are from the Curve, not through its shared pointer.
 struct FastGrid {
-  FastSide sides[2];                   // [0]: s > 0, [1]: s < 0 (the sign bit)
-  std::vector<FastBinade> directory;
-  std::int32_t intervals = 0;          // per order (at most 2^17)
+  FastSide sides[2];                          // [0]: s > 0, [1]: s < 0 (the sign bit)
+  const FastBinade* directory = nullptr;
+  std::int32_t intervals = 0;                 // per order (at most 2^17)
 };
 
-// Curve::value on the grid, as built for one instruction set (runtime/core/kernel/): X, or NaN
-// off the grid (never on it: finite coefficients give a finite ln X).
-using ScalarValue = double (*)(const FastGrid& grid, const double* order_coefficients, double separation) noexcept;
 // contact_at's arithmetic on the grid (Curve::contact_products), as built for one instruction
 // set: state[0..3] = the factors times X of order 0, 1, 3/2, 1/2 (count, area, load, stiffness)
 // and state[4] = 1.5 X_1/2 / X_3/2, from one position and one 4-lane vector of contact records

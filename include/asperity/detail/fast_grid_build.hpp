@@ -11,10 +11,16 @@
 namespace asperity::detail {
 
 struct FastGridBuild {
-  FastGrid grid;
+  FastGrid grid;                                     // its directory points into `directory`
+  std::vector<FastBinade> directory;                 // (a move keeps it there; a copy would not)
   std::vector<double> coefficients;                  // [held order][interval][fast_stride]
   std::array<std::int64_t, order_count> order_offset;  // into coefficients; -1: order not held
   double achieved = 0;  // the largest |error| in ln X found at the check points
+  FastGridBuild() = default;
+  FastGridBuild(FastGridBuild&&) = default;
+  FastGridBuild& operator=(FastGridBuild&&) = default;
+  FastGridBuild(const FastGridBuild&) = delete;
+  FastGridBuild& operator=(const FastGridBuild&) = delete;
 };
 
 // What the grid is made from: ln X of all six orders at any s (NaN for an order not held; the

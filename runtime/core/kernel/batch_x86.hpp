@@ -73,7 +73,7 @@ struct X86Passes {
     const __m256i knots_mask = _mm256_set1_epi64x(63), fifty_two = _mm256_set1_epi64x(52);
     const __m256i one_bits = _mm256_set1_epi64x(0x3ff0000000000000ll);
     const __m256i first_bias = _mm256_set1_epi64x(FastBinade::first_bias);
-    const long long* directory = reinterpret_cast<const long long*>(grid.directory.data());
+    const long long* directory = reinterpret_cast<const long long*>(grid.directory);
     std::uint64_t inside_count = 0;
     int j = 0;
     for (; j + 4 <= count; j += 4) {

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "asperity/detail/contact_ratio.hpp"
+#include "asperity/detail/curve_data.hpp"
 #include "asperity/detail/fast_grid.hpp"
 #include "asperity/instruction_set.hpp"
 
@@ -20,9 +21,7 @@ inline constexpr int batch_block = 256;
 inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
 
 struct Kernels {
-  // Curve::value's lookup (fast_grid.hpp), with fused multiply-adds where the set has them;
-  // null in the baseline build, where Curve::value's inline code is the faster (bench_lookup:
-  // BM_Record/scalar/48B, inline, against BM_ScalarHostIsa/generic/inline_exp, through a pointer)
+  // Curve::value (curve_data.hpp's ScalarValue), with fused multiply-adds where the set has them
   ScalarValue value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
   // one interval's contact record (curve_data.hpp): logs[k] and values[k] = e^logs[k] (fast_exp
@@ -91,10 +90,14 @@ bool contact_products(const FastGrid& grid, const double* __restrict contact_rec
 }
 
 template <class Math>
-double scalar_value(const FastGrid& grid, const double* coefficients, double separation) noexcept {
+double scalar_value(const CurveLookup& lookup, int twice_order, double separation) noexcept {
+  if (__builtin_expect(!(static_cast<unsigned>(twice_order) < static_cast<unsigned>(order_count) &&
+                         (lookup.order_mask >> twice_order & 1u)), 0))
+    return __builtin_nan("");
   FastPosition at;
-  if (__builtin_expect(!fast_position(grid, separation, at), 0)) return __builtin_nan("");
-  return Math::exp(fast_quintic(coefficients, at.interval * fast_stride, at.y));
+  if (__builtin_expect(!fast_position(lookup.grid, separation, at), 0))
+    return lookup.value_outside(*lookup.data, twice_order, separation);
+  return Math::exp(fast_quintic(lookup.order_coefficients[twice_order], at.interval * fast_stride, at.y));
 }
 
 // The batch path in three passes over a block of queries: where each query falls
@@ -116,7 +119,7 @@ struct ScalarPasses {
   __attribute__((noinline)) static std::uint64_t positions(const FastGrid& grid, const double* __restrict separations,
                                                            std::uint64_t* __restrict at, double* __restrict y,
                                                            int count) noexcept {
-    const FastBinade* __restrict directory = grid.directory.data();
+    const FastBinade* __restrict directory = grid.directory;
     const std::uint64_t lower0_bits = bits_of(grid.sides[0].lower), upper0_bits = bits_of(grid.sides[0].upper);
     const std::uint64_t lower1_bits = bits_of(grid.sides[1].lower), upper1_bits = bits_of(grid.sides[1].upper);
     const std::uint64_t offset0 = static_cast<std::uint64_t>(grid.sides[0].offset);
