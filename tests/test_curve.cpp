@@ -152,6 +152,57 @@ TEST(Curve, CopiesShareTheirDataAndOutliveTheTable) {
   EXPECT_LE(copy.grid_error(), 2e-13);
 }
 
+// A Curve holds its lookup's pointers itself (curve_data.hpp's CurveLookup, into the data it
+// shares): a copy must answer from its own after the original is gone (on the grid, off it,
+// and through every path), and a moved-from Curve must answer as a default one, never through
+// pointers that the Curve it moved to may outlive.
+TEST(Curve, CopiesAndMovesKeepTheirLookupWithTheirData) {
+  const double on_grid = 0.7, off_grid = 1e-30, separations[] = {on_grid, off_grid, -2.0};
+  double expected[3], expected_log[3], expected_orders[4], expected_orders_log[4];
+  Curve copy, moved_to;
+  {
+    Curve original = table().curve(Distribution::weibull, Side::tail, 2.0);
+    for (int i = 0; i < 3; ++i) {
+      expected[i] = original.value(3, separations[i]);
+      expected_log[i] = original.log_value(3, separations[i]);
+    }
+    original.contact_orders(on_grid, expected_orders_log, expected_orders);
+    copy = original;
+    Curve other = original;
+    moved_to = std::move(other);
+    // the moved-from handle holds no order: every query answers NaN (or false) without data
+    EXPECT_EQ(other.order_mask(), 0u);
+    EXPECT_TRUE(std::isnan(other.value(3, on_grid)));
+    EXPECT_TRUE(std::isnan(other.log_value(3, on_grid)));
+    double logs[4], values[4], state[5];
+    other.contact_orders(on_grid, logs, values);
+    for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isnan(logs[k]) && std::isnan(values[k]));
+    EXPECT_FALSE(other.contact_products(on_grid, 1, 1, 1, 1, state));
+    double batch[2];
+    other.value_batch(3, separations, batch, 2);
+    EXPECT_TRUE(std::isnan(batch[0]) && std::isnan(batch[1]));
+    Curve assigned = original;
+    assigned = std::move(moved_to);  // move assignment, then back
+    moved_to = std::move(assigned);
+    EXPECT_TRUE(std::isnan(assigned.value(3, on_grid)));
+    EXPECT_EQ(moved_to.value(3, on_grid), expected[0]);
+  }
+  for (const Curve* curve : {&copy, &moved_to}) {
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(curve->value(3, separations[i]), expected[i]) << separations[i];
+      EXPECT_EQ(curve->log_value(3, separations[i]), expected_log[i]) << separations[i];
+    }
+    double logs[4], values[4], state[5];
+    curve->contact_orders(on_grid, logs, values);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(values[k], expected_orders[k]);
+    EXPECT_TRUE(curve->contact_products(on_grid, 1, 1, 1, 1, state));
+    EXPECT_EQ(state[2], expected_orders[3]);  // the load's lane: X_3/2
+    double batch[3];
+    curve->value_batch(3, separations, batch, 3);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(batch[i], expected[i], 1e-13 * expected[i]) << separations[i];
+  }
+}
+
 TEST(Curve, RefusesALayoutItCannotInterpolate) {
   // a segment of one knot has no interval: refused, never read before its data
   const std::vector<SegmentSpec> layout = {{SegmentKind::reciprocal, 3, 0, 0}, {SegmentKind::linear, 1, -3.0, 1.0}};

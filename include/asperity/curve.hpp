@@ -1,6 +1,6 @@
-// One resolved curve (distribution, side, shape): the hot handle. A Curve is a cheap handle
-// (a shared pointer) over immutable data: copies share it, and any number of threads may
-// query one at once.
+// One resolved curve (distribution, side, shape): the hot handle. A Curve is a small handle
+// over immutable shared data (a shared pointer, and the lookup's pointers into that data held
+// by value: 176 bytes on x86-64): copies share the data, and any number of threads may query one at once.
 //
 // Complexity: a query is O(1): the bits of s pick a binade and an interval of the lookup grid
 // (detail/fast_grid.hpp), then one quintic (six coefficients) and one exp; no log, no search,
@@ -166,9 +166,8 @@ inline double Curve::value(int twice_order, double separation) const noexcept {
 
 inline bool Curve::contact_products(double separation, double count_factor, double area_factor, double load_factor,
                                     double stiffness_factor, double state[5]) const noexcept {
-  return lookup_.contact_products &&
-         lookup_.contact_products(lookup_.grid, lookup_.contact_records, separation, count_factor, area_factor,
-                                  load_factor, stiffness_factor, state);
+  return lookup_.contact_products(lookup_.grid, lookup_.contact_records, separation, count_factor, area_factor,
+                                 load_factor, stiffness_factor, state);
 }
 
 }  // namespace asperity

@@ -21,6 +21,11 @@ struct CurveLookup;
 using ScalarValue = double (*)(const CurveLookup& lookup, int twice_order, double separation) noexcept;
 // What a default CurveLookup's kernel answers: NaN (it holds no order)
 inline double no_curve_value(const CurveLookup&, int, double) noexcept { return __builtin_nan(""); }
+// What a CurveLookup without contact records answers for contact_products: false (not here)
+inline bool no_contact_products(const FastGrid&, const double*, double, double, double, double, double,
+                                double*) noexcept {
+  return false;
+}
 
 // Everything a query on the grid reads before its data, in the Curve itself: the grid's sides
 // and directory pointer, the orders' coefficients, the kernels. Behind the shared pointer they
@@ -38,8 +43,8 @@ struct CurveLookup {
   // out of line
   double (*value_outside)(const CurveData& data, int twice_order, double separation) noexcept = nullptr;
   const CurveData* data = nullptr;
-  // contact_at's fast path (Curve::contact_products), or null without contact records
-  ContactProducts contact_products = nullptr;
+  // contact_at's fast path (Curve::contact_products); without contact records, one that says no
+  ContactProducts contact_products = no_contact_products;
   // orders 0..3 again, [interval][coefficient][order] from a 64-byte boundary (three cache lines
   // an interval): contact_orders' four quintics as one 4-lane vector. Null: not all four held,
   // or CurveOptions::contact_records off.
