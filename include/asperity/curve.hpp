@@ -1,6 +1,7 @@
 // One resolved curve (distribution, side, shape): the hot handle. A Curve is a small handle
 // over immutable shared data (a shared pointer, and the lookup's pointers into that data held
-// by value: 176 bytes on x86-64): copies share the data, and any number of threads may query one at once.
+// by value: 176 bytes on x86-64): copies share the data, and any number of threads may query
+// one at once.
 //
 // Complexity: a query is O(1): the bits of s pick a binade and an interval of the lookup grid
 // (detail/fast_grid.hpp), then one quintic (six coefficients) and one exp; no log, no search,
