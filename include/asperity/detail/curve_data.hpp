@@ -17,7 +17,8 @@ struct CurveLookup;
 // Curve::value, whole, as built for one instruction set (runtime/core/kernel/): NaN for an
 // order not held, the grid's answer on it, CurveLookup::value_outside's off it. The caller
 // tests nothing: each test it made (the order, a null kernel, the NaN off the grid) cost
-// ~0.3-0.6 ns of 8.5 (bench_lookup: the lookup is bound by the instructions it issues).
+// 0.3-0.6 ns of 8.4 in a scratch A/B of bench_lookup's loop (independent lookups overlap, and
+// at ~110 instructions in ~22 cycles a query, by our count, every instruction issued counts).
 using ScalarValue = double (*)(const CurveLookup& lookup, int twice_order, double separation) noexcept;
 // What a default CurveLookup's kernel answers: NaN (it holds no order)
 inline double no_curve_value(const CurveLookup&, int, double) noexcept { return __builtin_nan(""); }
@@ -30,9 +31,9 @@ inline bool no_contact_products(const FastGrid&, const double*, double, double, 
 // Everything a query on the grid reads before its data, in the Curve itself: the grid's sides
 // and directory pointer, the orders' coefficients, the kernels. Behind the shared pointer they
 // cost one more dependent load at the head of every lookup's chain (the Curve's pointer, then
-// these), which bench_lookup measured at ~1 ns of 8.5 (BM_ScalarKind against the kernel called
-// with the same grid in registers). Trivially copied; every pointer is into the CurveData the
-// same Curve shares.
+// these): 8.3 against 7.5 ns a query in a scratch A/B of bench_lookup's loop, the pointer
+// loaded on every query against held in a register. Trivially copied; every pointer is into
+// the CurveData the same Curve shares.
 struct CurveLookup {
   FastGrid grid;
   unsigned order_mask = 0;  // bit 1 << twice_order: the orders held
