@@ -17,8 +17,8 @@ struct CurveLookup;
 // Curve::value, whole, as built for one instruction set (runtime/core/kernel/): NaN for an
 // order not held, the grid's answer on it, CurveLookup::value_outside's off it. The caller
 // tests nothing: each test it made (the order, a null kernel, the NaN off the grid) cost
-// 0.3-0.6 ns of 8.4 in a scratch A/B of bench_lookup's loop (independent lookups overlap, and
-// at ~110 instructions in ~22 cycles a query, by our count, every instruction issued counts).
+// 0.3-0.6 ns of 8.4 in a scratch A/B of bench_lookup's loop, not kept (independent lookups
+// overlap, and at ~110 instructions in ~22 cycles a query, by our count, every one counts).
 using ScalarValue = double (*)(const CurveLookup& lookup, int twice_order, double separation) noexcept;
 // What a default CurveLookup's kernel answers: NaN (it holds no order)
 inline double no_curve_value(const CurveLookup&, int, double) noexcept { return __builtin_nan(""); }
