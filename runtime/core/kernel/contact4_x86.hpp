@@ -1,7 +1,7 @@
 // contact4 (kernels.hpp) for AVX2 + FMA, shared by the AVX2 and AVX-512 builds (each compiles
 // its own copy, the same bits): the four orders' quintics as one 4-lane vector and, where all
 // four results are surely normal (fast_math.hpp's exp_surely_normal_min/max: nearly every
-// query), exp_x86.hpp's exp4 with 2^k applied by one exact multiplication; otherwise fast_exp
+// query), exp_x86.hpp's exp4 with 2^k applied in one fused multiply-add; otherwise fast_exp
 // lane by lane. exp4 needs no table: the 128-entry table of fast_exp took two gathers, which
 // on AMD Zen 4 made contact_orders 1.5x one order (bench_lookup BM_ContactOrders against
 // BM_ScalarKind/weibull_tail_a2; 1.2x with exp4).
@@ -30,8 +30,8 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
     return;
   }
   __m256i k_bits;
-  const __m256d scale = exp4_scale(x, k_bits);
-  _mm256_storeu_pd(values, exp4_normal(scale, k_bits));
+  const __m256d expm1 = exp4_expm1(x, k_bits);
+  _mm256_storeu_pd(values, exp4_normal(expm1, k_bits));
 }
 
 // fast_grid.hpp's ContactProducts: the position, then contact4_x86's exps, the lanes (0, 1/2, 1,
@@ -51,9 +51,9 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
   const int normal = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
                                                       _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
   __m256i k_bits;
-  const __m256d scale = exp4_scale(x, k_bits);
+  const __m256d expm1 = exp4_expm1(x, k_bits);
   if (__builtin_expect((usable_factors & normal) == 0xf, 1)) {
-    const __m256d values = exp4_normal(scale, k_bits);
+    const __m256d values = exp4_normal(expm1, k_bits);
     const __m256d permuted = _mm256_permute4x64_pd(values, 0 | 2 << 2 | 3 << 4 | 1 << 6);  // X_0, X_1, X_3/2, X_1/2
     _mm256_storeu_pd(state, _mm256_mul_pd(permuted, factors));
     // lane 3 of permuted / values: X_1/2 / X_3/2 (both normal)
@@ -64,7 +64,7 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
   if (usable_factors != 0xf) return false;
   alignas(32) double logs[4], values[4];
   _mm256_store_pd(logs, x);
-  _mm256_store_pd(values, exp4_finish_any(x, _mm256_castpd_si256(scale), k_bits));
+  _mm256_store_pd(values, exp4_any(x, expm1, k_bits));
   contact_state(logs, values, count_factor, area_factor, load_factor, stiffness_factor, state);
   return true;
 }

@@ -5,8 +5,9 @@
 //   polynomial to degree 13 (truncation below 5e-18).
 // - exp8 (AVX-512, eight lanes): x = (16 m + j) ln2 / 16 + r, |r| <= ln2 / 32, 2^(j/16) from a
 //   16-entry table held in four registers (vpermt2pd), e^r to degree 7 (truncation below 2e-18).
-// Where every lane is surely normal (fast_math.hpp's exp_surely_normal_min/max), 2^m is
-// applied by one exact multiplication; otherwise the lanes go through fast_exp_lanes' masks:
+// Where every lane is surely normal (fast_math.hpp's exp_surely_normal_min/max), 2^m is made
+// in the exponent field and applied by one exact multiplication (exp8), or exp4's result is
+// 2^k + 2^k (e^r - 1) in one fused multiply-add; otherwise the lanes go through fast_exp_lanes' masks:
 // subnormal results made from normal doubles (no assist), 0 below -746, inf above 710, NaN kept.
 // Accuracy (tests/test_kernels.cpp, against a long double exp over [-760, 720] and each edge):
 // within 2.3e-16 relative where the result is normal, 0.75 of the subnormal spacing below. Not
@@ -51,9 +52,9 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_finish_any(__m256d x, __m256i scale, __m256i
   return _mm256_blendv_pd(_mm256_castsi256_pd(result), x, is_nan);
 }
 
-// e^r by the polynomial, for e^x = e^r 2^k: returns e^r (in [0.7, 1.5]) and k (two's
+// e^r - 1 by the polynomial, for e^x = e^r 2^k: returns e^r - 1 (in [-0.3, 0.5]) and k (two's
 // complement; garbage where x is beyond [-746, 710] or NaN, which exp4_finish_any masks)
-ASPERITY_ALWAYS_INLINE __m256d exp4_scale(__m256d x, __m256i& k_bits) noexcept {
+ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& k_bits) noexcept {
   const __m256d shifter = _mm256_set1_pd(round_shifter);
   const __m256d shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
   const __m256d k = _mm256_sub_pd(shifted, shifter);
@@ -70,7 +71,7 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_scale(__m256d x, __m256i& k_bits) noexcept {
   const __m256d q2 = _mm256_fmadd_pd(r2, p45, p23), q6 = _mm256_fmadd_pd(r2, p89, p67);
   const __m256d q10 = _mm256_fmadd_pd(r2, p1213, p1011);
   const __m256d poly = _mm256_fmadd_pd(r4, _mm256_fmadd_pd(r4, q10, q6), q2);
-  return _mm256_add_pd(_mm256_set1_pd(1.0), _mm256_fmadd_pd(r2, poly, r));
+  return _mm256_fmadd_pd(r2, poly, r);
 }
 // Whether every lane's e^x is surely a normal double (fast_math.hpp's range)
 ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept {
@@ -78,15 +79,22 @@ ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept {
                                        _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ));
   return _mm256_movemask_pd(inside) == 0xf;
 }
-// e^r 2^k for k in [-1022, 1023]: 2^k made in the exponent field, applied by one exact multiplication
-ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d scale, __m256i k_bits) noexcept {
-  return _mm256_mul_pd(scale, _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k_bits, _mm256_set1_epi64x(1023)), 52)));
+// e^r 2^k = 2^k + 2^k (e^r - 1) for k in [-1021, 1022] (where e^x is surely normal): 2^k made
+// in the exponent field, one fused multiply-add, one rounding (a multiplication and an addition
+// after the polynomial were one operation and ~2 cycles more on every lookup's chain)
+ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i k_bits) noexcept {
+  const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k_bits, _mm256_set1_epi64x(1023)), 52));
+  return _mm256_fmadd_pd(expm1, power, power);
+}
+// every regime, from exp4_expm1's results
+ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i k_bits) noexcept {
+  return exp4_finish_any(x, _mm256_castpd_si256(_mm256_add_pd(_mm256_set1_pd(1.0), expm1)), k_bits);
 }
 ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
   __m256i k_bits;
-  const __m256d scale = exp4_scale(x, k_bits);
-  if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(scale, k_bits);
-  return exp4_finish_any(x, _mm256_castpd_si256(scale), k_bits);
+  const __m256d expm1 = exp4_expm1(x, k_bits);
+  if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(expm1, k_bits);
+  return exp4_any(x, expm1, k_bits);
 }
 
 #if defined(__AVX512F__)
