@@ -68,12 +68,12 @@ struct X86Passes {
   // 3% slower in its quintics).
   static std::uint64_t positions(const FastGrid& grid, const double* separations, std::uint64_t* at, double* y,
                                  int count) noexcept {
-    const __m256d lower0 = _mm256_set1_pd(grid.sides[0].lower), lower1 = _mm256_set1_pd(grid.sides[1].lower);
-    const __m256d upper0 = _mm256_set1_pd(grid.sides[0].upper), upper1 = _mm256_set1_pd(grid.sides[1].upper);
+    // the range of s itself on each side (s < 0: [-upper, -lower]): no magnitude to make
+    const __m256d lower0 = _mm256_set1_pd(grid.sides[0].lower), lower1 = _mm256_set1_pd(-grid.sides[1].upper);
+    const __m256d upper0 = _mm256_set1_pd(grid.sides[0].upper), upper1 = _mm256_set1_pd(-grid.sides[1].lower);
     const __m256d offset0 = _mm256_castsi256_pd(_mm256_set1_epi64x(grid.sides[0].offset));
     // s < 0: bits >> 52 is 2048 + the exponent, so its side's offset is taken 2048 lower
     const __m256d offset1 = _mm256_castsi256_pd(_mm256_set1_epi64x(grid.sides[1].offset - 2048ll));
-    const __m256i magnitude_mask = _mm256_set1_epi64x(0x7fffffffffffffffll);
     const __m256i mantissa_mask = _mm256_set1_epi64x(0x000fffffffffffffll);
     const __m256i knots_mask = _mm256_set1_epi64x(63), fifty_two = _mm256_set1_epi64x(52);
     const __m256i one_bits = _mm256_set1_epi64x(0x3ff0000000000000ll);
@@ -84,13 +84,12 @@ struct X86Passes {
     for (; j + 4 <= count; j += 4) {
       const __m256d separation = _mm256_loadu_pd(separations + j);
       const __m256i bits = _mm256_castpd_si256(separation);
-      const __m256d magnitude = _mm256_castsi256_pd(_mm256_and_si256(bits, magnitude_mask));
 #if defined(__AVX512VL__)
       // mask registers: the sign's grid by masked blends, the range test and "keep" without
       // vector masks (fewer operations on the vector pipes, which this pass is bound by)
       const __mmask8 negative = _mm256_movepi64_mask(bits);
       const __mmask8 inside = _mm256_mask_cmp_pd_mask(
-          _mm256_cmp_pd_mask(magnitude, _mm256_mask_blend_pd(negative, lower0, lower1), _CMP_GE_OQ), magnitude,
+          _mm256_cmp_pd_mask(separation, _mm256_mask_blend_pd(negative, lower0, lower1), _CMP_GE_OQ), separation,
           _mm256_mask_blend_pd(negative, upper0, upper1), _CMP_LE_OQ);  // NaN fails too
       inside_count += static_cast<std::uint64_t>(__builtin_popcount(static_cast<unsigned>(inside)));
       const __m256i offset = _mm256_castpd_si256(_mm256_mask_blend_pd(negative, offset0, offset1));
@@ -99,8 +98,8 @@ struct X86Passes {
       // the sign's grid: blendv picks by the sign bit, the separation's own
       const __m256d lower = _mm256_blendv_pd(lower0, lower1, separation);
       const __m256d upper = _mm256_blendv_pd(upper0, upper1, separation);
-      const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(magnitude, lower, _CMP_GE_OQ),
-                                           _mm256_cmp_pd(magnitude, upper, _CMP_LE_OQ));  // NaN fails too
+      const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(separation, lower, _CMP_GE_OQ),
+                                           _mm256_cmp_pd(separation, upper, _CMP_LE_OQ));  // NaN fails too
       inside_count += static_cast<std::uint64_t>(__builtin_popcount(static_cast<unsigned>(_mm256_movemask_pd(inside))));
       const __m256i keep = _mm256_castpd_si256(inside);  // off the grid: entry 0, record 0 (valid loads)
       const __m256i offset = _mm256_castpd_si256(_mm256_blendv_pd(offset0, offset1, separation));

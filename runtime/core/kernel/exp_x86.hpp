@@ -1,10 +1,14 @@
 // e^x on vectors for the x86 kernels (batch_x86.hpp, contact4_x86.hpp), without a table in
 // memory (a table lookup per lane is a gather, which costs more than the arithmetic it saves:
 // bench_lookup BM_Batch, BM_ContactOrders):
-// - exp4 (AVX2 + FMA, four lanes): x = k ln 2 + r, |r| <= ln2 / 2, e^r by its Taylor
-//   polynomial to degree 13 (truncation below 5e-18).
+// - exp4 (AVX2 + FMA, four lanes): x = k ln 2 + r, |r| <= ln2 / 2, e^r by a minimax
+//   polynomial of degree 11 (error 6.5e-18).
 // - exp8 (AVX-512, eight lanes): x = (16 m + j) ln2 / 16 + r, |r| <= ln2 / 32, 2^(j/16) from a
-//   16-entry table held in four registers (vpermt2pd), e^r to degree 7 (truncation below 2e-18).
+//   16-entry table held in four registers (vpermt2pd), e^r by a minimax polynomial of degree 6
+//   (error 1.2e-17).
+// The coefficients: scripts/exp_minimax.py (Remez in 50 digits, the errors with the
+// coefficients rounded to double); each polynomial is one or two operations shorter than the
+// Taylor one of the same accuracy, on a path bound by its vector operations.
 // Where every lane is surely normal (fast_math.hpp's exp_surely_normal_min/max), 2^m is made
 // in the exponent field and applied by one exact multiplication (exp8), or exp4's result is
 // 2^k + 2^k (e^r - 1) in one fused multiply-add; otherwise the lanes go through fast_exp_lanes' masks:
@@ -62,15 +66,18 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& k_bits) noexcept {
   // ln2 in two parts, the first with 32 significant bits: k ln2_hi is exact
   __m256d r = _mm256_fnmadd_pd(k, _mm256_set1_pd(6.93147180369123816490e-01), x);
   r = _mm256_fnmadd_pd(k, _mm256_set1_pd(1.90821492927058770002e-10), r);
-  // e^r - 1 = r + r^2 P(r), P(r) = sum of r^(i-2) / i!, i = 2..13 (Estrin's scheme)
+  // e^r - 1 = r + r^2 P(r), P of degree 9, minimax on |r| <= 1.0001 ln2 / 2 (Remez in 50
+  // digits, scripts/exp_minimax.py: error 6.5e-18 with the coefficients in double; the Taylor
+  // polynomial of degree 13, 4.3e-18, took two operations more), Estrin's scheme
   const __m256d r2 = _mm256_mul_pd(r, r), r4 = _mm256_mul_pd(r2, r2);
   const auto pair = [r](double c0, double c1) { return _mm256_fmadd_pd(r, _mm256_set1_pd(c1), _mm256_set1_pd(c0)); };
-  const __m256d p23 = pair(1.0 / 2, 1.0 / 6), p45 = pair(1.0 / 24, 1.0 / 120);
-  const __m256d p67 = pair(1.0 / 720, 1.0 / 5040), p89 = pair(1.0 / 40320, 1.0 / 362880);
-  const __m256d p1011 = pair(1.0 / 3628800, 1.0 / 39916800), p1213 = pair(1.0 / 479001600, 1.0 / 6227020800.0);
+  const __m256d p23 = pair(0.5000000000000013, 0.166666666666667);
+  const __m256d p45 = pair(0.041666666666513204, 0.008333333333307725);
+  const __m256d p67 = pair(0.0013888888947499532, 0.00019841269916447693);
+  const __m256d p89 = pair(2.4801489508409978e-05, 2.7557217033060023e-06);
+  const __m256d p1011 = pair(2.763141794091523e-07, 2.511765148358147e-08);
   const __m256d q2 = _mm256_fmadd_pd(r2, p45, p23), q6 = _mm256_fmadd_pd(r2, p89, p67);
-  const __m256d q10 = _mm256_fmadd_pd(r2, p1213, p1011);
-  const __m256d poly = _mm256_fmadd_pd(r4, _mm256_fmadd_pd(r4, q10, q6), q2);
+  const __m256d poly = _mm256_fmadd_pd(r4, _mm256_fmadd_pd(r4, p1011, q6), q2);
   return _mm256_fmadd_pd(r2, poly, r);
 }
 // Whether every lane's e^x is surely a normal double (fast_math.hpp's range)
@@ -131,10 +138,12 @@ ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
   __m512d r = _mm512_fnmadd_pd(k, _mm512_set1_pd(6.93147180369123816490e-01 / 16), x);
   r = _mm512_fnmadd_pd(k, _mm512_set1_pd(1.90821492927058770002e-10 / 16), r);
   const __m512d r2 = _mm512_mul_pd(r, r), r4 = _mm512_mul_pd(r2, r2);
-  const __m512d p01 = _mm512_fmadd_pd(r, _mm512_set1_pd(1.0 / 6), _mm512_set1_pd(0.5));
-  const __m512d p23 = _mm512_fmadd_pd(r, _mm512_set1_pd(1.0 / 120), _mm512_set1_pd(1.0 / 24));
-  const __m512d p45 = _mm512_fmadd_pd(r, _mm512_set1_pd(1.0 / 5040), _mm512_set1_pd(1.0 / 720));
-  const __m512d expm1 = _mm512_fmadd_pd(r2, _mm512_fmadd_pd(r4, p45, _mm512_fmadd_pd(r2, p23, p01)), r);
+  // e^r - 1 = r + r^2 P(r), P of degree 4, minimax on |r| <= 1.0001 ln2 / 32 (scripts/exp_minimax.py:
+  // error 1.2e-17; the Taylor polynomial of degree 7, 1.2e-18, took one operation more)
+  const __m512d p01 = _mm512_fmadd_pd(r, _mm512_set1_pd(0.16666666664416963), _mm512_set1_pd(0.5000000000000006));
+  const __m512d p23 = _mm512_fmadd_pd(r, _mm512_set1_pd(0.008333471951132567), _mm512_set1_pd(0.0416666666596544));
+  const __m512d expm1 = _mm512_fmadd_pd(
+      r2, _mm512_fmadd_pd(r4, _mm512_set1_pd(0.0013889129027039896), _mm512_fmadd_pd(r2, p23, p01)), r);
   // the low four bits of k pick the entry (vpermt2pd reads only those)
   const __m512d hi = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.hi), k_bits, _mm512_load_pd(exp2_table16.hi + 8));
   const __m512d lo = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.lo), k_bits, _mm512_load_pd(exp2_table16.lo + 8));
