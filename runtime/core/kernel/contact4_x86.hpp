@@ -29,9 +29,9 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
     for (int lane = 0; lane < 4; ++lane) values[lane] = fast_exp(logs[lane]);
     return;
   }
-  __m256i k_bits;
-  const __m256d expm1 = exp4_expm1(x, k_bits);
-  _mm256_storeu_pd(values, exp4_normal(expm1, k_bits));
+  __m256i shifted_bits;
+  const __m256d expm1 = exp4_expm1(x, shifted_bits);
+  _mm256_storeu_pd(values, exp4_normal(expm1, shifted_bits));
 }
 
 // fast_grid.hpp's ContactProducts: the position, then contact4_x86's exps, the lanes (0, 1/2, 1,
@@ -50,10 +50,10 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
                                        _mm256_cmp_pd(factors, _mm256_set1_pd(std::numeric_limits<double>::max()), _CMP_LE_OQ)));
   const int normal = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
                                                       _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
-  __m256i k_bits;
-  const __m256d expm1 = exp4_expm1(x, k_bits);
+  __m256i shifted_bits;
+  const __m256d expm1 = exp4_expm1(x, shifted_bits);
   if (__builtin_expect((usable_factors & normal) == 0xf, 1)) {
-    const __m256d values = exp4_normal(expm1, k_bits);
+    const __m256d values = exp4_normal(expm1, shifted_bits);
     const __m256d permuted = _mm256_permute4x64_pd(values, 0 | 2 << 2 | 3 << 4 | 1 << 6);  // X_0, X_1, X_3/2, X_1/2
     _mm256_storeu_pd(state, _mm256_mul_pd(permuted, factors));
     // lane 3 of permuted / values: X_1/2 / X_3/2 (both normal)
@@ -64,7 +64,7 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
   if (usable_factors != 0xf) return false;
   alignas(32) double logs[4], values[4];
   _mm256_store_pd(logs, x);
-  _mm256_store_pd(values, exp4_any(x, expm1, k_bits));
+  _mm256_store_pd(values, exp4_any(x, expm1, shifted_bits));
   contact_state(logs, values, count_factor, area_factor, load_factor, stiffness_factor, state);
   return true;
 }

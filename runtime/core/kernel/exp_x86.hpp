@@ -56,13 +56,17 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_finish_any(__m256d x, __m256i scale, __m256i
   return _mm256_blendv_pd(_mm256_castsi256_pd(result), x, is_nan);
 }
 
-// e^r - 1 by the polynomial, for e^x = e^r 2^k: returns e^r - 1 (in [-0.3, 0.5]) and k (two's
-// complement; garbage where x is beyond [-746, 710] or NaN, which exp4_finish_any masks)
-ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& k_bits) noexcept {
-  const __m256d shifter = _mm256_set1_pd(round_shifter);
+// The shifter that rounds x / ln 2 to k, plus 1023: the low bits of the sum are then k + 1023,
+// 2^k's exponent field, with no integer addition (exp4_normal)
+constexpr double exp4_shifter = round_shifter + 1023;
+// e^r - 1 by the polynomial, for e^x = e^r 2^k: returns e^r - 1 (in [-0.3, 0.5]) and the bits
+// of x / ln 2 + exp4_shifter, whose low 11 bits are k + 1023 (garbage where x is beyond
+// [-746, 710] or NaN, which exp4_finish_any masks)
+ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noexcept {
+  const __m256d shifter = _mm256_set1_pd(exp4_shifter);
   const __m256d shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
   const __m256d k = _mm256_sub_pd(shifted, shifter);
-  k_bits = _mm256_sub_epi64(_mm256_castpd_si256(shifted), _mm256_castpd_si256(shifter));
+  shifted_bits = _mm256_castpd_si256(shifted);
   // ln2 in two parts, the first with 32 significant bits: k ln2_hi is exact
   __m256d r = _mm256_fnmadd_pd(k, _mm256_set1_pd(6.93147180369123816490e-01), x);
   r = _mm256_fnmadd_pd(k, _mm256_set1_pd(1.90821492927058770002e-10), r);
@@ -89,19 +93,20 @@ ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept {
 // e^r 2^k = 2^k + 2^k (e^r - 1) for k in [-1021, 1022] (where e^x is surely normal): 2^k made
 // in the exponent field, one fused multiply-add, one rounding (a multiplication and an addition
 // after the polynomial were one operation and ~2 cycles more on every lookup's chain)
-ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i k_bits) noexcept {
-  const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k_bits, _mm256_set1_epi64x(1023)), 52));
+ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i shifted_bits) noexcept {
+  const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(shifted_bits, 52));
   return _mm256_fmadd_pd(expm1, power, power);
 }
 // every regime, from exp4_expm1's results
-ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i k_bits) noexcept {
+ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i shifted_bits) noexcept {
+  const __m256i k_bits = _mm256_sub_epi64(shifted_bits, _mm256_castpd_si256(_mm256_set1_pd(exp4_shifter)));
   return exp4_finish_any(x, _mm256_castpd_si256(_mm256_add_pd(_mm256_set1_pd(1.0), expm1)), k_bits);
 }
 ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
-  __m256i k_bits;
-  const __m256d expm1 = exp4_expm1(x, k_bits);
-  if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(expm1, k_bits);
-  return exp4_any(x, expm1, k_bits);
+  __m256i shifted_bits;
+  const __m256d expm1 = exp4_expm1(x, shifted_bits);
+  if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(expm1, shifted_bits);
+  return exp4_any(x, expm1, shifted_bits);
 }
 
 #if defined(__AVX512F__)
@@ -129,11 +134,14 @@ ASPERITY_ALWAYS_INLINE __m512d exp8_finish_any(__m512d x, __m512i scale, __m512i
   return _mm512_mask_mov_pd(_mm512_castsi512_pd(result), is_nan, x);
 }
 
+// The shifter that rounds 16 x / ln 2 to k = 16 m + j, plus 16 x 1023: the low bits of the sum
+// are then k + 16 x 1023, whose low four are j and the next eleven m + 1023, 2^m's exponent field
+constexpr double exp8_shifter = round_shifter + 16 * 1023;
 ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
-  const __m512d shifter = _mm512_set1_pd(round_shifter);
+  const __m512d shifter = _mm512_set1_pd(exp8_shifter);
   const __m512d shifted = _mm512_fmadd_pd(x, _mm512_set1_pd(23.083120654223414), shifter);  // 16 / ln 2
   const __m512d k = _mm512_sub_pd(shifted, shifter);
-  const __m512i k_bits = _mm512_sub_epi64(_mm512_castpd_si512(shifted), _mm512_castpd_si512(shifter));
+  const __m512i shifted_bits = _mm512_castpd_si512(shifted);
   // ln2 / 16 in two parts, the first with 32 significant bits: k ln2_hi / 16 is exact
   __m512d r = _mm512_fnmadd_pd(k, _mm512_set1_pd(6.93147180369123816490e-01 / 16), x);
   r = _mm512_fnmadd_pd(k, _mm512_set1_pd(1.90821492927058770002e-10 / 16), r);
@@ -144,16 +152,16 @@ ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
   const __m512d p23 = _mm512_fmadd_pd(r, _mm512_set1_pd(0.008333471951132567), _mm512_set1_pd(0.0416666666596544));
   const __m512d expm1 = _mm512_fmadd_pd(
       r2, _mm512_fmadd_pd(r4, _mm512_set1_pd(0.0013889129027039896), _mm512_fmadd_pd(r2, p23, p01)), r);
-  // the low four bits of k pick the entry (vpermt2pd reads only those)
-  const __m512d hi = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.hi), k_bits, _mm512_load_pd(exp2_table16.hi + 8));
-  const __m512d lo = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.lo), k_bits, _mm512_load_pd(exp2_table16.lo + 8));
+  // the low four bits, j, pick the entry (vpermt2pd reads only those)
+  const __m512d hi = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.hi), shifted_bits, _mm512_load_pd(exp2_table16.hi + 8));
+  const __m512d lo = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.lo), shifted_bits, _mm512_load_pd(exp2_table16.lo + 8));
   const __m512d scale = _mm512_add_pd(hi, _mm512_fmadd_pd(hi, expm1, lo));
-  const __m512i m = _mm512_srai_epi64(k_bits, 4);  // floor(k / 16)
   const __mmask8 surely_normal = _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp_surely_normal_min), _CMP_GE_OQ) &
                                  _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp_surely_normal_max), _CMP_LE_OQ);
-  if (__builtin_expect(surely_normal == 0xff, 1))
-    return _mm512_mul_pd(scale, _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_add_epi64(m, _mm512_set1_epi64(1023)), 52)));
-  return exp8_finish_any(x, _mm512_castpd_si512(scale), m);
+  if (__builtin_expect(surely_normal == 0xff, 1))  // 2^m from bits 4..14: m + 1023
+    return _mm512_mul_pd(scale, _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_srli_epi64(shifted_bits, 4), 52)));
+  const __m512i k_bits = _mm512_sub_epi64(shifted_bits, _mm512_castpd_si512(shifter));
+  return exp8_finish_any(x, _mm512_castpd_si512(scale), _mm512_srai_epi64(k_bits, 4));  // m = floor(k / 16)
 }
 #endif
 
