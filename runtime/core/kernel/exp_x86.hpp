@@ -84,12 +84,18 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noex
   const __m256d poly = _mm256_fmadd_pd(r4, _mm256_fmadd_pd(r4, p1011, q6), q2);
   return _mm256_fmadd_pd(r2, poly, r);
 }
-// Whether every lane's e^x is surely a normal double (fast_math.hpp's range)
-ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept {
-  const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
-                                       _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ));
-  return _mm256_movemask_pd(inside) == 0xf;
+// The lanes (bits 0..3) whose e^x is surely a normal double (fast_math.hpp's range); with
+// AVX-512 in mask registers (two compares, no movemask)
+ASPERITY_ALWAYS_INLINE int exp4_surely_normal_lanes(__m256d x) noexcept {
+#if defined(__AVX512VL__)
+  return _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ), x,
+                                 _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ);
+#else
+  return _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
+                                          _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
+#endif
 }
+ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept { return exp4_surely_normal_lanes(x) == 0xf; }
 // e^r 2^k = 2^k + 2^k (e^r - 1) for k in [-1021, 1022] (where e^x is surely normal): 2^k made
 // in the exponent field, one fused multiply-add, one rounding (a multiplication and an addition
 // after the polynomial were one operation and ~2 cycles more on every lookup's chain)
