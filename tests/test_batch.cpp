@@ -37,6 +37,12 @@ std::vector<double> separations(const Curve& curve, std::size_t count) {
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   for (double special : {nan, inf, -inf, 0.0, -0.0, lo, hi, std::nextafter(hi, inf), 1e300, -1e300})
     values.insert(values.begin() + static_cast<long>(values.size() / 3), special);
+  // the grid's inner end (|s| = 2^-70, each side: the positions pass tests s against each
+  // side's signed range) and the smallest magnitudes, a few to a vector
+  const double inner = std::ldexp(1.0, -70), denorm = std::numeric_limits<double>::denorm_min();
+  for (double magnitude : {inner, std::nextafter(inner, 0.0), std::nextafter(inner, 1.0), denorm,
+                           std::numeric_limits<double>::min(), std::ldexp(1.0, -69)})
+    for (double sign : {1.0, -1.0}) values.insert(values.begin() + static_cast<long>(values.size() / 2), sign * magnitude);
   return values;
 }
 
