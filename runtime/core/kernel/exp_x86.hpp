@@ -96,7 +96,7 @@ ASPERITY_ALWAYS_INLINE int exp4_surely_normal_lanes(__m256d x) noexcept {
 #endif
 }
 ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept { return exp4_surely_normal_lanes(x) == 0xf; }
-// e^r 2^k = 2^k + 2^k (e^r - 1) for k in [-1021, 1022] (where e^x is surely normal): 2^k made
+// e^r 2^k = 2^k + 2^k (e^r - 1) where e^x is surely normal (x in [-708, 709]: k in [-1021, 1023]): 2^k made
 // in the exponent field, one fused multiply-add, one rounding (a multiplication and an addition
 // after the polynomial were one operation and ~2 cycles more on every lookup's chain)
 ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i shifted_bits) noexcept {
