@@ -4,10 +4,10 @@
 // - positions: ScalarPasses::positions four queries a step, with AVX2 intrinsics: the
 //   compiler's loop narrows the shift counts to 32 bits and back (bench_lookup BM_Batch, this
 //   against the compiler's loop: 9-12% of the whole batch path on AMD Zen 4).
-// - quintics: the six coefficients of four queries by four row loads (a record is six doubles
-//   in a row) and a 4 x 6 transpose in registers, not by six gathers. Gathers are what the
-//   compiler's loop spent its time on (AMD Zen 4: a gather of 4 or 8 doubles costs more than
-//   the loads and shuffles that replace it; bench_lookup BM_Batch against the former fused
+// - quintics: the six coefficients of four queries by twelve 128-bit loads (a record is six
+//   doubles in a row), paired in registers and unpacked, not by six gathers. Gathers are what
+//   the compiler's loop spent its time on (AMD Zen 4: a gather of 4 or 8 doubles costs more
+//   than the loads and shuffles that replace it; bench_lookup BM_Batch against the former fused
 //   loop, which is kept as BM_Record/batch_*/48B).
 // - exps, for value output: exp_x86.hpp's exp4 (AVX2 build) or exp8 (AVX-512 build), whole
 //   vectors, the last one partial.
@@ -23,16 +23,19 @@ ASPERITY_ALWAYS_INLINE __m256d quintic_rows4(const double* coefficients, const s
                                              const double* y) noexcept {
   const double *r0 = coefficients + at[0] * fast_stride, *r1 = coefficients + at[1] * fast_stride;
   const double *r2 = coefficients + at[2] * fast_stride, *r3 = coefficients + at[3] * fast_stride;
-  // c0..c3: rows of four, unpacked in pairs and the 128-bit halves exchanged
-  const __m256d a0 = _mm256_loadu_pd(r0), a1 = _mm256_loadu_pd(r1), a2 = _mm256_loadu_pd(r2), a3 = _mm256_loadu_pd(r3);
-  const __m256d even01 = _mm256_unpacklo_pd(a0, a1), odd01 = _mm256_unpackhi_pd(a0, a1);  // c0 c0 c2 c2, c1 c1 c3 c3
-  const __m256d even23 = _mm256_unpacklo_pd(a2, a3), odd23 = _mm256_unpackhi_pd(a2, a3);
-  const __m256d c0 = _mm256_permute2f128_pd(even01, even23, 0x20), c2 = _mm256_permute2f128_pd(even01, even23, 0x31);
-  const __m256d c1 = _mm256_permute2f128_pd(odd01, odd23, 0x20), c3 = _mm256_permute2f128_pd(odd01, odd23, 0x31);
-  // c4, c5: pairs of two
-  const __m256d b02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(r0 + 4)), _mm_loadu_pd(r2 + 4), 1);
-  const __m256d b13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(r1 + 4)), _mm_loadu_pd(r3 + 4), 1);
-  const __m256d c4 = _mm256_unpacklo_pd(b02, b13), c5 = _mm256_unpackhi_pd(b02, b13);
+  // each pair of coefficients of rows 0 and 2 (1 and 3) in one register, two 128-bit loads,
+  // then one unpack per coefficient: six shuffles and six inserts where a 4 x 4 transpose of
+  // row loads took eight shuffles for c0..c3 and four more for c4, c5 (no slower on Zen 4:
+  // bench_lookup BM_Batch/avx512 8040 -> 7912 ns a block of 4096, medians of 24)
+  const auto pairs = [](const double* lower, const double* upper) {
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lower)), _mm_loadu_pd(upper), 1);
+  };
+  const __m256d p02 = pairs(r0, r2), p13 = pairs(r1, r3);  // c0 c1 of rows 0, 2 (1, 3)
+  const __m256d q02 = pairs(r0 + 2, r2 + 2), q13 = pairs(r1 + 2, r3 + 2);
+  const __m256d u02 = pairs(r0 + 4, r2 + 4), u13 = pairs(r1 + 4, r3 + 4);
+  const __m256d c0 = _mm256_unpacklo_pd(p02, p13), c1 = _mm256_unpackhi_pd(p02, p13);
+  const __m256d c2 = _mm256_unpacklo_pd(q02, q13), c3 = _mm256_unpackhi_pd(q02, q13);
+  const __m256d c4 = _mm256_unpacklo_pd(u02, u13), c5 = _mm256_unpackhi_pd(u02, u13);
   // fast_quintic's Estrin scheme
   const __m256d at_y = _mm256_loadu_pd(y), y2 = _mm256_mul_pd(at_y, at_y);
   const __m256d low = _mm256_fmadd_pd(at_y, c1, c0), middle = _mm256_fmadd_pd(at_y, c3, c2);

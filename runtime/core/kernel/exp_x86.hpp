@@ -2,17 +2,20 @@
 // memory (a table lookup per lane is a gather, which costs more than the arithmetic it saves:
 // bench_lookup BM_Batch, BM_ContactOrders):
 // - exp4 (AVX2 + FMA, four lanes): x = k ln 2 + r, |r| <= ln2 / 2, e^r by a minimax
-//   polynomial of degree 11 (error 6.5e-18).
-// - exp8 (AVX-512, eight lanes): x = (16 m + j) ln2 / 16 + r, |r| <= ln2 / 32, 2^(j/16) from a
+//   polynomial of degree 11 (error 6.5e-18). Where every lane is surely normal (fast_math.hpp's
+//   exp_surely_normal_min/max), the result is 2^k + 2^k (e^r - 1) in one fused multiply-add,
+//   2^k made in the exponent field; otherwise the lanes go through fast_exp_lanes' masks:
+//   subnormal results made from normal doubles (no assist), 0 below -746, inf above 710, NaN kept.
+// - exp8 (AVX-512, eight lanes): x = (m + j/16) ln2 + r, |r| <= ln2 / 32, 2^(j/16) from a
 //   16-entry table held in four registers (vpermt2pd), e^r by a minimax polynomial of degree 6
-//   (error 1.2e-17).
+//   (error 1.2e-17), 2^m applied by vscalefpd, which rounds subnormal results once and gives 0
+//   and inf beyond the range: one path for every lane, no branch (x clamped to [-760, 710]
+//   first, NaN kept). On AMD Zen 4 the lanes whose result is subnormal or 0 cost nothing extra
+//   (bench_lookup BM_BatchGaussian, 3% of its queries there); Intel CPUs may take a microcode
+//   assist for such a lane (not measured here).
 // The coefficients: scripts/exp_minimax.py (Remez in 50 digits, the errors with the
 // coefficients rounded to double); each polynomial is one or two operations shorter than the
 // Taylor one of the same accuracy, on a path bound by its vector operations.
-// Where every lane is surely normal (fast_math.hpp's exp_surely_normal_min/max), 2^m is made
-// in the exponent field and applied by one exact multiplication (exp8), or exp4's result is
-// 2^k + 2^k (e^r - 1) in one fused multiply-add; otherwise the lanes go through fast_exp_lanes' masks:
-// subnormal results made from normal doubles (no assist), 0 below -746, inf above 710, NaN kept.
 // Accuracy (tests/test_kernels.cpp, against a long double exp over [-760, 720] and each edge):
 // within 2.3e-16 relative where the result is normal, 0.75 of the subnormal spacing below. Not
 // bit-identical to fast_exp (a table of 128 entries), which the scalar path uses.
@@ -119,55 +122,32 @@ ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
 // 2^(j/16), j = 0..15: hi and lo 64-byte aligned (four aligned loads fill the four registers)
 alignas(64) constexpr Exp2Table<16> exp2_table16 = make_exp2_table<16>();
 
-// The result's bits from scale (in [0.7, 2.1]) and m, every regime (fast_exp_lanes' masks)
-ASPERITY_ALWAYS_INLINE __m512d exp8_finish_any(__m512d x, __m512i scale, __m512i m) noexcept {
-  const __m512i exponent = _mm512_add_epi64(_mm512_srli_epi64(scale, 52), m);
-  const __m512i normal = _mm512_add_epi64(scale, _mm512_slli_epi64(m, 52));
-  const __m512d two_52 = _mm512_set1_pd(4503599627370496.0);
-  const __m512i clamped = _mm512_max_epi64(m, _mm512_set1_epi64(-1100));
-  const __m512d power = _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_add_epi64(clamped, _mm512_set1_epi64(1074 + 1023)), 52));
-  const __m512i below = _mm512_sub_epi64(
-      _mm512_castpd_si512(_mm512_fmadd_pd(_mm512_castsi512_pd(scale), power, two_52)), _mm512_castpd_si512(two_52));
-  const __mmask8 is_below = _mm512_cmple_epi64_mask(exponent, _mm512_setzero_si512());
-  const __mmask8 is_zero = _mm512_cmp_pd_mask(x, _mm512_set1_pd(-746.0), _CMP_LT_OQ);
-  const __mmask8 is_inf =
-      (_mm512_cmpge_epi64_mask(exponent, _mm512_set1_epi64(2047)) | _mm512_cmp_pd_mask(x, _mm512_set1_pd(710.0), _CMP_GT_OQ)) &
-      static_cast<__mmask8>(~is_zero);
-  const __mmask8 is_nan = _mm512_cmp_pd_mask(x, x, _CMP_UNORD_Q);
-  __m512i result = _mm512_mask_blend_epi64(is_below, normal, below);
-  result = _mm512_mask_mov_epi64(result, is_inf, _mm512_set1_epi64(0x7ff0000000000000ll));
-  result = _mm512_mask_mov_epi64(result, is_zero, _mm512_setzero_si512());
-  return _mm512_mask_mov_pd(_mm512_castsi512_pd(result), is_nan, x);
-}
-
-// The shifter that rounds 16 x / ln 2 to k = 16 m + j, plus 16 x 1023: the low bits of the sum
-// are then k + 16 x 1023, whose low four are j and the next eleven m + 1023, 2^m's exponent field
-constexpr double exp8_shifter = round_shifter + 16 * 1023;
+// The shifter that rounds x / ln 2 to a multiple of 1/16, k = m + j/16: the sum's low four bits
+// are j (vpermt2pd reads only those), and k itself is vscalefpd's exponent (it takes floor(k) = m)
+constexpr double exp8_shifter = 1.5 * 281474976710656.0;  // 1.5 * 2^48
 ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
+  // [-760, 710]: e^x is 0 below, inf above; NaN kept (vmaxpd and vminpd return their second
+  // operand where one is NaN). Without it, r would be NaN for infinite x.
+  const __m512d clamped = _mm512_min_pd(_mm512_set1_pd(710.0), _mm512_max_pd(_mm512_set1_pd(-760.0), x));
   const __m512d shifter = _mm512_set1_pd(exp8_shifter);
-  const __m512d shifted = _mm512_fmadd_pd(x, _mm512_set1_pd(23.083120654223414), shifter);  // 16 / ln 2
-  const __m512d k = _mm512_sub_pd(shifted, shifter);
+  const __m512d shifted = _mm512_fmadd_pd(clamped, _mm512_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
+  const __m512d k = _mm512_sub_pd(shifted, shifter);  // m + j/16
   const __m512i shifted_bits = _mm512_castpd_si512(shifted);
-  // ln2 / 16 in two parts, the first with 32 significant bits: k ln2_hi / 16 is exact
-  __m512d r = _mm512_fnmadd_pd(k, _mm512_set1_pd(6.93147180369123816490e-01 / 16), x);
-  r = _mm512_fnmadd_pd(k, _mm512_set1_pd(1.90821492927058770002e-10 / 16), r);
-  const __m512d r2 = _mm512_mul_pd(r, r), r4 = _mm512_mul_pd(r2, r2);
+  // ln2 in two parts, the first with 32 significant bits: k ln2_hi is exact (k has at most 15)
+  __m512d r = _mm512_fnmadd_pd(k, _mm512_set1_pd(6.93147180369123816490e-01), clamped);
+  r = _mm512_fnmadd_pd(k, _mm512_set1_pd(1.90821492927058770002e-10), r);
   // e^r - 1 = r + r^2 P(r), P of degree 4, minimax on |r| <= 1.0001 ln2 / 32 (scripts/exp_minimax.py:
-  // error 1.2e-17; the Taylor polynomial of degree 7, 1.2e-18, took one operation more)
-  const __m512d p01 = _mm512_fmadd_pd(r, _mm512_set1_pd(0.16666666664416963), _mm512_set1_pd(0.5000000000000006));
-  const __m512d p23 = _mm512_fmadd_pd(r, _mm512_set1_pd(0.008333471951132567), _mm512_set1_pd(0.0416666666596544));
-  const __m512d expm1 = _mm512_fmadd_pd(
-      r2, _mm512_fmadd_pd(r4, _mm512_set1_pd(0.0013889129027039896), _mm512_fmadd_pd(r2, p23, p01)), r);
-  // the low four bits, j, pick the entry (vpermt2pd reads only those)
+  // error 1.2e-17; the Taylor polynomial of degree 7, 1.2e-18, took one operation more), by
+  // Horner's rule: the batch's exps are bound by the multiply-add pipes, not by latency
+  __m512d p = _mm512_fmadd_pd(_mm512_set1_pd(0.0013889129027039896), r, _mm512_set1_pd(0.008333471951132567));
+  p = _mm512_fmadd_pd(p, r, _mm512_set1_pd(0.0416666666596544));
+  p = _mm512_fmadd_pd(p, r, _mm512_set1_pd(0.16666666664416963));
+  p = _mm512_fmadd_pd(p, r, _mm512_set1_pd(0.5000000000000006));
+  const __m512d expm1 = _mm512_fmadd_pd(_mm512_mul_pd(r, r), p, r);
   const __m512d hi = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.hi), shifted_bits, _mm512_load_pd(exp2_table16.hi + 8));
   const __m512d lo = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.lo), shifted_bits, _mm512_load_pd(exp2_table16.lo + 8));
   const __m512d scale = _mm512_add_pd(hi, _mm512_fmadd_pd(hi, expm1, lo));
-  const __mmask8 surely_normal = _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp_surely_normal_min), _CMP_GE_OQ) &
-                                 _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp_surely_normal_max), _CMP_LE_OQ);
-  if (__builtin_expect(surely_normal == 0xff, 1))  // 2^m from bits 4..14: m + 1023
-    return _mm512_mul_pd(scale, _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_srli_epi64(shifted_bits, 4), 52)));
-  const __m512i k_bits = _mm512_sub_epi64(shifted_bits, _mm512_castpd_si512(shifter));
-  return exp8_finish_any(x, _mm512_castpd_si512(scale), _mm512_srai_epi64(k_bits, 4));  // m = floor(k / 16)
+  return _mm512_scalef_pd(scale, k);
 }
 #endif
 
