@@ -26,6 +26,9 @@
 //                                    avx2 >= 3x scalar)
 //   BM_BatchGaussian/ISA             the same, gaussian (goal avx512 <= 2 ns)
 //   BM_BatchKind/KIND                Curve::value_batch, the best instruction set, every kind
+//   BM_BatchTail/ISA/RESULTS         Curve::value_batch, gaussian, where every X is subnormal
+//                                    (subnormal_results: ln X in [-745, -709]) or normal (normal_results:
+//                                    ln X in [-700, -664]): what subnormal results cost the vector exps
 //   BM_BatchCApi                     asperity_eval_batch, Weibull a = 2 tail
 //   BM_BatchThreads/min_time:1.000/real_time/threads:T   one Curve's batch path from T threads at once (throughput:
 //                                    items_per_second; goal threads:2 >= 1.8x threads:1)
@@ -328,6 +331,43 @@ BENCHMARK_CAPTURE(BM_BatchGaussian, avx512, InstructionSet::avx512);
 void BM_BatchKind(benchmark::State& state, const char* name) {
   run_batch(state, kind_data(name), InstructionSet::automatic);
 }
+
+// The batch path where every result is subnormal (ln X in [-745, -709]) against results of the
+// same tail in [-700, -664]: whether the vector exps pay for subnormal results (exp8 makes them
+// with vscalefpd; a CPU that takes a microcode assist there would show it here). Gaussian F_5/2.
+std::vector<double> separations_with_logs(const Curve& curve, int twice_order, double lower_log, double upper_log) {
+  // ln X decreases with s past 0: the separation where it crosses `log`, by bisection
+  const auto separation_at = [&](double log) {
+    double low = 0, high = curve.table_max_separation();
+    for (int step = 0; step < 200; ++step) {
+      const double middle = 0.5 * (low + high);
+      (curve.log_value(twice_order, middle) > log ? low : high) = middle;
+    }
+    return 0.5 * (low + high);
+  };
+  return uniform(separation_at(upper_log), separation_at(lower_log), query_count, 11);
+}
+void BM_BatchTail(benchmark::State& state, InstructionSet isa, bool subnormal_results) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError("instruction set not available on this CPU");
+    return;
+  }
+  const KindData& data = kind_data("gaussian");
+  const std::vector<double> separations = subnormal_results
+                                              ? separations_with_logs(data.curve, data.kind->twice_order, -745, -709)
+                                              : separations_with_logs(data.curve, data.kind->twice_order, -700, -664);
+  std::vector<double> out(query_count);
+  for (auto _ : state) {
+    data.curve.value_batch(data.kind->twice_order, separations.data(), out.data(), query_count, isa);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * query_count);
+}
+BENCHMARK_CAPTURE(BM_BatchTail, avx2/normal_results, InstructionSet::avx2, false);
+BENCHMARK_CAPTURE(BM_BatchTail, avx2/subnormal_results, InstructionSet::avx2, true);
+BENCHMARK_CAPTURE(BM_BatchTail, avx512/normal_results, InstructionSet::avx512, false);
+BENCHMARK_CAPTURE(BM_BatchTail, avx512/subnormal_results, InstructionSet::avx512, true);
 
 void BM_BatchCApi(benchmark::State& state) {
   static asperity_table* handle = asperity_table_open(nullptr, nullptr, 0);

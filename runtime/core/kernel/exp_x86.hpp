@@ -4,15 +4,19 @@
 // - exp4 (AVX2 + FMA, four lanes): x = k ln 2 + r, |r| <= ln2 / 2, e^r by a minimax
 //   polynomial of degree 11 (error 6.5e-18). Where every lane is surely normal (fast_math.hpp's
 //   exp_surely_normal_min/max), the result is 2^k + 2^k (e^r - 1) in one fused multiply-add,
-//   2^k made in the exponent field; otherwise the lanes go through fast_exp_lanes' masks:
-//   subnormal results made from normal doubles (no assist), 0 below -746, inf above 710, NaN kept.
+//   2^k made in the exponent field. Where a lane is below that range but every lane is in
+//   [-760, 709] (the tails' X < 1e-308: 3% of bench_lookup's random queries), subnormal results
+//   are made from normal doubles (no assist; BM_BatchTail/avx2/subnormal_results 12.2 -> 10.6 us
+//   a block of 4096 against fast_exp_lanes' masks); otherwise the lanes go through
+//   fast_exp_lanes' masks: 0 below -746, inf above 710, NaN kept.
 // - exp8 (AVX-512, eight lanes): x = (m + j/16) ln2 + r, |r| <= ln2 / 32, 2^(j/16) from a
 //   16-entry table held in four registers (vpermt2pd), e^r by a minimax polynomial of degree 6
 //   (error 1.2e-17), 2^m applied by vscalefpd, which rounds subnormal results once and gives 0
 //   and inf beyond the range: one path for every lane, no branch (x clamped to [-760, 710]
-//   first, NaN kept). On AMD Zen 4 the lanes whose result is subnormal or 0 cost nothing extra
-//   (bench_lookup BM_BatchGaussian, 3% of its queries there); Intel CPUs may take a microcode
-//   assist for such a lane (not measured here).
+//   first, NaN kept). On AMD Zen 4 a subnormal result costs nothing extra (bench_lookup
+//   BM_BatchTail/avx512: subnormal_results 7951 ns a block of 4096, normal_results 8029); a CPU
+//   that takes a microcode assist for a subnormal result (Intel's, without flush-to-zero) would
+//   show it in those rows (not measured here).
 // The coefficients: scripts/exp_minimax.py (Remez in 50 digits, the errors with the
 // coefficients rounded to double); each polynomial is one or two operations shorter than the
 // Taylor one of the same accuracy, on a path bound by its vector operations.
@@ -111,10 +115,26 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i shifte
   const __m256i k_bits = _mm256_sub_epi64(shifted_bits, _mm256_castpd_si256(_mm256_set1_pd(exp4_shifter)));
   return exp4_finish_any(x, _mm256_castpd_si256(_mm256_add_pd(_mm256_set1_pd(1.0), expm1)), k_bits);
 }
+// e^x for x in [-760, 709], every lane: where e^x < DBL_MIN (x below ln DBL_MIN), the result's
+// bits as an integer, e^x 2^1074 rounded once, by adding 2^52 to it (a normal double: no
+// subnormal is made by a floating-point operation); elsewhere exp4_normal (k >= -1022)
+ASPERITY_ALWAYS_INLINE __m256d exp4_down_to_subnormal(__m256d x, __m256d expm1, __m256i shifted_bits) noexcept {
+  const __m256d two_52 = _mm256_set1_pd(4503599627370496.0);
+  // 2^(k + 1074), normal for k >= -1097: the exponent field k + 1023 + 1074
+  const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(shifted_bits, _mm256_set1_epi64x(1074)), 52));
+  const __m256d units = _mm256_fmadd_pd(_mm256_add_pd(_mm256_set1_pd(1.0), expm1), power, two_52);  // < 2^53
+  const __m256d below = _mm256_castsi256_pd(_mm256_sub_epi64(_mm256_castpd_si256(units), _mm256_castpd_si256(two_52)));
+  const __m256d is_below = _mm256_cmp_pd(x, _mm256_set1_pd(-708.3964185322641), _CMP_LT_OQ);  // ln DBL_MIN
+  return _mm256_blendv_pd(exp4_normal(expm1, shifted_bits), below, is_below);
+}
 ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
   __m256i shifted_bits;
   const __m256d expm1 = exp4_expm1(x, shifted_bits);
   if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(expm1, shifted_bits);
+  // the tails' X below DBL_MIN (the batch's usual slow lanes) without fast_exp_lanes' masks
+  const int down_to_subnormal = _mm256_movemask_pd(_mm256_and_pd(
+      _mm256_cmp_pd(x, _mm256_set1_pd(-760.0), _CMP_GE_OQ), _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
+  if (down_to_subnormal == 0xf) return exp4_down_to_subnormal(x, expm1, shifted_bits);
   return exp4_any(x, expm1, shifted_bits);
 }
 
