@@ -77,8 +77,13 @@ static ASPERITY_ALWAYS_INLINE bool fast_position(const FastGrid& grid, double se
   std::uint64_t bits;
   std::memcpy(&bits, &separation, sizeof bits);
   const FastSide& side = grid.sides[bits >> 63];
-  const double magnitude = __builtin_fabs(separation);
-  if (!(magnitude >= side.lower && magnitude <= side.upper)) return false;  // NaN fails too
+  // |s| against the side's range as integers (the bits of non-negative doubles order as their
+  // values; NaN and inf lie above every finite bound): no floating-point operation
+  std::uint64_t lower_bits, upper_bits;
+  std::memcpy(&lower_bits, &side.lower, sizeof lower_bits);
+  std::memcpy(&upper_bits, &side.upper, sizeof upper_bits);
+  const std::uint64_t magnitude_bits = bits & 0x7fffffffffffffffull;
+  if (!(magnitude_bits >= lower_bits && magnitude_bits <= upper_bits)) return false;
   const std::uint64_t packed = grid.directory[side.offset + static_cast<std::int32_t>((bits >> 52) & 0x7ff)].packed;
   const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
   const std::uint64_t cell = mantissa >> (52 - log2_knots);
