@@ -4,9 +4,10 @@
 e^r - 1 = r + r^2 P(r) on |r| <= 1.0001 a (a = ln2/2 for exp4, ln2/32 for exp8): P by the Remez
 exchange on the error r^2 (P_exact - P) in 50-digit decimal arithmetic, then the coefficients
 rounded to double and the error measured again with them. Prints the coefficients (c2, c3, ...)
-and both errors. Run: /usr/bin/python3 scripts/exp_minimax.py
+and both errors. Run: /usr/bin/python3 scripts/exp_minimax.py [--check runtime/core/kernel/exp_x86.hpp]
 """
 import math
+import sys
 from decimal import Decimal as D, getcontext
 
 getcontext().prec = 50
@@ -64,9 +65,21 @@ def remez(half_width, degree, samples=4000, iterations=10):
     return rounded, float(exact_error), float(rounded_error)
 
 
+# --check FILE: every coefficient, as Python prints it, must appear in FILE (exp_x86.hpp): the
+# kernels' literals are this script's output (ctest test_exp_minimax_coefficients)
+check_path = sys.argv[2] if len(sys.argv) == 3 and sys.argv[1] == "--check" else None
+text = open(check_path).read() if check_path else ""
+missing = []
 for name, half_width, degree in (("exp4", LN2 / 2, 9), ("exp8", LN2 / 32, 4)):
     coefficients, exact_error, rounded_error = remez(half_width * D("1.0001"), degree)
     print(f"{name}: e^r - 1 = r + r^2 P(r), |r| <= 1.0001 x {float(half_width):.6g}, P of degree {degree}: "
           f"error {exact_error:.3g} (exact coefficients), {rounded_error:.3g} (in double)")
     for j, c in enumerate(coefficients):
         print(f"  c{j + 2} = {c!r}")
+        if check_path and repr(c) not in text:
+            missing.append(f"{name} c{j + 2} = {c!r}")
+if check_path:
+    if missing:
+        print(f"not in {check_path}: " + ", ".join(missing))
+        sys.exit(1)
+    print(f"every coefficient is in {check_path}")
