@@ -373,7 +373,7 @@ def lookup_section(lookup):
     lines.append("")
 
     # the runtime's three passes against its former fused loop
-    lines += ["The runtime's batch path (three passes: positions, quintics by row loads and a transpose, a",
+    lines += ["The runtime's batch path (three passes: positions, quintics by 128-bit row loads paired in registers, a",
               "vector `exp` without a table in memory) against its former single loop that the compiler",
               "vectorized (gathers for the coefficients and the `exp` table; kept in `bench/record_kernels.hpp`,",
               "`BM_Record/batch_ISA/48B`), ns a query:", "",

@@ -137,8 +137,8 @@ static ASPERITY_ALWAYS_INLINE double fast_exp_lanes(double x) noexcept {
   return double_of((result & ~is_nan) | (bits_of(x) & is_nan));
 }
 
-// Where e^x is surely a normal double (exp_x86.hpp's exp4 k in [-1021, 1023], exp8 m in
-// [-1022, 1022]): the test of the vector kernels' exact-multiplication paths
+// Where e^x is surely a normal double (exp_x86.hpp's exp4, k in [-1021, 1023]): the test of
+// the 4-lane kernels' one-multiply-add path (exp8, the AVX-512 batch's, needs none)
 static constexpr double exp_surely_normal_min = -708.0, exp_surely_normal_max = 709.0;
 
 static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept {
