@@ -218,6 +218,8 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
 
   FastGridBuild build;
   FastGrid& grid = build.grid;
+  // entry 0: the batch passes' entry for a query off the grid (fast_grid.hpp)
+  build.directory.push_back(FastBinade::make(0, 0));
   // Per held order, the intervals in the order they are made; coefficients gathered at the end.
   std::vector<std::vector<double>> per_order(builder.held);
   const double table_min = reference.table_min, table_max = reference.table_max;

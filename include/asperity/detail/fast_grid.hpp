@@ -35,7 +35,9 @@ struct FastBinade {
 };
 
 // The grid of one sign of s: |s| in [lower, upper]; the binade of biased exponent E is
-// directory[offset + E].
+// directory[offset + E]. directory[0] is no binade's: one interval, the first (`first` 0,
+// k 0), which the batch passes give a query off the grid (entry 0: interval 0 whatever its
+// mantissa, a valid record to read, no mask on the index).
 struct FastSide {
   double lower = 1;   // lower > upper: this sign is not covered
   double upper = 0;

@@ -104,7 +104,7 @@ struct X86Passes {
       const __m256d inside = _mm256_and_pd(_mm256_cmp_pd(separation, lower, _CMP_GE_OQ),
                                            _mm256_cmp_pd(separation, upper, _CMP_LE_OQ));  // NaN fails too
       inside_count += static_cast<std::uint64_t>(__builtin_popcount(static_cast<unsigned>(_mm256_movemask_pd(inside))));
-      const __m256i keep = _mm256_castpd_si256(inside);  // off the grid: entry 0, record 0 (valid loads)
+      const __m256i keep = _mm256_castpd_si256(inside);  // off the grid: entry 0 (fast_grid.hpp)
       const __m256i offset = _mm256_castpd_si256(_mm256_blendv_pd(offset0, offset1, separation));
       const __m256i entry = _mm256_and_si256(_mm256_add_epi64(offset, _mm256_srli_epi64(bits, 52)), keep);
 #endif
@@ -117,12 +117,8 @@ struct X86Passes {
       const __m256i cell = _mm256_srlv_epi64(mantissa, _mm256_sub_epi64(fifty_two, knots));
       const __m256d fraction = _mm256_castsi256_pd(
           _mm256_or_si256(_mm256_and_si256(_mm256_sllv_epi64(mantissa, knots), mantissa_mask), one_bits));
-#if defined(__AVX512VL__)
-      const __m256i index = _mm256_maskz_add_epi64(inside, _mm256_sub_epi64(_mm256_srli_epi64(packed, 6), first_bias), cell);
-#else
-      const __m256i index =
-          _mm256_and_si256(_mm256_add_epi64(_mm256_sub_epi64(_mm256_srli_epi64(packed, 6), first_bias), cell), keep);
-#endif
+      // off the grid: entry 0, whose binade gives interval 0 (fast_grid.hpp), no mask
+      const __m256i index = _mm256_add_epi64(_mm256_sub_epi64(_mm256_srli_epi64(packed, 6), first_bias), cell);
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(at + j), index);
       _mm256_storeu_pd(y + j, _mm256_sub_pd(fraction, _mm256_set1_pd(1.5)));
     }

@@ -134,7 +134,7 @@ struct ScalarPasses {
       const double lower = double_of((lower1_bits & negative) | (lower0_bits & ~negative));
       const double upper = double_of((upper1_bits & negative) | (upper0_bits & ~negative));
       const bool inside = (magnitude >= lower) & (magnitude <= upper);  // no branch: &, not &&
-      // all ones on the grid, 0 off it: the indices are masked, not selected (a select would
+      // all ones on the grid, 0 off it: the directory entry is masked, not selected (a select would
       // become a conditional load, which does not vectorize)
       const std::uint64_t keep = 0 - static_cast<std::uint64_t>(inside);
       const std::uint64_t offset = (offset1 & negative) | (offset0 & ~negative);
@@ -143,7 +143,7 @@ struct ScalarPasses {
       const std::uint64_t log2_knots = packed & 63, mantissa = bits & 0x000fffffffffffffull;
       const std::uint64_t cell = mantissa >> (52 - log2_knots);
       const double fraction = double_of(((mantissa << log2_knots) & 0x000fffffffffffffull) | 0x3ff0000000000000ull);
-      at[j] = (((packed >> 6) - first_bias + cell) & keep) * fast_stride;
+      at[j] = ((packed >> 6) - first_bias + cell) * fast_stride;  // entry 0: interval 0
       y[j] = fraction - 1.5;
       outside += inside ? 0 : 1;
     }
