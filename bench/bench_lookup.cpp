@@ -17,9 +17,9 @@
 //                                    separations (goal: BM_ScalarKind/gaussian_fit_domain <= 0.8x,
 //                                    every Weibull BM_ScalarKind <= 1.0x)
 //   BM_ContactAllFour                contact_at (count, area, load, stiffness, their ratio), Weibull
-//                                    a = 2 tail, from a Surface (its factors on every query)
+//                                    a = 2 tail, from a Surface (its factors on every query, in the kernel)
 //   BM_ContactAllFourScales          the same from the factors computed once (contact_at_scales)
-//                                    (goal: <= 1.5x BM_ScalarKind/weibull_tail_a2)
+//                                    (goal, both rows: <= 1.5x BM_ScalarKind/weibull_tail_a2)
 //   BM_ContactOrders                 Curve::contact_orders, the four orders' logs and values alone
 //   BM_Batch/ISA                     Curve::value_batch per instruction set (generic, avx2, avx512),
 //                                    Weibull a = 2 tail, 4096 queries a call (goal avx512 <= 3 ns,

@@ -90,8 +90,9 @@ TEST(Contact, NonPhysicalInputIsRejectedByValue) {
   EXPECT_TRUE(contact_at(curve, Surface{}, -0.0, state));
 }
 
-// contact_at's kernel (the products where the exps are, Curve::contact_products) against the
-// model from the same curve's logs in long double: every kind, the whole range and off it,
+// contact_at's kernel (the products where the exps are, Curve::contact_products) against
+// contact_orders' values and the model from the same curve's logs in long double: every kind,
+// the whole range and off it,
 // densely where an order's exp leaves the surely-normal range (ln X = -708) and underflows
 // (-745), where the kernel's products and ratio change method.
 TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
@@ -147,14 +148,28 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
         double logs[4], values[4];
         curve.contact_orders(s, logs, values);
         const double got[4] = {state.count, state.stiffness, state.area, state.load};
+        // ln X: ln 2 log2 X, ln 2 in double (3.4e-17 relative) and the product rounded (half an
+        // ulp: kernels.hpp's contact_logs_of)
+        double log_rounding[4];
         for (int k = 0; k < 4; ++k) {
+          const double magnitude = std::isfinite(logs[k]) ? std::fabs(logs[k]) : 0.0;  // X = 0: no rounding
+          log_rounding[k] = 0.5 * (std::nextafter(magnitude, INFINITY) - magnitude) + 3.4e-17 * magnitude;
+        }
+        for (int k = 0; k < 4; ++k) {
+          // contact_orders' exps (the same bits: the kernels share them), times the factor
+          ASSERT_EQ(got[k], factors[k] * values[k]) << "order " << k << " s = " << s;
+          // and the model from the logs: the exp within 2.3e-16 where normal, 0.75 of the
+          // subnormal spacing below; the product's rounding; the log's
           const long double expected = static_cast<long double>(factors[k]) * std::exp(static_cast<long double>(logs[k]));
-          // the exp within 2.3e-16 where normal, 0.75 of the subnormal spacing below; the product's rounding
-          const long double bound = 4.5e-16L * std::fabs(expected) + (factors[k] + 1.0L) * denorm;
+          const long double bound = (4.5e-16L + log_rounding[k]) * std::fabs(expected) + (factors[k] + 1.0L) * denorm;
           ASSERT_LE(std::fabs(got[k] - expected), bound) << "order " << k << " s = " << s << " ln X = " << logs[k];
         }
         if (logs[3] == -std::numeric_limits<double>::infinity()) {
           EXPECT_TRUE(std::isnan(state.stiffness_ratio)) << s;
+        } else if (values[1] >= std::numeric_limits<double>::min() && values[3] >= std::numeric_limits<double>::min()) {
+          // both values normal: their ratio (a division and a multiplication)
+          const long double expected = 1.5L * values[1] / values[3];
+          ASSERT_LE(std::fabs(state.stiffness_ratio - expected), 2.3e-16L * expected) << "s = " << s;
         } else {
           const long double difference = static_cast<long double>(logs[1]) - logs[3];
           const long double expected = 1.5L * std::exp(difference);
@@ -181,16 +196,26 @@ TEST(Contact, WithoutContactRecordsTheSameQuantities) {
     ContactState a, b;
     ASSERT_TRUE(contact_at(plain, surface, s, a));
     ASSERT_TRUE(contact_at(with_records, surface, s, b));
+    // each quantity with the log of its order (0, 1, 3/2, 1/2; the ratio: 1/2 and 3/2)
+    double logs[order_count];
+    plain.log_values(s, logs);
+    const double abs_logs[5] = {std::fabs(logs[0]), std::fabs(logs[2]), std::fabs(logs[3]), std::fabs(logs[1]),
+                                std::fabs(logs[1]) + std::fabs(logs[3])};
     const double pairs[][2] = {{a.count, b.count}, {a.area, b.area}, {a.load, b.load}, {a.stiffness, b.stiffness},
                                {a.stiffness_ratio, b.stiffness_ratio}};
-    for (const auto& pair : pairs) {
+    for (int k = 0; k < 5; ++k) {
+      const auto& pair = pairs[k];
       if (std::isnan(pair[1])) {
         EXPECT_TRUE(std::isnan(pair[0])) << s;
         continue;
       }
-      // the records' logs are within 1.7e-16 (1 + |ln X|) of log_value's (measured, test_curve;
-      // <= 1.3e-13 to |ln X| = 760), the exps within 2.3e-16
-      EXPECT_LE(std::fabs(pair[0] - pair[1]), 2e-13 * std::fabs(pair[1]) + 1e-300) << s;
+      // test_curve's bounds: the records' logs within 1e-15 (1 + |ln X|) of log_value's (they
+      // are log2 X, a quintic rounded apart: measured 4.3e-16), the exps within 2.3e-16 each;
+      // the ratio has two of each; below DBL_MIN, one subnormal spacing per product
+      const double terms = k == 4 ? 2 : 1;
+      const double relative = terms * (4.6e-16 + 1e-15) + 1e-15 * abs_logs[k];
+      EXPECT_LE(std::fabs(pair[0] - pair[1]), relative * std::fabs(pair[1]) + 1e-300)
+          << s << " quantity " << k << " |ln X| " << abs_logs[k];
     }
   }
 }

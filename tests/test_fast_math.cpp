@@ -106,6 +106,48 @@ TEST(FastMath, ExpSpecialValuesAndSubnormals) {
   }
 }
 
+// fast_exp2 (the contact kernels' exp in the baseline build: the records hold log2 X) against a
+// long double exp2: the same bound as fast_exp where normal, one subnormal spacing below, and
+// the special values; every exactly representable power of two exactly.
+TEST(FastMath, Exp2WithinBoundEverywhere) {
+  using asperity::detail::fast_exp2;
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> pick(-1022.0, 1023.99);
+  double worst = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    const double t = pick(rng);
+    worst = std::fmax(worst, relative_error(fast_exp2(t), std::exp2(static_cast<long double>(t))));
+  }
+  for (double t : {0.0, -0.0, 1e-300, -1e-300, 0.5, -0.5, 1.0 / 256, -1.0 / 256, 1023.999, -1021.999})
+    worst = std::fmax(worst, relative_error(fast_exp2(t), std::exp2(static_cast<long double>(t))));
+  RecordProperty("fast_exp2_max_relative_error", scientific(worst));
+  EXPECT_LT(worst, 2.5e-16);
+  for (int k = -1074; k <= 1023; ++k) EXPECT_EQ(fast_exp2(k), std::ldexp(1.0, k)) << k;
+  constexpr long double spacing = 4.9406564584124654e-324L;
+  std::uniform_real_distribution<double> below(-1075.5, -1022.0);
+  long double worst_below = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double t = below(rng);
+    worst_below = std::fmax(worst_below, std::fabs(static_cast<long double>(fast_exp2(t)) - std::exp2(static_cast<long double>(t))));
+  }
+  RecordProperty("fast_exp2_max_subnormal_error_spacings", scientific(static_cast<double>(worst_below / spacing)));
+  EXPECT_LE(worst_below, spacing);
+  EXPECT_EQ(fast_exp2(-inf), 0.0);
+  EXPECT_EQ(fast_exp2(inf), inf);
+  EXPECT_EQ(fast_exp2(1024.0), inf);
+  EXPECT_EQ(fast_exp2(-1076.0), 0.0);
+  EXPECT_EQ(fast_exp2(-1075.5), 0.0);
+  EXPECT_EQ(fast_exp2(-1074.5), 4.9406564584124654e-324);
+  EXPECT_TRUE(std::isnan(fast_exp2(std::nan(""))));
+  for (double magnitude = 1076.0; magnitude < inf; magnitude *= 2)
+    for (double significand : {1.0, 1.1, 1.5, 1.9999999999999998}) {
+      const double t = magnitude * significand;
+      if (t == inf) continue;
+      EXPECT_EQ(fast_exp2(-t), 0.0) << -t;
+      EXPECT_EQ(fast_exp2(t), inf) << t;
+    }
+}
+
 TEST(FastMath, LogWithinBoundOverAllPositiveDoubles) {
   std::mt19937_64 rng(2);
   std::uniform_real_distribution<double> exponent(-1074.0, 1023.9);

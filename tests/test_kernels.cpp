@@ -1,7 +1,8 @@
 // The per-instruction-set kernels (runtime/core/kernel/) on their own, for every set this CPU
-// runs: contact4 (and contact_products, on a grid made here) on synthetic contact records whose logs sweep the whole range of exp (normal,
-// both edges of its fast path, subnormal, underflow, overflow, -inf), against the scalar
-// quintic and a long double exp of the kernel's own logs; the AVX2 and AVX-512 builds of the
+// runs: contact4 (and contact_products, on a grid made here) on synthetic contact records whose
+// log2 X sweep the whole range of exp2 (normal, both edges of its fast path, subnormal,
+// underflow, overflow, -inf), against the scalar quintic and a long double exp2 of the kernel's
+// own log2 X (the contact records' units, kernels.hpp); the AVX2 and AVX-512 builds of the
 // same code give the same bits. The batch path's exp pass (Kernels::exps: exp_x86.hpp's exp4
 // for AVX2, exp8 for AVX-512) over the same range, lanes of every regime mixed in one vector,
 // and partial vectors. (Curve-level checks are test_curve's and test_batch's; those only
@@ -39,12 +40,14 @@ struct alignas(64) Record {
   double coefficients[contact_record_size];
 };
 
-TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
+TEST(Kernels, Contact4IsTheQuinticAndItsExp2OnEverySet) {
   std::uniform_real_distribution<double> unit(-1, 1), y_of(-0.5, 0.5);
-  // constant terms: where exp's fast path ends (-708, 709) and every other regime
+  // constant terms (log2 X): where exp2's fast path ends (-1021, 1023), DBL_MIN (-1022), the
+  // smallest subnormal (-1074) and half of it (-1075), DBL_MAX (1024), and every other regime
   std::vector<double> levels;
-  for (double level = -760; level <= 720; level += 0.37) levels.push_back(level);
-  for (double edge : {-708.0, 709.0, -745.13, -708.3964, 709.7827}) {
+  for (double level = -1100; level <= 1040; level += 0.53) levels.push_back(level);
+  for (double edge : {detail::BinaryExp::surely_normal_min, detail::BinaryExp::surely_normal_max, -1022.0, -1074.0,
+                      -1075.0, 1024.0}) {
     double below = edge, above = edge;
     for (int k = 0; k < 200; ++k) {
       levels.push_back(below = std::nextafter(below, -inf));
@@ -71,8 +74,8 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
       if (i % 101 == 0) record.coefficients[3] = -inf;  // an order at exactly 0 (no contact)
       // y = 0 makes the log the constant term exactly: the levels' edges land on the fast path's
       const double y = (i % 2) ? 0.0 : y_of(random);
-      double logs[4], values[4];
-      kernels.contact4(record.coefficients, y, logs, values);
+      double log2s[4], values[4];
+      kernels.contact4(record.coefficients, y, log2s, values);
       if (isa == InstructionSet::avx2) first_x86.insert(first_x86.end(), values, values + 4);
       if (isa == InstructionSet::avx512 && !first_x86.empty()) {
         for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(values[k], first_x86[4 * i + k])) << "lane " << k;
@@ -80,31 +83,31 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
       for (int k = 0; k < 4; ++k) {
         const double expected = quintic(record.coefficients, k, y);
         if (std::isinf(expected)) {
-          EXPECT_EQ(logs[k], expected);
+          EXPECT_EQ(log2s[k], expected);
         } else {
           // fused multiply-adds where the set has them: the rounding of the quintic's terms
-          const double error = std::fabs(logs[k] - expected) / (1 + std::fabs(expected));
+          const double error = std::fabs(log2s[k] - expected) / (1 + std::fabs(expected));
           worst_log = std::max(worst_log, error);
           EXPECT_LE(error, 2e-15) << to_string(isa) << " lane " << k << " at " << expected;
         }
-        // the exp of the kernel's own log, within 2.3e-16 on the normal range (fast_exp:
-        // 1.1e-16, test_fast_math; the x86 sets' exp4, exp_x86.hpp: 1.5e-16), 0.75 of the
-        // spacing below; the generic set is fast_exp itself
-        // (this file is built like it), the others round with fused multiply-adds
+        // 2 to the kernel's own log2 X, within 2.3e-16 on the normal range (fast_exp2: 1.1e-16,
+        // test_fast_math; the x86 sets' exp4 in base 2, exp_x86.hpp), 0.75 of the spacing below;
+        // the generic set is fast_exp2 itself (this file is built like it), the others round
+        // with fused multiply-adds
         if (isa == InstructionSet::generic) {
-          EXPECT_TRUE(same_bits(values[k], detail::fast_exp(logs[k]))) << "lane " << k << " at " << logs[k];
+          EXPECT_TRUE(same_bits(values[k], detail::fast_exp2(log2s[k]))) << "lane " << k << " at " << log2s[k];
         }
-        const long double exact = std::exp(static_cast<long double>(logs[k]));
+        const long double exact = std::exp2(static_cast<long double>(log2s[k]));
         const double smallest_normal = std::numeric_limits<double>::min();
         if (exact >= smallest_normal && exact <= std::numeric_limits<double>::max()) {
           const double error = static_cast<double>(std::fabs((values[k] - exact) / exact));
           worst_exp = std::max(worst_exp, error);
-          EXPECT_LE(error, 2.3e-16) << to_string(isa) << " lane " << k << ": exp(" << logs[k] << ") = " << values[k];
+          EXPECT_LE(error, 2.3e-16) << to_string(isa) << " lane " << k << ": exp2(" << log2s[k] << ") = " << values[k];
         } else if (exact < smallest_normal) {
           EXPECT_LE(static_cast<double>(std::fabs(values[k] - exact)), 0.75 * std::numeric_limits<double>::denorm_min())
-              << to_string(isa) << " lane " << k << ": exp(" << logs[k] << ") = " << values[k];
+              << to_string(isa) << " lane " << k << ": exp2(" << log2s[k] << ") = " << values[k];
         } else {
-          EXPECT_EQ(values[k], inf) << to_string(isa) << " lane " << k << ": exp(" << logs[k] << ")";
+          EXPECT_EQ(values[k], inf) << to_string(isa) << " lane " << k << ": exp2(" << log2s[k] << ")";
         }
         ++checked;
       }
@@ -118,11 +121,15 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExpOnEverySet) {
 }
 
 // Curve::contact_products' kernels (fast_grid.hpp's ContactProducts) on a grid made here: one
-// binade, s in [1, 2), 64 intervals whose records sweep the same logs as above (one order alone
-// in a slow regime, X_3/2 exactly 0). Against a long double exp of contact4's logs: the
-// products within 4.5e-16 (the exp's 2.3e-16 and the product's rounding) or the subnormal
-// spacing times the factor, the ratio within 8e-16 + 1.2e-16 |ln X_1/2 - ln X_3/2| of
-// 1.5 e^(ln X_1/2 - ln X_3/2) (NaN where X_3/2 = 0); false for a bad factor or off the grid.
+// binade, s in [1, 2), 64 intervals whose records sweep the same regimes as above (one order
+// alone in a slow regime, X_3/2 exactly 0). Against a long double exp2 of contact4's log2 X:
+// the products within 4.5e-16 (the exp's 2.3e-16 and the product's rounding) or the subnormal
+// spacing times the factor; the ratio, where X_1/2 and X_3/2 are normal, within 8e-16 +
+// 1.2e-16 |ln X_1/2 - ln X_3/2| of 1.5 X_1/2 / X_3/2 = 1.5 2^(log2 X_1/2 - log2 X_3/2), and
+// elsewhere of 1.5 e^(ln X_1/2 - ln X_3/2) from contact_orders' logs (ln 2 log2 X, rounded:
+// contact_logs_of), NaN where X_3/2 = 0; the AVX2 and AVX-512 builds the same bits; false for
+// a bad factor or off the grid. The surface form (ContactInputs::surface) gives the same bits
+// as the factors contact_scales_of makes.
 TEST(Kernels, ContactProductsOnEverySet) {
   constexpr int log2_intervals = 6, intervals = 1 << log2_intervals;
   detail::FastGrid grid;
@@ -135,7 +142,10 @@ TEST(Kernels, ContactProductsOnEverySet) {
   std::vector<Record> records(intervals);
   std::uniform_real_distribution<double> unit(-1, 1);
   std::mt19937_64 random(15);
-  const double levels[] = {-760, -746, -745.13, -720, -708.5, -708, -707.5, -700, -300, -1, 0, 3, 500, 709, 709.5};
+  // log2 X: below half the smallest subnormal, around it, subnormal, around the fast path's
+  // lower end (-1021) and DBL_MIN (-1022), normal, around the upper end (1023)
+  const double levels[] = {-1096, -1076, -1075, -1040, -1022.5, -1021, -1020.5, -1010, -433, -1.4, 0, 4.3,
+                           721, 1023, 1023.5};
   for (int i = 0; i < intervals; ++i)
     for (int k = 0; k < 4; ++k) {
       const int n = static_cast<int>(sizeof levels / sizeof levels[0]);
@@ -164,33 +174,54 @@ TEST(Kernels, ContactProductsOnEverySet) {
           for (int k = 0; k < 5; ++k) ASSERT_TRUE(same_bits(state[k], first_x86[at + k])) << "s = " << s << " " << k;
         }
         at += 5;
-        // the logs as contact4 gives them at the same position
+        // log2 X as contact4 gives them at the same position (orders 0, 1/2, 1, 3/2)
         const int interval = static_cast<int>((s - 1.0) * intervals);
         const double y = (s - 1.0) * intervals - interval - 0.5;
-        double logs[4], values[4];
-        kernels.contact4(records[interval].coefficients, y, logs, values);
+        double log2s[4], values[4];
+        kernels.contact4(records[interval].coefficients, y, log2s, values);
         const int order_of[4] = {0, 2, 3, 1};  // the state's count, area, load, stiffness
         for (int j = 0; j < 4; ++j) {
-          const long double x = std::exp(static_cast<long double>(logs[order_of[j]]));
+          const long double x = std::exp2(static_cast<long double>(log2s[order_of[j]]));
           const long double expected = factors[j] * x;
           const long double bound = 4.5e-16L * std::fabs(expected) + (factors[j] + 1.0L) * denorm;
-          if (x > largest || expected > largest)  // X itself overflows (ln X > 709.78): inf, as X is
+          if (x > largest || expected > largest)  // X itself overflows (log2 X > 1024): inf, as X is
             EXPECT_TRUE(std::isinf(state[j])) << to_string(isa) << " s = " << s << " quantity " << j;
           else
             ASSERT_LE(std::fabs(state[j] - expected), bound)
-                << to_string(isa) << " s = " << s << " quantity " << j << " ln X = " << logs[order_of[j]];
+                << to_string(isa) << " s = " << s << " quantity " << j << " log2 X = " << log2s[order_of[j]];
         }
-        if (logs[3] == -inf) {
+        // the surface form: N = count, R = area / (pi N sigma), ... are not exact, so the test
+        // gives it a surface and compares with the factors contact_scales_of makes of it
+        {
+          const double surface[4] = {factors[0], 1e-4 * (1 + step % 7), 1e-6 * (1 + step % 5), 1e11 * (1 + step % 3)};
+          const ContactScales scales = detail::contact_scales_of(surface[0], surface[1], surface[2], surface[3]);
+          double from_surface[5], from_scales[5];
+          const bool a = kernels.contact_products_of_surface(grid, records[0].coefficients, s, surface[0], surface[1],
+                                                             surface[2], surface[3], from_surface);
+          const bool b = kernels.contact_products(grid, records[0].coefficients, s, scales.count, scales.area,
+                                                  scales.load, scales.stiffness, from_scales);
+          ASSERT_EQ(a, b) << to_string(isa) << " s = " << s;
+          for (int k = 0; a && k < 5; ++k)
+            ASSERT_TRUE(same_bits(from_surface[k], from_scales[k])) << to_string(isa) << " s = " << s << " " << k;
+        }
+        if (log2s[3] == -inf) {
           EXPECT_TRUE(std::isnan(state[4])) << to_string(isa) << " s = " << s;
         } else {
-          const long double difference = static_cast<long double>(logs[1]) - logs[3];
+          // where both values are normal the ratio is theirs, else from the logs
+          double logs[4];
+          detail::contact_logs_of(log2s, logs);
+          const bool normal = values[1] >= std::numeric_limits<double>::min() &&
+                              values[3] >= std::numeric_limits<double>::min() && values[1] <= largest &&
+                              values[3] <= largest;
+          const long double difference = normal ? (static_cast<long double>(log2s[1]) - log2s[3]) * std::log(2.0L)
+                                                : static_cast<long double>(logs[1]) - logs[3];
           const long double expected = 1.5L * std::exp(difference);
           if (expected > largest) {
             EXPECT_TRUE(std::isinf(state[4]) || state[4] >= largest / 2) << to_string(isa) << " s = " << s;
           } else {
             const long double bound = (8e-16L + 1.2e-16L * std::fabs(difference)) * expected + denorm;
-            ASSERT_LE(std::fabs(state[4] - expected), bound) << to_string(isa) << " s = " << s << " logs " << logs[1]
-                                                              << " " << logs[3];
+            ASSERT_LE(std::fabs(state[4] - expected), bound)
+                << to_string(isa) << " s = " << s << " log2s " << log2s[1] << " " << log2s[3];
           }
         }
         ++checked;
@@ -210,6 +241,50 @@ TEST(Kernels, ContactProductsOnEverySet) {
     EXPECT_EQ(checked, 60000u);
   }
   EXPECT_GE(sets, 1);
+}
+
+// The contact records' log2 X (write_contact_record: the grid's ln X coefficients times log2 e,
+// each rounded once) against the exact value of the ln X quintic they come from (long double),
+// beside the scalar path's own ln X quintic in double: what base 2 costs in rounding. Quintics
+// like a grid's (constant terms over the whole range of ln X, slopes and curvature of an
+// interval's size), every instruction set; within test_curve's bound 1e-15 (1 + |ln X|).
+TEST(Kernels, ContactRecordsAgainstTheExactQuintic) {
+  std::mt19937_64 random(16);
+  std::uniform_real_distribution<double> level(-745, 5), unit(-1, 1), y_of(-0.5, 0.5);
+  for (InstructionSet isa : {InstructionSet::generic, InstructionSet::avx2, InstructionSet::avx512}) {
+    if (!instruction_set_available(isa)) continue;
+    const detail::Kernels& kernels = detail::kernels_for(isa);
+    double worst_ln = 0, worst_log2 = 0;
+    for (int i = 0; i < 20000; ++i) {
+      double orders[4][detail::fast_stride];
+      for (auto& order : orders) {
+        order[0] = level(random);
+        for (int j = 1; j < detail::fast_stride; ++j) order[j] = unit(random) * (1 + std::fabs(order[0])) / (8 << j);
+      }
+      const double* const ln_orders[4] = {orders[0], orders[1], orders[2], orders[3]};
+      Record record;
+      detail::write_contact_record(ln_orders, record.coefficients);
+      const double y = y_of(random);
+      double log2s[4], values[4];
+      kernels.contact4(record.coefficients, y, log2s, values);
+      for (int k = 0; k < 4; ++k) {
+        long double exact = 0, power = 1;
+        for (int j = 0; j < detail::fast_stride; ++j, power *= y) exact += orders[k][j] * power;
+        const long double scale = 1 + std::fabs(exact);
+        const double ln_error = static_cast<double>(std::fabs(detail::fast_quintic(orders[k], 0, y) - exact) / scale);
+        const double log2_error =
+            static_cast<double>(std::fabs(0.693147180559945309417232121458176568L * log2s[k] - exact) / scale);
+        worst_ln = std::max(worst_ln, ln_error);
+        worst_log2 = std::max(worst_log2, log2_error);
+        ASSERT_LE(log2_error, 1e-15) << to_string(isa) << " ln X = " << static_cast<double>(exact);
+      }
+    }
+    char figures[64];
+    std::snprintf(figures, sizeof figures, "%.2g / %.2g", worst_ln, worst_log2);
+    RecordProperty(std::string("ln_quintic_and_contact_record_error_") + to_string(isa), figures);
+    std::printf("%s: |error| / (1 + |ln X|) against the exact quintic: ln X quintic %.2g, contact records %.2g\n",
+                to_string(isa), worst_ln, worst_log2);
+  }
 }
 
 // exp's accuracy as the kernels' tests state it: 2.3e-16 relative where e^x is a normal

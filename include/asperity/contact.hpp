@@ -5,6 +5,7 @@
 #pragma once
 #include <cmath>
 
+#include "asperity/contact_scales.hpp"
 #include "asperity/curve.hpp"
 
 namespace asperity {
@@ -27,21 +28,16 @@ struct ContactState {
                            // contact, X_3/2 = 0)
 };
 
-// The factors of MODEL.md section 3: quantity = factor * X_n.
-struct ContactScales {
-  double count = 0;      // N
-  double area = 0;       // pi N R sigma_s
-  double load = 0;       // (4/3) N E* R^1/2 sigma_s^3/2
-  double stiffness = 0;  // 2 N E* R^1/2 sigma_s^1/2
-};
+// The factors of MODEL.md section 3, quantity = factor * X_n (ContactScales: contact_scales.hpp)
 ContactScales contact_scales(const Surface& surface) noexcept;
 
 // The state from ln X and X of orders 0, 1/2, 1, 3/2 (Curve::contact_orders).
 ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept;
 
 // Returns false (and NaNs) for a non-physical surface (a value <= 0 or not finite) or a
-// NaN/infinite separation. Never throws or allocates. Inline (below): the factors, then one call
-// to the kernel built for this CPU (Curve::contact_products); the rare rest out of line.
+// NaN/infinite separation. Never throws or allocates. Inline (below): one call to the kernel
+// built for this CPU, which computes the factors too (Curve::contact_products_of_surface); the
+// rare rest out of line.
 bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept;
 // The same with the factors computed once (contact_scales(surface)): a surface queried at many
 // separations saves their square root and products on every query (bench_lookup
@@ -51,17 +47,8 @@ bool contact_at(const Curve& curve, const Surface& surface, double separation, C
 bool contact_at_scales(const Curve& curve, const ContactScales& scales, double separation, ContactState& out) noexcept;
 
 namespace detail {
-// contact_scales' arithmetic (one square root: R^(1/2) sigma^(3/2) = sigma sqrt(R sigma))
 inline ContactScales contact_scales_of(const Surface& surface) noexcept {
-  const double n = surface.summit_count, radius = surface.summit_radius, scale = surface.height_scale;
-  const double modulus = surface.contact_modulus;
-  const double root = std::sqrt(radius * scale);
-  ContactScales scales;
-  scales.count = n;
-  scales.area = 3.14159265358979323846 * n * radius * scale;  // pi (M_PI is not standard C++)
-  scales.load = (4.0 / 3.0) * n * modulus * scale * root;
-  scales.stiffness = 2 * n * modulus * root;
-  return scales;
+  return contact_scales_of(surface.summit_count, surface.summit_radius, surface.height_scale, surface.contact_modulus);
 }
 // contact_at off its fast path: the surface (or the factors) and the separation checked, then
 // contact_orders and contact_state_from_logs
@@ -75,9 +62,8 @@ bool contact_at_checked(const Curve& curve, const ContactScales& scales, double 
 // load ~ stiffness sigma_s); where it fails, contact_at_checked tests the surface itself.
 inline bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
   static_assert(sizeof(ContactState) == 5 * sizeof(double), "Curve::contact_products writes the state as five doubles");
-  const ContactScales scales = detail::contact_scales_of(surface);
-  if (__builtin_expect(curve.contact_products(separation, scales.count, scales.area, scales.load, scales.stiffness,
-                                              &out.count),
+  if (__builtin_expect(curve.contact_products_of_surface(separation, surface.summit_count, surface.summit_radius,
+                                                         surface.height_scale, surface.contact_modulus, &out.count),
                        1))
     return true;
   return detail::contact_at_checked(curve, surface, separation, out);

@@ -93,6 +93,10 @@ class Curve {
   // off the grid, or for a factor outside (0, DBL_MAX].
   bool contact_products(double separation, double count_factor, double area_factor, double load_factor,
                         double stiffness_factor, double state[5]) const noexcept;
+  // The same from the surface (N, R, sigma_s, E*): the factors computed as contact_scales does,
+  // in the kernel's vector registers (contact_at's fast path)
+  bool contact_products_of_surface(double separation, double summit_count, double summit_radius,
+                                   double height_scale, double contact_modulus, double state[5]) const noexcept;
 
   // The batch path: out[i] = value / log_value(twice_order, separations[i]) for i < count,
   // vectorized for the widest instruction set this CPU has (or the one named; a set it lacks
@@ -169,6 +173,13 @@ inline bool Curve::contact_products(double separation, double count_factor, doub
                                     double stiffness_factor, double state[5]) const noexcept {
   return lookup_.contact_products(lookup_.grid, lookup_.contact_records, separation, count_factor, area_factor,
                                  load_factor, stiffness_factor, state);
+}
+
+inline bool Curve::contact_products_of_surface(double separation, double summit_count, double summit_radius,
+                                               double height_scale, double contact_modulus,
+                                               double state[5]) const noexcept {
+  return lookup_.contact_products_of_surface(lookup_.grid, lookup_.contact_records, separation, summit_count,
+                                             summit_radius, height_scale, contact_modulus, state);
 }
 
 }  // namespace asperity

@@ -95,12 +95,15 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
     data->contact_storage.assign(intervals * detail::contact_record_size + line, 0.0);
     double* records = data->contact_storage.data();
     while (reinterpret_cast<std::uintptr_t>(records) % 64 != 0) ++records;
-    for (std::size_t i = 0; i < intervals; ++i)
-      for (int j = 0; j < detail::fast_stride; ++j)
-        for (int k = 0; k < 4; ++k)
-          records[i * detail::contact_record_size + j * 4 + k] = lookup.order_coefficients[k][i * detail::fast_stride + j];
+    for (std::size_t i = 0; i < intervals; ++i) {
+      const double* const ln_orders[4] = {
+          lookup.order_coefficients[0] + i * detail::fast_stride, lookup.order_coefficients[1] + i * detail::fast_stride,
+          lookup.order_coefficients[2] + i * detail::fast_stride, lookup.order_coefficients[3] + i * detail::fast_stride};
+      detail::write_contact_record(ln_orders, records + i * detail::contact_record_size);
+    }
     lookup.contact_records = records;
     lookup.contact_products = data->kernels->contact_products;
+    lookup.contact_products_of_surface = data->kernels->contact_products_of_surface;
   }
   data->grid_error = build.achieved;
   lookup.order_mask = data->outside.order_mask();
@@ -160,8 +163,10 @@ void Curve::contact_orders(double separation, double log_out[4], double value_ou
   }
   detail::FastPosition at;
   if (lookup_.contact_records && __builtin_expect(detail::fast_position(lookup_.grid, separation, at), 1)) {
-    data_->kernels->contact4(lookup_.contact_records + at.interval * detail::contact_record_size, at.y, log_out,
+    double log2s[4];
+    data_->kernels->contact4(lookup_.contact_records + at.interval * detail::contact_record_size, at.y, log2s,
                              value_out);
+    detail::contact_logs_of(log2s, log_out);
     return;
   }
   log_values(separation, 0, 3, log_out);

@@ -46,6 +46,8 @@ struct CurveLookup {
   const CurveData* data = nullptr;
   // contact_at's fast path (Curve::contact_products); without contact records, one that says no
   ContactProducts contact_products = no_contact_products;
+  // the same from the surface (ContactInputs::surface: Curve::contact_products_of_surface)
+  ContactProducts contact_products_of_surface = no_contact_products;
   // orders 0..3 again, [interval][coefficient][order] from a 64-byte boundary (three cache lines
   // an interval): contact_orders' four quintics as one 4-lane vector. Null: not all four held,
   // or CurveOptions::contact_records off.

@@ -61,9 +61,12 @@ struct FastGrid {
 // (curve_data.hpp); false, nothing written, off the grid or for a factor outside (0, DBL_MAX].
 // The factors come in registers: a vector load of four doubles that the caller has just stored
 // one or two at a time cannot be forwarded from those stores.
+// The four doubles are the factors (count, area, load, stiffness: ContactInputs::factors) or
+// the surface they come from (N, R, sigma_s, E*: ContactInputs::surface), whose factors the
+// kernel computes as contact_scales does, in vector registers.
 using ContactProducts = bool (*)(const FastGrid& grid, const double* contact_records, double separation,
-                                 double count_factor, double area_factor, double load_factor,
-                                 double stiffness_factor, double* state) noexcept;
+                                 double first, double second, double third, double fourth, double* state) noexcept;
+enum class ContactInputs { factors, surface };
 
 // The kernel below is `static` like fast_math.hpp's functions: each instruction-set build of
 // the batch kernel (runtime/core/kernel/) keeps its own copy.

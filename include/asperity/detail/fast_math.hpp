@@ -88,15 +88,10 @@ struct ExpParts {
   std::uint64_t exponent;  // the result's biased exponent: that of scale + m (two's complement)
   std::uint64_t m;         // floor(k / 128) (two's complement; garbage where x is beyond +-2^44)
 };
-static ASPERITY_ALWAYS_INLINE ExpParts exp_parts(double x) noexcept {
-  constexpr double scaled_log2e = 184.66496523378731;          // 128 / ln 2
-  constexpr double ln2_hi = 6.93147180369123816490e-01 / 128;  // 32 significant bits: k ln2_hi exact
-  constexpr double ln2_lo = 1.90821492927058770002e-10 / 128;
-  const double shifted = x * scaled_log2e + round_shifter;
-  const double k = shifted - round_shifter;  // an integer for |x| < 2^44 (garbage beyond)
+// The parts from k in the shifted sum's bits (k = 128 m + j) and r, the rest of the reduction
+static ASPERITY_ALWAYS_INLINE ExpParts exp_parts_reduced(double shifted, double r) noexcept {
   const std::uint64_t k_bits = bits_of(shifted) - bits_of(round_shifter);  // k, two's complement
   const std::int64_t index = static_cast<std::int64_t>(k_bits & 127);     // signed: what gathers take
-  const double r = (x - k * ln2_hi) - k * ln2_lo;
   const double r2 = r * r;
   // e^r - 1 = r + r^2 (1/2 + r/6 + r^2 (1/24 + r/120)); 2^(j/128) e^r = hi + (hi (e^r - 1) + lo)
   const double expm1 = r + r2 * ((0.5 + r * (1.0 / 6)) + r2 * (1.0 / 24 + r * (1.0 / 120)));
@@ -107,6 +102,39 @@ static ASPERITY_ALWAYS_INLINE ExpParts exp_parts(double x) noexcept {
   const std::uint64_t m = ((k_bits + (std::uint64_t(1) << 20)) >> 7) - (std::uint64_t(1) << 13);
   return {scale, (scale >> 52) + m, m};
 }
+// e^x
+static ASPERITY_ALWAYS_INLINE ExpParts exp_parts(double x) noexcept {
+  constexpr double scaled_log2e = 184.66496523378731;          // 128 / ln 2
+  constexpr double ln2_hi = 6.93147180369123816490e-01 / 128;  // 32 significant bits: k ln2_hi exact
+  constexpr double ln2_lo = 1.90821492927058770002e-10 / 128;
+  const double shifted = x * scaled_log2e + round_shifter;
+  const double k = shifted - round_shifter;  // an integer for |x| < 2^44 (garbage beyond)
+  return exp_parts_reduced(shifted, (x - k * ln2_hi) - k * ln2_lo);
+}
+// 2^t: k = round(128 t); 128 t - k is exact (128 t is, and k lies within a factor 2 of it or
+// is 0), so the one rounding is r's (|r| <= ln2 / 256: below 1e-18 of the result)
+static ASPERITY_ALWAYS_INLINE ExpParts exp2_parts(double t) noexcept {
+  const double scaled = t * 128;
+  const double shifted = scaled + round_shifter;
+  const double k = shifted - round_shifter;  // an integer for |t| < 2^44 (garbage beyond)
+  return exp_parts_reduced(shifted, (scaled - k) * (0.69314718055994530942 / 128));
+}
+// The two bases, for the arithmetic shared by fast_exp and fast_exp2 (and the x86 kernels'
+// exp4, exp_x86.hpp): `lowest` and `highest` bound the range where the parts are not garbage
+// (e^-746 and 2^-1076 are below half the smallest subnormal, e^710 and 2^1025 above DBL_MAX);
+// in [surely_normal_min, surely_normal_max] the result is surely a normal double (k in
+// [-1021, 1023] for exp4's reduction to |r| <= ln2 / 2)
+struct NaturalExp {
+  static ASPERITY_ALWAYS_INLINE ExpParts parts(double x) noexcept { return exp_parts(x); }
+  static constexpr double lowest = -746.0, highest = 710.0;
+  static constexpr double surely_normal_min = -708.0, surely_normal_max = 709.0;
+};
+struct BinaryExp {
+  static ASPERITY_ALWAYS_INLINE ExpParts parts(double t) noexcept { return exp2_parts(t); }
+  static constexpr double lowest = -1076.0, highest = 1025.0;
+  static constexpr double surely_normal_min = -1021.0, surely_normal_max = 1023.0;
+};
+
 // The result in the normal range: m added to the exponent field.
 static ASPERITY_ALWAYS_INLINE std::uint64_t exp_normal(ExpParts parts) noexcept {
   return parts.scale + ((parts.exponent - (parts.scale >> 52)) << 52);
@@ -129,19 +157,17 @@ static ASPERITY_ALWAYS_INLINE double fast_exp_lanes(double x) noexcept {
   const ExpParts parts = exp_parts(x);
   const std::int64_t exponent = static_cast<std::int64_t>(parts.exponent);
   const std::uint64_t is_below = 0 - static_cast<std::uint64_t>(exponent <= 0);
-  const std::uint64_t is_zero = 0 - static_cast<std::uint64_t>(x < -746.0);
-  const std::uint64_t is_inf = (0 - static_cast<std::uint64_t>((exponent >= 2047) | (x > 710.0))) & ~is_zero;
+  const std::uint64_t is_zero = 0 - static_cast<std::uint64_t>(x < NaturalExp::lowest);
+  const std::uint64_t is_inf =
+      (0 - static_cast<std::uint64_t>((exponent >= 2047) | (x > NaturalExp::highest))) & ~is_zero;
   const std::uint64_t is_nan = 0 - static_cast<std::uint64_t>(x != x);
   const std::uint64_t finite = (exp_below_normal(parts) & is_below) | (exp_normal(parts) & ~is_below);
   const std::uint64_t result = (finite & ~(is_inf | is_zero)) | (0x7ff0000000000000ULL & is_inf);
   return double_of((result & ~is_nan) | (bits_of(x) & is_nan));
 }
 
-// Where e^x is surely a normal double (exp_x86.hpp's exp4, k in [-1021, 1023]): the test of
-// the 4-lane kernels' one-multiply-add path (exp8, the AVX-512 batch's, needs none)
-static constexpr double exp_surely_normal_min = -708.0, exp_surely_normal_max = 709.0;
-
-static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept {
+template <class Base>
+static ASPERITY_ALWAYS_INLINE double fast_exp_of(double x) noexcept {
   // Where the result is surely normal (m in [-1021, 1022], with scale in [0.99, 2.01]), 2^m is a
   // normal double made from k's bits beside the polynomial, and one exact multiplication
   // applies it: the same bits as exp_normal, without the trip through the integer registers
@@ -149,16 +175,21 @@ static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept {
   // m, which NaN, infinities and |x| beyond 2^44 (garbage m, far outside) fail too: two
   // micro-operations fewer than a test of x against two bounds, ~8% of a scalar lookup in a
   // same-binary harness (the lookups overlap in the out-of-order window, which counts them).
-  const ExpParts parts = exp_parts(x);
+  const ExpParts parts = Base::parts(x);
   if (__builtin_expect(parts.m + 1021 <= 1021 + 1022, 1)) {
     const std::uint64_t power = (parts.m + 1023) << 52;
     return double_of(parts.scale) * double_of(power);
   }
-  if (__builtin_expect(!(x >= -746.0 && x <= 710.0), 0)) return x != x ? x : x > 0 ? __builtin_inf() : 0.0;
+  if (__builtin_expect(!(x >= Base::lowest && x <= Base::highest), 0))
+    return x != x ? x : x > 0 ? __builtin_inf() : 0.0;
   const std::int64_t exponent = static_cast<std::int64_t>(parts.exponent);
   if (__builtin_expect(exponent > 0 && exponent < 2047, 1)) return double_of(exp_normal(parts));
   return exponent > 0 ? __builtin_inf() : double_of(exp_below_normal(parts));
 }
+
+static ASPERITY_ALWAYS_INLINE double fast_exp(double x) noexcept { return fast_exp_of<NaturalExp>(x); }
+// 2^t, as accurate as fast_exp (the contact records hold log2 X: runtime/core/kernel/kernels.hpp)
+static ASPERITY_ALWAYS_INLINE double fast_exp2(double t) noexcept { return fast_exp_of<BinaryExp>(t); }
 
 // ln x: x = 2^e m with m in [sqrt(1/2), sqrt(2)), ln m = f - (f^2/2 - s (f^2/2 + R(s^2)))
 // with f = m - 1, s = f / (2 + f) and fdlibm's minimax R (error below 2^-58.45).

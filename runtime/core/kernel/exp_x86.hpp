@@ -2,8 +2,9 @@
 // memory (a table lookup per lane is a gather, which costs more than the arithmetic it saves:
 // bench_lookup BM_Batch, BM_ContactOrders):
 // - exp4 (AVX2 + FMA, four lanes): x = k ln 2 + r, |r| <= ln2 / 2, e^r by a minimax
-//   polynomial of degree 11 (error 6.5e-18). Where every lane is surely normal (fast_math.hpp's
-//   exp_surely_normal_min/max), the result is 2^k + 2^k (e^r - 1) in one fused multiply-add,
+//   polynomial of degree 11 (error 6.5e-18); in base 2 too (2^x, exp4_expm1<BinaryExp>: the
+//   contact kernels, whose records hold log2 X). Where every lane is surely normal (fast_math.hpp's
+//   NaturalExp / BinaryExp ranges), the result is 2^k + 2^k (e^r - 1) in one fused multiply-add,
 //   2^k made in the exponent field. Where a lane is below that range but every lane is in
 //   [-760, 709] (the tails' X < 1e-308: 3% of bench_lookup's random queries), subnormal results
 //   are made from normal doubles (no assist; BM_BatchTail/avx2/subnormal_results 12.2 -> 10.6 us
@@ -24,6 +25,8 @@
 // within 2.3e-16 relative where the result is normal, 0.75 of the subnormal spacing below. Not
 // bit-identical to fast_exp (a table of 128 entries), which the scalar path uses.
 #pragma once
+#include <type_traits>
+
 #include "kernels.hpp"
 
 // GCC 12's AVX-512 headers initialize their placeholder operands from themselves, which
@@ -41,7 +44,8 @@ namespace asperity::detail {
 namespace {
 
 // The result's bits from scale (in [0.7, 1.5]) and m = k, every regime (fast_exp_lanes' masks,
-// with compares and blends: AVX2 has no mask registers and no 64-bit max)
+// with compares and blends: AVX2 has no mask registers and no 64-bit max), x in Base's units
+template <class Base>
 ASPERITY_ALWAYS_INLINE __m256d exp4_finish_any(__m256d x, __m256i scale, __m256i m) noexcept {
   const __m256i exponent = _mm256_add_epi64(_mm256_srli_epi64(scale, 52), m);
   const __m256i normal = _mm256_add_epi64(scale, _mm256_slli_epi64(m, 52));
@@ -52,10 +56,10 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_finish_any(__m256d x, __m256i scale, __m256i
   const __m256i below = _mm256_sub_epi64(
       _mm256_castpd_si256(_mm256_fmadd_pd(_mm256_castsi256_pd(scale), power, two_52)), _mm256_castpd_si256(two_52));
   const __m256i is_below = _mm256_cmpgt_epi64(_mm256_set1_epi64x(1), exponent);
-  const __m256i is_zero = _mm256_castpd_si256(_mm256_cmp_pd(x, _mm256_set1_pd(-746.0), _CMP_LT_OQ));
+  const __m256i is_zero = _mm256_castpd_si256(_mm256_cmp_pd(x, _mm256_set1_pd(Base::lowest), _CMP_LT_OQ));
   const __m256i is_inf = _mm256_andnot_si256(
       is_zero, _mm256_or_si256(_mm256_cmpgt_epi64(exponent, _mm256_set1_epi64x(2046)),
-                               _mm256_castpd_si256(_mm256_cmp_pd(x, _mm256_set1_pd(710.0), _CMP_GT_OQ))));
+                               _mm256_castpd_si256(_mm256_cmp_pd(x, _mm256_set1_pd(Base::highest), _CMP_GT_OQ))));
   const __m256d is_nan = _mm256_cmp_pd(x, x, _CMP_UNORD_Q);
   __m256i result = _mm256_blendv_epi8(normal, below, is_below);
   result = _mm256_blendv_epi8(result, _mm256_set1_epi64x(0x7ff0000000000000ll), is_inf);
@@ -66,20 +70,10 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_finish_any(__m256d x, __m256i scale, __m256i
 // The shifter that rounds x / ln 2 to k, plus 1023: the low bits of the sum are then k + 1023,
 // 2^k's exponent field, with no integer addition (exp4_normal)
 constexpr double exp4_shifter = round_shifter + 1023;
-// e^r - 1 by the polynomial, for e^x = e^r 2^k: returns e^r - 1 (in [-0.3, 0.5]) and the bits
-// of x / ln 2 + exp4_shifter, whose low 11 bits are k + 1023 (garbage where x is beyond
-// [-746, 710] or NaN, which exp4_finish_any masks)
-ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noexcept {
-  const __m256d shifter = _mm256_set1_pd(exp4_shifter);
-  const __m256d shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
-  const __m256d k = _mm256_sub_pd(shifted, shifter);
-  shifted_bits = _mm256_castpd_si256(shifted);
-  // ln2 in two parts, the first with 32 significant bits: k ln2_hi is exact
-  __m256d r = _mm256_fnmadd_pd(k, _mm256_set1_pd(6.93147180369123816490e-01), x);
-  r = _mm256_fnmadd_pd(k, _mm256_set1_pd(1.90821492927058770002e-10), r);
-  // e^r - 1 = r + r^2 P(r), P of degree 9, minimax on |r| <= 1.0001 ln2 / 2 (Remez in 50
-  // digits, scripts/exp_minimax.py: error 6.5e-18 with the coefficients in double; the Taylor
-  // polynomial of degree 13, 4.3e-18, took two operations more), Estrin's scheme
+// e^r - 1 = r + r^2 P(r), P of degree 9, minimax on |r| <= 1.0001 ln2 / 2 (Remez in 50
+// digits, scripts/exp_minimax.py: error 6.5e-18 with the coefficients in double; the Taylor
+// polynomial of degree 13, 4.3e-18, took two operations more), Estrin's scheme
+ASPERITY_ALWAYS_INLINE __m256d exp4_polynomial(__m256d r) noexcept {
   const __m256d r2 = _mm256_mul_pd(r, r), r4 = _mm256_mul_pd(r2, r2);
   const auto pair = [r](double c0, double c1) { return _mm256_fmadd_pd(r, _mm256_set1_pd(c1), _mm256_set1_pd(c0)); };
   const __m256d p23 = pair(0.5000000000000013, 0.166666666666667);
@@ -91,29 +85,69 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noex
   const __m256d poly = _mm256_fmadd_pd(r4, _mm256_fmadd_pd(r4, p1011, q6), q2);
   return _mm256_fmadd_pd(r2, poly, r);
 }
-// The lanes (bits 0..3) whose e^x is surely a normal double (fast_math.hpp's range); with
+// e^x = e^r 2^k (NaturalExp) or 2^x = e^r 2^k (BinaryExp): returns e^r - 1 (in [-0.3, 0.5])
+// and the bits of k + exp4_shifter, whose low 11 bits are k + 1023 (garbage where x is beyond
+// Base's [lowest, highest] or NaN, which exp4_finish_any masks).
+// - e^x: k = round(x / ln 2), r = x - k ln 2 with ln 2 in two parts, the first with 32
+//   significant bits (k ln2_hi is exact): a multiply-add, a subtraction and two multiply-adds;
+// - 2^x: k = round(x), x - k exact (Sterbenz), r = (x - k) ln 2 rounded once (|r| <= ln2 / 2:
+//   at most 2.8e-17 from the exact r, within exp4's 2.3e-16): an addition, two subtractions and
+//   a multiplication, 3 cycles shorter on the lookup's chain (contact records hold log2 X)
+template <class Base = NaturalExp>
+ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noexcept {
+  const __m256d shifter = _mm256_set1_pd(exp4_shifter);
+  if constexpr (std::is_same_v<Base, BinaryExp>) {
+    const __m256d shifted = _mm256_add_pd(x, shifter);
+    shifted_bits = _mm256_castpd_si256(shifted);
+    const __m256d fraction = _mm256_sub_pd(x, _mm256_sub_pd(shifted, shifter));
+    return exp4_polynomial(_mm256_mul_pd(fraction, _mm256_set1_pd(0.69314718055994530942)));
+  } else {
+    const __m256d shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
+    const __m256d k = _mm256_sub_pd(shifted, shifter);
+    shifted_bits = _mm256_castpd_si256(shifted);
+    __m256d r = _mm256_fnmadd_pd(k, _mm256_set1_pd(6.93147180369123816490e-01), x);
+    r = _mm256_fnmadd_pd(k, _mm256_set1_pd(1.90821492927058770002e-10), r);
+    return exp4_polynomial(r);
+  }
+}
+// The lanes (bits 0..3) whose result is surely a normal double (Base's range); with
 // AVX-512 in mask registers (two compares, no movemask)
+template <class Base = NaturalExp>
 ASPERITY_ALWAYS_INLINE int exp4_surely_normal_lanes(__m256d x) noexcept {
 #if defined(__AVX512VL__)
-  return _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ), x,
-                                 _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ);
+  return _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(x, _mm256_set1_pd(Base::surely_normal_min), _CMP_GE_OQ), x,
+                                 _mm256_set1_pd(Base::surely_normal_max), _CMP_LE_OQ);
 #else
-  return _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_min), _CMP_GE_OQ),
-                                          _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
+  return _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x, _mm256_set1_pd(Base::surely_normal_min), _CMP_GE_OQ),
+                                          _mm256_cmp_pd(x, _mm256_set1_pd(Base::surely_normal_max), _CMP_LE_OQ)));
 #endif
 }
-ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept { return exp4_surely_normal_lanes(x) == 0xf; }
-// e^r 2^k = 2^k + 2^k (e^r - 1) where e^x is surely normal (x in [-708, 709]: k in [-1021, 1023]): 2^k made
+template <class Base = NaturalExp>
+ASPERITY_ALWAYS_INLINE bool exp4_surely_normal(__m256d x) noexcept {
+  return exp4_surely_normal_lanes<Base>(x) == 0xf;
+}
+// e^r 2^k = 2^k + 2^k (e^r - 1) where the result is surely normal (k in [-1021, 1023]): 2^k made
 // in the exponent field, one fused multiply-add, one rounding (a multiplication and an addition
 // after the polynomial were one operation and ~2 cycles more on every lookup's chain)
 ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i shifted_bits) noexcept {
   const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(shifted_bits, 52));
   return _mm256_fmadd_pd(expm1, power, power);
 }
-// every regime, from exp4_expm1's results
+// every regime, from exp4_expm1's results. With AVX-512, where every lane's k is exact (|x|
+// within 2^50 of 0 in base 2), vscalefpd applies 2^k: it rounds a subnormal result once and
+// gives 0 and inf beyond the range, the same bits as the masks, in two operations for ~25 (the
+// contact kernels' slow path, the deep tails: bench_lookup BM_ContactAllFour 9.3 -> 9.0 ns, Zen 5)
+template <class Base = NaturalExp>
 ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i shifted_bits) noexcept {
+  const __m256d scale = _mm256_add_pd(_mm256_set1_pd(1.0), expm1);
+#if defined(__AVX512VL__)
+  constexpr double exact_k_limit = std::is_same_v<Base, BinaryExp> ? 1125899906842624.0 : 780437709606912.0;  // 2^50, 2^50 ln 2
+  const __m256d magnitude = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
+  if (__builtin_expect(_mm256_cmp_pd_mask(magnitude, _mm256_set1_pd(exact_k_limit), _CMP_LE_OQ) == 0xf, 1))
+    return _mm256_scalef_pd(scale, _mm256_sub_pd(_mm256_castsi256_pd(shifted_bits), _mm256_set1_pd(exp4_shifter)));
+#endif
   const __m256i k_bits = _mm256_sub_epi64(shifted_bits, _mm256_castpd_si256(_mm256_set1_pd(exp4_shifter)));
-  return exp4_finish_any(x, _mm256_castpd_si256(_mm256_add_pd(_mm256_set1_pd(1.0), expm1)), k_bits);
+  return exp4_finish_any<Base>(x, _mm256_castpd_si256(scale), k_bits);
 }
 // e^x for x in [-760, 709], every lane: where e^x < DBL_MIN (x below ln DBL_MIN), the result's
 // bits as an integer, e^x 2^1074 rounded once, by adding 2^52 to it (a normal double: no
@@ -133,7 +167,7 @@ ASPERITY_ALWAYS_INLINE __m256d exp4(__m256d x) noexcept {
   if (__builtin_expect(exp4_surely_normal(x), 1)) return exp4_normal(expm1, shifted_bits);
   // the tails' X below DBL_MIN (the batch's usual slow lanes) without fast_exp_lanes' masks
   const int down_to_subnormal = _mm256_movemask_pd(_mm256_and_pd(
-      _mm256_cmp_pd(x, _mm256_set1_pd(-760.0), _CMP_GE_OQ), _mm256_cmp_pd(x, _mm256_set1_pd(exp_surely_normal_max), _CMP_LE_OQ)));
+      _mm256_cmp_pd(x, _mm256_set1_pd(-760.0), _CMP_GE_OQ), _mm256_cmp_pd(x, _mm256_set1_pd(NaturalExp::surely_normal_max), _CMP_LE_OQ)));
   if (down_to_subnormal == 0xf) return exp4_down_to_subnormal(x, expm1, shifted_bits);
   return exp4_any(x, expm1, shifted_bits);
 }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "asperity/contact_scales.hpp"
 #include "asperity/detail/contact_ratio.hpp"
 #include "asperity/detail/curve_data.hpp"
 #include "asperity/detail/fast_grid.hpp"
@@ -18,19 +19,45 @@ namespace asperity::detail {
 
 inline constexpr int batch_block = 256;
 
+// The contact records (curve_data.hpp's CurveLookup::contact_records): per interval, six rows
+// (the coefficient of y^j, j = 0..5) of four lanes, log2 X of orders 0, 1/2, 1, 3/2, from a
+// 64-byte boundary (three cache lines). In base 2 the exp's reduction is an addition and two
+// exact subtractions instead of a multiply-add and two more for ln 2 in two parts: 3 cycles
+// off the lookup's chain (bench_lookup, Zen 5, alternated builds: BM_ContactAllFourScales
+// 8.60 -> 8.37 ns, BM_ContactAllFour 9.34 -> 9.14). Each coefficient is the grid's ln X one
+// times log2 e, rounded once from long double: ~1e-16 |ln X| more rounding than the grid's own
+// quintic in double (against its exact value, test_kernels ContactRecordsAgainstTheExactQuintic:
+// 3.1e-16 (1 + |ln X|) at most, 2.2e-16 for the ln X quintic).
 inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
+inline constexpr double ln_2 = 0.69314718055994530942;
+
+// One interval's record from the grid's ln X coefficients of orders 0, 1/2, 1, 3/2
+// (twice_order k: ln_orders[k] points at the interval's fast_stride coefficients)
+inline void write_contact_record(const double* const ln_orders[4], double* record) noexcept {
+  constexpr long double log2_e = 1.44269504088896340735992468100189214L;
+  for (int j = 0; j < fast_stride; ++j)
+    for (int k = 0; k < 4; ++k) record[4 * j + k] = static_cast<double>(log2_e * ln_orders[k][j]);
+}
+
+// contact_orders' ln X from the records' log2 X (Curve::contact_orders and the kernels' slow
+// path, whose ratio is contact_ratio's from these logs): ln 2 rounded to double, the product once
+static ASPERITY_ALWAYS_INLINE void contact_logs_of(const double log2s[4], double logs[4]) noexcept {
+  for (int k = 0; k < 4; ++k) logs[k] = ln_2 * log2s[k];
+}
 
 struct Kernels {
   // Curve::value (curve_data.hpp's ScalarValue), with fused multiply-adds where the set has them
   ScalarValue value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
-  // one interval's contact record (curve_data.hpp): logs[k] and values[k] = e^logs[k] (fast_exp
-  // in the baseline build; on x86 one 4-lane vector, contact4_x86.hpp).
-  void (*contact4)(const double* record, double y, double* logs, double* values) noexcept;
+  // one interval's contact record: log2s[k] = log2 X and values[k] = 2^log2s[k] (fast_exp2 in
+  // the baseline build; on x86 one 4-lane vector, contact4_x86.hpp).
+  void (*contact4)(const double* record, double y, double* log2s, double* values) noexcept;
   // Curve::contact_products (fast_grid.hpp's ContactProducts): contact4's exps, multiplied where
   // they are (contact4, then the products from its values in memory: 2.2x one order, bench_lookup
-  // BM_ContactAllFour).
+  // BM_ContactAllFour), from the factors (ContactInputs::factors) or from the surface
+  // (contact_products_of_surface, ContactInputs::surface).
   ContactProducts contact_products;
+  ContactProducts contact_products_of_surface;
   // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
   // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.
   int (*block)(const FastGrid& grid, const double* order_coefficients, const double* separations, double* out,
@@ -47,45 +74,49 @@ namespace {
 // against BM_FastExpLanes)
 struct ScalarMath {
   static ASPERITY_ALWAYS_INLINE double exp(double x) noexcept { return fast_exp(x); }
+  static ASPERITY_ALWAYS_INLINE double exp2(double t) noexcept { return fast_exp2(t); }
 };
 
 template <class Math>
-void contact4(const double* __restrict record, double y, double* __restrict logs, double* __restrict values) noexcept {
+void contact4(const double* __restrict record, double y, double* __restrict log2s, double* __restrict values) noexcept {
   const double y2 = y * y;
   for (int k = 0; k < 4; ++k) {  // the quintic of fast_quintic, four orders a lane
     const double low = record[k] + y * record[4 + k];
     const double middle = record[8 + k] + y * record[12 + k];
     const double high = record[16 + k] + y * record[20 + k];
-    const double log_value = low + y2 * (middle + y2 * high);
-    logs[k] = log_value;
-    values[k] = Math::exp(log_value);
+    const double log2_value = low + y2 * (middle + y2 * high);
+    log2s[k] = log2_value;
+    values[k] = Math::exp2(log2_value);
   }
 }
 
-// ContactProducts' state from the four orders' logs and values (order 0, 1/2, 1, 3/2), where
+// ContactProducts' state from the four orders' log2 X and values (order 0, 1/2, 1, 3/2), where
 // the kernels do not take their vector path
-ASPERITY_ALWAYS_INLINE void contact_state(const double logs[4], const double values[4], double count_factor,
+ASPERITY_ALWAYS_INLINE void contact_state(const double log2s[4], const double values[4], double count_factor,
                                           double area_factor, double load_factor, double stiffness_factor,
                                           double* __restrict state) noexcept {
   state[0] = count_factor * values[0];
   state[1] = area_factor * values[2];
   state[2] = load_factor * values[3];
   state[3] = stiffness_factor * values[1];
+  double logs[4];
+  contact_logs_of(log2s, logs);
   state[4] = contact_ratio(logs, values);
 }
 
-template <class Math>
+template <class Math, ContactInputs inputs>
 bool contact_products(const FastGrid& grid, const double* __restrict contact_records, double separation,
-                      double count_factor, double area_factor, double load_factor, double stiffness_factor,
-                      double* __restrict state) noexcept {
-  const double factors[4] = {count_factor, area_factor, load_factor, stiffness_factor};
+                      double first, double second, double third, double fourth, double* __restrict state) noexcept {
+  ContactScales scales{first, second, third, fourth};
+  if (inputs == ContactInputs::surface) scales = contact_scales_of(first, second, third, fourth);
+  const double factors[4] = {scales.count, scales.area, scales.load, scales.stiffness};
   for (int k = 0; k < 4; ++k)
     if (!(factors[k] > 0 && factors[k] <= std::numeric_limits<double>::max())) return false;
   FastPosition at;
   if (__builtin_expect(!fast_position(grid, separation, at), 0)) return false;
-  double logs[4], values[4];
-  contact4<Math>(contact_records + at.interval * contact_record_size, at.y, logs, values);
-  contact_state(logs, values, count_factor, area_factor, load_factor, stiffness_factor, state);
+  double log2s[4], values[4];
+  contact4<Math>(contact_records + at.interval * contact_record_size, at.y, log2s, values);
+  contact_state(log2s, values, factors[0], factors[1], factors[2], factors[3], state);
   return true;
 }
 

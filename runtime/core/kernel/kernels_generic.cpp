@@ -5,5 +5,11 @@
 #include "kernels.hpp"
 
 namespace asperity::detail {
-const Kernels generic_kernels{scalar_value<ScalarMath>, contact4<ScalarMath>, contact_products<ScalarMath>, block<ScalarPasses>, ScalarPasses::exps};
+const Kernels generic_kernels{
+    scalar_value<ScalarMath>,
+    contact4<ScalarMath>,
+    contact_products<ScalarMath, ContactInputs::factors>,
+    contact_products<ScalarMath, ContactInputs::surface>,
+    block<ScalarPasses>,
+    ScalarPasses::exps};
 }

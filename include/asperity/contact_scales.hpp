@@ -1,0 +1,33 @@
+// The factors of MODEL.md section 3 (quantity = factor * X_n), defined once: contact_scales
+// (contact.hpp) and the contact kernels (runtime/core/kernel/), whose x86 build computes them
+// in vector registers in the same order of operations (the same bits: test_kernels,
+// test_contact).
+#pragma once
+#include <cmath>
+
+namespace asperity {
+
+struct ContactScales {
+  double count = 0;      // N
+  double area = 0;       // pi N R sigma_s
+  double load = 0;       // (4/3) N E* R^1/2 sigma_s^3/2
+  double stiffness = 0;  // 2 N E* R^1/2 sigma_s^1/2
+};
+
+namespace detail {
+inline constexpr double contact_pi = 3.14159265358979323846;  // M_PI is POSIX, not C++
+
+// One square root (R^(1/2) sigma^(3/2) = sigma sqrt(R sigma)), grouped as (N, pi N, (4/3) N, 2 N)
+// times (1, R sigma, sigma E* sqrt(R sigma), E* sqrt(R sigma)): one vector product in the kernels
+inline ContactScales contact_scales_of(double n, double radius, double scale, double modulus) noexcept {
+  const double product = radius * scale, modulus_root = modulus * std::sqrt(product);
+  ContactScales scales;
+  scales.count = n;
+  scales.area = (contact_pi * n) * product;
+  scales.load = ((4.0 / 3.0) * n) * (scale * modulus_root);
+  scales.stiffness = (2 * n) * modulus_root;
+  return scales;
+}
+}  // namespace detail
+
+}  // namespace asperity
