@@ -92,9 +92,8 @@ TEST(Contact, NonPhysicalInputIsRejectedByValue) {
 
 // contact_at's kernel (the products where the exps are, Curve::contact_products) against
 // contact_orders' values and the model from the same curve's logs in long double: every kind,
-// the whole range and off it,
-// densely where an order's exp leaves the surely-normal range (ln X = -708) and underflows
-// (-745), where the kernel's products and ratio change method.
+// the whole range and off it, densely where an order's exp leaves the surely-normal range
+// (log2 X = -1021) and underflows (-1075), where the kernel's products and ratio change method.
 TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
   struct Kind {
     Distribution distribution;
@@ -125,9 +124,12 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
       }
     separations.push_back(0.0);
     separations.push_back(-0.0);
-    // where ln X of each order crosses -708 and -745 (bisection on log_value), and around it
+    // where ln X of each order crosses the kernels' edges (bisection on log_value), and around
+    // them: the surely-normal range's lower end in base 2 (log2 X = -1021) and in base e (-708),
+    // DBL_MIN (log2 X = -1022), the smallest subnormal (-1074) and half of it (-1075)
+    const double ln2 = std::log(2.0);
     for (int order = 0; order < 4; ++order)
-      for (double level : {-708.0, -745.0}) {
+      for (double level : {-1021 * ln2, -708.0, -1022 * ln2, -1074 * ln2, -1075 * ln2}) {
         double a = lo, b = hi;
         if (!(curve.log_value(order, a) > level && curve.log_value(order, b) < level)) continue;
         for (int step = 0; step < 200 && b - a > 0; ++step) {
@@ -209,11 +211,12 @@ TEST(Contact, WithoutContactRecordsTheSameQuantities) {
         EXPECT_TRUE(std::isnan(pair[0])) << s;
         continue;
       }
-      // test_curve's bounds: the records' logs within 1e-15 (1 + |ln X|) of log_value's (they
-      // are log2 X, a quintic rounded apart: measured 4.3e-16), the exps within 2.3e-16 each;
-      // the ratio has two of each; below DBL_MIN, one subnormal spacing per product
+      // the records' logs within 4.3e-16 (1 + |ln X|) of log_value's (measured in test_curve:
+      // they are log2 X, a quintic rounded apart), the exps within 2.3e-16 and the products
+      // rounded, each; the ratio has two of each; 1e-300 absolute for the quantities that are
+      // themselves below DBL_MIN (their spacing is absolute there)
       const double terms = k == 4 ? 2 : 1;
-      const double relative = terms * (4.6e-16 + 1e-15) + 1e-15 * abs_logs[k];
+      const double relative = terms * (5e-16 + 4.6e-16) + 5e-16 * abs_logs[k];
       EXPECT_LE(std::fabs(pair[0] - pair[1]), relative * std::fabs(pair[1]) + 1e-300)
           << s << " quantity " << k << " |ln X| " << abs_logs[k];
     }

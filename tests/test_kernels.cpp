@@ -54,6 +54,11 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExp2OnEverySet) {
       levels.push_back(above = std::nextafter(above, inf));
     }
   }
+  // beyond every range, where the AVX-512 build leaves vscalefpd for the masks (|t| > 2^50),
+  // and the special values: the same bits on both x86 sets
+  for (double special : {0x1p+50, -0x1p+50, std::nextafter(0x1p+50, inf), -std::nextafter(0x1p+50, inf), 1e300,
+                         -1e300, inf, -inf, std::numeric_limits<double>::quiet_NaN()})
+    levels.push_back(special);
   int sets = 0;
   std::vector<double> first_x86;  // the AVX2 build's values, to compare the AVX-512 build's with
   for (InstructionSet isa : {InstructionSet::generic, InstructionSet::avx2, InstructionSet::avx512}) {
@@ -82,6 +87,12 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExp2OnEverySet) {
       }
       for (int k = 0; k < 4; ++k) {
         const double expected = quintic(record.coefficients, k, y);
+        if (std::isnan(expected) || std::isnan(log2s[k])) {
+          // a NaN constant term, or infinite ones: NaN in, NaN out (log2 X and X)
+          EXPECT_TRUE(std::isnan(log2s[k]) && std::isnan(values[k])) << to_string(isa) << " lane " << k;
+          ++checked;
+          continue;
+        }
         if (std::isinf(expected)) {
           EXPECT_EQ(log2s[k], expected);
         } else {

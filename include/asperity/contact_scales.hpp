@@ -15,17 +15,18 @@ struct ContactScales {
 };
 
 namespace detail {
-inline constexpr double contact_pi = 3.14159265358979323846;  // M_PI is POSIX, not C++
+// The numbers in the factors: count, area (pi; M_PI is POSIX, not C++), load, stiffness
+inline constexpr double contact_multipliers[4] = {1.0, 3.14159265358979323846, 4.0 / 3.0, 2.0};
 
-// One square root (R^(1/2) sigma^(3/2) = sigma sqrt(R sigma)), grouped as (N, pi N, (4/3) N, 2 N)
+// One square root (R^(1/2) sigma^(3/2) = sigma sqrt(R sigma)), grouped as (1, pi, 4/3, 2) N
 // times (1, R sigma, sigma E* sqrt(R sigma), E* sqrt(R sigma)): one vector product in the kernels
 inline ContactScales contact_scales_of(double n, double radius, double scale, double modulus) noexcept {
   const double product = radius * scale, modulus_root = modulus * std::sqrt(product);
   ContactScales scales;
-  scales.count = n;
-  scales.area = (contact_pi * n) * product;
-  scales.load = ((4.0 / 3.0) * n) * (scale * modulus_root);
-  scales.stiffness = (2 * n) * modulus_root;
+  scales.count = contact_multipliers[0] * n;
+  scales.area = (contact_multipliers[1] * n) * product;
+  scales.load = (contact_multipliers[2] * n) * (scale * modulus_root);
+  scales.stiffness = (contact_multipliers[3] * n) * modulus_root;
   return scales;
 }
 }  // namespace detail

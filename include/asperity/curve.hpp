@@ -83,14 +83,15 @@ class Curve {
   void log_values(double separation, int first_twice_order, int last_twice_order, double* out) const noexcept;
   // Orders 0, 1/2, 1, 3/2 (count, stiffness, area, load: what contact_at needs), logs and
   // values, from one position and (with CurveOptions::contact_records) one 4-lane vector: the
-  // logs are log_value's to the rounding of fused multiply-adds (measured within
-  // 1.7e-16 (1 + |ln X|), tested to 1e-15), the same bits without the records.
+  // records hold log2 X (each of the grid's coefficients times log2 e, rounded once), the
+  // values are 2 to them and the logs ln 2 times them, log_value's to ~1e-16 |ln X| (measured
+  // within 4.3e-16 (1 + |ln X|), tested to 1e-15); without the records, log_value's bits.
   void contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept;
   // contact_at's arithmetic (contact.hpp) in one kernel call: state[0..3] = the factors times X_n
   // for n = 0, 1, 3/2, 1/2 and state[4] = 1.5 X_1/2 / X_3/2 (detail/contact_ratio.hpp's rule),
-  // from contact_orders' exps where all four are surely normal (the same bits), from the vector
-  // exp's masks elsewhere (docs/accuracy.md); false, nothing written, without contact records,
-  // off the grid, or for a factor outside (0, DBL_MAX].
+  // the factors times contact_orders' values (the same exps, the same bits, in every regime;
+  // docs/accuracy.md); false, nothing written, without contact records, off the grid, or for a
+  // factor outside (0, DBL_MAX].
   bool contact_products(double separation, double count_factor, double area_factor, double load_factor,
                         double stiffness_factor, double state[5]) const noexcept;
   // The same from the surface (N, R, sigma_s, E*): the factors computed as contact_scales does,

@@ -48,9 +48,9 @@ struct CurveLookup {
   ContactProducts contact_products = no_contact_products;
   // the same from the surface (ContactInputs::surface: Curve::contact_products_of_surface)
   ContactProducts contact_products_of_surface = no_contact_products;
-  // orders 0..3 again, [interval][coefficient][order] from a 64-byte boundary (three cache lines
-  // an interval): contact_orders' four quintics as one 4-lane vector. Null: not all four held,
-  // or CurveOptions::contact_records off.
+  // log2 X of orders 0..3, [interval][coefficient][order] from a 64-byte boundary (three cache
+  // lines an interval: runtime/core/kernel/kernels.hpp): contact_orders' four quintics as one
+  // 4-lane vector. Null: not all four held, or CurveOptions::contact_records off.
   const double* contact_records = nullptr;
 };
 

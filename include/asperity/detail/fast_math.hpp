@@ -43,6 +43,7 @@ static ASPERITY_ALWAYS_INLINE double double_of(std::uint64_t bits) noexcept {
 // 1.5 * 2^52: adding it rounds a double of magnitude < 2^51 to an integer, which then sits
 // in the low bits of the pattern.
 static constexpr double round_shifter = 6755399441055744.0;
+static constexpr double ln_2 = 0.69314718055994530942;  // rounded to double (3.4e-17 relative)
 
 // 2^(j/N), j = 0..N-1, as a double and the rest (hi + lo carries ~64 bits), computed at
 // compile time by the Taylor series of e^(j ln2 / N) in long double (N = 128 here; the x86
@@ -117,23 +118,29 @@ static ASPERITY_ALWAYS_INLINE ExpParts exp2_parts(double t) noexcept {
   const double scaled = t * 128;
   const double shifted = scaled + round_shifter;
   const double k = shifted - round_shifter;  // an integer for |t| < 2^44 (garbage beyond)
-  return exp_parts_reduced(shifted, (scaled - k) * (0.69314718055994530942 / 128));
+  return exp_parts_reduced(shifted, (scaled - k) * (ln_2 / 128));
 }
 // The two bases, for the arithmetic shared by fast_exp and fast_exp2 (and the x86 kernels'
 // exp4, exp_x86.hpp): `lowest` and `highest` bound the range where the parts are not garbage
 // (e^-746 and 2^-1076 are below half the smallest subnormal, e^710 and 2^1025 above DBL_MAX);
 // in [surely_normal_min, surely_normal_max] the result is surely a normal double (k in
-// [-1021, 1023] for exp4's reduction to |r| <= ln2 / 2)
+// [-1021, 1023] for exp4's reduction to |r| <= ln2 / 2); within exact_k_max of 0 exp4's k is
+// exactly round(x / ln 2) (|k| <= 2^50). In an unnamed namespace, as the functions here are
+// static: each instruction set's build keeps its own copy.
+namespace {
 struct NaturalExp {
   static ASPERITY_ALWAYS_INLINE ExpParts parts(double x) noexcept { return exp_parts(x); }
   static constexpr double lowest = -746.0, highest = 710.0;
   static constexpr double surely_normal_min = -708.0, surely_normal_max = 709.0;
+  static constexpr double exact_k_max = 0x1.62e42fefa39efp+49;  // 2^50 ln 2
 };
 struct BinaryExp {
   static ASPERITY_ALWAYS_INLINE ExpParts parts(double t) noexcept { return exp2_parts(t); }
   static constexpr double lowest = -1076.0, highest = 1025.0;
   static constexpr double surely_normal_min = -1021.0, surely_normal_max = 1023.0;
+  static constexpr double exact_k_max = 0x1p+50;
 };
+}  // namespace
 
 // The result in the normal range: m added to the exponent field.
 static ASPERITY_ALWAYS_INLINE std::uint64_t exp_normal(ExpParts parts) noexcept {

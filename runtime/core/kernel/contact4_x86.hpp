@@ -38,16 +38,16 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
 }
 
 // contact_scales_of's factors (contact_scales.hpp) as one vector, in the same order of
-// operations (the same bits, test_kernels): (N, pi N, (4/3) N, 2 N) times (1, R sigma, sigma
-// E* sqrt(R sigma), E* sqrt(R sigma)), a square root and five operations besides the vector's
-// assembly, instead of eleven scalar ones in the caller, with std::sqrt's errno test (bench_lookup
-// BM_ContactAllFour 10.1 -> 9.3 ns, Zen 5; BM_ContactAllFourScales unchanged)
+// operations (the same bits, test_kernels): (1, pi, 4/3, 2) N times (1, R sigma, sigma E*
+// sqrt(R sigma), E* sqrt(R sigma)): a square root, three scalar products and two vector ones
+// besides the vector's assembly, where the caller made eleven scalar operations and std::sqrt's
+// errno test (bench_lookup BM_ContactAllFour 10.1 -> 9.3 ns with this alone, Zen 5, alternated
+// builds; BM_ContactAllFourScales unchanged)
 ASPERITY_ALWAYS_INLINE __m256d surface_factors_x86(double n, double radius, double scale, double modulus) noexcept {
   const double product = radius * scale;
-  const double root = _mm_cvtsd_f64(_mm_sqrt_sd(_mm_set_sd(product), _mm_set_sd(product)));
-  const double stiff = modulus * root;
-  const __m256d first = _mm256_mul_pd(_mm256_set1_pd(n), _mm256_set_pd(2.0, 4.0 / 3.0, contact_pi, 1.0));
-  return _mm256_mul_pd(first, _mm256_set_pd(stiff, scale * stiff, product, 1.0));
+  const double modulus_root = modulus * _mm_cvtsd_f64(_mm_sqrt_sd(_mm_set_sd(product), _mm_set_sd(product)));
+  const __m256d numbers = _mm256_mul_pd(_mm256_loadu_pd(contact_multipliers), _mm256_set1_pd(n));
+  return _mm256_mul_pd(numbers, _mm256_set_pd(modulus_root, scale * modulus_root, product, 1.0));
 }
 
 // fast_grid.hpp's ContactProducts: the position, then contact4_x86's exps, the lanes (0, 1/2, 1,

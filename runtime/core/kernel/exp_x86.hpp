@@ -8,8 +8,8 @@
 //   2^k made in the exponent field. Where a lane is below that range but every lane is in
 //   [-760, 709] (the tails' X < 1e-308: 3% of bench_lookup's random queries), subnormal results
 //   are made from normal doubles (no assist; BM_BatchTail/avx2/subnormal_results 12.2 -> 10.6 us
-//   a block of 4096 against fast_exp_lanes' masks); otherwise the lanes go through
-//   fast_exp_lanes' masks: 0 below -746, inf above 710, NaN kept.
+//   a block of 4096 against fast_exp_lanes' masks); otherwise exp4_any: fast_exp_lanes' masks
+//   (0 below -746, inf above 710, NaN kept), or in the AVX-512 build vscalefpd where k is exact.
 // - exp8 (AVX-512, eight lanes): x = (m + j/16) ln2 + r, |r| <= ln2 / 32, 2^(j/16) from a
 //   16-entry table held in four registers (vpermt2pd), e^r by a minimax polynomial of degree 6
 //   (error 1.2e-17), 2^m applied by vscalefpd, which rounds subnormal results once and gives 0
@@ -21,9 +21,11 @@
 // The coefficients: scripts/exp_minimax.py (Remez in 50 digits, the errors with the
 // coefficients rounded to double); each polynomial is one or two operations shorter than the
 // Taylor one of the same accuracy, on a path bound by its vector operations.
-// Accuracy (tests/test_kernels.cpp, against a long double exp over [-760, 720] and each edge):
-// within 2.3e-16 relative where the result is normal, 0.75 of the subnormal spacing below. Not
-// bit-identical to fast_exp (a table of 128 entries), which the scalar path uses.
+// Accuracy (tests/test_kernels.cpp, against a long double exp over [-760, 720] and each edge,
+// and exp2 over [-1100, 1040]): within 2.3e-16 relative where the result is normal (measured
+// 1.5e-16 exp4, 1.2e-16 exp8, 1.9e-16 exp4 in base 2), 0.75 of the subnormal spacing below.
+// Subnormal results assume the default MXCSR (vscalefpd flushes them to 0 under flush-to-zero).
+// Not bit-identical to fast_exp (a table of 128 entries), which the scalar path uses.
 #pragma once
 #include <type_traits>
 
@@ -90,9 +92,10 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_polynomial(__m256d r) noexcept {
 // Base's [lowest, highest] or NaN, which exp4_finish_any masks).
 // - e^x: k = round(x / ln 2), r = x - k ln 2 with ln 2 in two parts, the first with 32
 //   significant bits (k ln2_hi is exact): a multiply-add, a subtraction and two multiply-adds;
-// - 2^x: k = round(x), x - k exact (Sterbenz), r = (x - k) ln 2 rounded once (|r| <= ln2 / 2:
-//   at most 2.8e-17 from the exact r, within exp4's 2.3e-16): an addition, two subtractions and
-//   a multiplication, 3 cycles shorter on the lookup's chain (contact records hold log2 X)
+// - 2^x: k = round(x), x - k exact (Sterbenz), r = (x - k) ln 2 with ln 2 and the product
+//   rounded (|r| <= ln2 / 2: at most 4e-17 from the exact r, within exp4's 2.3e-16): an
+//   addition, two subtractions and a multiplication, 3 cycles shorter on the lookup's chain
+//   (the contact records hold log2 X)
 template <class Base = NaturalExp>
 ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noexcept {
   const __m256d shifter = _mm256_set1_pd(exp4_shifter);
@@ -100,7 +103,7 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_expm1(__m256d x, __m256i& shifted_bits) noex
     const __m256d shifted = _mm256_add_pd(x, shifter);
     shifted_bits = _mm256_castpd_si256(shifted);
     const __m256d fraction = _mm256_sub_pd(x, _mm256_sub_pd(shifted, shifter));
-    return exp4_polynomial(_mm256_mul_pd(fraction, _mm256_set1_pd(0.69314718055994530942)));
+    return exp4_polynomial(_mm256_mul_pd(fraction, _mm256_set1_pd(ln_2)));
   } else {
     const __m256d shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(1.4426950408889634), shifter);  // 1 / ln 2
     const __m256d k = _mm256_sub_pd(shifted, shifter);
@@ -133,17 +136,18 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i shifted_bits) 
   const __m256d power = _mm256_castsi256_pd(_mm256_slli_epi64(shifted_bits, 52));
   return _mm256_fmadd_pd(expm1, power, power);
 }
-// every regime, from exp4_expm1's results. With AVX-512, where every lane's k is exact (|x|
-// within 2^50 of 0 in base 2), vscalefpd applies 2^k: it rounds a subnormal result once and
-// gives 0 and inf beyond the range, the same bits as the masks, in two operations for ~25 (the
-// contact kernels' slow path, the deep tails: bench_lookup BM_ContactAllFour 9.3 -> 9.0 ns, Zen 5)
+// every regime, from exp4_expm1's results. With AVX-512, where every lane's k is exact (|x| <=
+// Base::exact_k_max), vscalefpd applies 2^k: it rounds a subnormal result once and gives 0 and
+// inf beyond the range, the same bits as the masks (with the default MXCSR: under
+// flush-to-zero it gives 0 for a subnormal result, as exp8 does), in two operations for ~25
+// (the contact kernels' slow path, the deep tails: bench_lookup BM_ContactAllFour 9.3 -> 9.0 ns
+// with this alone, Zen 5, alternated builds)
 template <class Base = NaturalExp>
 ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i shifted_bits) noexcept {
   const __m256d scale = _mm256_add_pd(_mm256_set1_pd(1.0), expm1);
 #if defined(__AVX512VL__)
-  constexpr double exact_k_limit = std::is_same_v<Base, BinaryExp> ? 1125899906842624.0 : 780437709606912.0;  // 2^50, 2^50 ln 2
   const __m256d magnitude = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
-  if (__builtin_expect(_mm256_cmp_pd_mask(magnitude, _mm256_set1_pd(exact_k_limit), _CMP_LE_OQ) == 0xf, 1))
+  if (__builtin_expect(_mm256_cmp_pd_mask(magnitude, _mm256_set1_pd(Base::exact_k_max), _CMP_LE_OQ) == 0xf, 1))
     return _mm256_scalef_pd(scale, _mm256_sub_pd(_mm256_castsi256_pd(shifted_bits), _mm256_set1_pd(exp4_shifter)));
 #endif
   const __m256i k_bits = _mm256_sub_epi64(shifted_bits, _mm256_castpd_si256(_mm256_set1_pd(exp4_shifter)));

@@ -21,15 +21,15 @@ inline constexpr int batch_block = 256;
 
 // The contact records (curve_data.hpp's CurveLookup::contact_records): per interval, six rows
 // (the coefficient of y^j, j = 0..5) of four lanes, log2 X of orders 0, 1/2, 1, 3/2, from a
-// 64-byte boundary (three cache lines). In base 2 the exp's reduction is an addition and two
-// exact subtractions instead of a multiply-add and two more for ln 2 in two parts: 3 cycles
-// off the lookup's chain (bench_lookup, Zen 5, alternated builds: BM_ContactAllFourScales
-// 8.60 -> 8.37 ns, BM_ContactAllFour 9.34 -> 9.14). Each coefficient is the grid's ln X one
+// 64-byte boundary (three cache lines). In base 2 the exp's reduction is an addition, two
+// exact subtractions and a product by ln 2, instead of a multiply-add, a subtraction and two
+// multiply-adds for ln 2 in two parts: 3 cycles off the lookup's chain (bench_lookup, Zen 5,
+// alternated builds, this alone: BM_ContactAllFourScales 8.60 -> 8.37 ns, BM_ContactAllFour
+// 9.34 -> 9.14). Each coefficient is the grid's ln X one
 // times log2 e, rounded once from long double: ~1e-16 |ln X| more rounding than the grid's own
 // quintic in double (against its exact value, test_kernels ContactRecordsAgainstTheExactQuintic:
 // 3.1e-16 (1 + |ln X|) at most, 2.2e-16 for the ln X quintic).
 inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
-inline constexpr double ln_2 = 0.69314718055994530942;
 
 // One interval's record from the grid's ln X coefficients of orders 0, 1/2, 1, 3/2
 // (twice_order k: ln_orders[k] points at the interval's fast_stride coefficients)
