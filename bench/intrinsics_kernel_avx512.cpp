@@ -2,16 +2,7 @@
 #include "intrinsics_kernel.hpp"
 
 #if defined(__AVX512F__) && defined(__AVX512DQ__) && defined(__AVX512VL__)
-// GCC 12's AVX-512 headers initialize their placeholder operands from themselves, which
-// -Wmaybe-uninitialized reports at every use (GCC bug 105593, fixed in GCC 13)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <immintrin.h>
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "asperity/detail/intrinsics.hpp"
 
 namespace asperity::bench {
 namespace {

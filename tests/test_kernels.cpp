@@ -36,6 +36,9 @@ double quintic(const double* record, int k, double y) {
   return (c[0] + y * c[1]) + y2 * ((c[2] + y * c[3]) + y2 * (c[4] + y * c[5]));
 }
 
+// the record's lane of each order (kernels.hpp: the lanes hold orders 0, 1, 3/2, 1/2)
+constexpr int lane_of_order[4] = {0, 3, 1, 2};
+
 struct alignas(64) Record {
   double coefficients[contact_record_size];
 };
@@ -76,17 +79,17 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExp2OnEverySet) {
         record.coefficients[k] = (i % 3 == 0) ? levels[(i + 97 * k) % levels.size()] : levels[i] + unit(random);
         for (int c = 1; c < 6; ++c) record.coefficients[4 * c + k] = unit(random) * 4.0 / (1 << c);
       }
-      if (i % 101 == 0) record.coefficients[3] = -inf;  // an order at exactly 0 (no contact)
+      if (i % 101 == 0) record.coefficients[2] = -inf;  // X_3/2 exactly 0 (no contact)
       // y = 0 makes the log the constant term exactly: the levels' edges land on the fast path's
       const double y = (i % 2) ? 0.0 : y_of(random);
-      double log2s[4], values[4];
+      double log2s[4], values[4];  // orders 0, 1/2, 1, 3/2
       kernels.contact4(record.coefficients, y, log2s, values);
       if (isa == InstructionSet::avx2) first_x86.insert(first_x86.end(), values, values + 4);
       if (isa == InstructionSet::avx512 && !first_x86.empty()) {
         for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(values[k], first_x86[4 * i + k])) << "lane " << k;
       }
       for (int k = 0; k < 4; ++k) {
-        const double expected = quintic(record.coefficients, k, y);
+        const double expected = quintic(record.coefficients, lane_of_order[k], y);
         if (std::isnan(expected) || std::isnan(log2s[k])) {
           // a NaN constant term, or infinite ones: NaN in, NaN out (log2 X and X)
           EXPECT_TRUE(std::isnan(log2s[k]) && std::isnan(values[k])) << to_string(isa) << " lane " << k;
@@ -132,15 +135,15 @@ TEST(Kernels, Contact4IsTheQuinticAndItsExp2OnEverySet) {
 }
 
 // Curve::contact_products' kernels (fast_grid.hpp's ContactProducts) on a grid made here: one
-// binade, s in [1, 2), 64 intervals whose records sweep the same regimes as above (one order
-// alone in a slow regime, X_3/2 exactly 0). Against a long double exp2 of contact4's log2 X:
-// the products within 4.5e-16 (the exp's 2.3e-16 and the product's rounding) or the subnormal
-// spacing times the factor; the ratio, where X_1/2 and X_3/2 are normal, within 8e-16 +
-// 1.2e-16 |ln X_1/2 - ln X_3/2| of 1.5 X_1/2 / X_3/2 = 1.5 2^(log2 X_1/2 - log2 X_3/2), and
-// elsewhere of 1.5 e^(ln X_1/2 - ln X_3/2) from contact_orders' logs (ln 2 log2 X, rounded:
-// contact_logs_of), NaN where X_3/2 = 0; the AVX2 and AVX-512 builds the same bits; false for
-// a bad factor or off the grid. The surface form (ContactInputs::surface) gives the same bits
-// as the factors contact_scales_of makes.
+// binade, s in [1, 2), 64 intervals whose records sweep the same regimes as above (lanes:
+// log2 X of orders 0, 1, 3/2, 1/2; one lane alone in a slow regime; X_3/2 exactly 0). Against a
+// long double exp2 of contact4's log2 X: the products within 4.5e-16 (the exp's 2.3e-16 and the
+// product's rounding) or the subnormal spacing times the factor; the ratio within 8e-16 of
+// 1.5 2^(log2 X_1/2 - log2 X_3/2) or the subnormal spacing (contact_ratio_of_parts, every
+// regime), NaN where X_3/2 = 0; the AVX2 and AVX-512 builds the same bits (the vector form of
+// one is the lane-by-lane form of the other in the deep tails); false for a bad factor or off
+// the grid. The surface form (ContactInputs::surface) gives the same bits as the factors
+// contact_scales_of makes.
 TEST(Kernels, ContactProductsOnEverySet) {
   constexpr int log2_intervals = 6, intervals = 1 << log2_intervals;
   detail::FastGrid grid;
@@ -162,7 +165,7 @@ TEST(Kernels, ContactProductsOnEverySet) {
       const int n = static_cast<int>(sizeof levels / sizeof levels[0]);
       records[i].coefficients[k] = (i % 4 == 0) ? levels[(i + 5 * k) % n] : levels[i % n] + unit(random);
       for (int c = 1; c < 6; ++c) records[i].coefficients[4 * c + k] = unit(random) * 2.0 / (1 << c);
-      if (i % 9 == 4) records[i].coefficients[3] = -inf;  // X_3/2 = 0
+      if (i % 9 == 4) records[i].coefficients[2] = -inf;  // X_3/2 = 0 (lane 2)
     }
   const double denorm = std::numeric_limits<double>::denorm_min(), largest = std::numeric_limits<double>::max();
   const double factor_sets[][4] = {{1, 1, 1, 1}, {1e4, 3.1e-6, 1.3e4, 2e10}, {1e-300, 1e300, 5e-324, 1.7e308}};
@@ -195,7 +198,7 @@ TEST(Kernels, ContactProductsOnEverySet) {
           const long double x = std::exp2(static_cast<long double>(log2s[order_of[j]]));
           const long double expected = factors[j] * x;
           const long double bound = 4.5e-16L * std::fabs(expected) + (factors[j] + 1.0L) * denorm;
-          if (x > largest || expected > largest)  // X itself overflows (log2 X > 1024): inf, as X is
+          if (expected > largest)  // the product overflows (X itself may not be a double)
             EXPECT_TRUE(std::isinf(state[j])) << to_string(isa) << " s = " << s << " quantity " << j;
           else
             ASSERT_LE(std::fabs(state[j] - expected), bound)
@@ -218,19 +221,13 @@ TEST(Kernels, ContactProductsOnEverySet) {
         if (log2s[3] == -inf) {
           EXPECT_TRUE(std::isnan(state[4])) << to_string(isa) << " s = " << s;
         } else {
-          // where both values are normal the ratio is theirs, else from the logs
-          double logs[4];
-          detail::contact_logs_of(log2s, logs);
-          const bool normal = values[1] >= std::numeric_limits<double>::min() &&
-                              values[3] >= std::numeric_limits<double>::min() && values[1] <= largest &&
-                              values[3] <= largest;
-          const long double difference = normal ? (static_cast<long double>(log2s[1]) - log2s[3]) * std::log(2.0L)
-                                                : static_cast<long double>(logs[1]) - logs[3];
-          const long double expected = 1.5L * std::exp(difference);
+          const long double expected = 1.5L * std::exp2(static_cast<long double>(log2s[1]) - log2s[3]);
           if (expected > largest) {
             EXPECT_TRUE(std::isinf(state[4]) || state[4] >= largest / 2) << to_string(isa) << " s = " << s;
           } else {
-            const long double bound = (8e-16L + 1.2e-16L * std::fabs(difference)) * expected + denorm;
+            // two exps' mantissas (2.3e-16 each), the division and the product by 1.5, then
+            // exact scaling (one rounding to the subnormal spacing below DBL_MIN)
+            const long double bound = 8e-16L * expected + denorm;
             ASSERT_LE(std::fabs(state[4] - expected), bound)
                 << to_string(isa) << " s = " << s << " log2s " << log2s[1] << " " << log2s[3];
           }
@@ -276,7 +273,7 @@ TEST(Kernels, ContactRecordsAgainstTheExactQuintic) {
       Record record;
       detail::write_contact_record(ln_orders, record.coefficients);
       const double y = y_of(random);
-      double log2s[4], values[4];
+      double log2s[4], values[4];  // orders 0, 1/2, 1, 3/2
       kernels.contact4(record.coefficients, y, log2s, values);
       for (int k = 0; k < 4; ++k) {
         long double exact = 0, power = 1;

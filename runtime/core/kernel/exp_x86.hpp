@@ -31,16 +31,7 @@
 
 #include "kernels.hpp"
 
-// GCC 12's AVX-512 headers initialize their placeholder operands from themselves, which
-// -Wmaybe-uninitialized reports at every use (GCC bug 105593, fixed in GCC 13)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <immintrin.h>
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "asperity/detail/intrinsics.hpp"
 
 namespace asperity::detail {
 namespace {
@@ -140,8 +131,8 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i shifted_bits) 
 // Base::exact_k_max), vscalefpd applies 2^k: it rounds a subnormal result once and gives 0 and
 // inf beyond the range, the same bits as the masks (with the default MXCSR: under
 // flush-to-zero it gives 0 for a subnormal result, as exp8 does), in two operations for ~25
-// (the contact kernels' slow path, the deep tails: bench_lookup BM_ContactAllFour 9.3 -> 9.0 ns
-// with this alone, Zen 5, alternated builds)
+// (contact_orders' every lane on AVX-512; measured when the contact kernels' deep tails took
+// this path: bench_lookup BM_ContactAllFour 9.3 -> 9.0 ns, Zen 5, alternated builds)
 template <class Base = NaturalExp>
 ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i shifted_bits) noexcept {
   const __m256d scale = _mm256_add_pd(_mm256_set1_pd(1.0), expm1);

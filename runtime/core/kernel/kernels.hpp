@@ -6,6 +6,7 @@
 // step), plain C++ for the baseline (ScalarPasses: the compiler vectorizes the positions two
 // queries a step, the rest runs one call at a time).
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -20,27 +21,31 @@ namespace asperity::detail {
 inline constexpr int batch_block = 256;
 
 // The contact records (curve_data.hpp's CurveLookup::contact_records): per interval, six rows
-// (the coefficient of y^j, j = 0..5) of four lanes, log2 X of orders 0, 1/2, 1, 3/2, from a
-// 64-byte boundary (three cache lines). In base 2 the exp's reduction is an addition, two
-// exact subtractions and a product by ln 2, instead of a multiply-add, a subtraction and two
-// multiply-adds for ln 2 in two parts: 3 cycles off the lookup's chain (bench_lookup, Zen 5,
-// alternated builds, this alone: BM_ContactAllFourScales 8.60 -> 8.37 ns, BM_ContactAllFour
-// 9.34 -> 9.14). Each coefficient is the grid's ln X one
-// times log2 e, rounded once from long double: ~1e-16 |ln X| more rounding than the grid's own
-// quintic in double (against its exact value, test_kernels ContactRecordsAgainstTheExactQuintic:
-// 3.1e-16 (1 + |ln X|) at most, 2.2e-16 for the ln X quintic).
-inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][order 0..3]
+// (the coefficient of y^j, j = 0..5) of four lanes, log2 X of orders 0, 1, 3/2, 1/2 (the state's
+// order: count, area, load, stiffness, so that the products need no permutation and the
+// stiffness/load ratio is within the upper half), from a 64-byte boundary (three cache lines).
+// In base 2 the exp's reduction is an addition, two exact subtractions and a product by ln 2,
+// instead of a multiply-add, a subtraction and two multiply-adds for ln 2 in two parts: 3
+// cycles off the lookup's chain (bench_lookup, Zen 5, alternated builds, this alone:
+// BM_ContactAllFourScales 8.60 -> 8.37 ns, BM_ContactAllFour 9.34 -> 9.14), and 2^t = m 2^k
+// with k an integer: the kernels multiply the factors into m and scale once (contact4_x86.hpp).
+// Each coefficient is the grid's ln X one times log2 e, rounded once from long double: ~1e-16
+// |ln X| more rounding than the grid's own quintic in double (against its exact value,
+// test_kernels ContactRecordsAgainstTheExactQuintic: 3.1e-16 (1 + |ln X|) at most, 2.2e-16 for
+// the ln X quintic).
+inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][lane]
+inline constexpr int contact_lane_orders[4] = {0, 2, 3, 1};  // each lane's twice_order
 
 // One interval's record from the grid's ln X coefficients of orders 0, 1/2, 1, 3/2
 // (twice_order k: ln_orders[k] points at the interval's fast_stride coefficients)
 inline void write_contact_record(const double* const ln_orders[4], double* record) noexcept {
   constexpr long double log2_e = 1.44269504088896340735992468100189214L;
   for (int j = 0; j < fast_stride; ++j)
-    for (int k = 0; k < 4; ++k) record[4 * j + k] = static_cast<double>(log2_e * ln_orders[k][j]);
+    for (int lane = 0; lane < 4; ++lane)
+      record[4 * j + lane] = static_cast<double>(log2_e * ln_orders[contact_lane_orders[lane]][j]);
 }
 
-// contact_orders' ln X from the records' log2 X (Curve::contact_orders and the kernels' slow
-// path, whose ratio is contact_ratio's from these logs): ln 2 rounded to double, the product once
+// contact_orders' ln X from log2 X: ln 2 rounded to double, the product once
 static ASPERITY_ALWAYS_INLINE void contact_logs_of(const double log2s[4], double logs[4]) noexcept {
   for (int k = 0; k < 4; ++k) logs[k] = ln_2 * log2s[k];
 }
@@ -80,30 +85,34 @@ struct ScalarMath {
 template <class Math>
 void contact4(const double* __restrict record, double y, double* __restrict log2s, double* __restrict values) noexcept {
   const double y2 = y * y;
-  for (int k = 0; k < 4; ++k) {  // the quintic of fast_quintic, four orders a lane
-    const double low = record[k] + y * record[4 + k];
-    const double middle = record[8 + k] + y * record[12 + k];
-    const double high = record[16 + k] + y * record[20 + k];
+  for (int lane = 0; lane < 4; ++lane) {  // the quintic of fast_quintic, one order a lane
+    const double low = record[lane] + y * record[4 + lane];
+    const double middle = record[8 + lane] + y * record[12 + lane];
+    const double high = record[16 + lane] + y * record[20 + lane];
     const double log2_value = low + y2 * (middle + y2 * high);
-    log2s[k] = log2_value;
-    values[k] = Math::exp2(log2_value);
+    log2s[contact_lane_orders[lane]] = log2_value;
+    values[contact_lane_orders[lane]] = Math::exp2(log2_value);
   }
 }
 
-// ContactProducts' state from the four orders' log2 X and values (order 0, 1/2, 1, 3/2), where
-// the kernels do not take their vector path
-ASPERITY_ALWAYS_INLINE void contact_state(const double log2s[4], const double values[4], double count_factor,
-                                          double area_factor, double load_factor, double stiffness_factor,
-                                          double* __restrict state) noexcept {
-  state[0] = count_factor * values[0];
-  state[1] = area_factor * values[2];
-  state[2] = load_factor * values[3];
-  state[3] = stiffness_factor * values[1];
-  double logs[4];
-  contact_logs_of(log2s, logs);
-  state[4] = contact_ratio(logs, values);
+// The factors the contact kernels multiply into X's mantissa (m in [0.7, 1.5]): in
+// [2^-1000, 2^1000] m f is a normal double; others (still in (0, DBL_MAX]) multiply X itself
+inline constexpr double contact_factor_min = 0x1p-1000, contact_factor_max = 0x1p+1000;
+
+// factor X with X = 2^t, as the x86 kernels make it: where X is a normal double, the product
+// rounded once; elsewhere (t finite, the factor in range) from 2^(t - k) and 2^k, so that the
+// product is right where X alone underflows or overflows
+static ASPERITY_ALWAYS_INLINE double contact_product(double factor, double t, double x) noexcept {
+  if (__builtin_expect(x >= std::numeric_limits<double>::min() && x <= std::numeric_limits<double>::max(), 1))
+    return factor * x;
+  if (!(std::fabs(t) <= BinaryExp::exact_k_max && factor >= contact_factor_min && factor <= contact_factor_max))
+    return factor * x;  // X = 0, inf or NaN, or an extreme factor
+  const double k = std::nearbyint(t);
+  return std::ldexp(factor * fast_exp2(t - k), static_cast<int>(std::fmax(-2200.0, std::fmin(2200.0, k))));
 }
 
+// The baseline build's ContactProducts: contact4's values times the factors (contact_product),
+// the ratio by contact_ratio_of_log2s
 template <class Math, ContactInputs inputs>
 bool contact_products(const FastGrid& grid, const double* __restrict contact_records, double separation,
                       double first, double second, double third, double fourth, double* __restrict state) noexcept {
@@ -116,7 +125,11 @@ bool contact_products(const FastGrid& grid, const double* __restrict contact_rec
   if (__builtin_expect(!fast_position(grid, separation, at), 0)) return false;
   double log2s[4], values[4];
   contact4<Math>(contact_records + at.interval * contact_record_size, at.y, log2s, values);
-  contact_state(log2s, values, factors[0], factors[1], factors[2], factors[3], state);
+  for (int lane = 0; lane < 4; ++lane) {
+    const int order = contact_lane_orders[lane];
+    state[lane] = contact_product(factors[lane], log2s[order], values[order]);
+  }
+  state[4] = contact_ratio_of_log2s(log2s[1], log2s[3]);
   return true;
 }
 
