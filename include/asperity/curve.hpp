@@ -89,9 +89,10 @@ class Curve {
   void contact_orders(double separation, double log_out[4], double value_out[4]) const noexcept;
   // contact_at's arithmetic (contact.hpp) in one kernel call: state[0..3] = the factors times X_n
   // for n = 0, 1, 3/2, 1/2 and state[4] = 1.5 X_1/2 / X_3/2 (detail/contact_ratio.hpp's rule),
-  // the factors times contact_orders' values (the same exps, the same bits, in every regime;
-  // docs/accuracy.md); false, nothing written, without contact records, off the grid, or for a
-  // factor outside (0, DBL_MAX].
+  // from contact_orders' exps as m 2^k: (m f) 2^k, which is the factor times contact_orders'
+  // value rounded once wherever both are normal doubles, and right where X alone under- or
+  // overflows (docs/accuracy.md); false, nothing written, without contact records, off the
+  // grid, or for a factor outside (0, DBL_MAX].
   bool contact_products(double separation, double count_factor, double area_factor, double load_factor,
                         double stiffness_factor, double state[5]) const noexcept;
   // The same from the surface (N, R, sigma_s, E*): the factors computed as contact_scales does,

@@ -29,11 +29,14 @@ static ASPERITY_ALWAYS_INLINE double contact_ratio(const double logs[4], const d
 // integer): 1.5 (m_1/2 / m_3/2), rounded, then scaled by 2^(k_1/2 - k_3/2) (exactly, or rounded
 // once where the result is subnormal): right where X_1/2 or X_3/2 underflows, with no test on
 // them. The x86 kernels compute the same in vectors.
+// x 2^k for an integer k held in a double (|k| up to 2^50: beyond +-2200 the result of a
+// moderate x is 0 or inf anyway), rounded once as vscalefpd rounds: the contact kernels' scaling
+static ASPERITY_ALWAYS_INLINE double scaled_by_power_of_two(double x, double k) noexcept {
+  return std::ldexp(x, static_cast<int>(k < -2200 ? -2200 : k > 2200 ? 2200 : k));
+}
 static ASPERITY_ALWAYS_INLINE double contact_ratio_of_parts(double stiffness_mantissa, double stiffness_k,
                                                             double load_mantissa, double load_k) noexcept {
-  const double difference = stiffness_k - load_k;  // integers; beyond +-2200 the ratio is 0 or inf
-  const int exponent = static_cast<int>(difference < -2200 ? -2200 : difference > 2200 ? 2200 : difference);
-  return std::ldexp(1.5 * (stiffness_mantissa / load_mantissa), exponent);
+  return scaled_by_power_of_two(1.5 * (stiffness_mantissa / load_mantissa), stiffness_k - load_k);
 }
 // The same from log2 X (the baseline build's; the x86 kernels' where a lane is not finite or
 // beyond 2^50): NaN where X_3/2 = 0 (0/0) or a log is NaN, 0 where X_1/2 = 0 or X_3/2 = inf, inf

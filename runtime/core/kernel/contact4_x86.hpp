@@ -81,7 +81,7 @@ __attribute__((noinline)) void contact_products_lanes_x86(const ContactLanes& in
     const double factor = in.factor[lane];
     const bool in_range = factor >= contact_factor_min && factor <= contact_factor_max;
     state[lane] = exact(lane) && in_range
-                      ? std::ldexp(mantissas[lane] * factor, static_cast<int>(std::fmax(-2200.0, std::fmin(2200.0, k[lane]))))
+                      ? scaled_by_power_of_two(mantissas[lane] * factor, k[lane])
                       : factor * x[lane];
   }
   state[4] = exact(3) && exact(2) ? contact_ratio_of_parts(mantissas[3], k[3], mantissas[2], k[2])

@@ -57,10 +57,10 @@ struct Kernels {
   // one interval's contact record: log2s[k] = log2 X and values[k] = 2^log2s[k] (fast_exp2 in
   // the baseline build; on x86 one 4-lane vector, contact4_x86.hpp).
   void (*contact4)(const double* record, double y, double* log2s, double* values) noexcept;
-  // Curve::contact_products (fast_grid.hpp's ContactProducts): contact4's exps, multiplied where
-  // they are (contact4, then the products from its values in memory: 2.2x one order, bench_lookup
-  // BM_ContactAllFour), from the factors (ContactInputs::factors) or from the surface
-  // (contact_products_of_surface, ContactInputs::surface).
+  // Curve::contact_products (fast_grid.hpp's ContactProducts): contact4's exps, multiplied by
+  // the factors in the registers (contact4, then the products from its values in memory, was
+  // 2.2x one order, bench_lookup BM_ContactAllFour), from the factors (ContactInputs::factors)
+  // or from the surface (contact_products_of_surface, ContactInputs::surface).
   ContactProducts contact_products;
   ContactProducts contact_products_of_surface;
   // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
@@ -108,7 +108,7 @@ static ASPERITY_ALWAYS_INLINE double contact_product(double factor, double t, do
   if (!(std::fabs(t) <= BinaryExp::exact_k_max && factor >= contact_factor_min && factor <= contact_factor_max))
     return factor * x;  // X = 0, inf or NaN, or an extreme factor
   const double k = std::nearbyint(t);
-  return std::ldexp(factor * fast_exp2(t - k), static_cast<int>(std::fmax(-2200.0, std::fmin(2200.0, k))));
+  return scaled_by_power_of_two(factor * fast_exp2(t - k), k);
 }
 
 // The baseline build's ContactProducts: contact4's values times the factors (contact_product),
