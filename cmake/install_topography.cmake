@@ -1,8 +1,7 @@
 # Installing the topography library (topography/CMakeLists.txt, with ASPERITY_INSTALL):
 # asperity::topography in the same CMake package as asperity::runtime (asperityTargets), its
 # headers with the include folder (cmake/install.cmake installs include/ whole, topography/
-# included), and the report's plotting script in share/asperity, where the installed library
-# looks for it (surface_report.cpp).
+# included). The report's plots are drawn by the library itself: nothing else is installed.
 install(TARGETS asperity_topography EXPORT asperityTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT development
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
@@ -14,7 +13,5 @@ if(NOT ASPERITY_SHARED)
   install(TARGETS asperity_tablegen EXPORT asperityTargets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
 endif()
-install(PROGRAMS "${PROJECT_SOURCE_DIR}/topography/scripts/surface_plots.py"
-        DESTINATION "${ASPERITY_INSTALL_TABLE_DIR}" COMPONENT runtime)
 # libasperity.so.0 beside it, wherever the installed tree is
 asperity_install_rpath(asperity_topography "${CMAKE_INSTALL_LIBDIR}")

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <thread>
 
+#include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
 #include "asperity/table_schema.hpp"
 #include "quadrature.hpp"
@@ -166,43 +167,23 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
   for (std::size_t set = 0; set < table.sets.size(); ++set)
     for (std::size_t shape = 0; shape < table.sets[set].shapes.size(); ++shape) jobs.push_back({set, shape});
   // The expensive curves first (the far tail of small shapes), so threads finish together.
-  std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
   std::mutex progress_mutex;
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  auto worker = [&]() {
-    for (;;) {
-      const std::size_t index = next++;
-      if (index >= jobs.size()) return;
-      try {
-        CurveSet& set = table.sets[jobs[index].set];
-        const double shape = set.shapes[jobs[index].shape];
-        const CurveId id{set.distribution, set.side, shape};
-        const std::vector<double> knots = integrate_curve(id, set.layout, ChainOptions{options.tolerance});
-        std::copy(knots.begin(), knots.end(), set.knots.begin() + jobs[index].shape * set.curve_stride());
-        const Curve curve(set.distribution, set.side, shape, set.layout, knots.data());
-        const std::vector<double> errors = measure_curve_error(curve, set.layout, options.check_stride);
-        std::copy(errors.begin(), errors.end(), set.max_rel_error.begin() + jobs[index].shape * order_count);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = jobs.size();
-        return;
-      }
-      const int finished = ++done;
-      if (progress) {
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        progress(finished, static_cast<int>(jobs.size()));
-      }
+  detail::parallel_for(jobs.size(), options.threads, [&](std::size_t index) {
+    CurveSet& set = table.sets[jobs[index].set];
+    const double shape = set.shapes[jobs[index].shape];
+    const CurveId id{set.distribution, set.side, shape};
+    const std::vector<double> knots = integrate_curve(id, set.layout, ChainOptions{options.tolerance});
+    std::copy(knots.begin(), knots.end(), set.knots.begin() + jobs[index].shape * set.curve_stride());
+    const Curve curve(set.distribution, set.side, shape, set.layout, knots.data());
+    const std::vector<double> errors = measure_curve_error(curve, set.layout, options.check_stride);
+    std::copy(errors.begin(), errors.end(), set.max_rel_error.begin() + jobs[index].shape * order_count);
+    const int finished = ++done;
+    if (progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      progress(finished, static_cast<int>(jobs.size()));
     }
-  };
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min<int>(threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
-  for (std::thread& thread : pool) thread.join();
-  if (failure) std::rethrow_exception(failure);
+  });
   return table;
 }
 

@@ -1,5 +1,7 @@
 #include "scene_table.hpp"
 
+#include "asperity/detail/parallel_for.hpp"
+
 #include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
@@ -69,34 +71,7 @@ double group_tolerance(const Group& group) {
   return tolerance;
 }
 
-// Runs job(i) for i < count on `threads` threads; the first exception is rethrown.
-template <class Job>
-void parallel_for(std::size_t count, int threads, Job job) {
-  std::size_t next = 0;
-  std::mutex mutex;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (;;) {
-      std::size_t index;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (failure || next >= count) return;
-        index = next++;
-      }
-      try {
-        job(index);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  const int count_threads = std::max(1, std::min<int>(threads, static_cast<int>(count)));
-  for (int i = 0; i < count_threads; ++i) pool.emplace_back(worker);
-  for (std::thread& thread : pool) thread.join();
-  if (failure) std::rethrow_exception(failure);
-}
+using detail::parallel_for;
 
 // The largest error in H of the quintic through every factor-th fine knot of a segment, at the
 // fine knots it drops, where a requirement asks (its orders, its separations).

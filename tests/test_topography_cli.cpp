@@ -43,7 +43,7 @@ CommandRun run(const std::vector<std::string>& arguments) {
 }  // namespace
 
 TEST(TopographyCli, SummaryOfTheRealX3P) {
-  const CommandRun r = run({surfaces + "/digitalsurf-650x650.x3p", "--bootstrap", "19", "--no-height-fit",
+  const CommandRun r = run({surfaces + "/digitalsurf-650x650.x3p", "--bootstrap", "20", "--no-height-fit",
                             "--modulus", "1e11", "--pressure", "1e6"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("650 x 650 points"), std::string::npos) << r.out;
@@ -51,22 +51,20 @@ TEST(TopographyCli, SummaryOfTheRealX3P) {
   EXPECT_NE(r.out.find("at 1e+06 Pa: stiffness per area"), std::string::npos) << r.out;
 }
 
-TEST(TopographyCli, JsonAndReportWithoutMatplotlib) {
+TEST(TopographyCli, JsonAndReport) {
   const std::string dir = work + "/report";
   std::filesystem::remove_all(dir);
-  setenv("ASPERITY_SURFACE_PLOTS", (surfaces + "/no_matplotlib.py").c_str(), 1);
-  const CommandRun r = run({surfaces + "/afm-zsensor-10um.txt", "--bootstrap", "9", "--json", "--report", dir,
+  const CommandRun r = run({surfaces + "/afm-zsensor-10um.txt", "--bootstrap", "20", "--json", "--report", dir,
                             "--modulus=2e9", "--load", "1e-5", "--summit-window", "2"});
-  unsetenv("ASPERITY_SURFACE_PLOTS");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("{", 0), 0u);
   EXPECT_NE(r.out.find("\"schema\": \"asperity-surface/1\""), std::string::npos);
   EXPECT_NE(r.out.find("\"window_points\": 2"), std::string::npos);
-  EXPECT_EQ(r.err.rfind("asperity surface: no plots: python3 has no matplotlib", 0), 0u) << r.err;
-  for (const char* name : {"report.md", "report.json", "curves.csv", "summits.csv"})
+  EXPECT_EQ(r.err, "");
+  for (const char* name : {"report.md", "report.json", "curves.csv", "summits.csv", "fits.svg", "contact.svg"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + name)) << name;
   const std::string text = read_text(dir + "/report.md");
-  EXPECT_NE(text.find("no plots: python3 has no matplotlib"), std::string::npos);
+  EXPECT_NE(text.find("![fits](fits.svg)"), std::string::npos);
   // --load 1e-5 N over the measured 1e-10 m^2: 1e5 Pa
   EXPECT_NE(text.find("At a nominal pressure of 1e+05 Pa"), std::string::npos);
 }

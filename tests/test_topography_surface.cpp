@@ -171,7 +171,7 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
   };
   for (const Case& c : {Case{"digitalsurf-650x650.x3p", 2482}, Case{"afm-zsensor-10um.txt", 1670}}) {
     t::AnalysisOptions options;
-    options.assessment.bootstrap = 19;
+    options.assessment.bootstrap = 20;
     options.sampling_factors = {1, 2};
     t::ContactOptions contact;
     contact.contact_modulus = 1e11;
@@ -208,26 +208,26 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
   }
 }
 
-TEST(TopographySurface, ReportWithoutPlots) {
+TEST(TopographySurface, ReportFolder) {
   const std::vector<double> heights(100, 0.0);
   std::vector<double> h(100);
   for (std::size_t k = 0; k < h.size(); ++k) h[k] = 1e-8 * std::sin(0.7 * static_cast<double>(k)) + 1e-8;
   const t::HeightMap map = planted_caps(10, 8, 1e-7, 1e-5, h);
   t::AnalysisOptions options;
   options.level = false;
-  options.assessment.bootstrap = 9;
+  options.assessment.bootstrap = 20;
   t::ContactOptions contact;
   contact.contact_modulus = 1e11;
   contact.curve_points = 5;
   options.contact = contact;
   const t::SurfaceAnalysis a = t::analyse_height_map(map, options);
   const std::string dir = std::string(ASPERITY_TEST_BINARY_DIR) + "/topography_report";
-  const t::ReportOutcome outcome = t::write_report(a, dir, "/nonexistent/plots.py");
-  EXPECT_FALSE(outcome.plots);
-  EXPECT_NE(outcome.plot_note.find("not found"), std::string::npos);
+  const t::ReportOutcome outcome = t::write_report(a, dir);
+  EXPECT_TRUE(outcome.plots);
+  EXPECT_EQ(outcome.plot_note, "");
   std::ifstream md(dir + "/report.md");
   const std::string text((std::istreambuf_iterator<char>(md)), {});
-  EXPECT_NE(text.find("no plots"), std::string::npos);
+  EXPECT_NE(text.find("![contact](contact.svg)"), std::string::npos);
   EXPECT_NE(text.find("Verdict"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir + "/curves.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/summits.csv"));

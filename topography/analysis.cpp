@@ -2,10 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <random>
 
 #include "asperity/error.hpp"
 
 namespace asperity::topography {
+namespace {
+constexpr double min_roughness = 1e-15;  // [m]
+
+std::string short_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+}  // namespace
 
 SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options) {
   map.validate();
@@ -18,6 +29,29 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     map.notes.push_back("leveled: least-squares plane subtracted");
   }
   analysis.statistics = height_statistics(map);
+  const double sq = analysis.statistics.rms;
+  NoiseFloor& floor = analysis.noise_floor;
+  floor.resolution = map.height_resolution;
+  floor.rms_limit = 10 * map.height_resolution / std::sqrt(12.0);
+  if (sq == 0) {
+    floor.reached = true;
+    floor.text = "every valid height is the same" + std::string(options.level ? " after leveling" : "") +
+                 ": no roughness, so no summits, fits or contact curves";
+  } else if (sq < min_roughness) {
+    throw Error(map.source + ": Sq = " + short_number(sq) + " m is below " + short_number(min_roughness) +
+                " m (1 fm): a wrong height unit?");
+  } else if (sq < floor.rms_limit) {
+    floor.reached = true;
+    floor.text = "the roughness (Sq " + short_number(sq) + " m) is at the level of the heights' quantization (" +
+                 short_number(map.height_resolution) + " m a step, rounding noise " +
+                 short_number(map.height_resolution / std::sqrt(12.0)) +
+                 " m rms): its summits would be rounding noise, so no summits, fits or contact curves";
+  }
+  if (floor.reached) {
+    map.notes.push_back("noise floor: " + floor.text);
+    analysis.map = std::move(map);
+    return analysis;
+  }
   analysis.moments = spectral_moments(map);
   analysis.correlation = correlation_lengths(map, 0.1);
   analysis.summits = find_summits(map, options.summits);
@@ -49,6 +83,18 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   std::vector<double> summit_heights;
   summit_heights.reserve(analysis.summits.list.size());
   for (const Summit& s : analysis.summits.list) summit_heights.push_back(s.height);
+  if (options.max_fit_sample > 0 && summit_heights.size() > options.max_fit_sample) {
+    // a reproducible random subsample (a partial Fisher-Yates shuffle)
+    std::mt19937_64 engine(options.assessment.seed ^ 0x5eed5a3b1e5ull);
+    for (std::size_t k = 0; k < options.max_fit_sample; ++k) {
+      const std::size_t pick = k + static_cast<std::size_t>(engine() % (summit_heights.size() - k));
+      std::swap(summit_heights[k], summit_heights[pick]);
+    }
+    summit_heights.resize(options.max_fit_sample);
+    map.notes.push_back("fits on a random subsample of " + std::to_string(options.max_fit_sample) + " of the " +
+                        std::to_string(analysis.summits.list.size()) + " summits (max_fit_sample)");
+  }
+  analysis.summits_fitted = summit_heights.size();
   analysis.summit_heights = assess_sample("summit heights", summit_heights, options.assessment);
 
   if (options.fit_heights) {

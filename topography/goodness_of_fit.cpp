@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
-#include <thread>
 
+#include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
 
 namespace asperity::topography {
@@ -44,6 +44,20 @@ std::string p_text(double p, int bootstrap) {
 }
 
 }  // namespace
+
+int minimum_bootstrap(double significance) {
+  // p = (1 + #exceeding) / (B + 1) >= 1 / (B + 1): below the significance only if B + 1 > 1 / significance
+  return static_cast<int>(std::floor(1 / significance * (1 + 1e-12)));
+}
+
+void check_bootstrap_size(int bootstrap, double significance) {
+  if (bootstrap < 0) throw Error("assessment: the bootstrap size must not be negative");
+  if (bootstrap > 0 && bootstrap < minimum_bootstrap(significance))
+    throw Error("a bootstrap of " + std::to_string(bootstrap) + " samples can never give p below " +
+                format("%g", significance) + " (its smallest p-value is 1/(B + 1) = " +
+                format("%.3g", 1.0 / (bootstrap + 1)) + "): use at least " +
+                std::to_string(minimum_bootstrap(significance)) + " samples, or 0 for no test");
+}
 
 double anderson_darling(const HeightDistribution& d, const std::vector<double>& sorted) {
   const std::size_t n = sorted.size();
@@ -91,8 +105,9 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
   std::vector<Replicate> replicates(static_cast<std::size_t>(bootstrap));
   FitOptions refit_options = fit_options;
   refit_options.start = &fitted;
-  const auto work = [&](int first, int step) {
-    for (int b = first; b < bootstrap; b += step) {
+  detail::parallel_for(static_cast<std::size_t>(bootstrap), threads, [&](std::size_t index) {
+    {
+      const int b = static_cast<int>(index);
       const std::uint64_t replicate_seed =
           splitmix64(splitmix64(seed) ^ splitmix64(static_cast<std::uint64_t>(model) * 1000003u + static_cast<std::uint64_t>(b)));
       std::vector<double> sample = draw_sample(fitted, sorted.size(), replicate_seed);
@@ -110,13 +125,7 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
         r.ok = false;  // counted; a sample of identical values cannot happen from a continuous law
       }
     }
-  };
-  int workers = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  workers = std::min(workers, bootstrap);
-  std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w) pool.emplace_back(work, w, workers);
-  work(0, workers);
-  for (std::thread& t : pool) t.join();
+  });
 
   int exceed_a2 = 0, exceed_d = 0, ok = 0;
   for (const Replicate& r : replicates) {
@@ -139,6 +148,7 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
 SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options) {
   if (!(options.confidence > 0 && options.confidence < 1)) throw Error("assessment: confidence must be in (0, 1)");
   if (!(options.significance > 0 && options.significance < 1)) throw Error("assessment: significance must be in (0, 1)");
+  check_bootstrap_size(options.bootstrap, options.significance);
   std::sort(values.begin(), values.end());
   SampleAssessment assessment;
   assessment.name = name;
@@ -192,7 +202,8 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
   const int b = options.bootstrap;
   std::string text = name + " (n = " + std::to_string(values.size()) + "): ";
   if (b <= 0) {
-    text += "no bootstrap, so no test; by AIC alone the best is " + std::string(describe(v.best)) + ".";
+    text += "not tested (no bootstrap samples, so no p-values: nothing is said about Gaussianity); by AIC alone "
+            "the lowest is " + std::string(describe(v.best)) + ".";
   } else {
     text += v.gaussian_rejected ? "not Gaussian: Anderson-Darling rejects the Gaussian (" : "consistent with a Gaussian (Anderson-Darling ";
     text += p_text(gaussian.anderson_darling_p, b) + ", KS " + p_text(gaussian.kolmogorov_smirnov_p, b) + ", " +

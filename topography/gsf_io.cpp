@@ -1,5 +1,6 @@
 // Gwyddion Simple Field (.gsf): magic line, "Key = value" header, 1-4 NUL bytes aligning the
 // data to a multiple of 4, then XRes x YRes little-endian float32, row by row, x fastest.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -9,6 +10,7 @@
 
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/units.hpp"
+#include "input_file.hpp"
 #include "reader_support.hpp"
 
 namespace asperity::topography {
@@ -20,8 +22,11 @@ constexpr std::size_t max_header_bytes = std::size_t{1} << 20;
 }  // namespace
 
 HeightMap read_gsf(const std::string& path, const ReadOptions& options) {
-  const std::uint64_t file_size = detail::file_size_of(path);
-  const std::vector<unsigned char> head = detail::read_file_prefix(path, max_header_bytes);
+  // the header (at most 1 MiB) and 4 bytes a point
+  detail::InputFile file(path, max_header_bytes + 4 * std::uint64_t{options.max_points});
+  const std::uint64_t file_size = file.size();
+  std::vector<unsigned char> head(static_cast<std::size_t>(std::min<std::uint64_t>(file_size, max_header_bytes)));
+  file.read_at(0, head.data(), head.size());
   if (head.size() < magic_size || std::memcmp(head.data(), magic, magic_size) != 0)
     fail(path, "not a Gwyddion Simple Field file (no 'Gwyddion Simple Field 1.0' line)");
   std::size_t nul = magic_size;
@@ -35,24 +40,26 @@ HeightMap read_gsf(const std::string& path, const ReadOptions& options) {
     if (k >= head.size() || head[k] != 0) fail(path, "the header's NUL padding is truncated or wrong");
 
   std::map<std::string, std::string> fields;
-  std::istringstream header(std::string(head.begin() + magic_size, head.begin() + nul));
-  std::string line;
+  const std::string_view header(reinterpret_cast<const char*>(head.data()) + magic_size, nul - magic_size);
   int line_number = 1;
-  while (std::getline(header, line)) {
+  for (std::size_t start = 0; start < header.size();) {
+    const std::size_t end = std::min(header.find('\n', start), header.size());
+    const std::string_view line = header.substr(start, end - start);
+    start = end + 1;
     ++line_number;
     if (detail::trim(line).empty()) continue;
     const std::size_t equals = line.find('=');
-    if (equals == std::string::npos)
-      fail(path, "header line " + std::to_string(line_number) + " is not 'name = value': '" + line + "'");
-    fields[std::string(detail::trim(std::string_view(line).substr(0, equals)))] =
-        std::string(detail::trim(std::string_view(line).substr(equals + 1)));
+    if (equals == std::string_view::npos)
+      fail(path, "header line " + std::to_string(line_number) + " is not 'name = value': '" +
+                     detail::printable(line) + "'");
+    fields[std::string(detail::trim(line.substr(0, equals)))] = std::string(detail::trim(line.substr(equals + 1)));
   }
   std::uint64_t xres = 0, yres = 0;
   for (const auto& [key, out] : {std::pair<const char*, std::uint64_t*>{"XRes", &xres}, {"YRes", &yres}}) {
     const auto found = fields.find(key);
     if (found == fields.end()) fail(path, std::string("the header has no ") + key);
     if (!detail::parse_size(found->second, std::numeric_limits<std::uint32_t>::max(), *out))
-      fail(path, std::string(key) + " is not a positive integer ('" + found->second + "')");
+      fail(path, std::string(key) + " is not a positive integer ('" + detail::printable(found->second) + "')");
   }
   detail::check_point_count(path, xres, yres, options.max_points);
   const std::uint64_t expected = data_start + 4 * xres * yres;
@@ -66,12 +73,16 @@ HeightMap read_gsf(const std::string& path, const ReadOptions& options) {
   map.format = "gsf";
   map.nx = static_cast<std::size_t>(xres);
   map.ny = static_cast<std::size_t>(yres);
-  const auto lateral = fields.find("XYUnits");
-  const auto vertical = fields.find("ZUnits");
-  const double lateral_unit = lateral == fields.end() ? 1.0 : length_unit_in_metres(lateral->second);
-  const double height_unit = vertical == fields.end() ? 1.0 : length_unit_in_metres(vertical->second);
-  if (lateral == fields.end()) map.notes.push_back("GSF: no XYUnits, metres assumed (Gwyddion's base unit)");
-  if (vertical == fields.end()) map.notes.push_back("GSF: no ZUnits, metres assumed (Gwyddion's base unit)");
+  const auto unit_of = [&](const char* key) {
+    const auto found = fields.find(key);
+    if (found == fields.end()) {
+      map.notes.push_back(std::string("GSF: no ") + key + ", metres assumed (Gwyddion's base unit)");
+      return 1.0;
+    }
+    return detail::unit_in_metres(path, std::string(key) + " = " + found->second, found->second);
+  };
+  const double lateral_unit = unit_of("XYUnits");
+  const double height_unit = unit_of("ZUnits");
   const auto xreal = fields.find("XReal"), yreal = fields.find("YReal");
   const bool has_size = xreal != fields.end() && yreal != fields.end();
   if (has_size) {
@@ -81,18 +92,24 @@ HeightMap read_gsf(const std::string& path, const ReadOptions& options) {
     map.dx = x * lateral_unit / static_cast<double>(xres);
     map.dy = y * lateral_unit / static_cast<double>(yres);
   }
-  if (const auto title = fields.find("Title"); title != fields.end()) map.notes.push_back("channel: " + title->second);
+  if (const auto title = fields.find("Title"); title != fields.end())
+    map.notes.push_back("channel: " + detail::printable(title->second));
 
-  std::ifstream in(path, std::ios::binary);
-  in.seekg(static_cast<std::streamoff>(data_start));
-  std::vector<unsigned char> bytes(static_cast<std::size_t>(4 * xres * yres));
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!in || static_cast<std::size_t>(in.gcount()) != bytes.size()) fail(path, "the data are truncated");
+  // the points in blocks: no second copy of the data in memory
   map.heights.resize(map.nx * map.ny);
-  for (std::size_t k = 0; k < map.heights.size(); ++k) {
-    map.heights[k] = detail::load_le_float32(bytes.data() + 4 * k);
-    if (std::isinf(map.heights[k])) fail(path, "an infinite height at point " + std::to_string(k));
+  std::vector<unsigned char> block(std::size_t{1} << 20);
+  float largest = 0;
+  for (std::size_t k = 0; k < map.heights.size();) {
+    const std::size_t count = std::min(block.size() / 4, map.heights.size() - k);
+    file.read_at(data_start + 4 * std::uint64_t{k}, block.data(), 4 * count);
+    for (std::size_t m = 0; m < count; ++m, ++k) {
+      const float value = detail::load_le_float32_exact(block.data() + 4 * m);
+      if (std::isinf(value)) fail(path, "an infinite height at point " + std::to_string(k));
+      if (!std::isnan(value)) largest = std::max(largest, std::fabs(value));
+      map.heights[k] = value;
+    }
   }
+  map.height_resolution = detail::float32_spacing(largest);
   detail::apply_overrides(map, options, has_size, true, height_unit);
   return map;
 }

@@ -1,8 +1,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <limits>
 
 #include "asperity/topography/height_map_io.hpp"
+#include "input_file.hpp"
 #include "reader_support.hpp"
 
 namespace asperity::topography {
@@ -20,8 +22,12 @@ bool parse_height_map_format(const std::string& name, HeightMapFormat& out) {
 HeightMap read_height_map(const std::string& path, const ReadOptions& options) {
   HeightMapFormat format = options.format;
   if (format == HeightMapFormat::automatic) {
-    detail::file_size_of(path);
-    const std::vector<unsigned char> head = detail::read_file_prefix(path, 32);
+    std::vector<unsigned char> head;
+    {
+      detail::InputFile file(path, std::numeric_limits<std::uint64_t>::max());
+      head.resize(static_cast<std::size_t>(std::min<std::uint64_t>(32, file.size())));
+      file.read_at(0, head.data(), head.size());
+    }
     const auto starts = [&](const char* magic) {
       return head.size() >= std::strlen(magic) && std::memcmp(head.data(), magic, std::strlen(magic)) == 0;
     };
@@ -35,7 +41,8 @@ HeightMap read_height_map(const std::string& path, const ReadOptions& options) {
     else if (extension == "xyz" || extension == "csv") format = HeightMapFormat::xyz;
     else if (extension == "txt" || extension == "asc" || extension == "dat") format = HeightMapFormat::ascii_matrix;
     else
-      detail::fail(path, "unknown format (not X3P or GSF by its first bytes, and the extension '" + extension +
+      detail::fail(path, "unknown format (not X3P or GSF by its first bytes, and the extension '" +
+                             detail::printable(extension) +
                              "' is not .txt/.asc/.dat (matrix) or .xyz/.csv): give --format");
   }
   switch (format) {

@@ -3,15 +3,65 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "asperity/topography/units.hpp"
 
 namespace asperity::topography::detail {
 
-void fail(const std::string& path, const std::string& problem) { throw Error(path + ": " + problem); }
+void fail(const std::string& path, const std::string& problem) { throw Error(printable(path, 4096) + ": " + problem); }
+
+std::string shortest(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
+std::string printable(std::string_view text, std::size_t limit) {
+  std::string out;
+  const auto escape = [&](unsigned char byte) {
+    static const char* hex = "0123456789abcdef";
+    out += "\\x";
+    out += hex[byte >> 4];
+    out += hex[byte & 15];
+  };
+  std::size_t k = 0;
+  while (k < text.size()) {
+    if (out.size() >= limit) {
+      out += "...";
+      break;
+    }
+    const unsigned char c = static_cast<unsigned char>(text[k]);
+    if (c < 0x80) {
+      if (c < 0x20 || c == 0x7f || c == '\\') escape(c);
+      else out += static_cast<char>(c);
+      ++k;
+      continue;
+    }
+    // a whole UTF-8 sequence (no overlong forms, surrogates or code points past U+10FFFF), else \xNN
+    std::size_t length = 0;
+    unsigned lo = 0x80, hi = 0xbf;
+    if (c >= 0xc2 && c <= 0xdf) length = 2;
+    else if (c >= 0xe0 && c <= 0xef) length = 3, lo = c == 0xe0 ? 0xa0 : 0x80, hi = c == 0xed ? 0x9f : 0xbf;
+    else if (c >= 0xf0 && c <= 0xf4) length = 4, lo = c == 0xf0 ? 0x90 : 0x80, hi = c == 0xf4 ? 0x8f : 0xbf;
+    bool valid = length > 0 && k + length <= text.size();
+    for (std::size_t m = 1; valid && m < length; ++m) {
+      const unsigned char d = static_cast<unsigned char>(text[k + m]);
+      valid = m == 1 ? (d >= lo && d <= hi) : (d >= 0x80 && d <= 0xbf);
+    }
+    // C1 controls (U+0080-U+009F) act on terminals too
+    if (valid && c == 0xc2 && static_cast<unsigned char>(text[k + 1]) < 0xa0) valid = false;
+    if (!valid) {
+      escape(c);
+      ++k;
+      continue;
+    }
+    out.append(text.substr(k, length));
+    k += length;
+  }
+  return out;
+}
 
 std::string_view trim(std::string_view text) {
   const char* blanks = " \t\r\n\f\v";
@@ -51,26 +101,6 @@ bool parse_size(std::string_view token, std::uint64_t limit, std::uint64_t& out)
   return true;
 }
 
-std::uint64_t file_size_of(const std::string& path) {
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (error || !std::filesystem::exists(status)) fail(path, "cannot open (no such file)");
-  if (!std::filesystem::is_regular_file(status)) fail(path, "not a regular file");
-  const std::uint64_t size = std::filesystem::file_size(path, error);
-  if (error) fail(path, "cannot read its size: " + error.message());
-  return size;
-}
-
-std::vector<unsigned char> read_file_prefix(const std::string& path, std::size_t count) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open");
-  std::vector<unsigned char> bytes(count);
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(count));
-  if (in.bad()) fail(path, "read error");
-  bytes.resize(static_cast<std::size_t>(in.gcount()));
-  return bytes;
-}
-
 namespace {
 std::uint32_t load_le_u32(const unsigned char* b) noexcept {
   return std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[3]} << 24;
@@ -81,6 +111,12 @@ std::uint64_t load_le_u64(const unsigned char* b) noexcept {
 }  // namespace
 
 double load_le_float32(const unsigned char* bytes) noexcept {
+  const std::uint32_t bits = load_le_u32(bytes);
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+float load_le_float32_exact(const unsigned char* bytes) noexcept {
   const std::uint32_t bits = load_le_u32(bytes);
   float value;
   std::memcpy(&value, &bits, sizeof value);
@@ -103,6 +139,47 @@ std::int16_t load_le_int16(const unsigned char* bytes) noexcept {
   std::int16_t value;
   std::memcpy(&value, &bits, sizeof value);
   return value;
+}
+
+double unit_in_metres(const std::string& path, const std::string& what, std::string_view unit) {
+  try {
+    return length_unit_in_metres(unit);
+  } catch (const Error& error) {
+    fail(path, "'" + printable(what) + "': " + printable(error.what(), 200));
+  }
+}
+
+double float32_spacing(float largest_magnitude) noexcept {
+  const float next = std::nextafter(largest_magnitude, std::numeric_limits<float>::infinity());
+  return static_cast<double>(next) - static_cast<double>(largest_magnitude);
+}
+
+double float64_spacing(double largest_magnitude) noexcept {
+  return std::nextafter(largest_magnitude, std::numeric_limits<double>::infinity()) - largest_magnitude;
+}
+
+double last_digit_value(std::string_view token) noexcept {
+  // digits after the point, and the exponent
+  std::size_t k = 0;
+  if (k < token.size() && (token[k] == '+' || token[k] == '-')) ++k;
+  long decimals = 0;
+  bool after_point = false;
+  for (; k < token.size(); ++k) {
+    const char c = token[k];
+    if (c == '.') after_point = true;
+    else if (c >= '0' && c <= '9') decimals += after_point ? 1 : 0;
+    else break;
+  }
+  long exponent = 0;
+  if (k < token.size() && (token[k] == 'e' || token[k] == 'E')) {
+    ++k;
+    bool negative = false;
+    if (k < token.size() && (token[k] == '+' || token[k] == '-')) negative = token[k++] == '-';
+    for (; k < token.size() && token[k] >= '0' && token[k] <= '9' && exponent < 100000; ++k)
+      exponent = 10 * exponent + (token[k] - '0');
+    if (negative) exponent = -exponent;
+  }
+  return std::pow(10.0, static_cast<double>(exponent - decimals));
 }
 
 namespace {
@@ -145,8 +222,10 @@ void apply_overrides(HeightMap& map, const ReadOptions& options, bool file_has_p
     scale = file_height_unit_metres;
     map.notes.push_back("height unit from the file (" + format_length(file_height_unit_metres) + " per unit)");
   }
-  if (scale != 1)
+  if (scale != 1) {
     for (double& h : map.heights) h *= scale;
+    map.height_resolution *= scale;
+  }
 }
 
 void check_point_count(const std::string& path, std::uint64_t nx, std::uint64_t ny, std::size_t max_points) {

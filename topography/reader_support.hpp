@@ -12,7 +12,16 @@
 
 namespace asperity::topography::detail {
 
+// Throws asperity::Error "PATH: problem", the path made printable.
 [[noreturn]] void fail(const std::string& path, const std::string& problem);
+
+// Text from a file (or a path), made safe to show on a terminal: valid UTF-8 is kept, control
+// bytes, DEL and bytes that are not UTF-8 become \xNN (an escape sequence in a file must not
+// reach the user's terminal), cut after `limit` bytes with "...".
+std::string printable(std::string_view text, std::size_t limit = 80);
+
+// A number for a message, in the shortest form that reads back to it ("1e-200", "3.5e-07").
+std::string shortest(double value);
 
 std::string_view trim(std::string_view text);
 // A whole token as a finite double (C locale, '+' allowed); false otherwise.
@@ -22,16 +31,22 @@ bool is_nan_token(std::string_view token);
 // A whole token as a positive integer no larger than limit; false otherwise.
 bool parse_size(std::string_view token, std::uint64_t limit, std::uint64_t& out);
 
-// The file's size, or fail (missing, not a regular file).
-std::uint64_t file_size_of(const std::string& path);
-// The first `count` bytes of the file (all of it when count is larger); fails on a read error.
-std::vector<unsigned char> read_file_prefix(const std::string& path, std::size_t count);
-
 // Little-endian decoding, independent of the host's byte order.
 double load_le_float32(const unsigned char* bytes) noexcept;
+float load_le_float32_exact(const unsigned char* bytes) noexcept;
 double load_le_float64(const unsigned char* bytes) noexcept;
 std::int32_t load_le_int32(const unsigned char* bytes) noexcept;
 std::int16_t load_le_int16(const unsigned char* bytes) noexcept;
+
+// The metres in a unit read from the file (`what` quotes where), or fail naming the file.
+double unit_in_metres(const std::string& path, const std::string& what, std::string_view unit);
+
+// Rounding steps of stored heights (HeightMap::height_resolution): the spacing of floats or
+// doubles at the largest magnitude stored, and the place value of a decimal number's last
+// digit as written ("1.8823e-008": 1e-12; "12.5": 0.1; "3": 1).
+double float32_spacing(float largest_magnitude) noexcept;
+double float64_spacing(double largest_magnitude) noexcept;
+double last_digit_value(std::string_view token) noexcept;
 
 // Applies ReadOptions' pixel-size and unit overrides after a reader has filled the map from the
 // file, and notes what came from where. `file_has_pixel_size` / `file_has_height_unit`: the

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "asperity/error.hpp"
+#include "fft.hpp"
 
 namespace asperity::topography {
 
@@ -89,22 +90,17 @@ CorrelationLengths correlation_lengths(const HeightMap& map, double level) {
   const double variance = stats.rms * stats.rms;
   if (!(variance > 0)) return lengths;
   for (int direction = 0; direction < 2; ++direction) {
-    const std::size_t along = direction == 0 ? map.nx : map.ny, across = direction == 0 ? map.ny : map.nx;
+    const bool along_x = direction == 0;
+    const std::size_t along = along_x ? map.nx : map.ny, across = along_x ? map.ny : map.nx;
+    const std::size_t max_lag = along / 2;
+    // the mean autocovariance of every line at once, by FFT: O(N log n), not N x lag
+    const std::vector<double> covariance =
+        detail::mean_line_autocovariance(map.heights.data(), across, along, along_x ? map.nx : 1,
+                                         along_x ? 1 : map.nx, stats.mean, max_lag);
     std::size_t lag = 1;
-    for (; lag < along / 2; ++lag) {
-      long double sum = 0;
-      std::size_t count = 0;
-      for (std::size_t a = 0; a < across; ++a)
-        for (std::size_t k = 0; k + lag < along; ++k) {
-          const double p = direction == 0 ? map.at(k, a) : map.at(a, k);
-          const double q = direction == 0 ? map.at(k + lag, a) : map.at(a, k + lag);
-          if (std::isnan(p) || std::isnan(q)) continue;
-          sum += (p - stats.mean) * (q - stats.mean);
-          ++count;
-        }
-      if (count == 0 || static_cast<double>(sum / count) / variance < level) break;
-    }
-    (direction == 0 ? lengths.x : lengths.y) = std::max<std::size_t>(lag, 1);
+    for (; lag < max_lag; ++lag)
+      if (!(covariance[lag] / variance >= level)) break;  // no pair (NaN) ends the search too
+    (along_x ? lengths.x : lengths.y) = std::max<std::size_t>(lag, 1);
   }
   return lengths;
 }

@@ -1,10 +1,73 @@
 #include "asperity/topography/summits.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "asperity/error.hpp"
 
 namespace asperity::topography {
+namespace {
+
+// a beats b: higher, or as high and earlier in raster order (a flat top counts once)
+struct Beats {
+  const double* h;
+  bool operator()(std::size_t a, std::size_t b) const noexcept { return h[a] > h[b] || (h[a] == h[b] && a < b); }
+};
+
+// out[k] = the best of in[k - w ... k + w] along one line (entries first + k * stride, k < n),
+// by a monotonic queue of (position, candidate): O(n) whatever the window.
+void sliding_best(const Beats& beats, const std::size_t* in, std::size_t* out, std::size_t first, std::size_t n,
+                  std::size_t stride, std::size_t w, std::vector<std::pair<std::size_t, std::size_t>>& queue) {
+  queue.clear();
+  std::size_t head = 0, entered = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    for (const std::size_t last = std::min(n - 1, k + w); entered <= last; ++entered) {
+      const std::size_t candidate = in[first + entered * stride];
+      while (queue.size() > head && !beats(queue.back().second, candidate)) queue.pop_back();
+      queue.emplace_back(entered, candidate);
+    }
+    while (queue[head].first + w < k) ++head;  // left the window
+    out[first + k * stride] = queue[head].second;
+  }
+}
+
+// The summits of a window larger than 3 x 3: a point is a summit when it is the best point of
+// its window, found by a separable sliding maximum (rows, then columns) in O(N) whatever the
+// window's size (the direct test costs (2w + 1)^2 a point); windows with a missing point are
+// found by a summed-area table of missing points.
+std::vector<char> window_maxima(const HeightMap& map, std::size_t w) {
+  const std::size_t nx = map.nx, ny = map.ny;
+  const Beats beats{map.heights.data()};
+  std::vector<std::size_t> identity(nx * ny), row_best(nx * ny), best(nx * ny);
+  for (std::size_t k = 0; k < identity.size(); ++k) identity[k] = k;
+  std::vector<std::pair<std::size_t, std::size_t>> queue;
+  for (std::size_t j = 0; j < ny; ++j) sliding_best(beats, identity.data(), row_best.data(), j * nx, nx, 1, w, queue);
+  identity.clear();
+  identity.shrink_to_fit();
+  for (std::size_t i = 0; i < nx; ++i) sliding_best(beats, row_best.data(), best.data(), i, ny, nx, w, queue);
+  row_best.clear();
+  row_best.shrink_to_fit();
+  // missing points in each window: a summed-area table over (ny + 1) x (nx + 1)
+  std::vector<std::size_t> missing((nx + 1) * (ny + 1), 0);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i)
+      missing[(j + 1) * (nx + 1) + i + 1] = (std::isnan(map.heights[j * nx + i]) ? 1 : 0) +
+                                            missing[j * (nx + 1) + i + 1] + missing[(j + 1) * (nx + 1) + i] -
+                                            missing[j * (nx + 1) + i];
+  std::vector<char> result(nx * ny, 0);  // 0: not a candidate, 1: a candidate, 2: a summit
+  for (std::size_t j = w; j + w < ny; ++j)
+    for (std::size_t i = w; i + w < nx; ++i) {
+      const std::size_t x0 = i - w, x1 = i + w + 1, y0 = j - w, y1 = j + w + 1;
+      const std::size_t holes = missing[y1 * (nx + 1) + x1] - missing[y0 * (nx + 1) + x1] -
+                                missing[y1 * (nx + 1) + x0] + missing[y0 * (nx + 1) + x0];
+      if (holes != 0) continue;
+      result[j * nx + i] = best[j * nx + i] == j * nx + i ? 2 : 1;
+    }
+  return result;
+}
+
+}  // namespace
 
 Summits find_summits(const HeightMap& map, const SummitOptions& options) {
   if (options.window < 1) throw Error("summits: the window must be at least 1 point");
@@ -16,23 +79,30 @@ Summits find_summits(const HeightMap& map, const SummitOptions& options) {
   summits.dy = map.dy;
   const std::size_t w = static_cast<std::size_t>(options.window);
   if (map.nx <= 2 * w || map.ny <= 2 * w) throw Error(map.source + ": too small for the summit window");
+  const std::vector<char> maxima = w > 1 ? window_maxima(map, w) : std::vector<char>();
   long double curvature_sum = 0;
   for (std::size_t j = w; j + w < map.ny; ++j)
     for (std::size_t i = w; i + w < map.nx; ++i) {
       const double h = map.at(i, j);
       if (std::isnan(h)) continue;
       bool complete = true, summit = true;
-      for (std::size_t q = j - w; q <= j + w && complete; ++q)
-        for (std::size_t p = i - w; p <= i + w; ++p) {
-          if (p == i && q == j) continue;
-          const double other = map.at(p, q);
-          if (std::isnan(other)) {
-            complete = false;
-            break;
+      if (w > 1) {
+        complete = maxima[j * map.nx + i] != 0;
+        summit = maxima[j * map.nx + i] == 2;
+      } else {
+        // the 8 neighbours directly: no tables
+        for (std::size_t q = j - 1; q <= j + 1 && complete; ++q)
+          for (std::size_t p = i - 1; p <= i + 1; ++p) {
+            if (p == i && q == j) continue;
+            const double other = map.at(p, q);
+            if (std::isnan(other)) {
+              complete = false;
+              break;
+            }
+            const bool before = q < j || (q == j && p < i);
+            if (before ? !(h > other) : !(h >= other)) summit = false;
           }
-          const bool before = q < j || (q == j && p < i);
-          if (before ? !(h > other) : !(h >= other)) summit = false;
-        }
+      }
       if (!complete) continue;
       ++summits.candidates;
       if (!summit) continue;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "asperity/error.hpp"
+#include "reader_support.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -29,7 +30,7 @@ double length_unit_in_metres(std::string_view unit) {
   if (u == "pm") return 1e-12;
   // angstrom: A, Å (U+00C5, C3 85) or ANGSTROM SIGN U+212B (E2 84 AB)
   if (u == "A" || u == "\xC3\x85" || u == "\xE2\x84\xAB" || u == "angstrom") return 1e-10;
-  throw Error("unknown length unit '" + std::string(u) + "' (m, mm, um, nm, pm, A, ...)");
+  throw Error("unknown length unit '" + detail::printable(u) + "' (m, mm, um, nm, pm, A, ...)");
 }
 
 double parse_length(std::string_view text, std::string_view default_unit) {
@@ -38,10 +39,10 @@ double parse_length(std::string_view text, std::string_view default_unit) {
   double value = 0;
   const auto result = std::from_chars(t.data(), t.data() + t.size(), value);
   if (result.ec != std::errc() || t.empty() || !std::isfinite(value))
-    throw Error("not a length: '" + std::string(text) + "'");
+    throw Error("not a length: '" + detail::printable(text) + "'");
   const std::string_view unit = trimmed(std::string_view(result.ptr, static_cast<std::size_t>(t.data() + t.size() - result.ptr)));
   if (unit.empty()) {
-    if (default_unit.empty()) throw Error("a length needs its unit: '" + std::string(text) + "' (e.g. 1.5um)");
+    if (default_unit.empty()) throw Error("a length needs its unit: '" + detail::printable(text) + "' (e.g. 1.5um)");
     return value * length_unit_in_metres(default_unit);
   }
   return value * length_unit_in_metres(unit);

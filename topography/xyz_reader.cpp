@@ -1,11 +1,11 @@
 // x y z text (blank-, comma- or semicolon-separated) on a regular grid; no units in the file.
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/units.hpp"
+#include "input_file.hpp"
 #include "reader_support.hpp"
 
 namespace asperity::topography {
@@ -35,8 +35,8 @@ Axis grid_axis(const std::string& path, std::vector<double> values, const char* 
   for (double v : values) {
     const double position = (v - axis.origin) / step;
     if (std::abs(position - std::round(position)) > 1e-3)
-      fail(path, std::string("the ") + name + " coordinates are not on a regular grid (" + std::to_string(v) +
-                     " is off the step " + std::to_string(step) + ")");
+      fail(path, std::string("the ") + name + " coordinates are not on a regular grid (" + detail::shortest(v) +
+                     " is off the step " + detail::shortest(step) + ")");
   }
   return axis;
 }
@@ -45,18 +45,17 @@ Axis grid_axis(const std::string& path, std::vector<double> values, const char* 
 HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
   if (options.lateral_unit.empty())
     fail(path, "xyz files carry no units: give the unit of x and y (--unit, e.g. um; heights too unless --height-unit)");
-  const double lateral = length_unit_in_metres(options.lateral_unit);
-  const std::uint64_t file_size = detail::file_size_of(path);
-  if (file_size / 20 > options.max_points)
-    fail(path, "is " + std::to_string(file_size) + " bytes, more text than " + std::to_string(options.max_points) +
-                   " points need (ReadOptions::max_points)");
-  std::ifstream in(path);
-  if (!in) fail(path, "cannot open");
+  const double lateral = detail::unit_in_metres(path, "--unit " + options.lateral_unit, options.lateral_unit);
+  // three doubles a point while reading, then the grid's heights: a quarter of the point limit
+  // keeps the memory within what the other formats need at the limit
+  const std::size_t max_points = std::max<std::size_t>(options.max_points / 4, 9);
+  detail::InputFile file(path, 80 * std::uint64_t{max_points} + (std::uint64_t{1} << 20));
+  detail::LineReader lines(file, 4096);
   std::vector<double> xs, ys, zs;
   std::string line;
-  std::size_t line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
+  double resolution = 0;
+  while (lines.next(line)) {
+    const std::size_t line_number = lines.line_number();
     const std::string_view text = detail::trim(line);
     if (text.empty() || text.front() == '#') continue;
     double values[3];
@@ -70,20 +69,25 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
       if (detail::trim(token).empty()) continue;
       if (count == 3) fail(path, "line " + std::to_string(line_number) + " has more than three columns");
       if (count == 2 && detail::is_nan_token(token)) values[count++] = std::numeric_limits<double>::quiet_NaN();
-      else if (detail::parse_double(token, values[count])) ++count;
-      else { numeric = false; break; }
+      else if (detail::parse_double(token, values[count])) {
+        if (count == 2) resolution = std::max(resolution, detail::last_digit_value(detail::trim(token)));
+        ++count;
+      } else {
+        numeric = false;
+        break;
+      }
     }
     if (!numeric) {
       if (xs.empty() && line_number == 1) continue;  // one header line
       fail(path, "line " + std::to_string(line_number) + " is not three numbers x y z");
     }
     if (count != 3) fail(path, "line " + std::to_string(line_number) + " has " + std::to_string(count) + " columns, not x y z");
+    if (xs.size() >= max_points)
+      fail(path, "holds more than " + std::to_string(max_points) + " points (ReadOptions::max_points / 4 for xyz)");
     xs.push_back(values[0]);
     ys.push_back(values[1]);
     zs.push_back(values[2]);
-    if (xs.size() > options.max_points) fail(path, "holds more than " + std::to_string(options.max_points) + " points");
   }
-  if (in.bad()) fail(path, "read error");
   if (xs.size() < 9) fail(path, "holds fewer than 9 points");
   const Axis ax = grid_axis(path, xs, "x", options.max_points), ay = grid_axis(path, ys, "y", options.max_points);
   detail::check_point_count(path, ax.count, ay.count, options.max_points);
@@ -98,11 +102,13 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
   map.dx = ax.step * lateral;
   map.dy = ay.step * lateral;
   map.heights.assign(map.nx * map.ny, std::numeric_limits<double>::quiet_NaN());
+  map.height_resolution = resolution;
   std::vector<bool> seen(map.heights.size(), false);
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const std::size_t i = static_cast<std::size_t>(std::llround((xs[k] - ax.origin) / ax.step));
     const std::size_t j = static_cast<std::size_t>(std::llround((ys[k] - ay.origin) / ay.step));
-    if (seen[j * map.nx + i]) fail(path, "two points at the same x, y (" + std::to_string(xs[k]) + ", " + std::to_string(ys[k]) + ")");
+    if (seen[j * map.nx + i])
+      fail(path, "two points at the same x, y (" + detail::shortest(xs[k]) + ", " + detail::shortest(ys[k]) + ")");
     seen[j * map.nx + i] = true;
     map.heights[j * map.nx + i] = zs[k];
   }

@@ -94,10 +94,12 @@ int run(CLI::App& app, int argc, const char* const* argv) {
         message = "a command is required (" + names + ")";
       }
     }
-    std::fprintf(stderr, "%s: %s\nRun '%s --help' for the usage.\n", name.c_str(), message.c_str(), name.c_str());
+    std::fprintf(stderr, "%s: %s\nRun '%s --help' for the usage.\n", name.c_str(), terminal_text(message).c_str(),
+                 name.c_str());
     status = exit_failure;
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "%s: %s\n", selected_name(app).c_str(), error.what());
+    // messages quote files' bytes: nothing of them may reach the terminal as a control sequence
+    std::fprintf(stderr, "%s: %s\n", selected_name(app).c_str(), terminal_text(error.what()).c_str());
     status = exit_failure;
   }
   // Output that could not be written is a failure, whatever the command did.
@@ -155,11 +157,11 @@ CLI::Option* add_table_option(CLI::App& command, std::string& path) {
 Table open_table(const std::string& path) { return path.empty() ? Table::open_default() : Table::open(path); }
 
 void warn(const CLI::App& command, const std::string& message) {
-  std::fprintf(stderr, "%s: warning: %s\n", command_name(command).c_str(), message.c_str());
+  std::fprintf(stderr, "%s: warning: %s\n", command_name(command).c_str(), terminal_text(message).c_str());
 }
 
 void note(const CLI::App& command, const std::string& message) {
-  std::fprintf(stderr, "%s: %s\n", command_name(command).c_str(), message.c_str());
+  std::fprintf(stderr, "%s: %s\n", command_name(command).c_str(), terminal_text(message).c_str());
 }
 
 int print_version() {

@@ -39,7 +39,7 @@ void add_eval_command(CLI::App& app) {
       std::string(exit_status_help));
   set_action(*command, [options] {
     const Table table = open_table(options->table);
-    int bad = 0;
+    std::uint64_t bad = 0;
     if (options->input.empty() || options->input == "-") {
       bad = eval_csv(table, std::cin, std::cout, std::cerr);
       if (std::ferror(stdin)) throw Error("reading standard input failed");

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <ios>
 #include <istream>
+#include <cstdint>
+#include <list>
 #include <map>
 #include <ostream>
 #include <string>
@@ -79,9 +81,36 @@ std::vector<std::string_view> split(std::string_view line) {
   }
 }
 
+// The curves of the shapes met last, at most `capacity` (~330 KB each); a miss costs the
+// curve's making (milliseconds), a hit a map lookup.
+class CurveCache {
+ public:
+  const Curve& get(const Table& table, Distribution distribution, Side side, double shape) {
+    const Key key{static_cast<int>(distribution), static_cast<int>(side), shape};
+    if (const auto found = index_.find(key); found != index_.end()) {
+      order_.splice(order_.begin(), order_, found->second);  // now the most recent
+      return found->second->second;
+    }
+    Curve curve = table.curve(distribution, side, shape);  // may throw: nothing changes
+    if (index_.size() >= capacity) {
+      index_.erase(order_.back().first);
+      order_.pop_back();
+    }
+    order_.emplace_front(key, std::move(curve));
+    index_.emplace(key, order_.begin());
+    return order_.front().second;
+  }
+
+ private:
+  using Key = std::tuple<int, int, double>;
+  static constexpr std::size_t capacity = 256;
+  std::list<std::pair<Key, Curve>> order_;  // most recent first
+  std::map<Key, std::list<std::pair<Key, Curve>>::iterator> index_;
+};
+
 }  // namespace
 
-int eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors) {
+std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors) {
   LineReader reader(input);
   std::string line;
   bool too_long = false;
@@ -97,9 +126,10 @@ int eval_csv(const Table& table, std::istream& input, std::ostream& output, std:
     return 1;
   }
   output << "dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,lnI1_2,lnI1,lnI3_2,lnI2,lnI5_2\n";
-  // Resolving a shape costs more than a query: keep the curves already made (bounded cache).
-  std::map<std::tuple<int, int, double>, Curve> curves;
-  int bad = 0;
+  // Resolving a shape costs far more than a query: keep the curves made last (least recently
+  // used out first, never the whole cache at once).
+  CurveCache curves;
+  std::uint64_t bad = 0;
   for (long line_number = 2; output && reader.next(line, too_long); ++line_number) {
     auto reject = [&](const std::string& why) {
       errors << "asperity eval: line " << line_number << ": " << why << "\n";
@@ -140,18 +170,14 @@ int eval_csv(const Table& table, std::istream& input, std::ostream& output, std:
       reject("sep '" + quote_text(fields[3]) + "' is not a finite number");
       continue;
     }
-    const auto key = std::make_tuple(static_cast<int>(distribution), static_cast<int>(side), shape);
-    auto found = curves.find(key);
-    if (found == curves.end()) {
-      try {
-        if (curves.size() >= 64) curves.clear();
-        found = curves.emplace(key, table.curve(distribution, side, shape)).first;
-      } catch (const Error& error) {
-        reject(error.what());
-        continue;
-      }
+    const Curve* found = nullptr;
+    try {
+      found = &curves.get(table, distribution, side, shape);
+    } catch (const Error& error) {
+      reject(error.what());
+      continue;
     }
-    const Curve& curve = found->second;
+    const Curve& curve = *found;
     std::string row = std::string(to_string(distribution)) + "," + to_string(side) + "," +
                       (distribution == Distribution::gaussian ? std::string(fields[2]) : format_double(shape)) + "," +
                       format_double(separation);

@@ -1,6 +1,7 @@
 // `asperity eval`'s contract: CSV in (dist,side,shape,sep), CSV out (the values and logs of the
 // six orders), numbers in the shortest form that reads back to the same double.
 #pragma once
+#include <cstdint>
 #include <iosfwd>
 
 #include "asperity/table.hpp"
@@ -12,7 +13,7 @@ namespace asperity::cli {
 // Returns the number of bad rows (a bad or missing header counts as one and stops). Stops early
 // when `output` fails (the caller reports the write error). Throws asperity::Error when reading
 // `input` fails.
-int eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors);
+std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors);
 
 inline constexpr std::size_t max_line_bytes = 65536;
 

@@ -62,4 +62,43 @@ std::string quote_text(std::string_view text, std::size_t limit) {
   return out;
 }
 
+std::string terminal_text(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  std::size_t k = 0;
+  const auto escape = [&](unsigned char c) {
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02X", c);
+    out += escaped;
+  };
+  while (k < text.size()) {
+    const unsigned char c = static_cast<unsigned char>(text[k]);
+    if (c < 0x80) {
+      if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f) escape(c);
+      else out += static_cast<char>(c);
+      ++k;
+      continue;
+    }
+    // whole UTF-8 sequences only (no C1 controls, overlong forms, surrogates, beyond U+10FFFF)
+    std::size_t length = 0;
+    unsigned lo = 0x80, hi = 0xbf;
+    if (c >= 0xc2 && c <= 0xdf) length = 2, lo = c == 0xc2 ? 0xa0 : 0x80;
+    else if (c >= 0xe0 && c <= 0xef) length = 3, lo = c == 0xe0 ? 0xa0 : 0x80, hi = c == 0xed ? 0x9f : 0xbf;
+    else if (c >= 0xf0 && c <= 0xf4) length = 4, lo = c == 0xf0 ? 0x90 : 0x80, hi = c == 0xf4 ? 0x8f : 0xbf;
+    bool valid = length > 0 && k + length <= text.size();
+    for (std::size_t m = 1; valid && m < length; ++m) {
+      const unsigned char d = static_cast<unsigned char>(text[k + m]);
+      valid = m == 1 ? (d >= lo && d <= hi) : (d >= 0x80 && d <= 0xbf);
+    }
+    if (!valid) {
+      escape(c);
+      ++k;
+      continue;
+    }
+    out.append(text.substr(k, length));
+    k += length;
+  }
+  return out;
+}
+
 }  // namespace asperity::cli

@@ -22,4 +22,9 @@ std::string format_double(double value);
 // `text` made safe to quote in a message: control bytes shown as \xNN, cut after `limit` bytes.
 std::string quote_text(std::string_view text, std::size_t limit = 60);
 
+// A message made safe for a terminal: newlines and tabs kept, valid UTF-8 kept (µm), every other
+// control byte (an escape sequence from a file's bytes), DEL, C1 controls and bytes that are not
+// UTF-8 shown as \xNN.
+std::string terminal_text(std::string_view text);
+
 }  // namespace asperity::cli

@@ -71,7 +71,7 @@ topo::ReadOptions read_options(const Options& o) {
   return read;
 }
 
-int run_surface(const Options& o, const CLI::App& command) {
+int run_surface(const Options& o) {
   topo::AnalysisOptions options;
   options.read = read_options(o);
   options.level = !o.no_level;
@@ -118,9 +118,10 @@ int run_surface(const Options& o, const CLI::App& command) {
   std::cout << (o.json ? topo::analysis_json(analysis) : topo::analysis_summary(analysis));
   if (!o.report.empty()) {
     const topo::ReportOutcome outcome = topo::write_report(analysis, o.report);
-    if (!outcome.plots) note(command, outcome.plot_note);
     if (!o.json) std::cout << "  report: " << outcome.files.front() << " (" << outcome.files.size() << " files)\n";
   }
+  // statistics only: what was asked beyond them (summits, fits, curves) does not exist
+  if (analysis.noise_floor.reached) throw Error(quote_text(analysis.map.source, 4096) + ": " + analysis.noise_floor.text);
   return exit_success;
 }
 
@@ -164,8 +165,8 @@ void add_surface_command(CLI::App& app) {
   add_number(*command, "--confidence", o.confidence, "of the intervals (default 0.95)")->type_name("P")->group(analysis);
   add_whole_number(*command, "--seed", o.seed, 0, 9223372036854775807LL, "of the bootstrap (default 1: reproducible)")
       ->group(analysis);
-  add_whole_number(*command, "--threads", o.threads, 0, 4096,
-                   "for the bootstrap and the scene tables (default 0: all cores)")
+  add_whole_number(*command, "--threads", o.threads, 0, 1024,
+                   "for the bootstrap and the scene tables (default 0: all cores; fewer if the system refuses more)")
       ->group(analysis);
   command->add_flag("--no-height-fit", o.no_height_fit, "fit the summit heights only")->group(analysis);
   const char* contact = "Contact curves (SI units)";
@@ -201,7 +202,7 @@ void add_surface_command(CLI::App& app) {
       "the contact curves of each fit and their ratios at the pressures of interest (docs/surfaces.md).\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
-  set_action(*command, [options, self] { return run_surface(*options, *self); });
+  set_action(*command, [options, self] { return run_surface(*options); });
 }
 
 }  // namespace asperity::cli

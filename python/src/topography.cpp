@@ -180,6 +180,9 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readwrite("dy", &topo::HeightMap::dy, "Sampling interval along y [m].")
       .def_readwrite("source", &topo::HeightMap::source, "The file it came from (for messages).")
       .def_readwrite("format", &topo::HeightMap::format, "x3p, gsf, ascii-matrix, xyz, synthetic or array.")
+      .def_readwrite("height_resolution", &topo::HeightMap::height_resolution,
+                     "The largest rounding step of the heights as stored [m] (0: unknown): roughness at this level\n"
+                     "is quantization (the analysis stops at its noise floor).")
       .def_readwrite("notes", &topo::HeightMap::notes,
                      "Where sizes and units came from, the instrument, what was done.")
       .def_property_readonly("missing_points", &topo::HeightMap::missing_points, "Points that are NaN.")
@@ -660,7 +663,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
                        const std::optional<topo::SummitOptions>& summits,
                        const std::optional<topo::AssessmentOptions>& assessment, bool fit_heights,
                        std::size_t max_height_sample, std::vector<std::size_t> sampling_factors,
-                       std::optional<topo::ContactOptions> contact) {
+                       std::optional<topo::ContactOptions> contact, std::size_t max_fit_sample) {
              topo::AnalysisOptions options;
              if (read) options.read = *read;
              options.level = level;
@@ -670,15 +673,18 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
              options.max_height_sample = max_height_sample;
              options.sampling_factors = std::move(sampling_factors);
              options.contact = std::move(contact);
+             options.max_fit_sample = max_fit_sample;
              return options;
            }),
            "read"_a = py::none(), "level"_a = true, "summits"_a = py::none(), "assessment"_a = py::none(),
            "fit_heights"_a = true, "max_height_sample"_a = topo::AnalysisOptions{}.max_height_sample,
            "sampling_factors"_a = topo::AnalysisOptions{}.sampling_factors, "contact"_a = py::none(),
+           "max_fit_sample"_a = topo::AnalysisOptions{}.max_fit_sample,
            "read: ReadOptions (files only); level: subtract the least-squares plane; summits: SummitOptions;\n"
            "assessment: AssessmentOptions (the bootstrap); fit_heights: also fit the heights, thinned to one per\n"
            "correlation length and at most max_height_sample; sampling_factors: summits at k dx; contact:\n"
-           "ContactOptions for the contact curves of each fit (None: no curves).")
+           "ContactOptions for the contact curves of each fit (None: no curves); max_fit_sample: the summit\n"
+           "heights fitted, all up to this many, else a reproducible random subsample of this many.")
       .def_readwrite("read", &topo::AnalysisOptions::read)
       .def_readwrite("level", &topo::AnalysisOptions::level)
       .def_readwrite("summits", &topo::AnalysisOptions::summits)
@@ -686,22 +692,34 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readwrite("fit_heights", &topo::AnalysisOptions::fit_heights)
       .def_readwrite("max_height_sample", &topo::AnalysisOptions::max_height_sample)
       .def_readwrite("sampling_factors", &topo::AnalysisOptions::sampling_factors)
-      .def_readwrite("contact", &topo::AnalysisOptions::contact);
+      .def_readwrite("contact", &topo::AnalysisOptions::contact)
+      .def_readwrite("max_fit_sample", &topo::AnalysisOptions::max_fit_sample);
 
   py::class_<topo::ReportOutcome>(m, "ReportOutcome", "What write_report wrote.")
       .def_readonly("files", &topo::ReportOutcome::files)
       .def_readonly("plots", &topo::ReportOutcome::plots)
-      .def_readonly("plot_note", &topo::ReportOutcome::plot_note, "Why there are no plots, when there are none.");
+      .def_readonly("plot_note", &topo::ReportOutcome::plot_note, "Why there are no plots (a map at its noise floor).");
 
-  auto write_report = [](const topo::SurfaceAnalysis& analysis, const PathName& directory, const std::string& plot_script) {
+  auto write_report = [](const topo::SurfaceAnalysis& analysis, const PathName& directory) {
     const std::string path = path_text(directory.object);
     py::gil_scoped_release unlocked;
-    return topo::write_report(analysis, path, plot_script);
+    return topo::write_report(analysis, path);
   };
   const char* report_doc =
-      "Writes a report directory (created if needed): report.md with the plots, report.json, curves.csv,\n"
-      "summits.csv, and the plots as SVG and PNG (python3 with matplotlib; without it the report says so).\n"
-      "plot_script: '' for $ASPERITY_SURFACE_PLOTS, else the library's. Raises asperity.Error on a write error.";
+      "Writes a report folder (created if needed): report.md with the plots, report.json, curves.csv,\n"
+      "summits.csv, fits.svg and contact.svg (drawn by the library: nothing is run). Each file is replaced\n"
+      "atomically, no link in the folder is followed, one run writes the folder at a time and an earlier\n"
+      "run's files are not left beside this one's. Raises asperity.Error on a write error.";
+  py::class_<topo::NoiseFloor>(m, "NoiseFloor",
+                               "A roughness at the level of the heights' quantization q: Sq under 10 q / sqrt(12).")
+      .def_readonly("reached", &topo::NoiseFloor::reached)
+      .def_readonly("resolution", &topo::NoiseFloor::resolution, "q [m] (HeightMap.height_resolution).")
+      .def_readonly("rms_limit", &topo::NoiseFloor::rms_limit, "10 q / sqrt(12) [m].")
+      .def_readonly("text", &topo::NoiseFloor::text)
+      .def("__repr__", [](const topo::NoiseFloor& f) {
+        return py::str("NoiseFloor(reached={!r}, resolution={!r})").format(f.reached, f.resolution);
+      });
+
   py::class_<topo::SurfaceAnalysis>(m, "SurfaceAnalysis",
                                     "A measured surface analysed: the map as analysed, statistics, moments, summits, the fits\n"
                                     "with their evidence, and the contact curves. to_dict() gives all of it as the JSON document\n"
@@ -714,7 +732,12 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("correlation", &topo::SurfaceAnalysis::correlation)
       .def_readonly("summits", &topo::SurfaceAnalysis::summits)
       .def_readonly("sampling", &topo::SurfaceAnalysis::sampling, "Summits and moments at 1, 2, 4 times dx.")
+      .def_readonly("noise_floor", &topo::SurfaceAnalysis::noise_floor,
+                    "Whether the roughness is at the level of the heights' quantization (then no summits, fits\n"
+                    "or contact curves follow the statistics).")
       .def_readonly("summit_heights", &topo::SurfaceAnalysis::summit_heights, "The fits of the summit heights.")
+      .def_readonly("summits_fitted", &topo::SurfaceAnalysis::summits_fitted,
+                    "The summit heights fitted (all, or a random subsample of AnalysisOptions.max_fit_sample).")
       .def_readonly("heights", &topo::SurfaceAnalysis::heights, "The fits of the thinned heights, or None.")
       .def_readonly("height_stride_x", &topo::SurfaceAnalysis::height_stride_x)
       .def_readonly("height_stride_y", &topo::SurfaceAnalysis::height_stride_y)
@@ -727,7 +750,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
            "The JSON document (schema asperity-surface/1) as text.")
       .def("summary", [](const topo::SurfaceAnalysis& a) { return topo::analysis_summary(a); },
            "The short summary `asperity surface` prints.")
-      .def("write_report", write_report, "directory"_a, "plot_script"_a = "", report_doc);
+      .def("write_report", write_report, "directory"_a, report_doc);
 
   auto analysis_options = [](std::optional<topo::AnalysisOptions> options, const py::kwargs& fields) {
     if (fields.size() == 0) return options.value_or(topo::AnalysisOptions{});
@@ -761,7 +784,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       "pixel sizes, units); options: an AnalysisOptions, or its fields as keywords.");
   m.def("analysis_json", &topo::analysis_json, "analysis"_a, "The JSON document (schema asperity-surface/1) as text.");
   m.def("analysis_summary", &topo::analysis_summary, "analysis"_a, "The short summary `asperity surface` prints.");
-  m.def("write_report", write_report, "analysis"_a, "directory"_a, "plot_script"_a = "", report_doc);
+  m.def("write_report", write_report, "analysis"_a, "directory"_a, report_doc);
 }
 
 }  // namespace asperity::python

@@ -21,7 +21,6 @@ REPO = Path(__file__).resolve().parents[2]
 SURFACES = REPO / "tests" / "data" / "surfaces"
 AFM = SURFACES / "afm-zsensor-10um.txt"
 X3P = SURFACES / "digitalsurf-650x650.x3p"
-NO_MATPLOTLIB = SURFACES / "no_matplotlib.py"
 
 
 def test_the_submodule_imports_as_a_module():
@@ -302,7 +301,7 @@ def test_gaussian_random_field_and_weibull_marginals():
 
 def test_analyse_the_real_afm_map(tmp_path):
     contact = topography.ContactOptions(2e9, pressures=[1e5], table_path=asperity.Table.default_path(), threads=2)
-    options = topography.AnalysisOptions(assessment=topography.AssessmentOptions(bootstrap=9, threads=2),
+    options = topography.AnalysisOptions(assessment=topography.AssessmentOptions(bootstrap=20, threads=2),
                                          summits=topography.SummitOptions(window=2), fit_heights=False,
                                          contact=contact)
     analysis = topography.analyse_surface_file(AFM, options)
@@ -330,12 +329,12 @@ def test_analyse_the_real_afm_map(tmp_path):
     assert math.isclose(model.at_pressure(1e5).stiffness, gaussian.at_pressures.stiffness[0], rel_tol=1e-9)
     assert "summits" in analysis.summary()
 
-    outcome = analysis.write_report(tmp_path / "report", plot_script=str(NO_MATPLOTLIB))
-    assert not outcome.plots and "no matplotlib" in outcome.plot_note
+    outcome = analysis.write_report(tmp_path / "report")
+    assert outcome.plots and outcome.plot_note == ""
     names = {Path(f).name for f in outcome.files}
-    assert {"report.md", "report.json", "curves.csv", "summits.csv"} <= names
+    assert names == {"report.md", "report.json", "curves.csv", "summits.csv", "fits.svg", "contact.svg"}
     assert json.loads((tmp_path / "report" / "report.json").read_text())["schema"] == "asperity-surface/1"
-    same = topography.write_report(analysis, str(tmp_path / "again"), str(NO_MATPLOTLIB))
+    same = topography.write_report(analysis, str(tmp_path / "again"))
     assert len(same.files) == len(outcome.files)
 
 
@@ -357,8 +356,8 @@ def test_analyse_a_synthetic_map_leaves_it_unchanged():
     with pytest.raises(TypeError):
         topography.analyse_height_map(field, topography.AnalysisOptions(), level=False)
     flat = topography.HeightMap(np.zeros((10, 10)), 1e-6, 1e-6)
-    with pytest.raises(asperity.Error, match="summits"):
-        topography.analyse_height_map(flat)
+    floor = topography.analyse_height_map(flat).noise_floor
+    assert floor.reached and "no roughness" in floor.text
 
 
 # ---- documentation: docstrings for help(), stubs for editors ----

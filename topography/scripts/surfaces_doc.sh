@@ -1,12 +1,11 @@
 #!/usr/bin/env bash
 # Regenerates the measured figures of docs/surfaces.md: the two real surfaces of
 # tests/data/surfaces through `asperity surface`, one report directory each under
-# docs/surfaces/ (report.md, report.json, curves.csv, summits.csv, fits.svg/png, contact.svg/png),
+# docs/surfaces/ (report.md, report.json, curves.csv, summits.csv, fits.svg, contact.svg),
 # the terminal summaries, and the Anderson-Darling size and power measurement.
 #   bash topography/scripts/surfaces_doc.sh        (after building: cmake --build build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-source scripts/require-matplotlib.sh
 
 run() {  # name file extra-options...
   local name=$1 file=$2

@@ -29,6 +29,10 @@ struct AnalysisOptions {
   AssessmentOptions assessment;
   bool fit_heights = true;                // also fit the (thinned) heights
   std::size_t max_height_sample = 4000;
+  // The summit heights fitted and tested: all of them up to this many, else a reproducible
+  // random subsample of this many (seeded by the assessment's seed; stated in the report), so
+  // the bootstrap's cost does not grow with the map beyond it.
+  std::size_t max_fit_sample = 20000;
   std::vector<std::size_t> sampling_factors = {1, 2, 4};  // summits at k dx (sampling dependence)
   std::optional<ContactOptions> contact;  // contact curves: needs ContactOptions::contact_modulus
 };
@@ -41,8 +45,20 @@ struct SamplingRow {
   double m2 = 0, m4 = 0, alpha = 0;
 };
 
+// A map whose roughness is at the level of its height quantization (HeightMap::
+// height_resolution q): Sq within 10 times the rms of rounding to q (q / sqrt(12)), i.e. under
+// 2.9 q, or every height equal. Its summits would be rounding noise: it gets its statistics and
+// this statement, never summits, fits or contact curves.
+struct NoiseFloor {
+  bool reached = false;
+  double resolution = 0;   // q [m]
+  double rms_limit = 0;    // 10 q / sqrt(12) [m]
+  std::string text;
+};
+
 struct SurfaceAnalysis {
   HeightMap map;                   // as analysed (leveled when asked)
+  NoiseFloor noise_floor;          // reached: what follows the statistics is empty
   bool leveled = false;
   Plane plane;                     // the plane subtracted
   HeightStatistics statistics;
@@ -51,12 +67,16 @@ struct SurfaceAnalysis {
   Summits summits;
   std::vector<SamplingRow> sampling;
   SampleAssessment summit_heights;
+  std::size_t summits_fitted = 0;  // of summits.list (AnalysisOptions::max_fit_sample)
   std::optional<SampleAssessment> heights;
   std::size_t height_stride_x = 1, height_stride_y = 1;
   std::optional<ContactComparison> contact;
   AnalysisOptions options;
 };
 
+// Throws asperity::Error (naming the map's source) for a map that is not one (HeightMap::
+// validate), an Sq below 1 fm (a unit slip), too few summits, or bad options. A map at its
+// noise floor is not an error: the result says so (SurfaceAnalysis::noise_floor).
 SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options = {});
 SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOptions& options = {});
 

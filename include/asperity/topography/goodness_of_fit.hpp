@@ -31,7 +31,7 @@ double anderson_darling(const HeightDistribution& distribution, const std::vecto
 double kolmogorov_smirnov(const HeightDistribution& distribution, const std::vector<double>& sorted);
 
 struct AssessmentOptions {
-  int bootstrap = 199;         // B; 0: no p-values and no intervals
+  int bootstrap = 199;         // B; 0: no p-values and no intervals (no test: the verdict says so)
   std::uint64_t seed = 1;
   int threads = 0;             // 0: the hardware's
   double confidence = 0.95;    // of the intervals
@@ -69,6 +69,11 @@ struct SampleAssessment {
   AssessmentOptions options;
   const ModelAssessment& model(HeightModel m) const { return models[static_cast<int>(m)]; }
 };
+
+// The smallest bootstrap that can reject at `significance`: p >= 1/(B + 1), so B + 1 > 1/significance
+// (20 samples at 5%). check_bootstrap_size throws asperity::Error for 0 < B below it (and B < 0).
+int minimum_bootstrap(double significance);
+void check_bootstrap_size(int bootstrap, double significance);
 
 // Fits the three models, bootstraps, and gives the verdict. `values` need not be sorted.
 SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options = {});

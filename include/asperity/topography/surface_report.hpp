@@ -1,7 +1,6 @@
 // The analysis written out: JSON for programs (schema "asperity-surface/1"), a short summary for
-// the terminal, and a report directory (Markdown with the plots, JSON, CSV of the curves and of
-// the summits, plots as SVG and PNG drawn by topography/scripts/surface_plots.py with
-// matplotlib; without python3 or matplotlib the report is still written and says so).
+// the terminal, and a report folder (Markdown with the plots, JSON, CSV of the curves and of the
+// summits, plots as SVG drawn by the library itself: no program is run).
 #pragma once
 #include <string>
 #include <vector>
@@ -16,12 +15,13 @@ std::string analysis_summary(const SurfaceAnalysis& analysis);
 struct ReportOutcome {
   std::vector<std::string> files;  // written
   bool plots = false;
-  std::string plot_note;           // why there are no plots, when there are none
+  std::string plot_note;           // why there are no plots (a map at its noise floor)
 };
 
-// Creates the directory if needed; throws asperity::Error on a write error. `plot_script`
-// empty: $ASPERITY_SURFACE_PLOTS if set, else the script in the source tree.
-ReportOutcome write_report(const SurfaceAnalysis& analysis, const std::string& directory,
-                           const std::string& plot_script = {});
+// Writes the report folder as tables are written (each file replaced atomically, no link
+// followed, no special file opened, one run at a time, an earlier run's files not left beside
+// this one's; docs/reliability.md). Creates the folder if needed; throws asperity::Error naming
+// the file on a write error (a full disk), leaving each file the old or the new one, whole.
+ReportOutcome write_report(const SurfaceAnalysis& analysis, const std::string& directory);
 
 }  // namespace asperity::topography

@@ -1,0 +1,55 @@
+// Jobs on a few threads, for the offline work (table generation, bootstraps, scene tables):
+// never on the hot path. Internal: the one pool the generator and the surface analysis share.
+#pragma once
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace asperity::detail {
+
+// Runs job(i) for every i < count on up to `threads` threads (0 or less: the hardware's), the
+// calling thread among them. Jobs are handed out one at a time, so any number of threads gives
+// the same results when each job writes only its own output. A thread the system refuses (a
+// memory or process limit: `--threads 4096`) is not an error: the threads that did start do its
+// share. The first exception a job throws stops the hand-out and is rethrown once every thread
+// has stopped.
+template <class Job>
+void parallel_for(std::size_t count, int threads, Job&& job) {
+  if (count == 0) return;
+  std::size_t wanted = threads > 0 ? static_cast<std::size_t>(threads) : std::max(1u, std::thread::hardware_concurrency());
+  wanted = std::min(wanted, count);
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto worker = [&] {
+    for (;;) {
+      const std::size_t index = next.fetch_add(1);
+      if (index >= count) return;
+      try {
+        job(index);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next.store(count);
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  try {
+    pool.reserve(wanted - 1);
+    for (std::size_t t = 1; t < wanted; ++t) pool.emplace_back(worker);
+  } catch (const std::system_error&) {  // no more threads: those started and this one suffice
+  } catch (const std::bad_alloc&) {
+  }
+  worker();
+  for (std::thread& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace asperity::detail
