@@ -1,6 +1,10 @@
 // Reading measured height maps: the two real surfaces, every format, and every bad file
 // (truncated, wrong MD5, wrong sizes, missing points, hostile sizes, bad units).
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <zip.h>
 
 #include <cmath>
@@ -9,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -369,4 +374,192 @@ TEST(TopographyIo, UnitsAndLengths) {
   EXPECT_THROW(t::parse_length("3"), asperity::Error);
   EXPECT_THROW(t::parse_length("um"), asperity::Error);
   EXPECT_THROW(t::length_unit_in_metres("inch"), asperity::Error);
+}
+
+// ---- hostile files (issue 26): each of these crashed, hung, ran away or answered wrong before ----
+
+namespace {
+// The peak resident memory of `work` run in a child process [KiB], or -1 if it failed.
+long child_peak_kib(const std::function<void()>& work) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    try {
+      work();
+    } catch (...) {
+    }
+    _exit(0);
+  }
+  int status = 0;
+  struct rusage usage {};
+  if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status)) return -1;
+  return usage.ru_maxrss;
+}
+
+long own_peak_kib() {
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool memory_is_measured = false;  // ASan's shadow and quarantine are not the reader's
+#else
+constexpr bool memory_is_measured = true;
+#endif
+}  // namespace
+
+// A small X3P whose main.xml inflates to more elements than the limit is refused before a tree
+// is built for them (before: 16 M elements in a 97 KB file took 1.2 GB).
+TEST(TopographyHostile, X3PElementBombRefusedBeforeParsing) {
+  const std::string path = scratch("element-bomb.x3p");
+  const std::string data = doubles(small_values);
+  std::string xml = main_xml("4", "3", "D", md5(data));
+  std::string bomb;
+  bomb.reserve(5 * ((std::size_t{1} << 21) + 2));
+  for (std::size_t k = 0; k < (std::size_t{1} << 21) + 1; ++k) bomb += "<a/>";
+  xml.insert(xml.find("<Record3>"), "<Record2>" + bomb + "</Record2>");
+  write_zip(path, {{"main.xml", xml}, {"bindata/data.bin", data}});
+  EXPECT_LT(fs::file_size(path), 100000u);
+  expect_error([&] { t::read_x3p(path); }, "main.xml holds .* elements, more than the limit of 2097152");
+  const long peak = child_peak_kib([&] { t::read_x3p(path); });
+  ASSERT_GT(peak, 0);
+  if (memory_is_measured) {
+    EXPECT_LT(peak, own_peak_kib() + 64 * 1024) << "KiB";  // the XML's bytes, no tree
+  }
+}
+
+// A zero-filled point entry (a data bomb: 32 MiB in a small zip) costs the heights and no more:
+// the points are streamed, not held twice.
+TEST(TopographyHostile, X3PDataBombCostsTheHeightsOnly) {
+  const std::string path = scratch("data-bomb.x3p");
+  const std::size_t side = 2048;
+  const std::string data(side * side * 8, '\0');
+  const std::string xml = main_xml(std::to_string(side), std::to_string(side), "D", md5(data));
+  write_zip(path, {{"main.xml", xml}, {"bindata/data.bin", data}});
+  EXPECT_LT(fs::file_size(path), 200000u);
+  const t::HeightMap map = t::read_x3p(path);
+  EXPECT_EQ(map.size(), side * side);
+  const long peak = child_peak_kib([&] { t::read_x3p(path); });
+  ASSERT_GT(peak, 0);
+  // heights 32 MiB; before, the raw bytes were held beside them (64 MiB)
+  if (memory_is_measured) {
+    EXPECT_LT(peak, own_peak_kib() + 48 * 1024) << "KiB";
+  }
+}
+
+// A CZ increment that is subnormal (every height would round to 0 or nearly) or zero, and
+// sampling intervals far outside physics, are named, not analysed into "density 0, radius 0".
+TEST(TopographyHostile, ScalesOutsidePhysicsAreRefused) {
+  const std::string path = scratch("scales.x3p");
+  std::string ints(24, '\0');
+  for (int k = 0; k < 12; ++k) {
+    const std::int16_t v = static_cast<std::int16_t>(3 * k - 6);
+    std::memcpy(&ints[2 * k], &v, 2);
+  }
+  for (const char* increment : {"4e-320", "0"}) {
+    std::string xml = main_xml("4", "3", "I", md5(ints));
+    xml.replace(xml.find("<DataType>I</DataType>"), 22,
+                std::string("<DataType>I</DataType><Increment>") + increment + "</Increment>");
+    write_zip(path, {{"main.xml", xml}, {"bindata/data.bin", ints}});
+    expect_error([&] { t::read_x3p(path); }, "CZ Increment .* is not a usable height scale");
+  }
+  for (const char* step : {"1e-200", "1e+200"}) {
+    std::string xml = main_xml("4", "3", "D", md5(doubles(small_values)));
+    xml.replace(xml.find("<Increment>1e-6</Increment>"), 27, std::string("<Increment>") + step + "</Increment>");
+    write_zip(path, {{"main.xml", xml}, {"bindata/data.bin", doubles(small_values)}});
+    expect_error([&] { t::read_x3p(path); }, "CX Increment " + std::string(step) + " m is outside [1e-13, 1e3] m");
+  }
+  // the same from an override and in any map
+  const std::string gsf = scratch("scales.gsf");
+  t::HeightMap map;
+  map.nx = 4;
+  map.ny = 3;
+  map.dx = map.dy = 1e-6;
+  map.heights = small_values;
+  t::write_gsf(map, gsf);
+  t::ReadOptions tiny;
+  tiny.pixel_size_x = 1e-200;
+  expect_error([&] { t::read_height_map(gsf, tiny).validate(); }, "a sampling interval of 1e-200 m is outside");
+  map.heights[5] = 1e200;
+  expect_error([&] { map.validate(); }, "the height 1e+200 m at point (1, 1) is beyond 1000 m");
+}
+
+// A Gwyddion ASCII matrix cut exactly at a row boundary reads as a smaller map; the header's
+// field then gives pixels that are not square, which is refused (before: read, with a wrong dy).
+TEST(TopographyHostile, AsciiMatrixCutAtARowBoundary) {
+  const std::string whole = read_bytes(afm_path);
+  const std::string path = scratch("cut.txt");
+  std::size_t cut = whole.size();
+  for (int rows = 0; rows < 3; ++rows) cut = whole.rfind('\n', cut - 2) + 1;  // 3 rows fewer
+  write_bytes(path, whole.substr(0, cut));
+  expect_error([&] { t::read_ascii_matrix(path); },
+               "over 256 x 253 points gives pixels that are not square.*a file cut short");
+  t::ReadOptions given;
+  given.pixel_size_x = given.pixel_size_y = 10e-6 / 256;
+  EXPECT_EQ(t::read_ascii_matrix(path, given).ny, 253u);  // read when the pixel size is given
+  // one row fewer of 256 is still seen (the header's 4 digits: 5e-4 relative)
+  write_bytes(path, whole.substr(0, whole.rfind('\n', whole.size() - 2) + 1));
+  expect_error([&] { t::read_ascii_matrix(path); }, "not square");
+  EXPECT_EQ(t::read_ascii_matrix(afm_path).ny, 256u);
+}
+
+// Special files are refused at once, never waited on (a FIFO as a surface hung the command).
+TEST(TopographyHostile, FifoAndDirectoryAreRefusedWithoutWaiting) {
+  const std::string fifo = scratch("surface.fifo");
+  fs::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const auto& read : {+[](const std::string& p) { t::read_height_map(p); },
+                           +[](const std::string& p) { t::read_x3p(p); }, +[](const std::string& p) { t::read_gsf(p); },
+                           +[](const std::string& p) { t::read_ascii_matrix(p); }})
+    expect_error([&] { read(fifo); }, "not a regular file");
+  expect_error([&] { t::read_gsf(scratch("")); }, "a directory, not a file");
+  fs::remove(fifo);
+}
+
+// Bytes of a file quoted in a message cannot reach a terminal as an escape sequence; paths with
+// a NUL are refused.
+TEST(TopographyHostile, MessagesQuoteFileBytesPrintably) {
+  const std::string path = scratch("escape.txt");
+  write_bytes(path, "# Width: 1 um\n# Height: 1 um\n# Value units: m\n1 2 3\n4 \x1b[31mred\x1b[0m 6\n");
+  try {
+    t::read_ascii_matrix(path);
+    ADD_FAILURE() << "no error";
+  } catch (const asperity::Error& error) {
+    const std::string text = error.what();
+    EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
+    EXPECT_NE(text.find("\\x1b[31mred\\x1b[0m"), std::string::npos) << text;
+  }
+  write_bytes(path, "# Value units: \xff\xfe\x9b" "2J\n1 2 3\n");
+  try {
+    t::read_ascii_matrix(path);
+    ADD_FAILURE() << "no error";
+  } catch (const asperity::Error& error) {
+    EXPECT_NE(std::string(error.what()).find("\\xff\\xfe\\x9b2J"), std::string::npos) << error.what();
+  }
+  expect_error([&] { t::read_height_map(std::string("a.x3p\0.txt", 10)); }, "a path with a NUL byte");
+}
+
+// The rounding step of the stored heights is known for every format: the noise floor needs it.
+TEST(TopographyHostile, HeightResolutionOfEveryFormat) {
+  const std::string gsf = scratch("resolution.gsf");
+  t::HeightMap map;
+  map.nx = 4;
+  map.ny = 3;
+  map.dx = map.dy = 1e-6;
+  map.heights = small_values;  // largest 1.2e-8 m, stored as float32
+  t::write_gsf(map, gsf);
+  const double float_step = static_cast<double>(std::nextafter(1.2e-8f, 1.f)) - static_cast<double>(1.2e-8f);
+  EXPECT_DOUBLE_EQ(t::read_gsf(gsf).height_resolution, float_step);
+  // "%.5g" numbers up to "2.4022e-007": 5 significant digits at 1e-7
+  EXPECT_DOUBLE_EQ(t::read_ascii_matrix(afm_path).height_resolution, 1e-11);
+  EXPECT_LT(t::read_x3p(x3p_path).height_resolution, 1e-20);                   // float64
+  const std::string path = scratch("resolution.x3p");
+  std::string ints(24, '\0');
+  std::string xml = main_xml("4", "3", "I", md5(ints));
+  xml.replace(xml.find("<DataType>I</DataType>"), 22, "<DataType>I</DataType><Increment>2e-9</Increment>");
+  write_zip(path, {{"main.xml", xml}, {"bindata/data.bin", ints}});
+  EXPECT_DOUBLE_EQ(t::read_x3p(path).height_resolution, 2e-9);
+  t::ReadOptions nm;
+  nm.height_unit = "nm";  // the file's numbers read in nm: the step scales with them
+  EXPECT_DOUBLE_EQ(t::read_ascii_matrix(afm_path, nm).height_resolution, 1e-20);
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -234,4 +236,161 @@ TEST(TopographySurface, ReportFolder) {
   const std::string json = t::analysis_json(a);
   EXPECT_NE(json.find("\"schema\": \"asperity-surface/1\""), std::string::npos);
   EXPECT_THROW(t::write_report(a, "/proc/no/such/dir"), asperity::Error);
+}
+
+// ---- hostile maps (issue 26) ----
+
+// A perfect tilted plane stored as float32: after leveling what is left is rounding noise
+// (before: 192 "summits" and their contact curves). It gets its statistics and the statement.
+TEST(TopographyHostile, Float32PlaneIsAtItsNoiseFloor) {
+  t::HeightMap plane;
+  plane.nx = plane.ny = 64;
+  plane.dx = plane.dy = 1e-6;
+  plane.source = "tilted plane";
+  for (std::size_t j = 0; j < plane.ny; ++j)
+    for (std::size_t i = 0; i < plane.nx; ++i)
+      plane.heights.push_back(static_cast<float>(1e-5 + 2e-8 * static_cast<double>(i) - 3e-8 * static_cast<double>(j)));
+  const std::string gsf = std::string(ASPERITY_TEST_BINARY_DIR) + "/float32-plane.gsf";
+  t::write_gsf(plane, gsf);
+  t::AnalysisOptions options;
+  options.assessment.bootstrap = 0;
+  t::ContactOptions contact;
+  contact.contact_modulus = 1e11;
+  options.contact = contact;
+  const t::SurfaceAnalysis a = t::analyse_surface_file(gsf, options);
+  ASSERT_TRUE(a.noise_floor.reached) << a.statistics.rms;
+  EXPECT_NE(a.noise_floor.text.find("quantization"), std::string::npos) << a.noise_floor.text;
+  EXPECT_TRUE(a.summits.list.empty());
+  EXPECT_FALSE(a.contact.has_value());
+  EXPECT_NE(t::analysis_summary(a).find("noise floor"), std::string::npos);
+  // the same plane with roughness well above the float's step is analysed
+  std::mt19937_64 random(3);
+  std::normal_distribution<double> normal(0, 1e-9);
+  for (double& h : plane.heights) h += normal(random);
+  t::write_gsf(plane, gsf);
+  EXPECT_FALSE(t::analyse_surface_file(gsf, options).noise_floor.reached);
+  // heights below a femtometre are a unit slip, not a surface
+  t::HeightMap tiny = plane;
+  for (double& h : tiny.heights) h *= 1e-12;
+  EXPECT_THROW(t::analyse_height_map(tiny, options), asperity::Error);
+  // a plane of exact doubles levels to a residual of a few roundings: flat, not a surface
+  t::HeightMap exact = plane;
+  for (std::size_t k = 0; k < exact.heights.size(); ++k)
+    exact.heights[k] = 1e-9 * static_cast<double>(k % exact.nx + 2 * (k / exact.nx));
+  exact.height_resolution = 0;
+  EXPECT_TRUE(t::analyse_height_map(exact, options).noise_floor.reached);
+}
+
+// p = (1 + #)/(B + 1) >= 1/(B + 1): a bootstrap under 20 samples can never reject at 5%, so
+// exponential data were called "consistent with a Gaussian". Refused; 0 says "not tested".
+TEST(TopographyHostile, BootstrapTooSmallToRejectIsRefused) {
+  std::mt19937_64 random(1);
+  std::exponential_distribution<double> exponential(1e8);
+  std::vector<double> values(200);
+  for (double& v : values) v = exponential(random);
+  t::AssessmentOptions options;
+  options.bootstrap = 19;
+  EXPECT_THROW(t::assess_sample("exponential", values, options), asperity::Error);
+  EXPECT_EQ(t::minimum_bootstrap(0.05), 20);
+  EXPECT_EQ(t::minimum_bootstrap(0.01), 100);
+  options.bootstrap = 20;
+  const t::SampleAssessment tested = t::assess_sample("exponential", values, options);
+  EXPECT_TRUE(tested.verdict.gaussian_rejected) << tested.verdict.text;
+  options.bootstrap = 0;
+  const t::SampleAssessment untested = t::assess_sample("exponential", values, options);
+  EXPECT_FALSE(untested.verdict.gaussian_rejected);
+  EXPECT_NE(untested.verdict.text.find("not tested"), std::string::npos) << untested.verdict.text;
+  EXPECT_EQ(untested.verdict.text.find("consistent"), std::string::npos) << untested.verdict.text;
+}
+
+// Summits of a window wider than 3 x 3 by the O(N) sliding maximum are the summits of the
+// direct test (every point of the window compared), ties and missing points included.
+TEST(TopographyHostile, WindowSummitsInLinearTime) {
+  std::mt19937_64 random(7);
+  for (int trial = 0; trial < 6; ++trial) {
+    t::HeightMap map;
+    map.nx = 37 + 5 * static_cast<std::size_t>(trial);
+    map.ny = 29 + 3 * static_cast<std::size_t>(trial);
+    map.dx = map.dy = 1e-7;
+    map.source = "random";
+    std::uniform_int_distribution<int> level(0, trial % 2 ? 6 : 1000);  // many ties, or few
+    for (std::size_t k = 0; k < map.nx * map.ny; ++k) map.heights.push_back(1e-9 * level(random));
+    for (int hole = 0; hole < trial * 3; ++hole) map.heights[random() % map.heights.size()] = NAN;
+    for (int w : {2, 3, 5}) {
+      t::SummitOptions options;
+      options.window = w;
+      const t::Summits fast = t::find_summits(map, options);
+      std::vector<std::pair<std::size_t, std::size_t>> expected;
+      std::size_t candidates = 0;
+      const std::size_t W = static_cast<std::size_t>(w);
+      for (std::size_t j = W; j + W < map.ny; ++j)
+        for (std::size_t i = W; i + W < map.nx; ++i) {
+          const double h = map.at(i, j);
+          bool complete = !std::isnan(h), summit = true;
+          for (std::size_t q = j - W; q <= j + W && complete; ++q)
+            for (std::size_t p = i - W; p <= i + W && complete; ++p) {
+              if (p == i && q == j) continue;
+              const double other = map.at(p, q);
+              if (std::isnan(other)) complete = false;
+              else if ((q < j || (q == j && p < i)) ? !(h > other) : !(h >= other)) summit = false;
+            }
+          if (!complete) continue;
+          ++candidates;
+          if (summit) expected.emplace_back(i, j);
+        }
+      ASSERT_EQ(fast.candidates, candidates) << "trial " << trial << " window " << w;
+      ASSERT_EQ(fast.list.size(), expected.size()) << "trial " << trial << " window " << w;
+      for (std::size_t k = 0; k < expected.size(); ++k) {
+        EXPECT_EQ(fast.list[k].i, expected[k].first);
+        EXPECT_EQ(fast.list[k].j, expected[k].second);
+      }
+    }
+  }
+}
+
+// Correlation lengths by FFT are those of the direct sums (points x lag, which kept a 3 x 2 M
+// strip busy for hours), missing points included; the strip itself is analysed.
+TEST(TopographyHostile, CorrelationLengthsByFft) {
+  std::mt19937_64 random(5);
+  for (int trial = 0; trial < 4; ++trial) {
+    t::HeightMap map = t::gaussian_random_field(40 + 7 * trial, 33 + 5 * trial, 1e-7, 1e-7,
+                                                {{1.0 + trial, 1e-16}}, 11 + trial);
+    for (int hole = 0; hole < 20 * trial; ++hole) map.heights[random() % map.heights.size()] = NAN;
+    const t::HeightStatistics stats = t::height_statistics(map);
+    const t::CorrelationLengths fast = t::correlation_lengths(map, 0.1);
+    for (int direction = 0; direction < 2; ++direction) {
+      const std::size_t along = direction == 0 ? map.nx : map.ny, across = direction == 0 ? map.ny : map.nx;
+      std::size_t lag = 1;
+      for (; lag < along / 2; ++lag) {
+        long double sum = 0;
+        std::size_t count = 0;
+        for (std::size_t a = 0; a < across; ++a)
+          for (std::size_t k = 0; k + lag < along; ++k) {
+            const double p = direction == 0 ? map.at(k, a) : map.at(a, k);
+            const double q = direction == 0 ? map.at(k + lag, a) : map.at(a, k + lag);
+            if (std::isnan(p) || std::isnan(q)) continue;
+            sum += (p - stats.mean) * (q - stats.mean);
+            ++count;
+          }
+        if (count == 0 || static_cast<double>(sum / count) / (stats.rms * stats.rms) < 0.1) break;
+      }
+      EXPECT_EQ(direction == 0 ? fast.x : fast.y, lag) << "trial " << trial << " direction " << direction;
+    }
+  }
+  // the issue's 3 x 2,000,000 strip, whole
+  t::HeightMap strip = t::gaussian_random_field(2000000, 3, 1e-8, 1e-8, {{3.0, 1e-16}}, 3);
+  t::AnalysisOptions options;
+  options.assessment.bootstrap = 0;
+  options.fit_heights = false;
+  options.max_fit_sample = 5000;
+  const auto start = std::chrono::steady_clock::now();
+  const t::SurfaceAnalysis a = t::analyse_height_map(std::move(strip), options);
+  std::printf("the 3 x 2,000,000 strip analysed in %.2f s\n",
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  EXPECT_GT(a.correlation.x, 2u);
+  EXPECT_LE(a.summits_fitted, options.max_fit_sample);
+  EXPECT_GT(a.summits.list.size(), options.max_fit_sample);  // a subsample was fitted, and said so
+  EXPECT_NE(std::find_if(a.map.notes.begin(), a.map.notes.end(),
+                         [](const std::string& note) { return note.find("random subsample") != std::string::npos; }),
+            a.map.notes.end());
 }

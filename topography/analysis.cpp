@@ -22,6 +22,9 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   map.validate();
   SurfaceAnalysis analysis;
   analysis.options = options;
+  double largest = 0;  // |h| as read, before leveling
+  for (double h : map.heights)
+    if (!std::isnan(h)) largest = std::max(largest, std::fabs(h));
   if (options.level) {
     analysis.plane = fit_plane(map);
     subtract_plane(map, analysis.plane);
@@ -31,20 +34,22 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   analysis.statistics = height_statistics(map);
   const double sq = analysis.statistics.rms;
   NoiseFloor& floor = analysis.noise_floor;
-  floor.resolution = map.height_resolution;
-  floor.rms_limit = 10 * map.height_resolution / std::sqrt(12.0);
-  if (sq == 0) {
+  // the rounding step of the heights: the file's, and never below what doubles (and the
+  // leveling's arithmetic, a few roundings) resolve at the largest height read
+  floor.resolution = std::max(map.height_resolution, 4 * (std::nextafter(largest, 2 * largest + 1) - largest));
+  floor.rms_limit = 10 * floor.resolution / std::sqrt(12.0);
+  if (largest > 0 && largest < min_roughness) {
+    throw Error(map.source + ": every height is below " + short_number(min_roughness) +
+                " m (1 fm) in size: a wrong height unit?");
+  } else if (sq == 0) {
     floor.reached = true;
     floor.text = "every valid height is the same" + std::string(options.level ? " after leveling" : "") +
                  ": no roughness, so no summits, fits or contact curves";
-  } else if (sq < min_roughness) {
-    throw Error(map.source + ": Sq = " + short_number(sq) + " m is below " + short_number(min_roughness) +
-                " m (1 fm): a wrong height unit?");
   } else if (sq < floor.rms_limit) {
     floor.reached = true;
     floor.text = "the roughness (Sq " + short_number(sq) + " m) is at the level of the heights' quantization (" +
-                 short_number(map.height_resolution) + " m a step, rounding noise " +
-                 short_number(map.height_resolution / std::sqrt(12.0)) +
+                 short_number(floor.resolution) + " m a step, rounding noise " +
+                 short_number(floor.resolution / std::sqrt(12.0)) +
                  " m rms): its summits would be rounding noise, so no summits, fits or contact curves";
   }
   if (floor.reached) {

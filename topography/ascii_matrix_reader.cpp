@@ -38,7 +38,8 @@ HeightMap read_ascii_matrix(const std::string& path, const ReadOptions& options)
   HeightMap map;
   map.source = path;
   map.format = "ascii-matrix";
-  double width = 0, height = 0, value_unit = 0, width_precision = 1, height_precision = 1, resolution = 0;
+  double width = 0, height = 0, value_unit = 0, width_precision = 1, height_precision = 1;
+  detail::DecimalResolution resolution;
   std::string line;
   bool data_started = false;
   while (lines.next(line)) {
@@ -75,7 +76,7 @@ HeightMap read_ascii_matrix(const std::string& path, const ReadOptions& options)
       if (detail::is_nan_token(token)) {
         value = std::numeric_limits<double>::quiet_NaN();
       } else if (detail::parse_double(token, value)) {
-        resolution = std::max(resolution, detail::last_digit_value(token));
+        resolution.add(token, value);
       } else {
         fail(path, "line " + std::to_string(lines.line_number()) + ", column " + std::to_string(count + 1) + ": '" +
                        printable(token) + "' is not a number" +
@@ -97,7 +98,7 @@ HeightMap read_ascii_matrix(const std::string& path, const ReadOptions& options)
     ++map.ny;
   }
   if (map.ny == 0) fail(path, "holds no data rows");
-  map.height_resolution = resolution;
+  map.height_resolution = resolution.step();
   const bool has_size = width > 0 && height > 0;
   const bool given_pixel = options.pixel_size_x > 0 || options.pixel_size_y > 0;
   if (has_size) {

@@ -9,7 +9,9 @@
 #define POCKETFFT_NO_MULTITHREADING
 #include <pythran/pythonic/numpy/fft/pocketfft.hpp>
 
-namespace asperity::topography::detail {
+namespace asperity {
+namespace topography {
+namespace detail {
 namespace {
 using Shape = pocketfft::shape_t;
 using Stride = pocketfft::stride_t;
@@ -88,4 +90,6 @@ std::vector<double> mean_line_autocovariance(const double* field, std::size_t li
   return covariance;
 }
 
-}  // namespace asperity::topography::detail
+}  // namespace detail
+}  // namespace topography
+}  // namespace asperity

@@ -8,7 +8,9 @@
 #include <cstddef>
 #include <vector>
 
-namespace asperity::topography::detail {
+namespace asperity {
+namespace topography {
+namespace detail {
 
 using Complex = std::complex<double>;
 
@@ -33,4 +35,6 @@ std::vector<double> mean_line_autocovariance(const double* field, std::size_t li
                                              std::size_t line_stride, std::size_t point_stride, double mean,
                                              std::size_t max_lag);
 
-}  // namespace asperity::topography::detail
+}  // namespace detail
+}  // namespace topography
+}  // namespace asperity

@@ -158,6 +158,26 @@ double float64_spacing(double largest_magnitude) noexcept {
   return std::nextafter(largest_magnitude, std::numeric_limits<double>::infinity()) - largest_magnitude;
 }
 
+void DecimalResolution::add(std::string_view token, double value) noexcept {
+  int digits = 0;
+  bool leading = true;
+  for (const char c : token) {
+    if (c == 'e' || c == 'E') break;
+    if (c < '0' || c > '9') continue;
+    if (leading && c == '0') continue;
+    leading = false;
+    ++digits;
+  }
+  digits_ = std::max(digits_, digits);
+  largest_ = std::max(largest_, std::fabs(value));
+}
+
+double DecimalResolution::step() const noexcept {
+  if (!(largest_ > 0) || digits_ == 0) return 0;
+  const double exponent = std::floor(std::log10(largest_));
+  return std::pow(10.0, exponent - digits_ + 1);
+}
+
 double last_digit_value(std::string_view token) noexcept {
   // digits after the point, and the exponent
   std::size_t k = 0;

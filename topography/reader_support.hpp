@@ -42,10 +42,24 @@ std::int16_t load_le_int16(const unsigned char* bytes) noexcept;
 double unit_in_metres(const std::string& path, const std::string& what, std::string_view unit);
 
 // Rounding steps of stored heights (HeightMap::height_resolution): the spacing of floats or
-// doubles at the largest magnitude stored, and the place value of a decimal number's last
-// digit as written ("1.8823e-008": 1e-12; "12.5": 0.1; "3": 1).
+// doubles at the largest magnitude stored.
 double float32_spacing(float largest_magnitude) noexcept;
 double float64_spacing(double largest_magnitude) noexcept;
+
+// The rounding step of numbers written as text: the writer's significant digits S (the most any
+// token shows: "%g" drops trailing zeros, so one token may show fewer) at the largest magnitude
+// written, 10^(E - S + 1) with E its decimal exponent. "1.8823e-008" ... "2.4022e-007": 1e-11;
+// "%.3f" numbers up to 123.456: 1e-3.
+class DecimalResolution {
+ public:
+  void add(std::string_view token, double value) noexcept;
+  double step() const noexcept;  // 0 before any nonzero number
+
+ private:
+  int digits_ = 0;
+  double largest_ = 0;
+};
+// The place value of a decimal number's last digit as written ("10.00": 0.01).
 double last_digit_value(std::string_view token) noexcept;
 
 // Applies ReadOptions' pixel-size and unit overrides after a reader has filled the map from the

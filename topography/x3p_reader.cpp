@@ -256,7 +256,7 @@ Description describe(const std::string& path, zip_t* archive, const ReadOptions&
   } else if (const pugi::xml_node list = optional_child(record3, "DataList")) {
     d.inline_data = true;
     map.heights.reserve(n);
-    double largest = 0;
+    detail::DecimalResolution resolution;
     for (pugi::xml_node datum = list.first_child(); datum; datum = datum.next_sibling()) {
       if (datum.type() != pugi::node_element || std::strcmp(local_name(datum.name()), "Datum") != 0) continue;
       if (map.heights.size() == n) fail(path, "DataList holds more Datum elements than SizeX x SizeY");
@@ -264,7 +264,7 @@ Description describe(const std::string& path, zip_t* archive, const ReadOptions&
       double value = std::numeric_limits<double>::quiet_NaN();  // an empty Datum is a missing point
       if (!text.empty() && !detail::is_nan_token(text)) {
         if (!detail::parse_double(text, value)) fail(path, "DataList: Datum '" + printable(text) + "' is not a number");
-        largest = std::max(largest, detail::last_digit_value(text));
+        resolution.add(text, value);
         value = d.z_increment * value + d.z_offset;
       }
       map.heights.push_back(value);
@@ -272,7 +272,7 @@ Description describe(const std::string& path, zip_t* archive, const ReadOptions&
     if (map.heights.size() != n)
       fail(path, "DataList holds " + std::to_string(map.heights.size()) + " Datum elements for " + std::to_string(n) +
                      " points");
-    map.height_resolution = largest * std::fabs(d.z_increment);
+    map.height_resolution = resolution.step() * std::fabs(d.z_increment);
     map.notes.push_back("X3P: heights inline (DataList), no checksum of their own");
   } else {
     fail(path, "Record3 has neither DataLink nor DataList");

@@ -53,7 +53,7 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
   detail::LineReader lines(file, 4096);
   std::vector<double> xs, ys, zs;
   std::string line;
-  double resolution = 0;
+  detail::DecimalResolution resolution;
   while (lines.next(line)) {
     const std::size_t line_number = lines.line_number();
     const std::string_view text = detail::trim(line);
@@ -70,7 +70,7 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
       if (count == 3) fail(path, "line " + std::to_string(line_number) + " has more than three columns");
       if (count == 2 && detail::is_nan_token(token)) values[count++] = std::numeric_limits<double>::quiet_NaN();
       else if (detail::parse_double(token, values[count])) {
-        if (count == 2) resolution = std::max(resolution, detail::last_digit_value(detail::trim(token)));
+        if (count == 2) resolution.add(detail::trim(token), values[count]);
         ++count;
       } else {
         numeric = false;
@@ -102,7 +102,7 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options) {
   map.dx = ax.step * lateral;
   map.dy = ay.step * lateral;
   map.heights.assign(map.nx * map.ny, std::numeric_limits<double>::quiet_NaN());
-  map.height_resolution = resolution;
+  map.height_resolution = resolution.step();
   std::vector<bool> seen(map.heights.size(), false);
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const std::size_t i = static_cast<std::size_t>(std::llround((xs[k] - ax.origin) / ax.step));

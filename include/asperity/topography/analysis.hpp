@@ -45,9 +45,9 @@ struct SamplingRow {
   double m2 = 0, m4 = 0, alpha = 0;
 };
 
-// A map whose roughness is at the level of its height quantization (HeightMap::
-// height_resolution q): Sq within 10 times the rms of rounding to q (q / sqrt(12)), i.e. under
-// 2.9 q, or every height equal. Its summits would be rounding noise: it gets its statistics and
+// A map whose roughness is at the level of its height quantization q (HeightMap::
+// height_resolution, and never below 4 double spacings at the largest height read): Sq within
+// 10 times the rms of rounding to q (q / sqrt(12)), i.e. under 2.9 q, or every height equal. Its summits would be rounding noise: it gets its statistics and
 // this statement, never summits, fits or contact curves.
 struct NoiseFloor {
   bool reached = false;
@@ -75,7 +75,7 @@ struct SurfaceAnalysis {
 };
 
 // Throws asperity::Error (naming the map's source) for a map that is not one (HeightMap::
-// validate), an Sq below 1 fm (a unit slip), too few summits, or bad options. A map at its
+// validate), heights all below 1 fm in size (a unit slip), too few summits, or bad options. A map at its
 // noise floor is not an error: the result says so (SurfaceAnalysis::noise_floor).
 SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options = {});
 SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOptions& options = {});

@@ -1,0 +1,11 @@
+// libFuzzer target: the ascii matrix reader (topography/ascii_matrix*), then the surface analysis on what it
+// returns (fuzz/surface_harness.hpp).
+#include <cstddef>
+#include <cstdint>
+
+#include "surface_harness.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  asperity::fuzz::read_and_analyse(data, size, &asperity::topography::read_ascii_matrix);
+  return 0;
+}
