@@ -5,9 +5,9 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 #include <limits>
-#include <nlopt.hpp>
 
 #include "asperity/error.hpp"
+#include "spacing_fit.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -126,20 +126,6 @@ double smallest_gap(const std::vector<double>& sorted) {
   return gap;
 }
 
-struct MpsProblem {
-  const std::vector<double>* y;  // standardized: y_1 = 0, unit standard deviation
-  double log_delta;
-  int evaluations = 0;
-};
-
-double mps_objective(unsigned, const double* p, double*, void* data) {
-  auto* problem = static_cast<MpsProblem*>(data);
-  ++problem->evaluations;
-  const double value = weibull_spacing_objective(-std::exp(p[0]), std::exp(p[1]), std::exp(p[2]), *problem->y,
-                                                 problem->log_delta);
-  return std::isfinite(value) ? value : -1e300;
-}
-
 }  // namespace
 
 double mean_log_spacing(const HeightDistribution& d, const std::vector<double>& sorted) {
@@ -197,24 +183,16 @@ FitResult fit_height_distribution(HeightModel model, const std::vector<double>& 
   const double origin = bounded ? sorted.back() : sorted.front();
   std::vector<double> y(n);
   for (std::size_t k = 0; k < n; ++k) y[k] = bounded ? (origin - sorted[n - 1 - k]) / sd : (sorted[k] - origin) / sd;
-  MpsProblem problem{&y, std::log(smallest_gap(y)), 0};
-
-  nlopt::opt optimizer(nlopt::LN_BOBYQA, 3);
-  optimizer.set_max_objective(mps_objective, &problem);
-  const double log_gap_lo = std::log(1e-12), log_gap_hi = std::log(1e3);
-  optimizer.set_lower_bounds({log_gap_lo, std::log(1e-4), std::log(options.shape_min)});
-  optimizer.set_upper_bounds({log_gap_hi, std::log(1e4), std::log(options.shape_max)});
-  optimizer.set_xtol_rel(1e-10);
-  optimizer.set_ftol_abs(1e-13);
-  optimizer.set_maxeval(4000);
+  const detail::SpacingProblem problem{&y, std::log(smallest_gap(y))};
+  const double lower[3] = {std::log(1e-12), std::log(1e-4), std::log(options.shape_min)};
+  const double upper[3] = {std::log(1e3), std::log(1e4), std::log(options.shape_max)};
 
   std::vector<std::vector<double>> starts;
-  const auto clamp = [](double v, double lo, double hi) { return std::min(std::max(v, lo), hi); };
   if (options.start) {
     const HeightDistribution& s = *options.start;
     const double location = bounded ? (origin - s.location) / sd : (s.location - origin) / sd;  // < 0 when valid
-    starts.push_back({clamp(std::log(std::max(-location, 1e-9)), log_gap_lo, log_gap_hi), std::log(s.scale / sd),
-                      std::log(clamp(s.shape, options.shape_min, options.shape_max))});
+    starts.push_back({std::log(std::max(-location, 1e-9)), std::log(s.scale / sd),
+                      std::log(std::clamp(s.shape, options.shape_min, options.shape_max))});
   } else {
     // moment-matched starts (unit variance, data mean) at several shapes; the location at
     // least a little below the smallest value
@@ -227,27 +205,19 @@ FitResult fit_height_distribution(HeightModel model, const std::vector<double>& 
       starts.push_back({std::log(gap), std::log(scale), std::log(shape)});
     }
   }
-  double best = -inf;
-  std::vector<double> best_point;
-  for (std::vector<double> point : starts) {
-    double value = -inf;
-    try {
-      optimizer.optimize(point, value);
-    } catch (const std::exception&) {
-      value = mps_objective(3, point.data(), nullptr, &problem);  // roundoff-limited: keep where it stopped
-    }
-    if (value > best) {
-      best = value;
-      best_point = point;
-    }
-  }
+  // a refit from a known nearby solution needs less precision than a reported estimate: the
+  // ensemble's spread is far wider than 1e-6
+  const detail::SpacingMaximum found =
+      detail::maximize_spacing(problem, starts, lower, upper, options.start ? 1e-7 : 1e-10);
+  const double best = found.objective;
+  const std::vector<double> best_point(found.p, found.p + 3);
   if (best_point.empty() || !(best > -1e300)) throw Error("fit: the spacing objective has no finite maximum");
   const double gap = std::exp(best_point[0]);
   result.distribution.scale = std::exp(best_point[1]) * sd;
   result.distribution.shape = std::exp(best_point[2]);
   result.distribution.location = bounded ? origin + gap * sd : origin - gap * sd;
   result.objective = best;
-  result.evaluations = problem.evaluations;
+  result.evaluations = found.evaluations;
   result.shape_at_bound = best_point[2] <= std::log(options.shape_min) + 1e-6 ||
                           best_point[2] >= std::log(options.shape_max) - 1e-6;
   return result;

@@ -59,27 +59,41 @@ void check_bootstrap_size(int bootstrap, double significance) {
                 std::to_string(minimum_bootstrap(significance)) + " samples, or 0 for no test");
 }
 
-double anderson_darling(const HeightDistribution& d, const std::vector<double>& sorted) {
+FitStatistics fit_statistics(const HeightDistribution& d, const std::vector<double>& sorted) {
+  // each point's ln F, ln(1 - F) and F from one evaluation of the law (for a Weibull one power:
+  // t = w^a gives ln(1 - F) = -t and ln F = ln(-expm1(-t)) on the tail side, and the reverse)
   const std::size_t n = sorted.size();
-  // clamp the logs so that a point far outside the fit adds a large but finite term
-  constexpr double floor = -745;
-  double sum = 0;
+  const double nd = static_cast<double>(n);
+  constexpr double floor = -745;  // a point far outside the fit adds a large but finite term
+  double sum = 0, worst = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double lower = std::max(d.log_cdf(sorted[i]), floor);
-    const double upper = std::max(d.log_sf(sorted[n - 1 - i]), floor);
-    sum += static_cast<double>(2 * i + 1) * (lower + upper);
+    const double x = sorted[i];
+    double log_cdf, log_sf;
+    if (d.model == HeightModel::gaussian) {
+      log_cdf = d.log_cdf(x);
+      log_sf = d.log_sf(x);
+    } else {
+      const double w = (d.model == HeightModel::weibull_tail ? x - d.location : d.location - x) / d.scale;
+      const double t = w > 0 ? std::pow(w, d.shape) : 0;
+      const double near = t > 0 ? std::log(-std::expm1(-t)) : -std::numeric_limits<double>::infinity();
+      log_cdf = d.model == HeightModel::weibull_tail ? near : -t;
+      log_sf = d.model == HeightModel::weibull_tail ? -t : near;
+    }
+    // point i is the i-th lowest (ln F) and the (n - 1 - i)-th highest (ln(1 - F))
+    sum += static_cast<double>(2 * i + 1) * std::max(log_cdf, floor) +
+           static_cast<double>(2 * (n - 1 - i) + 1) * std::max(log_sf, floor);
+    const double f = std::exp(log_cdf);
+    worst = std::max({worst, static_cast<double>(i + 1) / nd - f, f - static_cast<double>(i) / nd});
   }
-  return -static_cast<double>(n) - sum / static_cast<double>(n);
+  return {-nd - sum / nd, worst};
+}
+
+double anderson_darling(const HeightDistribution& d, const std::vector<double>& sorted) {
+  return fit_statistics(d, sorted).anderson_darling;
 }
 
 double kolmogorov_smirnov(const HeightDistribution& d, const std::vector<double>& sorted) {
-  const double n = static_cast<double>(sorted.size());
-  double worst = 0;
-  for (std::size_t i = 0; i < sorted.size(); ++i) {
-    const double f = d.cdf(sorted[i]);
-    worst = std::max({worst, static_cast<double>(i + 1) / n - f, f - static_cast<double>(i) / n});
-  }
-  return worst;
+  return fit_statistics(d, sorted).kolmogorov_smirnov;
 }
 
 std::vector<double> draw_sample(const HeightDistribution& distribution, std::size_t n, std::uint64_t seed) {

@@ -29,6 +29,11 @@ namespace asperity::topography {
 
 double anderson_darling(const HeightDistribution& distribution, const std::vector<double>& sorted);
 double kolmogorov_smirnov(const HeightDistribution& distribution, const std::vector<double>& sorted);
+// Both at once, from one evaluation of the law a point.
+struct FitStatistics {
+  double anderson_darling = 0, kolmogorov_smirnov = 0;
+};
+FitStatistics fit_statistics(const HeightDistribution& distribution, const std::vector<double>& sorted);
 
 struct AssessmentOptions {
   int bootstrap = 199;         // B; 0: no p-values and no intervals (no test: the verdict says so)
@@ -51,6 +56,12 @@ struct ModelAssessment {
   Interval location, scale, shape;  // percentile bootstrap intervals (shape: Weibull only)
   int bootstrap = 0, failed_refits = 0;
   bool rejected = false;            // the Anderson-Darling p-value is below the significance
+  // p at its floor 1/(B + 1): then it is a bound, "p <= 1/(B + 1)", not a value
+  bool p_at_floor = false;
+  // The shape is pinned down by the data: its interval stays inside the fit's bounds and at most
+  // a tenth of the refits end at a bound. Otherwise it is "not identified", with why.
+  bool shape_identified = true;
+  std::string identification;
 };
 
 struct Verdict {

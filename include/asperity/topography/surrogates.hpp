@@ -1,0 +1,63 @@
+// Synthetic surfaces that share a measured map's spectrum: the surfaces of the null hypotheses
+// (docs/surfaces.md, section 4). Summit heights of a real surface are correlated (neighbouring
+// summits share the long wavelengths): a test that draws independent values cannot see that. Its
+// null distribution comes instead from whole synthetic surfaces of the measured map's own
+// spectrum, with summits found on each exactly as on the measurement.
+//
+// The spectrum: of the map's heights transformed to normal scores (each height replaced by
+// Phi^-1 of its mid-rank, so the spectrum is that of the Gaussian field behind any monotone
+// marginal), Hann-windowed (no leakage from the map's edges, which do not match), on a grid
+// padded beyond the map by three correlation lengths (so a surrogate is not periodic across the
+// map), its periodogram smoothed over the 3 x 3 nearest wavevectors (a periodogram's ordinates
+// are exponentially distributed; smoothing keeps a surrogate from carrying that noise twice).
+// A surrogate is a Gaussian random field with that spectrum (complex normal Fourier
+// coefficients, one inverse FFT), cut to the map's grid, standardized to mean 0 and variance 1
+// over the map's valid points, and missing where the map is.
+//
+// Under a hypothesis the surrogate becomes a surface through a monotone map of its normal scores
+// (a Gaussian: mu + sigma g; a Weibull: F^-1(Phi(g))): the amplitude-adjusted surrogates of
+// Theiler et al. (1992) and Schreiber & Schmitz (2000). A monotone map keeps every summit where it
+// is, so the summits are found once per surrogate, on g.
+//
+// Cost: one FFT of the padded grid a surrogate, O(N log N); reproducible for every thread count
+// (surrogate k of seed s is the same however the ensemble is split).
+#pragma once
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "asperity/topography/height_map.hpp"
+#include "asperity/topography/statistics.hpp"
+
+namespace asperity::topography {
+
+class SurrogateFields {
+ public:
+  // `map`: the heights as analysed (leveled), NaN missing; `lengths`: its correlation lengths
+  // (the padding). Throws asperity::Error for a map with fewer than 3 x 3 points.
+  SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths);
+
+  // Surrogate `index` of the ensemble `seed`: normal scores on the map's grid (x fastest),
+  // standardized over the valid points, NaN where the map is missing. `field` is resized.
+  void generate(std::uint64_t seed, std::size_t index, std::vector<double>& field) const;
+
+  // The map's own normal scores (the transform the spectrum was taken of), NaN where missing.
+  const std::vector<double>& normal_scores() const noexcept { return scores_; }
+  std::size_t nx() const noexcept { return nx_; }
+  std::size_t ny() const noexcept { return ny_; }
+  std::size_t padded_nx() const noexcept { return px_; }
+  std::size_t padded_ny() const noexcept { return py_; }
+
+ private:
+  std::size_t nx_ = 0, ny_ = 0, px_ = 0, py_ = 0;
+  std::vector<double> amplitude_;  // py x (px/2 + 1), the coefficients' standard deviation
+  std::vector<double> scores_;
+  std::vector<char> valid_;
+};
+
+// The standard normal quantile Phi^-1(p) and distribution Phi(z) (Boost.Math).
+double normal_quantile(double p);
+double normal_cdf(double z);
+
+}  // namespace asperity::topography
