@@ -49,37 +49,86 @@ SpectralMoments spectral_moments(const HeightMap& map) {
   const HeightStatistics stats = height_statistics(map);
   SpectralMoments moments;
   moments.m0 = stats.rms * stats.rms;
-  long double slope[2] = {0, 0}, curvature[2] = {0, 0};
-  std::size_t slope_count[2] = {0, 0}, curvature_count[2] = {0, 0};
-  const double step[2] = {map.dx, map.dy};
-  for (int direction = 0; direction < 2; ++direction) {
-    const std::size_t along = direction == 0 ? map.nx : map.ny, across = direction == 0 ? map.ny : map.nx;
-    const double h = step[direction];
-    for (std::size_t a = 0; a < across; ++a)
-      for (std::size_t k = 1; k + 1 < along; ++k) {
-        const auto value = [&](std::size_t position) {
-          return direction == 0 ? map.at(position, a) : map.at(a, position);
-        };
-        const double before = value(k - 1), here = value(k), after = value(k + 1);
-        if (std::isnan(before) || std::isnan(here) || std::isnan(after)) continue;
-        const double first = (after - before) / (2 * h), second = (after - 2 * here + before) / (h * h);
-        slope[direction] += first * first;
-        curvature[direction] += second * second;
-        ++slope_count[direction];
-        ++curvature_count[direction];
+  const std::size_t nx = map.nx, ny = map.ny;
+  const double dx = map.dx, dy = map.dy;
+  const auto h = [&](std::size_t i, std::size_t j) { return map.heights[j * nx + i]; };
+  // slopes by forward differences (both at a point where h, its x and y neighbours are valid)
+  long double sxx = 0, syy = 0, sxy = 0;
+  std::size_t nx_slopes = 0, ny_slopes = 0, n_cross = 0;
+  // curvatures: second differences along x, y; the forward mixed difference
+  long double cxx = 0, cyy = 0, cxy = 0, cxx_yy = 0, cxx_xy = 0, cyy_xy = 0;
+  std::size_t n_xx = 0, n_yy = 0, n_curvature = 0;
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double here = h(i, j);
+      if (std::isnan(here)) continue;
+      const double right = i + 1 < nx ? h(i + 1, j) : NAN, up = j + 1 < ny ? h(i, j + 1) : NAN;
+      const double sx = (right - here) / dx, sy = (up - here) / dy;
+      if (!std::isnan(sx)) {
+        sxx += sx * sx;
+        ++nx_slopes;
       }
-  }
-  if (slope_count[0] == 0 || slope_count[1] == 0)
+      if (!std::isnan(sy)) {
+        syy += sy * sy;
+        ++ny_slopes;
+      }
+      if (!std::isnan(sx) && !std::isnan(sy)) {
+        sxy += sx * sy;
+        ++n_cross;
+      }
+      const double left = i > 0 ? h(i - 1, j) : NAN, down = j > 0 ? h(i, j - 1) : NAN;
+      const double hxx = (right - 2 * here + left) / (dx * dx), hyy = (up - 2 * here + down) / (dy * dy);
+      if (!std::isnan(hxx)) {
+        cxx += hxx * hxx;
+        ++n_xx;
+      }
+      if (!std::isnan(hyy)) {
+        cyy += hyy * hyy;
+        ++n_yy;
+      }
+      const double diagonal = i + 1 < nx && j + 1 < ny ? h(i + 1, j + 1) : NAN;
+      const double hxy = (diagonal - right - up + here) / (dx * dy);
+      if (!std::isnan(hxx) && !std::isnan(hyy) && !std::isnan(hxy)) {
+        cxy += hxy * hxy;
+        cxx_yy += hxx * hyy;
+        cxx_xy += hxx * hxy;
+        cyy_xy += hyy * hxy;
+        ++n_curvature;
+      }
+    }
+  if (nx_slopes == 0 || ny_slopes == 0 || n_xx == 0 || n_yy == 0)
     throw Error(map.source + ": no three valid points in a row in both directions: no spectral moments");
-  moments.m2x = static_cast<double>(slope[0] / slope_count[0]);
-  moments.m2y = static_cast<double>(slope[1] / slope_count[1]);
-  moments.m4x = static_cast<double>(curvature[0] / curvature_count[0]);
-  moments.m4y = static_cast<double>(curvature[1] / curvature_count[1]);
-  moments.m2 = 0.5 * (moments.m2x + moments.m2y);
-  moments.m4 = 0.5 * (moments.m4x + moments.m4y);
+  moments.m2x = static_cast<double>(sxx / nx_slopes);
+  moments.m2y = static_cast<double>(syy / ny_slopes);
+  moments.m11 = n_cross ? static_cast<double>(sxy / n_cross) : 0;
+  moments.m4x = static_cast<double>(cxx / n_xx);
+  moments.m4y = static_cast<double>(cyy / n_yy);
+  // principal directions of the slope tensor
+  const double half_sum = 0.5 * (moments.m2x + moments.m2y), half_difference = 0.5 * (moments.m2x - moments.m2y);
+  const double radius = std::hypot(half_difference, moments.m11);
+  moments.principal_angle = 0.5 * std::atan2(2 * moments.m11, moments.m2x - moments.m2y);
+  moments.m2_principal[0] = half_sum + radius;
+  moments.m2_principal[1] = half_sum - radius;
+  // the curvature variance along direction theta: <(c^2 hxx + 2 c s hxy + s^2 hyy)^2>
+  const double a = moments.m4x, b = moments.m4y;
+  const double c = n_curvature ? static_cast<double>(cxy / n_curvature) : 0;
+  const double d = n_curvature ? static_cast<double>(cxx_yy / n_curvature) : 0;
+  const double e = n_curvature ? static_cast<double>(cxx_xy / n_curvature) : 0;
+  const double f = n_curvature ? static_cast<double>(cyy_xy / n_curvature) : 0;
+  for (int k = 0; k < 2; ++k) {
+    const double theta = moments.principal_angle + k * 1.5707963267948966;
+    const double co = std::cos(theta), si = std::sin(theta);
+    const double c2 = co * co, s2 = si * si, cs = co * si;
+    moments.m4_principal[k] = c2 * c2 * a + s2 * s2 * b + 4 * cs * cs * c + 2 * c2 * s2 * d + 4 * c2 * cs * e +
+                              4 * s2 * cs * f;
+  }
+  moments.anisotropy = moments.m2_principal[1] > 0 ? moments.m2_principal[0] / moments.m2_principal[1]
+                                                   : std::numeric_limits<double>::infinity();
+  moments.m2 = std::sqrt(std::max(0.0, moments.m2_principal[0]) * std::max(0.0, moments.m2_principal[1]));
+  moments.m4 = std::sqrt(std::max(0.0, moments.m4_principal[0]) * std::max(0.0, moments.m4_principal[1]));
   moments.alpha = moments.m2 > 0 ? moments.m0 * moments.m4 / (moments.m2 * moments.m2) : 0;
-  moments.slope_samples = slope_count[0] + slope_count[1];
-  moments.curvature_samples = curvature_count[0] + curvature_count[1];
+  moments.slope_samples = nx_slopes + ny_slopes;
+  moments.curvature_samples = n_xx + n_yy;
   return moments;
 }
 
