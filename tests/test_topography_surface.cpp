@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 
 #include "asperity/error.hpp"
@@ -40,6 +41,26 @@ t::HeightMap planted_caps(std::size_t cells, std::size_t cell, double dx, double
   return map;
 }
 }  // namespace
+
+// Every factor-th point, for any factor: ceil(n / factor) points (n + factor - 1 wrapped for a
+// factor near the largest size, giving a map of 0 x 0 points holding one height).
+TEST(TopographySurface, DecimatedByAnyFactor) {
+  t::HeightMap map;
+  map.nx = 7;
+  map.ny = 5;
+  map.dx = map.dy = 1e-6;
+  for (std::size_t k = 0; k < 35; ++k) map.heights.push_back(static_cast<double>(k));
+  const std::size_t largest = std::numeric_limits<std::size_t>::max();
+  for (std::size_t factor : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{7}, std::size_t{8},
+                             largest / 2, largest - 1, largest}) {
+    const t::HeightMap out = t::decimated(map, factor);
+    const auto expected = [factor](std::size_t n) { return factor >= n ? 1 : (n + factor - 1) / factor; };
+    EXPECT_EQ(out.nx, expected(7)) << factor;
+    EXPECT_EQ(out.ny, expected(5)) << factor;
+    EXPECT_EQ(out.heights.size(), out.nx * out.ny) << factor;
+    EXPECT_EQ(out.heights.front(), 0.0);
+  }
+}
 
 // Finite-difference moments against the field's exact expectations.
 TEST(TopographySurface, SpectralMomentsOfAKnownSpectrum) {
