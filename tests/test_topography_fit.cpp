@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <string>
 
 #include "asperity/error.hpp"
 #include "asperity/topography/distribution_fit.hpp"
@@ -96,6 +97,21 @@ TEST(TopographyFit, MomentsWhereGammaOverflows) {
   EXPECT_NEAR(d.standard_deviation() / sd - 1, 0, 1e-12);
   const t::HeightDistribution mirrored = weibull(t::HeightModel::weibull_bounded, 0, 1e-300, 0x1p-8);
   EXPECT_NEAR(mirrored.mean() / -mean - 1, 0, 1e-12);
+}
+
+// The bootstrap's size is bounded (as --bootstrap is): 2^31 - 1 refits would run for days.
+TEST(TopographyFit, BootstrapSizeIsBounded) {
+  const std::vector<double> values = sorted_sample(weibull(t::HeightModel::weibull_tail, 0, 1, 1.5), 50, 1);
+  for (int bootstrap : {-1, t::max_bootstrap + 1, 2147483647}) {
+    t::AssessmentOptions options;
+    options.bootstrap = bootstrap;
+    try {
+      t::assess_sample("sample", values, options);
+      ADD_FAILURE() << "bootstrap " << bootstrap << " accepted";
+    } catch (const asperity::Error& error) {
+      EXPECT_NE(std::string(error.what()).find("bootstrap must be from 0 to 100000"), std::string::npos) << error.what();
+    }
+  }
 }
 
 // The three-parameter Weibull by MPS recovers the shape, below 1 as well, on both sides.

@@ -9,9 +9,11 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "asperity/error.hpp"
 #include "asperity/topography/analysis.hpp"
+#include "asperity/topography/contact_comparison.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/summits.hpp"
@@ -41,6 +43,23 @@ t::HeightMap planted_caps(std::size_t cells, std::size_t cell, double dx, double
   return map;
 }
 }  // namespace
+
+// The points of each contact curve are bounded: 2^31 - 1 of them ran without bound (time and
+// memory), checked before anything else is done.
+TEST(TopographySurface, ContactCurvePointsAreBounded) {
+  for (int points : {-1, 0, 1, t::max_curve_points + 1, 2147483647}) {
+    t::ContactOptions options;
+    options.contact_modulus = 1e11;
+    options.curve_points = points;
+    try {
+      t::compare_contact(t::SampleAssessment{}, t::Summits{}, t::SpectralMoments{}, 1e-8, options);
+      ADD_FAILURE() << "curve_points " << points << " accepted";
+    } catch (const asperity::Error& error) {
+      EXPECT_NE(std::string(error.what()).find("curve_points must be from 2 to 100000"), std::string::npos)
+          << error.what();
+    }
+  }
+}
 
 // Every factor-th point, for any factor: ceil(n / factor) points (n + factor - 1 wrapped for a
 // factor near the largest size, giving a map of 0 x 0 points holding one height).

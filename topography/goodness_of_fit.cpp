@@ -139,6 +139,9 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
 SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options) {
   if (!(options.confidence > 0 && options.confidence < 1)) throw Error("assessment: confidence must be in (0, 1)");
   if (!(options.significance > 0 && options.significance < 1)) throw Error("assessment: significance must be in (0, 1)");
+  if (options.bootstrap < 0 || options.bootstrap > max_bootstrap)
+    throw Error("assessment: bootstrap must be from 0 to " + std::to_string(max_bootstrap) + ", not " +
+                std::to_string(options.bootstrap));
   std::sort(values.begin(), values.end());
   SampleAssessment assessment;
   assessment.name = name;
