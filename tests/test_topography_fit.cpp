@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <string>
 
 #include "asperity/error.hpp"
 #include "asperity/topography/distribution_fit.hpp"
@@ -40,6 +43,74 @@ TEST(TopographyFit, DistributionFunctionsAgree) {
     // the density integrates the distribution function (midpoint rule across a small step)
     const double x = d.quantile(0.4), h = 1e-5 * d.standard_deviation();
     EXPECT_NEAR((d.cdf(x + h) - d.cdf(x - h)) / (2 * h), std::exp(d.log_pdf(x)), 1e-6) << t::to_string(model);
+  }
+}
+
+// The functions are noexcept and answer by value: NaN outside the quantile's (0, 1) and for
+// parameters that are no distribution (Boost.Math threw through noexcept there: the process
+// ended), +-inf where a moment is beyond the largest double.
+TEST(TopographyFit, DistributionFunctionsAnswerBadArgumentsByValue) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  for (t::HeightModel model : t::all_height_models) {
+    const t::HeightDistribution d = weibull(model, 0.3, 2.0, 1.7);
+    for (double p : {0.0, 1.0, -0.5, 1.5, -inf, inf, nan}) EXPECT_TRUE(std::isnan(d.quantile(p))) << p;
+    EXPECT_TRUE(std::isfinite(d.quantile(std::numeric_limits<double>::denorm_min())));
+    EXPECT_TRUE(std::isfinite(d.quantile(std::nextafter(1.0, 0.0))));
+    for (double scale : {0.0, -1.0, inf, nan}) {
+      const t::HeightDistribution bad = weibull(model, 0.3, scale, 1.7);
+      EXPECT_TRUE(std::isnan(bad.quantile(0.5)) && std::isnan(bad.mean()) && std::isnan(bad.standard_deviation()))
+          << t::to_string(model) << " scale " << scale;
+    }
+    for (double location : {inf, -inf, nan}) {
+      const t::HeightDistribution bad = weibull(model, location, 2.0, 1.7);
+      EXPECT_TRUE(std::isnan(bad.quantile(0.5)) && std::isnan(bad.mean()) && std::isnan(bad.standard_deviation()));
+    }
+    if (model == t::HeightModel::gaussian) continue;
+    for (double shape : {0.0, -0.5, -1.0, -2.0, inf, nan}) {
+      const t::HeightDistribution bad = weibull(model, 0.3, 2.0, shape);
+      EXPECT_TRUE(std::isnan(bad.quantile(0.5)) && std::isnan(bad.mean()) && std::isnan(bad.standard_deviation()))
+          << t::to_string(model) << " shape " << shape;
+    }
+    // shape 1e-3: Gamma(1001) ~ 4e2564 and Gamma(2001): both moments beyond any double
+    const t::HeightDistribution extreme = weibull(model, 0.3, 2.0, 1e-3);
+    EXPECT_EQ(extreme.mean(), model == t::HeightModel::weibull_tail ? inf : -inf);
+    EXPECT_EQ(extreme.standard_deviation(), inf);
+    EXPECT_EQ(weibull(model, 0.3, 2.0, std::numeric_limits<double>::denorm_min()).standard_deviation(), inf);
+  }
+}
+
+// Where Gamma(1 + 1/a) or Gamma(1 + 2/a) overflows but the moment does not (a = 2^-8, scale
+// 1e-300): the mean 256! 1e-300 and the standard deviation sqrt(512! - 256!^2) 1e-300, against
+// the factorials in 50 digits.
+TEST(TopographyFit, MomentsWhereGammaOverflows) {
+  using boost::multiprecision::cpp_bin_float_50;
+  cpp_bin_float_50 f256 = 1, f512 = 1;
+  for (int k = 2; k <= 512; ++k) {
+    f512 *= k;
+    if (k <= 256) f256 *= k;
+  }
+  const cpp_bin_float_50 scale("1e-300");
+  const double mean = static_cast<double>(f256 * scale);
+  const double sd = static_cast<double>(sqrt(f512 - f256 * f256) * scale);
+  const t::HeightDistribution d = weibull(t::HeightModel::weibull_tail, 0, 1e-300, 0x1p-8);
+  EXPECT_NEAR(d.mean() / mean - 1, 0, 1e-12);
+  EXPECT_NEAR(d.standard_deviation() / sd - 1, 0, 1e-12);
+  const t::HeightDistribution mirrored = weibull(t::HeightModel::weibull_bounded, 0, 1e-300, 0x1p-8);
+  EXPECT_NEAR(mirrored.mean() / -mean - 1, 0, 1e-12);
+}
+
+// The bootstrap's size is bounded (as --bootstrap is): 2^31 - 1 refits would run for days.
+TEST(TopographyFit, BootstrapSizeIsBounded) {
+  const std::vector<double> values = sorted_sample(weibull(t::HeightModel::weibull_tail, 0, 1, 1.5), 50, 1);
+  for (int bootstrap : {-1, t::max_bootstrap + 1, 2147483647}) {
+    t::AssessmentOptions options;
+    options.bootstrap = bootstrap;
+    try {
+      t::assess_sample("sample", values, options);
+      ADD_FAILURE() << "bootstrap " << bootstrap << " accepted";
+    } catch (const asperity::Error& error) {
+      EXPECT_NE(std::string(error.what()).find("bootstrap must be from 0 to 100000"), std::string::npos) << error.what();
+    }
   }
 }
 

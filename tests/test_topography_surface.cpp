@@ -9,10 +9,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
+#include <string>
 
 #include "asperity/error.hpp"
 #include "asperity/topography/analysis.hpp"
+#include "asperity/topography/contact_comparison.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/summits.hpp"
@@ -43,6 +46,43 @@ t::HeightMap planted_caps(std::size_t cells, std::size_t cell, double dx, double
 }
 }  // namespace
 
+// The points of each contact curve are bounded: 2^31 - 1 of them ran without bound (time and
+// memory), checked before anything else is done.
+TEST(TopographySurface, ContactCurvePointsAreBounded) {
+  for (int points : {-1, 0, 1, t::max_curve_points + 1, 2147483647}) {
+    t::ContactOptions options;
+    options.contact_modulus = 1e11;
+    options.curve_points = points;
+    try {
+      t::compare_contact(t::SampleAssessment{}, t::Summits{}, t::SpectralMoments{}, 1e-8, options);
+      ADD_FAILURE() << "curve_points " << points << " accepted";
+    } catch (const asperity::Error& error) {
+      EXPECT_NE(std::string(error.what()).find("curve_points must be from 2 to 100000"), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
+// Every factor-th point, for any factor: ceil(n / factor) points (n + factor - 1 wrapped for a
+// factor near the largest size, giving a map of 0 x 0 points holding one height).
+TEST(TopographySurface, DecimatedByAnyFactor) {
+  t::HeightMap map;
+  map.nx = 7;
+  map.ny = 5;
+  map.dx = map.dy = 1e-6;
+  for (std::size_t k = 0; k < 35; ++k) map.heights.push_back(static_cast<double>(k));
+  const std::size_t largest = std::numeric_limits<std::size_t>::max();
+  for (std::size_t factor : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{7}, std::size_t{8},
+                             largest / 2, largest - 1, largest}) {
+    const t::HeightMap out = t::decimated(map, factor);
+    const auto expected = [factor](std::size_t n) { return factor >= n ? 1 : (n + factor - 1) / factor; };
+    EXPECT_EQ(out.nx, expected(7)) << factor;
+    EXPECT_EQ(out.ny, expected(5)) << factor;
+    EXPECT_EQ(out.heights.size(), out.nx * out.ny) << factor;
+    EXPECT_EQ(out.heights.front(), 0.0);
+  }
+}
+
 // Finite-difference moments against the field's exact expectations.
 TEST(TopographySurface, SpectralMomentsOfAKnownSpectrum) {
   const std::vector<t::SpectrumComponent> spectrum = {{1.5, 1e-16}, {4.0, 2e-16}};
@@ -55,6 +95,8 @@ TEST(TopographySurface, SpectralMomentsOfAKnownSpectrum) {
   EXPECT_NEAR(measured.m4x / expected.m4x, 1, 0.06);
   EXPECT_NEAR(measured.m4y / expected.m4y, 1, 0.06);
   EXPECT_NEAR(measured.alpha / expected.alpha, 1, 0.15);
+  EXPECT_NEAR(measured.anisotropy / expected.anisotropy, 1, 0.1);  // dy = 2 dx: 4 in physical units
+  EXPECT_NEAR(measured.principal_angle, 0, 0.05);
   const t::HeightStatistics stats = t::height_statistics(field);
   EXPECT_NEAR(stats.skewness, 0, 0.15);
   EXPECT_NEAR(stats.kurtosis, 3, 0.3);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <string>
 
 #include "asperity/error.hpp"
 #include "asperity/scene.hpp"
@@ -22,7 +23,7 @@ std::string shape_text(double shape) {
 }
 
 void fill_curves(ModelContact& model, const ContactModel& contact, const ContactComparison& comparison) {
-  const int points = std::max(2, comparison.options.curve_points);
+  const int points = comparison.options.curve_points;  // checked by compare_contact
   const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
   for (int k = 0; k < points; ++k)
     model.curve.push_back(contact.at_pressure(std::exp(lo + (hi - lo) * k / (points - 1))));
@@ -42,6 +43,9 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
                                   const SpectralMoments& moments, double measured_area, const ContactOptions& options) {
   if (!(options.contact_modulus > 0) || !std::isfinite(options.contact_modulus))
     throw Error("contact: the contact modulus E* must be a positive number (--modulus)");
+  if (options.curve_points < min_curve_points || options.curve_points > max_curve_points)
+    throw Error("contact: curve_points must be from " + std::to_string(min_curve_points) + " to " +
+                std::to_string(max_curve_points) + ", not " + std::to_string(options.curve_points));
   if (summits.list.empty() || !(summits.radius > 0)) throw Error("contact: no summits with a positive mean curvature");
   ContactComparison comparison;
   comparison.options = options;

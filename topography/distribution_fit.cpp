@@ -1,6 +1,7 @@
 #include "asperity/topography/distribution_fit.hpp"
 
 #include <algorithm>
+#include <boost/math/policies/policy.hpp>
 #include <boost/math/special_functions/erf.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
@@ -12,11 +13,20 @@
 namespace asperity::topography {
 namespace {
 constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double log_sqrt_2pi = 0.91893853320467274178;
 
+// Boost.Math reports a domain error, a pole or an overflow by exception unless told otherwise;
+// the distribution's functions are noexcept and answer by value (NaN, +-inf) instead.
+namespace policies = boost::math::policies;
+using NoThrow =
+    policies::policy<policies::domain_error<policies::ignore_error>, policies::pole_error<policies::ignore_error>,
+                     policies::overflow_error<policies::ignore_error>, policies::evaluation_error<policies::ignore_error>,
+                     policies::rounding_error<policies::ignore_error>>;
+
 // ln Phi(z), accurate far into the lower tail
-double log_normal_cdf(double z) {
-  if (z > -30) return std::log(0.5 * boost::math::erfc(-z / std::sqrt(2.0)));
+double log_normal_cdf(double z) noexcept {
+  if (z > -30) return std::log(0.5 * boost::math::erfc(-z / std::sqrt(2.0), NoThrow()));
   // Mills ratio: Phi(z) ~ phi(z)/|z| (1 - 1/z^2 + 3/z^4)
   const double z2 = z * z;
   return -0.5 * z2 - log_sqrt_2pi - std::log(-z) + std::log1p(-1 / z2 + 3 / (z2 * z2));
@@ -27,6 +37,21 @@ double log_normal_cdf(double z) {
 double weibull_t(const HeightDistribution& d, double x) {
   const double w = (d.model == HeightModel::weibull_tail ? x - d.location : d.location - x) / d.scale;
   return w > 0 ? std::pow(w, d.shape) : 0;
+}
+
+// parameters of a distribution at all: a finite location, a finite positive scale, and for the
+// Weibulls a finite positive shape
+bool has_valid_parameters(const HeightDistribution& d) noexcept {
+  const bool location_and_scale = std::isfinite(d.location) && std::isfinite(d.scale) && d.scale > 0;
+  return d.model == HeightModel::gaussian ? location_and_scale
+                                          : location_and_scale && std::isfinite(d.shape) && d.shape > 0;
+}
+
+// scale Gamma(x), x >= 1, finite wherever the product is (Gamma alone overflows beyond x ~ 171.6)
+double scaled_gamma(double scale, double x) noexcept {
+  const double gamma = boost::math::tgamma(x, NoThrow());
+  if (std::isfinite(gamma)) return scale * gamma;
+  return std::exp(std::log(scale) + boost::math::lgamma(x, NoThrow()));
 }
 }  // namespace
 
@@ -77,21 +102,32 @@ double HeightDistribution::log_sf(double x) const noexcept {
 double HeightDistribution::cdf(double x) const noexcept { return std::exp(log_cdf(x)); }
 
 double HeightDistribution::quantile(double p) const noexcept {
-  if (model == HeightModel::gaussian) return location - scale * std::sqrt(2.0) * boost::math::erfc_inv(2 * p);
+  if (!(p > 0 && p < 1) || !has_valid_parameters(*this)) return nan;
+  if (model == HeightModel::gaussian)
+    return location - scale * std::sqrt(2.0) * boost::math::erfc_inv(2 * p, NoThrow());
   if (model == HeightModel::weibull_tail) return location + scale * std::pow(-std::log1p(-p), 1 / shape);
   return location - scale * std::pow(-std::log(p), 1 / shape);  // P(X <= x) = exp(-t)
 }
 
+// Gamma(1 + 1/a) overflows for a shape a below ~0.0059, Gamma(1 + 2/a) below ~0.0117: the mean
+// and the standard deviation then come from the logs, +inf only where they are beyond the
+// largest double.
 double HeightDistribution::mean() const noexcept {
+  if (!has_valid_parameters(*this)) return nan;
   if (model == HeightModel::gaussian) return location;
-  const double m = scale * boost::math::tgamma(1 + 1 / shape);
+  const double m = scaled_gamma(scale, 1 + 1 / shape);
   return model == HeightModel::weibull_tail ? location + m : location - m;
 }
 
 double HeightDistribution::standard_deviation() const noexcept {
+  if (!has_valid_parameters(*this)) return nan;
   if (model == HeightModel::gaussian) return scale;
-  const double g1 = boost::math::tgamma(1 + 1 / shape), g2 = boost::math::tgamma(1 + 2 / shape);
-  return scale * std::sqrt(std::max(0.0, g2 - g1 * g1));
+  const double g1 = boost::math::tgamma(1 + 1 / shape, NoThrow()), g2 = boost::math::tgamma(1 + 2 / shape, NoThrow());
+  if (std::isfinite(g2) && std::isfinite(g1 * g1)) return scale * std::sqrt(std::max(0.0, g2 - g1 * g1));
+  // sqrt(G2 - G1^2) = sqrt(G2) sqrt(1 - G1^2/G2), G1^2 <= G2 (log-convexity)
+  const double l1 = boost::math::lgamma(1 + 1 / shape, NoThrow()), l2 = boost::math::lgamma(1 + 2 / shape, NoThrow());
+  if (!std::isfinite(l2)) return inf;
+  return std::exp(std::log(scale) + 0.5 * l2) * std::sqrt(-std::expm1(2 * l1 - l2));
 }
 
 namespace {

@@ -51,7 +51,9 @@ int minimum_bootstrap(double significance) {
 }
 
 void check_bootstrap_size(int bootstrap, double significance) {
-  if (bootstrap < 0) throw Error("assessment: the bootstrap size must not be negative");
+  if (bootstrap < 0 || bootstrap > max_bootstrap)
+    throw Error("assessment: bootstrap must be from 0 to " + std::to_string(max_bootstrap) + ", not " +
+                std::to_string(bootstrap));
   if (bootstrap > 0 && bootstrap < minimum_bootstrap(significance))
     throw Error("a bootstrap of " + std::to_string(bootstrap) + " samples can never give p below " +
                 format("%g", significance) + " (its smallest p-value is 1/(B + 1) = " +

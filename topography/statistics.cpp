@@ -56,7 +56,7 @@ SpectralMoments spectral_moments(const HeightMap& map) {
   long double sxx = 0, syy = 0, sxy = 0;
   std::size_t nx_slopes = 0, ny_slopes = 0, n_cross = 0;
   // curvatures: second differences along x, y; the forward mixed difference
-  long double cxx = 0, cyy = 0, cxy = 0, cxx_yy = 0, cxx_xy = 0, cyy_xy = 0;
+  long double cxx = 0, cyy = 0, cxy = 0, cxx_yy = 0, cxx_xy = 0, cyy_xy = 0, common_xx = 0, common_yy = 0;
   std::size_t n_xx = 0, n_yy = 0, n_curvature = 0;
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) {
@@ -89,6 +89,8 @@ SpectralMoments spectral_moments(const HeightMap& map) {
       const double diagonal = i + 1 < nx && j + 1 < ny ? h(i + 1, j + 1) : NAN;
       const double hxy = (diagonal - right - up + here) / (dx * dy);
       if (!std::isnan(hxx) && !std::isnan(hyy) && !std::isnan(hxy)) {
+        common_xx += hxx * hxx;
+        common_yy += hyy * hyy;
         cxy += hxy * hxy;
         cxx_yy += hxx * hyy;
         cxx_xy += hxx * hxy;
@@ -109,8 +111,10 @@ SpectralMoments spectral_moments(const HeightMap& map) {
   moments.principal_angle = 0.5 * std::atan2(2 * moments.m11, moments.m2x - moments.m2y);
   moments.m2_principal[0] = half_sum + radius;
   moments.m2_principal[1] = half_sum - radius;
-  // the curvature variance along direction theta: <(c^2 hxx + 2 c s hxy + s^2 hyy)^2>
-  const double a = moments.m4x, b = moments.m4y;
+  // the curvature variance along direction theta: <(c^2 hxx + 2 c s hxy + s^2 hyy)^2>, every
+  // average over the points where the three differences exist
+  const double a = n_curvature ? static_cast<double>(common_xx / n_curvature) : moments.m4x;
+  const double b = n_curvature ? static_cast<double>(common_yy / n_curvature) : moments.m4y;
   const double c = n_curvature ? static_cast<double>(cxy / n_curvature) : 0;
   const double d = n_curvature ? static_cast<double>(cxx_yy / n_curvature) : 0;
   const double e = n_curvature ? static_cast<double>(cxx_xy / n_curvature) : 0;

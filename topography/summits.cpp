@@ -145,8 +145,10 @@ HeightMap decimated(const HeightMap& map, std::size_t factor) {
   out.source = map.source;
   out.format = map.format;
   out.notes = map.notes;
-  out.nx = (map.nx + factor - 1) / factor;
-  out.ny = (map.ny + factor - 1) / factor;
+  // ceil(n / factor), without n + factor - 1 (it wraps for a factor near the largest size)
+  const auto every = [factor](std::size_t n) { return n == 0 ? 0 : (n - 1) / factor + 1; };
+  out.nx = every(map.nx);
+  out.ny = every(map.ny);
   out.dx = map.dx * static_cast<double>(factor);
   out.dy = map.dy * static_cast<double>(factor);
   out.heights.reserve(out.nx * out.ny);

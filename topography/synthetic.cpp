@@ -9,8 +9,32 @@
 namespace asperity::topography {
 namespace {
 
+// The kernel's half-width h: ceil(4 correlation) points, at least 1 (correlation checked).
+std::size_t kernel_half_width(double correlation) {
+  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(4 * correlation)));
+}
+
+void check_intervals(double dx, double dy) {
+  if (!(std::isfinite(dx) && dx > 0 && std::isfinite(dy) && dy > 0))
+    throw Error("gaussian_random_field: the sampling intervals dx, dy must be finite and positive");
+}
+
+void check_components(const std::vector<SpectrumComponent>& spectrum) {
+  if (spectrum.empty()) throw Error("gaussian_random_field: the spectrum needs at least one component");
+  double total = 0;
+  for (const SpectrumComponent& component : spectrum) {
+    if (!(component.correlation > 0 && component.correlation <= max_field_correlation))
+      throw Error("gaussian_random_field: a component's correlation must be a number of points in (0, " +
+                  std::to_string(static_cast<long>(max_field_correlation)) + "]");
+    if (!(std::isfinite(component.variance) && component.variance > 0))
+      throw Error("gaussian_random_field: a component's variance must be finite and positive");
+    total += component.variance;
+  }
+  if (!std::isfinite(total)) throw Error("gaussian_random_field: the total variance is not finite");
+}
+
 std::vector<double> kernel(double correlation) {
-  const int half = std::max(1, static_cast<int>(std::ceil(4 * correlation)));
+  const int half = static_cast<int>(kernel_half_width(correlation));
   std::vector<double> k(static_cast<std::size_t>(2 * half + 1));
   double squares = 0;
   for (int m = -half; m <= half; ++m) {
@@ -32,7 +56,25 @@ double normal(std::mt19937_64& engine) {
 
 HeightMap gaussian_random_field(std::size_t nx, std::size_t ny, double dx, double dy,
                                 const std::vector<SpectrumComponent>& spectrum, std::uint64_t seed) {
-  if (nx < 3 || ny < 3 || spectrum.empty()) throw Error("gaussian_random_field: needs 3 x 3 points and a spectrum");
+  // every size checked before it is computed, so that no product wraps around
+  if (nx < 3 || ny < 3) throw Error("gaussian_random_field: needs at least 3 x 3 points");
+  if (nx > max_field_points / ny)
+    throw Error("gaussian_random_field: " + std::to_string(nx) + " x " + std::to_string(ny) + " points is more than " +
+                std::to_string(max_field_points));
+  check_intervals(dx, dy);
+  check_components(spectrum);
+  std::uint64_t work = 0;
+  for (const SpectrumComponent& component : spectrum) {
+    const std::size_t half = kernel_half_width(component.correlation);  // <= 2^18: no sum below wraps
+    const std::size_t wx = nx + 2 * half, wy = ny + 2 * half;
+    if (wx > max_field_noise_points / wy)
+      throw Error("gaussian_random_field: a component of correlation " + std::to_string(component.correlation) +
+                  " needs more than " + std::to_string(max_field_noise_points) + " points of noise");
+    work += static_cast<std::uint64_t>(2 * half + 1) * (wy * nx + ny * nx);  // each term < 2^47
+    if (work > max_field_work)
+      throw Error("gaussian_random_field: the convolutions would take more than " + std::to_string(max_field_work) +
+                  " multiply-adds (fewer points or shorter correlations)");
+  }
   HeightMap map;
   map.nx = nx;
   map.ny = ny;
@@ -43,7 +85,6 @@ HeightMap gaussian_random_field(std::size_t nx, std::size_t ny, double dx, doubl
   map.heights.assign(nx * ny, 0.0);
   std::mt19937_64 engine(seed);
   for (const SpectrumComponent& component : spectrum) {
-    if (!(component.correlation > 0) || !(component.variance > 0)) throw Error("gaussian_random_field: bad component");
     const std::vector<double> k = kernel(component.correlation);
     const std::size_t half = (k.size() - 1) / 2, wx = nx + 2 * half, wy = ny + 2 * half;
     std::vector<double> noise(wx * wy);
@@ -68,16 +109,18 @@ HeightMap gaussian_random_field(std::size_t nx, std::size_t ny, double dx, doubl
 }
 
 SpectralMoments expected_spectral_moments(double dx, double dy, const std::vector<SpectrumComponent>& spectrum) {
+  check_intervals(dx, dy);
+  check_components(spectrum);
   SpectralMoments m;
   for (const SpectrumComponent& component : spectrum) {
     const std::vector<double> k = kernel(component.correlation);
-    // E[(central difference)^2] = sum_m (k[m-1] - k[m+1])^2 / 4 (per unit step), likewise the
-    // second difference; the other direction's kernel has unit sum of squares.
+    // E[(forward difference)^2] = sum_m (k[m+1] - k[m])^2 (per unit step), likewise the second
+    // difference; the other direction's kernel has unit sum of squares.
     double first = 0, second = 0;
     const auto at = [&](long m) { return m >= 0 && m < static_cast<long>(k.size()) ? k[static_cast<std::size_t>(m)] : 0.0; };
     for (long n = -1; n <= static_cast<long>(k.size()); ++n) {
-      const double d1 = at(n - 1) - at(n + 1), d2 = at(n - 1) - 2 * at(n) + at(n + 1);
-      first += d1 * d1 / 4;
+      const double d1 = at(n + 1) - at(n), d2 = at(n - 1) - 2 * at(n) + at(n + 1);
+      first += d1 * d1;
       second += d2 * d2;
     }
     m.m0 += component.variance;
@@ -86,8 +129,16 @@ SpectralMoments expected_spectral_moments(double dx, double dy, const std::vecto
     m.m4x += component.variance * second / (dx * dx * dx * dx);
     m.m4y += component.variance * second / (dy * dy * dy * dy);
   }
-  m.m2 = 0.5 * (m.m2x + m.m2y);
-  m.m4 = 0.5 * (m.m4x + m.m4y);
+  // separable kernels: no cross term; the principal axes are x and y
+  const bool x_steeper = m.m2x >= m.m2y;
+  m.principal_angle = x_steeper ? 0 : 1.5707963267948966;
+  m.m2_principal[0] = x_steeper ? m.m2x : m.m2y;
+  m.m2_principal[1] = x_steeper ? m.m2y : m.m2x;
+  m.m4_principal[0] = x_steeper ? m.m4x : m.m4y;
+  m.m4_principal[1] = x_steeper ? m.m4y : m.m4x;
+  m.anisotropy = m.m2_principal[0] / m.m2_principal[1];
+  m.m2 = std::sqrt(m.m2x * m.m2y);
+  m.m4 = std::sqrt(m.m4x * m.m4y);
   m.alpha = m.m0 * m.m4 / (m.m2 * m.m2);
   return m;
 }

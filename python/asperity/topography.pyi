@@ -2,7 +2,7 @@
 # name exactly what the submodule holds.
 import enum
 import os
-from typing import Any, Dict, List, Optional, Sequence, Union, overload
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -109,9 +109,19 @@ class SpectralMoments:
     @property
     def m2y(self) -> float: ...
     @property
+    def m11(self) -> float: ...
+    @property
     def m4x(self) -> float: ...
     @property
     def m4y(self) -> float: ...
+    @property
+    def principal_angle(self) -> float: ...
+    @property
+    def m2_principal(self) -> Tuple[float, float]: ...
+    @property
+    def m4_principal(self) -> Tuple[float, float]: ...
+    @property
+    def anisotropy(self) -> float: ...
     @property
     def m2(self) -> float: ...
     @property
@@ -338,7 +348,7 @@ class ContactOptions:
     table_path: str
     threads: int
     def __init__(self, contact_modulus: float, nominal_area: float = 0.0, pressures: Sequence[float] = ...,
-                 curve_points: int = 61, scene_tolerance: float = 1e-8, table_path: str = "",
+                 curve_points: int = 61, scene_tolerance: float = 1e-8, table_path: PathLike = "",
                  threads: int = 0) -> None: ...
 
 class ModelContact:

@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct SideName {
 struct PathName {
   py::object object;  // str, bytes or os.PathLike
 };
+struct Count {
+  py::object object;  // an int or anything with __index__ (numpy's integers), checked where used
+};
 
 }  // namespace asperity::python
 
@@ -65,21 +69,58 @@ ASPERITY_PASS_THROUGH_CASTER(PhysicalStateRecord, "asperity.PhysicalState")
 ASPERITY_PASS_THROUGH_CASTER(DistributionName, "str | asperity.Distribution")
 ASPERITY_PASS_THROUGH_CASTER(SideName, "str | asperity.Side")
 ASPERITY_PASS_THROUGH_CASTER(PathName, "str | bytes | os.PathLike")
+ASPERITY_PASS_THROUGH_CASTER(Count, "int")
 #undef ASPERITY_PASS_THROUGH_CASTER
 }  // namespace pybind11::detail
 
 namespace asperity::python {
 
-using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+// C-contiguous and aligned (an unaligned buffer, e.g. a view at an odd byte offset, is copied).
+constexpr int aligned = py::detail::npy_api::NPY_ARRAY_ALIGNED_;
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast | aligned>;
 
 // Below this many elements the GIL is kept: releasing and taking it back costs more than the work.
 inline constexpr std::size_t release_gil_from = 2048;
 
-// The argument as a C-contiguous float64 array (a copy only if needed); TypeError if it is not
-// a number or an array of numbers.
+inline py::type_error not_numbers(const char* name, const std::string& what) {
+  return py::type_error(std::string(name) + " must be a number or an array of numbers, not " + what);
+}
+
+// The argument as a C-contiguous float64 array (a copy only if needed). Numbers only: bool, int,
+// unsigned and float arrays and scalars, and objects with __float__ (fractions.Fraction,
+// decimal.Decimal), as float() takes them. TypeError for anything else: None (numpy would make
+// it NaN), strings (numpy would parse them), complex numbers (numpy would drop the imaginary
+// part), dates.
 inline DoubleArray as_double_array(py::handle input, const char* name) {
-  DoubleArray array = DoubleArray::ensure(input);
-  if (!array) throw py::type_error(std::string(name) + " must be a number or an array of numbers");
+  if (input.is_none()) throw not_numbers(name, "None");
+  if (PyUnicode_Check(input.ptr()) || PyBytes_Check(input.ptr()) || PyByteArray_Check(input.ptr()))
+    throw not_numbers(name, "a string");
+  const py::array any = py::array::ensure(input);
+  if (!any) throw not_numbers(name, "'" + std::string(py::str(py::type::handle_of(input).attr("__name__"))) + "'");
+  const char kind = any.dtype().kind();
+  if (kind == 'b' || kind == 'i' || kind == 'u' || kind == 'f') {
+    DoubleArray array = DoubleArray::ensure(any);
+    if (!array) throw py::error_already_set();
+    return array;
+  }
+  if (kind != 'O') throw not_numbers(name, "an array of dtype " + std::string(py::str(any.dtype())));
+  // objects: each converted as float() converts a number (never a string, never None)
+  DoubleArray array(std::vector<py::ssize_t>(any.shape(), any.shape() + any.ndim()));
+  double* target = array.mutable_data();
+  const bool one = any.ndim() == 0;
+  for (const py::handle item : py::iter(any.attr("flat"))) {
+    const bool text = PyUnicode_Check(item.ptr()) || PyBytes_Check(item.ptr()) || PyByteArray_Check(item.ptr());
+    double value = -1.0;
+    if (!text && !item.is_none()) value = PyFloat_AsDouble(item.ptr());  // __float__ (or __index__)
+    if (text || item.is_none() || (value == -1.0 && PyErr_Occurred())) {
+      if (PyErr_Occurred() && !PyErr_ExceptionMatches(PyExc_TypeError)) throw py::error_already_set();
+      PyErr_Clear();
+      const std::string what =
+          item.is_none() ? "None" : "'" + std::string(py::str(py::type::handle_of(item).attr("__name__"))) + "'";
+      throw not_numbers(name, one ? what : "an array holding " + what);
+    }
+    *target++ = value;
+  }
   return array;
 }
 
@@ -92,9 +133,18 @@ inline std::vector<py::ssize_t> shape_of(const DoubleArray& array) {
   return std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim());
 }
 
+// Whether n doubles at a and at b share memory without being the same elements: both are
+// contiguous, so numpy's shares_memory is this comparison of the two byte ranges.
+inline bool overlap_apart(const double* a, const double* b, std::size_t n) {
+  const auto first = reinterpret_cast<std::uintptr_t>(a), second = reinterpret_cast<std::uintptr_t>(b);
+  const std::uintptr_t bytes = n * sizeof(double);
+  return n > 0 && first != second && first < second + bytes && second < first + bytes;
+}
+
 // out[i] = f(in[i]) for a whole array through one call `batch(in, out, n)`, or `scalar(x)` for one
-// number; `out`, if given, must be a writeable C-contiguous float64 array of the input's size and
-// receives the result.
+// number; `out`, if given, must be a writeable, aligned, C-contiguous float64 array of the
+// input's size and receives the result. out may be the input itself (in place) or overlap it in
+// any other way (then the input is copied first, as memmove would).
 template <class Batch, class Scalar>
 FloatOrArray map_batch(py::handle input, const char* name, py::object out, Batch batch, Scalar scalar) {
   if (out.is_none() && (PyFloat_Check(input.ptr()) || (PyLong_Check(input.ptr()) && !PyBool_Check(input.ptr())))) {
@@ -103,7 +153,7 @@ FloatOrArray map_batch(py::handle input, const char* name, py::object out, Batch
     if (x == -1.0 && PyErr_Occurred()) throw py::error_already_set();
     return {py::float_(scalar(x))};
   }
-  const DoubleArray in = as_double_array(input, name);
+  DoubleArray in = as_double_array(input, name);
   const std::size_t n = static_cast<std::size_t>(in.size());
   py::array_t<double> result;
   if (out.is_none()) {
@@ -111,10 +161,11 @@ FloatOrArray map_batch(py::handle input, const char* name, py::object out, Batch
   } else {
     if (!py::isinstance<py::array_t<double>>(out)) throw py::type_error("out must be a float64 numpy array");
     result = py::reinterpret_borrow<py::array_t<double>>(out);
-    if (!(result.flags() & py::array::c_style) || !result.writeable())
-      throw py::value_error("out must be C-contiguous and writeable");
+    if (!(result.flags() & py::array::c_style) || !(result.flags() & aligned) || !result.writeable())
+      throw py::value_error("out must be C-contiguous, aligned and writeable");
     if (static_cast<std::size_t>(result.size()) != n)
       throw py::value_error("out has " + std::to_string(result.size()) + " elements, the input " + std::to_string(n));
+    if (overlap_apart(in.data(), result.data(), n)) in = DoubleArray(shape_of(in), in.data());  // a copy
   }
   const double* source = in.data();
   double* target = result.mutable_data();

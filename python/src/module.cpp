@@ -6,6 +6,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstring>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "paths.hpp"
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
@@ -57,10 +60,6 @@ Side to_side(const py::handle& value) {
     throw py::value_error("unknown side '" + name + "': expected 'tail' or 'bounded'");
   }
   throw py::type_error("side must be 'tail', 'bounded' or an asperity.Side");
-}
-
-std::string to_path(const py::handle& path) {
-  return py::module_::import("os").attr("fsdecode")(path).cast<std::string>();  // str, bytes or PathLike
 }
 
 void check_order(int twice_order) {
@@ -120,7 +119,20 @@ void bind(py::module_& m) {
   m.attr("ORDER_COUNT") = order_count;
   m.attr("ALL_ORDERS") = Curve::all_orders;
 
-  py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  // asperity::Error as asperity.Error with the library's message; a message naming a file whose
+  // name is not UTF-8 keeps those bytes as \xNN escapes (pybind11's own translation would fail).
+  static PyObject* const error_type = py::exception<Error>(m, "Error", PyExc_RuntimeError).release().ptr();  // kept
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const Error& error) {
+      const char* message = error.what();
+      PyObject* text = PyUnicode_DecodeUTF8(message, static_cast<Py_ssize_t>(std::strlen(message)), "backslashreplace");
+      if (!text) return;  // the decoding error stands
+      PyErr_SetObject(error_type, text);
+      Py_DECREF(text);
+    }
+  });
   m.attr("Error").attr("__doc__") =
       "An error of the asperity library (a missing or bad table or scene, a shape outside the table, a bad "
       "physical parameter); its message is the library's.";
@@ -274,9 +286,13 @@ void bind(py::module_& m) {
       .def_static("open_default", &Table::open_default,
                   "The default table: $ASPERITY_TABLE if set, else the one installed with the library\n"
                   "(share/asperity/asperity-default.h5), else the build tree's. The error names every place looked at.")
-      .def_static("default_path", &Table::default_path,
+      .def_static("default_path", [] { return path_text(Table::default_path()); },
                   "The file open_default() would open; raises asperity.Error naming every place looked at.")
-      .def_static("default_search_paths", &Table::default_search_paths,
+      .def_static("default_search_paths", [] {
+                    py::list paths;
+                    for (const std::string& path : Table::default_search_paths()) paths.append(path_text(path));
+                    return paths;
+                  },
                   "Where default_path() looks, in order ($ASPERITY_TABLE alone when it is set).")
       .def(
           "curve",
@@ -328,7 +344,8 @@ void bind(py::module_& m) {
 
   m.def(
       "contact_at",
-      [](const Curve& curve, const Surface& surface, const ArrayLike& separation) -> ContactStateRecord {
+      // the surface by value: a copy, read without the GIL while another thread may set its fields
+      [](const Curve& curve, Surface surface, const ArrayLike& separation) -> ContactStateRecord {
         return {make_record(contact_state_type,
                            map_records<5>(separation.object, "separation", [&](double s, double** out, std::size_t i) {
                              ContactState state{nan, nan, nan, nan, nan};
@@ -507,13 +524,13 @@ void bind(py::module_& m) {
       .def_readwrite("reference_pressure", &PerssonLaw::reference_pressure)
       .def(
           "pressure",
-          [](const PerssonLaw& law, const ArrayLike& s) {
+          [](PerssonLaw law, const ArrayLike& s) {  // by value: read without the GIL
             return map_scalar(s.object, "separation", [&](double x) { return law.pressure(x); });
           },
           "separation"_a)
       .def(
           "separation_at",
-          [](const PerssonLaw& law, const ArrayLike& p) {
+          [](PerssonLaw law, const ArrayLike& p) {
             return map_scalar(p.object, "pressure", [&](double x) { return law.separation_at(x); });
           },
           "pressure"_a)
@@ -533,7 +550,7 @@ void bind(py::module_& m) {
       .def_readonly("line", &SceneCurve::line, "Where the curve starts in the file.");
   py::class_<Scene>(m, "Scene", "The few curves one program needs (docs/scenes.md).")
       .def_readonly("name", &Scene::name)
-      .def_readonly("source", &Scene::source)
+      .def_property_readonly("source", [](const Scene& scene) { return path_text(scene.source); })
       .def_readonly("memory_budget_bytes", &Scene::memory_budget_bytes)
       .def_readonly("curves", &Scene::curves);
   py::class_<SceneCurveView>(m, "SceneCurveView", "A scene's curve served from a table.")

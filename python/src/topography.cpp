@@ -1,7 +1,11 @@
 // asperity.topography: the measured-surface library (include/asperity/topography/*.hpp) with the
 // same names. Height maps carry their heights as a (ny, nx) float64 numpy array (a view into
 // the map, x fastest); the long computations (reading, fits, the bootstrap, the analysis, the
-// synthetic fields) run without the GIL.
+// synthetic fields) run without the GIL, on copies taken while it is held: whatever another
+// Python thread does to an object meanwhile (its properties, a map's heights through the view),
+// the computation never reads memory that is being changed. The two calls that change a map
+// (subtract_plane, to_weibull_marginal) keep the GIL: one pass over the heights, atomic for
+// every other Python thread.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -27,16 +31,38 @@
 #include "asperity/topography/synthetic.hpp"
 #include "asperity/topography/units.hpp"
 #include "bindings.hpp"
+#include "paths.hpp"
 
 namespace asperity::python {
 namespace {
 namespace topo = asperity::topography;
 using namespace pybind11::literals;
 
-using release_gil = py::call_guard<py::gil_scoped_release>;
+// Runs function() without the GIL. What it reads must be its own (captured by value when the
+// lambda is made, with the GIL held), never an object another Python thread can change.
+template <class Function>
+auto without_gil(Function&& function) {
+  py::gil_scoped_release unlocked;
+  return function();
+}
 
-std::string path_text(const py::handle& path) {
-  return py::module_::import("os").attr("fsdecode")(path).cast<std::string>();
+// A size from Python: an int (or anything with __index__) from 0 to the largest std::size_t.
+std::size_t to_size(const py::handle& value, const char* name) {
+  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!index) throw py::error_already_set();  // TypeError: not an integer
+  const std::size_t size = PyLong_AsSize_t(index.ptr());
+  if (size == static_cast<std::size_t>(-1) && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw py::value_error(std::string(name) + " must be a whole number from 0 to " +
+                          std::to_string(static_cast<std::size_t>(-1)) + ", not " + std::string(py::repr(value)));
+  }
+  return size;
+}
+
+py::list path_texts(const std::vector<std::string>& texts) {
+  py::list out;
+  for (const std::string& text : texts) out.append(path_text(text));
+  return out;
 }
 
 topo::HeightMapFormat to_format(const py::handle& value) {
@@ -178,13 +204,18 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("ny", &topo::HeightMap::ny, "Points along y (the first axis of heights).")
       .def_readwrite("dx", &topo::HeightMap::dx, "Sampling interval along x [m].")
       .def_readwrite("dy", &topo::HeightMap::dy, "Sampling interval along y [m].")
-      .def_readwrite("source", &topo::HeightMap::source, "The file it came from (for messages).")
+      .def_property(
+          "source", [](const topo::HeightMap& map) { return path_text(map.source); },
+          [](topo::HeightMap& map, const PathName& value) { map.source = to_path(value.object, "source"); },
+          "The file it came from (for messages; str, bytes or os.PathLike in, str out as os.fsdecode gives it).")
       .def_readwrite("format", &topo::HeightMap::format, "x3p, gsf, ascii-matrix, xyz, synthetic or array.")
       .def_readwrite("height_resolution", &topo::HeightMap::height_resolution,
                      "The largest rounding step of the heights as stored [m] (0: unknown): roughness at this level\n"
                      "is quantization (the analysis stops at its noise floor).")
-      .def_readwrite("notes", &topo::HeightMap::notes,
-                     "Where sizes and units came from, the instrument, what was done.")
+      .def_property(
+          "notes", [](const topo::HeightMap& map) { return path_texts(map.notes); },
+          [](topo::HeightMap& map, std::vector<std::string> notes) { map.notes = std::move(notes); },
+          "Where sizes and units came from, the instrument, what was done.")
       .def_property_readonly("missing_points", &topo::HeightMap::missing_points, "Points that are NaN.")
       .def_property_readonly("width", &topo::HeightMap::width, "nx dx [m].")
       .def_property_readonly("length", &topo::HeightMap::length, "ny dy [m].")
@@ -194,7 +225,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def("__deepcopy__", [](const topo::HeightMap& map, py::dict) { return map; }, "memo"_a)
       .def("__repr__", [](const topo::HeightMap& map) {
         return py::str("<asperity.topography.HeightMap {} x {} points, dx={!r} m, dy={!r} m, {}: {}>")
-            .format(map.nx, map.ny, map.dx, map.dy, map.format, map.source);
+            .format(map.nx, map.ny, map.dx, map.dy, map.format, path_text(map.source));
       });
 
   py::enum_<topo::HeightMapFormat>(m, "HeightMapFormat", "A height map file's format (automatic: by content, then extension).")
@@ -243,9 +274,8 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
         if (options) throw py::type_error("give options or its fields as keywords, not both");
         chosen = py::type::of<topo::ReadOptions>()(**fields).cast<topo::ReadOptions>();
       }
-      const std::string file = path_text(path.object);
-      py::gil_scoped_release unlocked;
-      return read(file, chosen);
+      const std::string file = to_path(path.object);
+      return without_gil([&] { return read(file, chosen); });
     };
   };
   m.def("read_height_map", reader(&topo::read_height_map), "path"_a, "options"_a = py::none(), read_doc);
@@ -259,9 +289,8 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
   m.def(
       "write_gsf",
       [](const topo::HeightMap& map, const PathName& path) {
-        const std::string file = path_text(path.object);
-        py::gil_scoped_release unlocked;
-        topo::write_gsf(map, file);
+        const std::string file = to_path(path.object);
+        without_gil([copy = map, &file] { topo::write_gsf(copy, file); });
       },
       "map"_a, "path"_a, "Writes a map as Gwyddion Simple Field (float32). Raises asperity.Error on a write error.");
   m.def("length_unit_in_metres", [](const std::string& unit) { return topo::length_unit_in_metres(unit); }, "unit"_a,
@@ -280,9 +309,13 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def("__repr__", [](const topo::Plane& p) {
         return py::str("Plane(offset={!r}, slope_x={!r}, slope_y={!r})").format(p.offset, p.slope_x, p.slope_y);
       });
-  m.def("fit_plane", &topo::fit_plane, "map"_a, release_gil(), "The least-squares plane over the valid points.");
-  m.def("subtract_plane", &topo::subtract_plane, "map"_a, "plane"_a, release_gil(),
-        "Subtracts the plane from the map in place; missing points stay missing.");
+  m.def(
+      "fit_plane",
+      [](const topo::HeightMap& map) { return without_gil([copy = map] { return topo::fit_plane(copy); }); }, "map"_a,
+      "The least-squares plane over the valid points.");
+  m.def("subtract_plane", &topo::subtract_plane, "map"_a, "plane"_a,
+        "Subtracts the plane from the map in place; missing points stay missing. Holds the GIL (other Python\n"
+        "threads see the map before or after, never half done).");
 
   py::class_<topo::HeightStatistics>(m, "HeightStatistics", "Height statistics over the valid points.")
       .def_readonly("valid_points", &topo::HeightStatistics::valid_points)
@@ -294,25 +327,44 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("kurtosis", &topo::HeightStatistics::kurtosis, "Sku (3 for a Gaussian).")
       .def_readonly("min", &topo::HeightStatistics::min, "[m]")
       .def_readonly("max", &topo::HeightStatistics::max, "[m]");
-  m.def("height_statistics", &topo::height_statistics, "map"_a, release_gil(),
-        "Mean, rms (Sq), Sa, skewness, kurtosis, min and max of the valid heights.");
+  m.def(
+      "height_statistics",
+      [](const topo::HeightMap& map) { return without_gil([copy = map] { return topo::height_statistics(copy); }); },
+      "map"_a,
+      "Mean, rms (Sq), Sa, skewness, kurtosis, min and max of the valid heights.");
 
   py::class_<topo::SpectralMoments>(m, "SpectralMoments",
-                                    "Nayak's spectral moments at the map's sampling interval, from finite differences of\n"
-                                    "profiles along x and y (m2, m4 averaged over the two directions).")
+                                    "Nayak's spectral moments at the map's sampling interval, one consistent scheme: slopes\n"
+                                    "by forward differences, curvatures by second differences; the slope tensor's principal\n"
+                                    "directions and anisotropy; m2, m4 McCool's equivalent isotropic moments (geometric means\n"
+                                    "along the principal directions).")
       .def_readonly("m0", &topo::SpectralMoments::m0, "Height variance [m^2].")
       .def_readonly("m2x", &topo::SpectralMoments::m2x)
       .def_readonly("m2y", &topo::SpectralMoments::m2y)
+      .def_readonly("m11", &topo::SpectralMoments::m11, "<(dh/dx)(dh/dy)>.")
       .def_readonly("m4x", &topo::SpectralMoments::m4x, "[1/m^2]")
       .def_readonly("m4y", &topo::SpectralMoments::m4y, "[1/m^2]")
-      .def_readonly("m2", &topo::SpectralMoments::m2, "Slope variance (dimensionless).")
-      .def_readonly("m4", &topo::SpectralMoments::m4, "Curvature variance [1/m^2].")
+      .def_readonly("principal_angle", &topo::SpectralMoments::principal_angle,
+                    "The steepest principal direction's angle from x [rad].")
+      .def_property_readonly("m2_principal", [](const topo::SpectralMoments& s) {
+        return py::make_tuple(s.m2_principal[0], s.m2_principal[1]);
+      }, "The principal slope variances, steepest first.")
+      .def_property_readonly("m4_principal", [](const topo::SpectralMoments& s) {
+        return py::make_tuple(s.m4_principal[0], s.m4_principal[1]);
+      }, "The curvature variances along the principal directions [1/m^2].")
+      .def_readonly("anisotropy", &topo::SpectralMoments::anisotropy,
+                    "m2_principal[0] / m2_principal[1]; Nayak-McCool assume 1 (isotropic).")
+      .def_readonly("m2", &topo::SpectralMoments::m2, "Equivalent isotropic slope variance (dimensionless).")
+      .def_readonly("m4", &topo::SpectralMoments::m4, "Equivalent isotropic curvature variance [1/m^2].")
       .def_readonly("alpha", &topo::SpectralMoments::alpha, "Nayak's bandwidth m0 m4 / m2^2.")
       .def_readonly("slope_samples", &topo::SpectralMoments::slope_samples)
       .def_readonly("curvature_samples", &topo::SpectralMoments::curvature_samples);
-  m.def("spectral_moments", &topo::spectral_moments, "map"_a, release_gil(),
-        "m0, m2, m4 and Nayak's alpha of the map (heights about their mean; stencils touching a missing\n"
-        "point skipped). They depend on the sampling interval: stated with it.");
+  m.def(
+      "spectral_moments",
+      [](const topo::HeightMap& map) { return without_gil([copy = map] { return topo::spectral_moments(copy); }); },
+      "map"_a,
+      "m0, m2, m4 and Nayak's alpha of the map (heights about their mean; stencils touching a missing\n"
+      "point skipped). They depend on the sampling interval: stated with it.");
 
   py::class_<topo::CorrelationLengths>(m, "CorrelationLengths",
                                        "Lags (points) along x and y where the height autocorrelation first falls below level.")
@@ -321,17 +373,19 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readwrite("x", &topo::CorrelationLengths::x)
       .def_readwrite("y", &topo::CorrelationLengths::y)
       .def_readwrite("level", &topo::CorrelationLengths::level);
-  m.def("correlation_lengths", &topo::correlation_lengths, "map"_a, "level"_a = 0.1, release_gil(),
-        "The lags where the autocorrelation falls below level (capped at half the map).");
+  m.def(
+      "correlation_lengths",
+      [](const topo::HeightMap& map, double level) {
+        return without_gil([copy = map, level] { return topo::correlation_lengths(copy, level); });
+      },
+      "map"_a, "level"_a = 0.1,
+      "The lags where the autocorrelation falls below level (capped at half the map).");
   m.def(
       "thinned_heights",
       [](const topo::HeightMap& map, const topo::CorrelationLengths& lengths, std::size_t max_count) {
-        std::vector<double> values;
-        {
-          py::gil_scoped_release unlocked;
-          values = topo::thinned_heights(map, lengths, max_count);
-        }
-        return to_array(values);
+        return to_array(without_gil([copy = map, lengths, max_count] {
+          return topo::thinned_heights(copy, lengths, max_count);
+        }));
       },
       "map"_a, "lengths"_a, "max_count"_a = 0,
       "The valid heights one point every lengths.x by lengths.y, then at most max_count of them (0: all).");
@@ -384,14 +438,18 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
         if (options && (window || min_drop)) throw py::type_error("give options or window/min_drop, not both");
         if (window) chosen.window = *window;
         if (min_drop) chosen.min_drop = *min_drop;
-        py::gil_scoped_release unlocked;
-        return topo::find_summits(map, chosen);
+        return without_gil([copy = map, chosen] { return topo::find_summits(copy, chosen); });
       },
       "map"_a, "options"_a = py::none(), py::kw_only(), "window"_a = py::none(), "min_drop"_a = py::none(),
       "The summits of a map (8-neighbour maxima, or the highest within window points; raster-order ties).\n"
       "Raises asperity.Error for window < 1 or a negative min_drop.");
-  m.def("decimated", &topo::decimated, "map"_a, "factor"_a, release_gil(),
-        "Every factor-th point in x and y: the map sampled at factor dx, factor dy.");
+  m.def(
+      "decimated",
+      [](const topo::HeightMap& map, std::size_t factor) {
+        return without_gil([copy = map, factor] { return topo::decimated(copy, factor); });
+      },
+      "map"_a, "factor"_a,
+      "Every factor-th point in x and y: the map sampled at factor dx, factor dy.");
 
   // ---- height distributions and their fits (distribution_fit.hpp, goodness_of_fit.hpp) ----
   py::enum_<topo::HeightModel>(m, "HeightModel",
@@ -419,26 +477,29 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readwrite("location", &topo::HeightDistribution::location)
       .def_readwrite("scale", &topo::HeightDistribution::scale)
       .def_readwrite("shape", &topo::HeightDistribution::shape)
-      .def("pdf", [](const topo::HeightDistribution& d, const ArrayLike& x) {
+      .def("pdf", [](topo::HeightDistribution d, const ArrayLike& x) {
         return map_values(x.object, "x", [&](double v) { return std::exp(d.log_pdf(v)); });
       }, "x"_a, "The density.")
-      .def("log_pdf", [](const topo::HeightDistribution& d, const ArrayLike& x) {
+      .def("log_pdf", [](topo::HeightDistribution d, const ArrayLike& x) {
         return map_values(x.object, "x", [&](double v) { return d.log_pdf(v); });
       }, "x"_a, "ln of the density (-inf outside the support).")
-      .def("cdf", [](const topo::HeightDistribution& d, const ArrayLike& x) {
+      .def("cdf", [](topo::HeightDistribution d, const ArrayLike& x) {
         return map_values(x.object, "x", [&](double v) { return d.cdf(v); });
       }, "x"_a, "P(X <= x).")
-      .def("log_cdf", [](const topo::HeightDistribution& d, const ArrayLike& x) {
+      .def("log_cdf", [](topo::HeightDistribution d, const ArrayLike& x) {
         return map_values(x.object, "x", [&](double v) { return d.log_cdf(v); });
       }, "x"_a, "ln P(X <= x).")
-      .def("log_sf", [](const topo::HeightDistribution& d, const ArrayLike& x) {
+      .def("log_sf", [](topo::HeightDistribution d, const ArrayLike& x) {
         return map_values(x.object, "x", [&](double v) { return d.log_sf(v); });
       }, "x"_a, "ln P(X > x).")
-      .def("quantile", [](const topo::HeightDistribution& d, const ArrayLike& p) {
+      .def("quantile", [](topo::HeightDistribution d, const ArrayLike& p) {
         return map_values(p.object, "p", [&](double v) { return d.quantile(v); });
       }, "p"_a, "The x with P(X <= x) = p, p in (0, 1) (NaN outside).")
-      .def("mean", &topo::HeightDistribution::mean)
-      .def("standard_deviation", &topo::HeightDistribution::standard_deviation)
+      .def("mean", &topo::HeightDistribution::mean,
+           "The mean: NaN for parameters that are no distribution (scale <= 0, a Weibull shape <= 0, not finite),\n"
+           "+-inf beyond the largest double (a Weibull shape below ~0.006).")
+      .def("standard_deviation", &topo::HeightDistribution::standard_deviation,
+           "The standard deviation: NaN for parameters that are no distribution, inf beyond the largest double.")
       .def("__repr__", [](const topo::HeightDistribution& d) {
         return py::str("HeightDistribution(model='{}', location={!r}, scale={!r}, shape={!r})")
             .format(py::str(py::cast(d.model).attr("name")), d.location, d.scale, d.shape);
@@ -465,8 +526,8 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       [](const py::object& model, const ArrayLike& values, const std::optional<topo::FitOptions>& options) {
         const topo::HeightModel chosen = to_model(model);
         const std::vector<double> sorted = sorted_vector(values.object, "values");
-        py::gil_scoped_release unlocked;
-        return topo::fit_height_distribution(chosen, sorted, options.value_or(topo::FitOptions{}));
+        const topo::FitOptions fit = options.value_or(topo::FitOptions{});
+        return without_gil([&] { return topo::fit_height_distribution(chosen, sorted, fit); });
       },
       "model"_a, "values"_a, "options"_a = py::none(),
       "Fits a height model to values (any order): the Gaussian by maximum likelihood, the three-parameter\n"
@@ -499,12 +560,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
   m.def(
       "draw_sample",
       [](const topo::HeightDistribution& d, std::size_t n, std::uint64_t seed) {
-        std::vector<double> values;
-        {
-          py::gil_scoped_release unlocked;
-          values = topo::draw_sample(d, n, seed);
-        }
-        return to_array(values);
+        return to_array(without_gil([d, n, seed] { return topo::draw_sample(d, n, seed); }));
       },
       "distribution"_a, "n"_a, "seed"_a = 1,
       "n reproducible draws (the bootstrap's generator: the same on every platform).");
@@ -570,8 +626,8 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       "assess_sample",
       [](const std::string& name, const ArrayLike& values, const std::optional<topo::AssessmentOptions>& options) {
         std::vector<double> sample = to_vector(values.object, "values");
-        py::gil_scoped_release unlocked;
-        return topo::assess_sample(name, std::move(sample), options.value_or(topo::AssessmentOptions{}));
+        const topo::AssessmentOptions chosen = options.value_or(topo::AssessmentOptions{});
+        return without_gil([&] { return topo::assess_sample(name, std::move(sample), chosen); });
       },
       "name"_a, "values"_a, "options"_a = py::none(),
       "Fits the three models to values, tests each (Anderson-Darling, Kolmogorov-Smirnov, p-values by parametric\n"
@@ -584,27 +640,35 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
            "correlation"_a = 4.0, "variance"_a = 1.0)
       .def_readwrite("correlation", &topo::SpectrumComponent::correlation)
       .def_readwrite("variance", &topo::SpectrumComponent::variance);
-  m.def("gaussian_random_field", &topo::gaussian_random_field, "nx"_a, "ny"_a, "dx"_a, "dy"_a, "spectrum"_a, "seed"_a = 1,
-        release_gil(),
-        "A Gaussian random field: white noise convolved with a Gaussian kernel per component, summed. Every\n"
-        "height is exactly N(0, total variance); reproducible from seed.");
+  m.def(
+      "gaussian_random_field",
+      [](const Count& nx, const Count& ny, double dx, double dy, std::vector<topo::SpectrumComponent> spectrum,
+         std::uint64_t seed) {
+        const std::size_t columns = to_size(nx.object, "nx"), rows = to_size(ny.object, "ny");
+        return without_gil([&] { return topo::gaussian_random_field(columns, rows, dx, dy, spectrum, seed); });
+      },
+      "nx"_a, "ny"_a, "dx"_a, "dy"_a, "spectrum"_a, "seed"_a = 1,
+      "A Gaussian random field: white noise convolved with a Gaussian kernel per component, summed. Every\n"
+      "height is exactly N(0, total variance); reproducible from seed. Limits (asperity.Error beyond them):\n"
+      "3 <= nx, ny and nx * ny <= 2^26 points; each correlation in (0, 65536] points; the noise convolved,\n"
+      "(nx + 2h) (ny + 2h) with h = ceil(4 correlation), at most 2^27 points; at most 2^36 multiply-adds.");
   m.def("expected_spectral_moments", &topo::expected_spectral_moments, "dx"_a, "dy"_a, "spectrum"_a,
         "The spectral moments gaussian_random_field's fields have in expectation.");
-  m.def("to_weibull_marginal", &topo::to_weibull_marginal, "map"_a, "shape"_a, "bounded"_a = false, release_gil(),
+  m.def("to_weibull_marginal", &topo::to_weibull_marginal, "map"_a, "shape"_a, "bounded"_a = false,
         "Maps each height of a unit-variance Gaussian field to a unit Weibull of the shape (bounded: mirrored,\n"
-        "bounded above), in place.");
+        "bounded above), in place. Holds the GIL (other Python threads see the map before or after).");
 
   // ---- contact curves of the fits (contact_comparison.hpp) ----
   py::class_<topo::ContactOptions>(m, "ContactOptions", "The contact curves of each fit.")
       .def(py::init([](double contact_modulus, double nominal_area, std::vector<double> pressures, int curve_points,
-                       double scene_tolerance, std::string table_path, int threads) {
+                       double scene_tolerance, const PathName& table_path, int threads) {
              topo::ContactOptions options;
              options.contact_modulus = contact_modulus;
              options.nominal_area = nominal_area;
              options.pressures = std::move(pressures);
              options.curve_points = curve_points;
              options.scene_tolerance = scene_tolerance;
-             options.table_path = std::move(table_path);
+             options.table_path = to_path(table_path.object, "table_path");
              options.threads = threads;
              return options;
            }),
@@ -618,12 +682,15 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readwrite("pressures", &topo::ContactOptions::pressures)
       .def_readwrite("curve_points", &topo::ContactOptions::curve_points)
       .def_readwrite("scene_tolerance", &topo::ContactOptions::scene_tolerance)
-      .def_readwrite("table_path", &topo::ContactOptions::table_path)
+      .def_property(
+          "table_path", [](const topo::ContactOptions& o) { return path_text(o.table_path); },
+          [](topo::ContactOptions& o, const PathName& value) { o.table_path = to_path(value.object, "table_path"); })
       .def_readwrite("threads", &topo::ContactOptions::threads);
   py::class_<topo::ModelContact>(m, "ModelContact", "The contact curve of one height model.")
       .def_readonly("label", &topo::ModelContact::label, "gaussian-moments, gaussian, weibull-tail or weibull-bounded.")
       .def_readonly("served", &topo::ModelContact::served)
-      .def_readonly("note", &topo::ModelContact::note, "The table that served it, or why there is no curve.")
+      .def_property_readonly("note", [](const topo::ModelContact& c) { return path_text(c.note); },
+                             "The table that served it, or why there is no curve.")
       .def_readonly("surface", &topo::ModelContact::surface)
       .def_readonly("mean_summit_height", &topo::ModelContact::mean_summit_height, "[m], in the map's height frame.")
       .def_property_readonly("curve", [physical_state_type](const topo::ModelContact& c) {
@@ -696,14 +763,13 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readwrite("max_fit_sample", &topo::AnalysisOptions::max_fit_sample);
 
   py::class_<topo::ReportOutcome>(m, "ReportOutcome", "What write_report wrote.")
-      .def_readonly("files", &topo::ReportOutcome::files)
+      .def_property_readonly("files", [](const topo::ReportOutcome& o) { return path_texts(o.files); })
       .def_readonly("plots", &topo::ReportOutcome::plots)
       .def_readonly("plot_note", &topo::ReportOutcome::plot_note, "Why there are no plots (a map at its noise floor).");
 
   auto write_report = [](const topo::SurfaceAnalysis& analysis, const PathName& directory) {
-    const std::string path = path_text(directory.object);
-    py::gil_scoped_release unlocked;
-    return topo::write_report(analysis, path);
+    const std::string path = to_path(directory.object, "directory");
+    return without_gil([copy = analysis, &path] { return topo::write_report(copy, path); });
   };
   const char* report_doc =
       "Writes a report folder (created if needed): report.md with the plots, report.json, curves.csv,\n"
@@ -744,11 +810,11 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("contact", &topo::SurfaceAnalysis::contact, "The contact curves, or None (no contact modulus).")
       .def_readonly("options", &topo::SurfaceAnalysis::options)
       .def("to_dict", [](const topo::SurfaceAnalysis& a) {
-        return py::module_::import("json").attr("loads")(topo::analysis_json(a));
+        return py::module_::import("json").attr("loads")(path_text(topo::analysis_json(a)));
       }, "The analysis as a dict: the JSON document (schema asperity-surface/1); NaN is None.")
-      .def("json", [](const topo::SurfaceAnalysis& a) { return topo::analysis_json(a); },
+      .def("json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); },
            "The JSON document (schema asperity-surface/1) as text.")
-      .def("summary", [](const topo::SurfaceAnalysis& a) { return topo::analysis_summary(a); },
+      .def("summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
            "The short summary `asperity surface` prints.")
       .def("write_report", write_report, "directory"_a, report_doc);
 
@@ -762,9 +828,8 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       [analysis_options](const topo::HeightMap& map, std::optional<topo::AnalysisOptions> options,
                          const py::kwargs& fields) {
         const topo::AnalysisOptions chosen = analysis_options(std::move(options), fields);
-        topo::HeightMap copy = map;
-        py::gil_scoped_release unlocked;
-        return topo::analyse_height_map(std::move(copy), chosen);
+        return without_gil(
+            [copy = map, &chosen]() mutable { return topo::analyse_height_map(std::move(copy), chosen); });
       },
       "map"_a, "options"_a = py::none(),
       "The whole path on a map (not changed): leveling, statistics, moments, summits, the fits of the summit\n"
@@ -775,15 +840,18 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       "analyse_surface_file",
       [analysis_options](const PathName& path, std::optional<topo::AnalysisOptions> options, const py::kwargs& fields) {
         const topo::AnalysisOptions chosen = analysis_options(std::move(options), fields);
-        const std::string file = path_text(path.object);
-        py::gil_scoped_release unlocked;
-        return topo::analyse_surface_file(file, chosen);
+        const std::string file = to_path(path.object);
+        return without_gil([&] { return topo::analyse_surface_file(file, chosen); });
       },
       "path"_a, "options"_a = py::none(),
       "read_height_map and analyse_height_map in one call: options.read says how to read the file (format,\n"
       "pixel sizes, units); options: an AnalysisOptions, or its fields as keywords.");
-  m.def("analysis_json", &topo::analysis_json, "analysis"_a, "The JSON document (schema asperity-surface/1) as text.");
-  m.def("analysis_summary", &topo::analysis_summary, "analysis"_a, "The short summary `asperity surface` prints.");
+  m.def(
+      "analysis_json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); }, "analysis"_a,
+      "The JSON document (schema asperity-surface/1) as text.");
+  m.def(
+      "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
+      "analysis"_a, "The short summary `asperity surface` prints.");
   m.def("write_report", write_report, "analysis"_a, "directory"_a, report_doc);
 }
 

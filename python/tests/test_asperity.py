@@ -102,6 +102,54 @@ def test_out_parameter(weibull2):
         weibull2.value(2, s, out=np.empty(10, dtype=np.float32))
 
 
+@pytest.mark.parametrize("shift", [1, -1, 7, -4095, 4095, 9999, -9999])
+def test_out_overlapping_the_input(weibull2, shift):
+    # out and the input in one buffer, apart by `shift` elements: the values of separate buffers,
+    # as the C API promises (the input is copied first when they overlap without being the same)
+    n = 10000
+    s = np.linspace(-3.0, 5.0, n)
+    expected = weibull2.value(3, s)
+    buffer = np.empty(n + abs(shift))
+    given = buffer[max(0, -shift):][:n]
+    out = buffer[max(0, shift):][:n]
+    given[:] = s
+    assert weibull2.value(3, given, out=out) is out
+    assert np.array_equal(out, expected)
+    in_place = s.copy()  # the same elements: in place
+    weibull2.log_value(3, in_place, out=in_place)
+    assert np.array_equal(in_place, weibull2.log_value(3, s))
+
+
+def test_out_must_be_aligned(weibull2):
+    raw = np.zeros(8 * 10 + 1, dtype=np.uint8)
+    unaligned = raw[1:].view(np.float64)
+    assert not unaligned.flags.aligned
+    with pytest.raises(ValueError, match="aligned"):
+        weibull2.value(3, np.zeros(10), out=unaligned)
+    unaligned[:] = np.linspace(0, 1, 10)  # an unaligned input is read through an aligned copy
+    assert np.array_equal(weibull2.value(3, unaligned), weibull2.value(3, np.linspace(0, 1, 10)))
+
+
+@pytest.mark.parametrize("given", [None, [1.0, None], "0.5", b"0.5", ["0.5"], 1 + 2j, np.array([1 + 2j]),
+                                   np.array(["2020-01-01"], dtype="datetime64[D]"), {"a": 1}, object()])
+def test_only_numbers_are_separations(weibull2, given):
+    # numpy would turn None into NaN, parse strings and drop an imaginary part: all refused
+    with pytest.raises(TypeError, match="separation must be a number or an array of numbers"):
+        weibull2.value(3, given)
+    with pytest.raises(TypeError):
+        asperity.contact_at(weibull2, asperity.Surface(), given)
+
+
+def test_numbers_of_every_kind_are_separations(weibull2):
+    from decimal import Decimal
+    from fractions import Fraction
+    half = weibull2.value(3, 0.5)
+    assert weibull2.value(3, Fraction(1, 2)) == half and weibull2.value(3, Decimal("0.5")) == half
+    assert np.array_equal(weibull2.value(3, [Fraction(1, 2), 1]), weibull2.value(3, [0.5, 1.0]))
+    assert weibull2.value(3, np.array([True])) [0] == weibull2.value(3, 1.0)
+    assert weibull2.value(3, np.array([1], dtype=np.uint64))[0] == weibull2.value(3, 1.0)
+
+
 def test_threads_share_one_curve(weibull2):
     separations = np.linspace(-2, 8, 200000)
     expected = weibull2.value(1, separations)
@@ -217,6 +265,15 @@ def test_errors(table, weibull2, tmp_path):
     for spelled in (missing, str(missing), os.fsencode(missing)):  # PathLike, str, bytes
         with pytest.raises(asperity.Error, match=str(missing)):
             asperity.Table.open(spelled)
+    with pytest.raises(ValueError, match="NUL"):  # the C library would open "missing" instead
+        asperity.Table.open(str(missing) + "\0.h5")
+    with pytest.raises(TypeError, match="str, bytes or os.PathLike"):
+        asperity.Table.open(3)
+    not_utf8 = os.fsencode(tmp_path) + b"/t\xff\xfe.h5"  # any bytes the file system holds
+    with pytest.raises(asperity.Error, match=r"t\\xff\\xfe\.h5"):
+        asperity.Table.open(not_utf8)
+    with pytest.raises(asperity.Error, match=r"t\\xff\\xfe\.h5"):
+        asperity.Table.open(os.fsdecode(not_utf8))  # the same name as str (surrogateescape)
     not_hdf5 = tmp_path / "not.h5"
     not_hdf5.write_bytes(b"not a table at all")
     with pytest.raises(asperity.Error, match="not.h5"):

@@ -8,6 +8,7 @@ import gc
 import json
 import math
 import os
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -118,6 +119,32 @@ def test_read_errors_name_the_problem(tmp_path):
         topography.HeightMap(np.zeros(16), 1e-6, 1e-6)
 
 
+def test_paths_are_the_bytes_the_system_sees(tmp_path):
+    surface = topography.HeightMap(np.arange(16.0).reshape(4, 4) * 1e-9, 1e-6, 1e-6)
+    with pytest.raises(ValueError, match="NUL"):  # the C library would stop at the NUL: another file
+        topography.write_gsf(surface, str(tmp_path / "map.gsf") + "\0.txt")
+    with pytest.raises(ValueError, match="NUL"):
+        topography.read_height_map(os.fsencode(AFM) + b"\0ignored")
+    with pytest.raises(TypeError, match="str, bytes or os.PathLike"):
+        topography.read_height_map(42)
+    # a name that is not UTF-8: written, listed, read back; the map's source as os.fsdecode gives it
+    name = os.fsencode(tmp_path) + b"/h\xff\xfe.gsf"
+    topography.write_gsf(surface, name)
+    assert os.listdir(os.fsencode(tmp_path)) == [b"h\xff\xfe.gsf"]
+    for spelled in (name, os.fsdecode(name), Path(os.fsdecode(name))):
+        back = topography.read_height_map(spelled)
+        assert np.allclose(back.heights, surface.heights, rtol=1e-6) and back.source == os.fsdecode(name)
+        assert "h\udcff\udcfe.gsf" in repr(back)
+    back.source = b"other\xff"
+    assert back.source == os.fsdecode(b"other\xff")
+    with pytest.raises(asperity.Error, match=r"missing\\xff\.x3p"):
+        topography.read_height_map(os.fsencode(tmp_path) + b"/missing\xff.x3p")
+    options = topography.ContactOptions(1e11, table_path=name)
+    assert options.table_path == os.fsdecode(name)
+    with pytest.raises(ValueError, match="NUL"):
+        options.table_path = "a\0b"
+
+
 def test_units():
     assert topography.length_unit_in_metres("µm") == 1e-6 and topography.length_unit_in_metres("nm") == 1e-9
     assert math.isclose(topography.parse_length("1.5um"), 1.5e-6, rel_tol=1e-15)
@@ -159,18 +186,39 @@ def test_height_statistics_against_numpy():
 
 
 def test_spectral_moments_against_numpy_finite_differences():
+    # one consistent scheme: forward differences for slopes, second differences for curvatures,
+    # the forward mixed difference; McCool's equivalent isotropic m2, m4 (geometric means along the
+    # principal directions of the slope tensor)
     dx, dy = 1e-6, 2e-6
     h = np.random.default_rng(7).normal(0.0, 1e-8, (30, 40))
+    h += np.linspace(0, 3e-8, 40)[None, :] * np.linspace(1, 2, 30)[:, None]  # a twist: the axes are not principal
     moments = topography.spectral_moments(topography.HeightMap(h, dx, dy))
     c = h - h.mean()
-    m2x = np.mean(((c[:, 2:] - c[:, :-2]) / (2 * dx)) ** 2)
-    m2y = np.mean(((c[2:, :] - c[:-2, :]) / (2 * dy)) ** 2)
-    m4x = np.mean(((c[:, 2:] - 2 * c[:, 1:-1] + c[:, :-2]) / dx ** 2) ** 2)
-    m4y = np.mean(((c[2:, :] - 2 * c[1:-1, :] + c[:-2, :]) / dy ** 2) ** 2)
+    sx = (c[:, 1:] - c[:, :-1]) / dx
+    sy = (c[1:, :] - c[:-1, :]) / dy
+    m2x, m2y, m11 = np.mean(sx ** 2), np.mean(sy ** 2), np.mean(sx[:-1, :] * sy[:, :-1])
+    hxx = (c[:, 2:] - 2 * c[:, 1:-1] + c[:, :-2]) / dx ** 2
+    hyy = (c[2:, :] - 2 * c[1:-1, :] + c[:-2, :]) / dy ** 2
+    m4x, m4y = np.mean(hxx ** 2), np.mean(hyy ** 2)
     assert math.isclose(moments.m0, np.mean(c ** 2), rel_tol=1e-12)
-    for got, expected in ((moments.m2x, m2x), (moments.m2y, m2y), (moments.m4x, m4x), (moments.m4y, m4y),
-                          (moments.m2, (m2x + m2y) / 2), (moments.m4, (m4x + m4y) / 2)):
+    for got, expected in ((moments.m2x, m2x), (moments.m2y, m2y), (moments.m11, m11), (moments.m4x, m4x),
+                          (moments.m4y, m4y)):
         assert math.isclose(got, expected, rel_tol=1e-10)
+    values, vectors = np.linalg.eigh(np.array([[m2x, m11], [m11, m2y]]))
+    assert math.isclose(moments.m2_principal[0], values[1], rel_tol=1e-10)
+    assert math.isclose(moments.m2_principal[1], values[0], rel_tol=1e-10)
+    assert math.isclose(moments.anisotropy, values[1] / values[0], rel_tol=1e-10)
+    # curvature along the principal directions, at the interior points where all three differences exist
+    cxx, cyy = hxx[1:-1, :], hyy[:, 1:-1]
+    cxy = (c[2:, 2:] - c[1:-1, 2:] - c[2:, 1:-1] + c[1:-1, 1:-1]) / (dx * dy)
+    m4_along = []
+    for theta in (moments.principal_angle, moments.principal_angle + math.pi / 2):
+        co, si = math.cos(theta), math.sin(theta)
+        m4_along.append(np.mean((co * co * cxx + 2 * co * si * cxy + si * si * cyy) ** 2))
+    assert math.isclose(moments.m4_principal[0], m4_along[0], rel_tol=1e-9)
+    assert math.isclose(moments.m4_principal[1], m4_along[1], rel_tol=1e-9)
+    assert math.isclose(moments.m2, math.sqrt(values[0] * values[1]), rel_tol=1e-10)
+    assert math.isclose(moments.m4, math.sqrt(m4_along[0] * m4_along[1]), rel_tol=1e-9)
     assert math.isclose(moments.alpha, moments.m0 * moments.m4 / moments.m2 ** 2, rel_tol=1e-12)
 
 
@@ -239,6 +287,30 @@ def test_distributions_against_scipy(model, location, scale, shape):
     assert math.isclose(distribution.standard_deviation(), reference.std(), rel_tol=1e-10)
 
 
+@pytest.mark.parametrize("model", ["gaussian", "weibull_tail", "weibull_bounded"])
+def test_distribution_functions_answer_bad_arguments_by_value(model):
+    # a library threw through noexcept here: the interpreter was aborted
+    distribution = topography.HeightDistribution(model, 0.0, 1.0, 1.7)
+    p = np.array([0.0, 1.0, -0.5, 1.5, np.nan, np.inf])
+    assert np.isnan(distribution.quantile(p)).all()
+    assert math.isnan(distribution.quantile(0.0)) and math.isnan(distribution.quantile(1.0))
+    assert np.isfinite(distribution.quantile(np.array([5e-324, 0.5, 1 - 2 ** -53]))).all()
+    for scale in (0.0, -1.0, math.inf, math.nan):
+        bad = topography.HeightDistribution(model, 0.0, scale, 1.7)
+        assert math.isnan(bad.mean()) and math.isnan(bad.standard_deviation()) and math.isnan(bad.quantile(0.5))
+    if model == "gaussian":
+        return
+    for shape in (0.0, -0.5, -1.0, math.inf, math.nan):
+        bad = topography.HeightDistribution(model, 0.0, 1.0, shape)
+        assert math.isnan(bad.mean()) and math.isnan(bad.standard_deviation()) and math.isnan(bad.quantile(0.5))
+    tiny = topography.HeightDistribution(model, 0.0, 1.0, 1e-3)  # Gamma(1001): beyond any double
+    assert tiny.mean() == (math.inf if model == "weibull_tail" else -math.inf) and tiny.standard_deviation() == math.inf
+    # Gamma(1 + 1/a) overflows, the mean scale * 256! does not: against Python's exact factorial
+    small = topography.HeightDistribution(model, 0.0, 1e-300, 2.0 ** -8)
+    mean = float(Fraction(math.factorial(256), 10 ** 300))  # 1e-300 256!, exact then rounded once
+    assert math.isclose(abs(small.mean()), mean, rel_tol=1e-12)
+
+
 @pytest.mark.parametrize("model, shape", [("weibull_tail", 1.5), ("weibull_bounded", 2.5), ("weibull_tail", 0.8)])
 def test_fits_recover_known_shapes(model, shape):
     truth = topography.HeightDistribution(model, 2e-8, 1e-8, shape)
@@ -295,6 +367,61 @@ def test_gaussian_random_field_and_weibull_marginals():
     assert heights.min() >= 0 and abs(np.mean(heights) / math.gamma(1 + 1 / 1.5) - 1) < 0.1
     topography.to_weibull_marginal(same, 1.5, bounded=True)
     assert same.heights.max() <= 0
+
+
+def test_field_sizes_are_checked():
+    spectrum = [topography.SpectrumComponent(2.0, 1.0)]
+    for nx, ny in ((2 ** 63, 4), (2 ** 62, 4), (4, 2 ** 63), (2 ** 32, 2 ** 32), (2 ** 13 + 1, 2 ** 13)):
+        with pytest.raises(asperity.Error, match="more than 67108864"):  # nx ny wrapped: a buffer overrun
+            topography.gaussian_random_field(nx, ny, 1e-6, 1e-6, spectrum)
+    for nx in (-1, 2 ** 64, 2 ** 200):
+        with pytest.raises(ValueError, match="nx must be a whole number"):
+            topography.gaussian_random_field(nx, 8, 1e-6, 1e-6, spectrum)
+    with pytest.raises(TypeError):
+        topography.gaussian_random_field(8.5, 8, 1e-6, 1e-6, spectrum)
+    with pytest.raises(asperity.Error, match="3 x 3"):
+        topography.gaussian_random_field(2, 8, 1e-6, 1e-6, spectrum)
+    for correlation in (0.0, -1.0, math.nan, math.inf, 1e300, 65536.5):
+        with pytest.raises(asperity.Error, match="correlation"):
+            topography.gaussian_random_field(8, 8, 1e-6, 1e-6, [topography.SpectrumComponent(correlation, 1.0)])
+        with pytest.raises(asperity.Error, match="correlation"):
+            topography.expected_spectral_moments(1e-6, 1e-6, [topography.SpectrumComponent(correlation, 1.0)])
+    for variance in (0.0, math.inf, math.nan):
+        with pytest.raises(asperity.Error, match="variance"):
+            topography.gaussian_random_field(8, 8, 1e-6, 1e-6, [topography.SpectrumComponent(2.0, variance)])
+    with pytest.raises(asperity.Error, match="total variance"):
+        topography.gaussian_random_field(8, 8, 1e-6, 1e-6, [topography.SpectrumComponent(2.0, 1e308)] * 2)
+    for dx in (0.0, -1e-6, math.nan, math.inf):
+        with pytest.raises(asperity.Error, match="sampling intervals"):
+            topography.gaussian_random_field(8, 8, dx, 1e-6, spectrum)
+    with pytest.raises(asperity.Error, match="points of noise"):  # a kernel far wider than the map
+        topography.gaussian_random_field(8, 8, 1e-6, 1e-6, [topography.SpectrumComponent(65536.0, 1.0)])
+    with pytest.raises(asperity.Error, match="multiply-adds"):
+        topography.gaussian_random_field(4096, 4096, 1e-6, 1e-6, [topography.SpectrumComponent(500.0, 1.0)])
+    with pytest.raises(asperity.Error, match="at least one component"):
+        topography.gaussian_random_field(8, 8, 1e-6, 1e-6, [])
+    assert topography.gaussian_random_field(3, 3, 1e-6, 1e-6, spectrum).heights.shape == (3, 3)
+    assert topography.gaussian_random_field(np.int64(4), np.uint8(3), 1e-6, 1e-6, spectrum).heights.shape == (3, 4)
+    field = topography.gaussian_random_field(5, 4, 1e-6, 1e-6, spectrum)
+    for factor in (2 ** 63, 2 ** 64 - 1):  # ceil(n / factor) wrapped: a 0 x 0 map holding one height
+        assert topography.decimated(field, factor).heights.shape == (1, 1)
+
+
+def test_options_that_set_the_work_are_bounded():
+    field = topography.gaussian_random_field(96, 96, 1e-6, 1e-6, [topography.SpectrumComponent(2.0, 1e-16)], seed=9)
+    for points in (2 ** 31 - 1, 100001, 1, 0, -5):
+        contact = topography.ContactOptions(1e11, curve_points=points, table_path=asperity.Table.default_path())
+        with pytest.raises(asperity.Error, match="curve_points must be from 2 to 100000"):
+            topography.analyse_height_map(field, assessment=topography.AssessmentOptions(bootstrap=0),
+                                          fit_heights=False, contact=contact)
+    contact = topography.ContactOptions(1e11, curve_points=2, table_path=asperity.Table.default_path())
+    analysis = topography.analyse_height_map(field, assessment=topography.AssessmentOptions(bootstrap=0),
+                                             fit_heights=False, contact=contact)
+    assert analysis.contact.find("gaussian").curve.pressure.size == 2
+    sample = topography.draw_sample(topography.HeightDistribution(), 50)
+    for bootstrap in (2 ** 31 - 1, 100001, -1):
+        with pytest.raises(asperity.Error, match="bootstrap must be from 0 to 100000"):
+            topography.assess_sample("x", sample, topography.AssessmentOptions(bootstrap=bootstrap))
 
 
 # ---- the whole path ----

@@ -28,11 +28,15 @@
 
 namespace asperity::topography {
 
+// Points of each contact curve (each one inverse and one PhysicalState): bounded, so that an
+// option cannot make the curves' time and memory unbounded.
+inline constexpr int min_curve_points = 2, max_curve_points = 100000;
+
 struct ContactOptions {
   double contact_modulus = 0;     // E* [Pa] (plane strain); required
   double nominal_area = 0;        // A0 [m^2]; 0: the measured area
   std::vector<double> pressures;  // nominal pressures of interest [Pa]; empty: E* x {1e-5, 1e-4, 1e-3}
-  int curve_points = 61;          // points of each curve, log-uniform in pressure
+  int curve_points = 61;          // points of each curve, log-uniform in pressure (2 to 100000)
   double scene_tolerance = 1e-8;  // of the scene tables
   std::string table_path;         // a full table instead of scene tables (empty: scene tables)
   int threads = 0;
@@ -57,7 +61,8 @@ struct ContactComparison {
   const ModelContact* find(const std::string& label) const;
 };
 
-// Throws asperity::Error for a missing or bad modulus, bad pressures, or no summits.
+// Throws asperity::Error for a missing or bad modulus, bad pressures, curve_points outside
+// [min_curve_points, max_curve_points], or no summits.
 ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summits& summits,
                                   const SpectralMoments& moments, double measured_area, const ContactOptions& options);
 

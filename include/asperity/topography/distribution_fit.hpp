@@ -32,6 +32,9 @@ const char* to_string(HeightModel model);        // "gaussian", "weibull-tail", 
 const char* describe(HeightModel model);         // "Gaussian", "Weibull, tail up (GW side)", ...
 int parameter_count(HeightModel model);          // 2 or 3
 
+// The functions never throw: parameters that are no distribution (a location or scale not
+// finite, a scale <= 0, a Weibull shape not finite and > 0) give NaN for quantile, mean and
+// standard_deviation; a mean or standard deviation beyond the largest double is +-inf.
 struct HeightDistribution {
   HeightModel model = HeightModel::gaussian;
   double location = 0, scale = 1, shape = 0;  // gaussian: mean, standard deviation (shape unused)
@@ -40,7 +43,7 @@ struct HeightDistribution {
   double log_cdf(double x) const noexcept;     // ln P(X <= x)
   double log_sf(double x) const noexcept;      // ln P(X > x)
   double cdf(double x) const noexcept;
-  double quantile(double p) const noexcept;    // p in (0, 1)
+  double quantile(double p) const noexcept;    // p in (0, 1); NaN outside
   double mean() const noexcept;
   double standard_deviation() const noexcept;
 };

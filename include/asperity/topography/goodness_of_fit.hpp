@@ -35,8 +35,12 @@ struct FitStatistics {
 };
 FitStatistics fit_statistics(const HeightDistribution& distribution, const std::vector<double>& sorted);
 
+// Bootstrap samples: each is three refits; bounded (as `asperity surface --bootstrap` is), so that
+// an option cannot make the assessment's time unbounded.
+inline constexpr int max_bootstrap = 100000;
+
 struct AssessmentOptions {
-  int bootstrap = 199;         // B; 0: no p-values and no intervals (no test: the verdict says so)
+  int bootstrap = 199;         // B (0 to max_bootstrap); 0: no p-values and no intervals (no test: the verdict says so)
   std::uint64_t seed = 1;
   int threads = 0;             // 0: the hardware's
   double confidence = 0.95;    // of the intervals
@@ -87,6 +91,8 @@ int minimum_bootstrap(double significance);
 void check_bootstrap_size(int bootstrap, double significance);
 
 // Fits the three models, bootstraps, and gives the verdict. `values` need not be sorted.
+// asperity::Error for confidence or significance outside (0, 1), bootstrap outside
+// [0, max_bootstrap], or values the fits refuse.
 SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options = {});
 
 // The parametric-bootstrap p-value of the Anderson-Darling (and KS) test of one model on one

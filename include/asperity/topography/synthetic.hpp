@@ -8,7 +8,15 @@
 // known exactly (expected_spectral_moments), which tests the moment estimator.
 // Weibull marginals: each height h ~ N(0, 1) is mapped to F_W^-1(Phi(h)) (tail up) or to its
 // negative (bounded above): the marginal is then exactly a unit Weibull of the given shape.
+//
+// Limits, checked before anything is allocated (asperity::Error beyond them): nx, ny >= 3 and
+// nx ny <= max_field_points (the readers' default: 512 MiB of heights); dx, dy finite and > 0;
+// each component's correlation finite, > 0 and <= max_field_correlation points, its variance
+// finite and > 0; the noise each component convolves, (nx + 2h)(ny + 2h) points with
+// h = ceil(4 correlation), <= max_field_noise_points (1 GiB); and the multiply-adds of the
+// convolutions, (2h + 1)((ny + 2h) nx + ny nx) summed over the components, <= max_field_work.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -16,6 +24,11 @@
 #include "asperity/topography/statistics.hpp"
 
 namespace asperity::topography {
+
+inline constexpr std::size_t max_field_points = std::size_t{1} << 26;
+inline constexpr double max_field_correlation = 65536;
+inline constexpr std::size_t max_field_noise_points = std::size_t{1} << 27;
+inline constexpr std::uint64_t max_field_work = std::uint64_t{1} << 36;
 
 struct SpectrumComponent {
   double correlation = 4;  // kernel standard deviation [points]
@@ -25,7 +38,8 @@ struct SpectrumComponent {
 HeightMap gaussian_random_field(std::size_t nx, std::size_t ny, double dx, double dy,
                                 const std::vector<SpectrumComponent>& spectrum, std::uint64_t seed);
 
-// m0, m2x, m2y, m4x, m4y, m2, m4, alpha of the field in expectation (sampling counts 0).
+// m0, m2x, m2y, m4x, m4y, m2, m4, alpha of the field in expectation (sampling counts 0). The
+// components and intervals are checked as gaussian_random_field checks them.
 SpectralMoments expected_spectral_moments(double dx, double dy, const std::vector<SpectrumComponent>& spectrum);
 
 // Requires unit-variance Gaussian heights (a field of total variance 1).
