@@ -351,7 +351,8 @@ std::string analysis_json(const SurfaceAnalysis& a) {
                                "with a given table, that table (the default serves 0.5-20)"},
                     {"models", models}};
   }
-  return j.dump(1) + "\n";
+  // a source or note that is not UTF-8 (a path's bytes) is replaced, not an exception
+  return j.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::string analysis_summary(const SurfaceAnalysis& a) {
