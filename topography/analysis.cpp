@@ -6,6 +6,8 @@
 #include <random>
 
 #include "asperity/error.hpp"
+#include "asperity/topography/summit_contact.hpp"
+#include "asperity/topography/surface_tests.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -64,6 +66,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     throw Error(map.source + ": " + std::to_string(analysis.summits.list.size()) +
                 " summits: too few to fit a distribution (a smaller summit window or threshold?)");
 
+  std::vector<std::pair<std::size_t, Summits>> coarse_summits;  // factor > 1: the contact's dependence
   for (std::size_t factor : options.sampling_factors) {
     if (factor < 1) continue;
     const HeightMap coarse = factor == 1 ? map : decimated(map, factor);
@@ -82,7 +85,9 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     row.m2 = m.m2;
     row.m4 = m.m4;
     row.alpha = m.alpha;
+    row.anisotropy = m.anisotropy;
     analysis.sampling.push_back(row);
+    if (factor > 1 && !s.list.empty()) coarse_summits.emplace_back(factor, s);
   }
 
   std::vector<double> summit_heights;
@@ -100,22 +105,185 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
                         std::to_string(analysis.summits.list.size()) + " summits (max_fit_sample)");
   }
   analysis.summits_fitted = summit_heights.size();
-  analysis.summit_heights = assess_sample("summit heights", summit_heights, options.assessment);
 
-  if (options.fit_heights) {
-    analysis.height_stride_x = std::max<std::size_t>(1, analysis.correlation.x);
-    analysis.height_stride_y = std::max<std::size_t>(1, analysis.correlation.y);
-    const std::vector<double> thinned = thinned_heights(map, analysis.correlation, options.max_height_sample);
-    if (thinned.size() >= 20) analysis.heights = assess_sample("heights (thinned)", thinned, options.assessment);
+  // the pressures and area of the contact, known before the ensemble: each surrogate's measured-
+  // summit answer gives that answer's spread
+  std::vector<double> pressures;
+  double nominal_area = 0;
+  if (options.contact) {
+    pressures = contact_pressures(*options.contact);
+    nominal_area = options.contact->nominal_area > 0 ? options.contact->nominal_area : map.width() * map.length();
   }
+  std::vector<std::vector<double>> surrogate_stiffness, surrogate_separation;
+
+  SurfaceTestOptions tests_options;
+  tests_options.assessment = options.assessment;
+  tests_options.summits = options.summits;
+  tests_options.height_sample = options.max_height_sample;
+  tests_options.max_summits = options.max_fit_sample > 0 ? options.max_fit_sample : analysis.summits.list.size();
+  tests_options.test_heights = options.fit_heights;
+  if (options.contact && options.assessment.bootstrap > 0) {
+    surrogate_stiffness.assign(static_cast<std::size_t>(options.assessment.bootstrap), {});
+    surrogate_separation.assign(static_cast<std::size_t>(options.assessment.bootstrap), {});
+    const double modulus = options.contact->contact_modulus;
+    tests_options.on_surrogate = [&, modulus, nominal_area](std::size_t b, const Summits& summits) {
+      try {
+        const SummitContact contact(summits, modulus, nominal_area);
+        for (double p : pressures) {
+          const PhysicalState state = contact.at_pressure(p);
+          surrogate_stiffness[b].push_back(state.stiffness);
+          surrogate_separation[b].push_back(state.mean_separation);
+        }
+      } catch (const Error&) {  // a surrogate without summits: left out
+      }
+    };
+  }
+  SurfaceTests tests = test_surface(map, summit_heights, analysis.correlation, tests_options, options.progress);
+  analysis.summit_heights = std::move(tests.summit_heights);
+  if (options.fit_heights) analysis.heights = std::move(tests.heights);
+  analysis.surrogates = tests.surrogates;
+  analysis.padded_nx = tests.padded_nx;
+  analysis.padded_ny = tests.padded_ny;
 
   if (options.contact) {
     // the nominal area defaults to the measured one
     analysis.contact = compare_contact(analysis.summit_heights, analysis.summits, analysis.moments,
                                        map.width() * map.length(), *options.contact);
+    ContactComparison& c = *analysis.contact;
+    // the spread of the measured-summit answer over the ensemble
+    for (std::size_t k = 0; k < c.pressures.size(); ++k) {
+      std::vector<double> stiffness, separation;
+      for (std::size_t b = 0; b < surrogate_stiffness.size(); ++b)
+        if (surrogate_stiffness[b].size() == c.pressures.size()) {
+          stiffness.push_back(std::log(surrogate_stiffness[b][k]));
+          separation.push_back(surrogate_separation[b][k]);
+        }
+      if (stiffness.size() < 2) break;
+      const auto spread = [](const std::vector<double>& v) {
+        double mean = 0, squares = 0;
+        for (double x : v) mean += x;
+        mean /= static_cast<double>(v.size());
+        for (double x : v) squares += (x - mean) * (x - mean);
+        return std::sqrt(squares / static_cast<double>(v.size() - 1));
+      };
+      c.measured_stiffness_spread.push_back(spread(stiffness));  // of ln K: relative
+      c.measured_separation_spread.push_back(spread(separation));
+    }
+    // the measured-summit answer at coarser samplings
+    const ModelContact* finest = c.find("measured-summits");
+    for (const auto& [factor, coarse] : coarse_summits) {
+      if (!finest || !finest->served) break;
+      try {
+        const SummitContact contact(coarse, options.contact->contact_modulus, c.nominal_area);
+        SamplingContact row;
+        row.factor = factor;
+        for (std::size_t k = 0; k < c.pressures.size(); ++k)
+          row.stiffness_over_finest.push_back(contact.at_pressure(c.pressures[k]).stiffness /
+                                              finest->at_pressures[k].stiffness);
+        c.sampling.push_back(row);
+      } catch (const Error&) {
+      }
+    }
+    conclude_contact(c);
   }
+  analysis.verdict = surface_verdict(analysis);
   analysis.map = std::move(map);
   return analysis;
+}
+
+SurfaceVerdict surface_verdict(const SurfaceAnalysis& a) {
+  SurfaceVerdict v;
+  if (a.noise_floor.reached) {
+    v.text = "no verdict: " + a.noise_floor.text;
+    return v;
+  }
+  const SampleAssessment& S = a.summit_heights;
+  const SampleAssessment* H = a.heights ? &*a.heights : nullptr;
+  if (S.models.size() != 3) return v;
+  const double significance = S.options.significance;
+  v.tested = S.options.bootstrap > 0;
+  const ModelAssessment& gs = S.model(HeightModel::gaussian);
+  v.p_summits = gs.anderson_darling_p;
+  v.p_summits_bound = gs.p_at_floor;
+  if (H) {
+    v.p_heights = H->model(HeightModel::gaussian).anderson_darling_p;
+    v.p_heights_bound = H->model(HeightModel::gaussian).p_at_floor;
+  }
+  const auto p = [](double value, bool bound) {
+    return short_number(value).insert(0, bound ? "p <= " : "p = ");
+  };
+  std::string text;
+  if (!v.tested) {
+    text = "Is it Gaussian? Not tested (no surrogate surfaces: --ensemble 0).";
+  } else {
+    const double half = significance / 2;
+    const bool heights_reject = H && v.p_heights < half, summits_reject = v.p_summits < half;
+    v.gaussian_rejected = heights_reject || summits_reject;
+    text = std::string("Is it Gaussian? ") + (v.gaussian_rejected ? "No" : "Not rejected") + ": against " +
+           std::to_string(a.surrogates) + " Gaussian surfaces of the map's own spectrum, ";
+    if (H) text += "its heights give " + p(v.p_heights, v.p_heights_bound) + " and ";
+    text += "its summit heights " + p(v.p_summits, v.p_summits_bound) + " (Anderson-Darling, each at " +
+            short_number(100 * half) + "% so that the verdict's size is " + short_number(100 * significance) + "%).";
+  }
+  // the orientation from the heights' marginal
+  if (H) {
+    int best = -1;
+    for (HeightModel model : {HeightModel::weibull_tail, HeightModel::weibull_bounded}) {
+      const ModelAssessment& m = H->model(model);
+      if ((v.tested && m.rejected) || !m.shape_identified) continue;
+      if (best < 0 || m.aic < H->models[static_cast<std::size_t>(best)].aic) best = static_cast<int>(model);
+    }
+    if (best >= 0) {
+      v.orientation = static_cast<HeightModel>(best);
+      const ModelAssessment& m = H->models[static_cast<std::size_t>(best)];
+      text += std::string(" The heights lean ") + (v.orientation == HeightModel::weibull_tail ? "tail up" : "bounded above") +
+              " (" + describe(v.orientation) + ", a = " + short_number(m.fit.distribution.shape) + " [" +
+              short_number(m.shape.lo) + ", " + short_number(m.shape.hi) + "]).";
+    } else {
+      text += " Neither Weibull describes the heights (rejected or its shape not identified).";
+    }
+  }
+  // the model named for the contact: from the summit heights, what GW integrates
+  std::string reasons;
+  int named = -1;
+  for (HeightModel model : all_height_models) {
+    const ModelAssessment& m = S.model(model);
+    std::string why;
+    if (model == HeightModel::gaussian && v.gaussian_rejected) why = "the surface is not Gaussian";
+    else if (v.tested && m.rejected) why = "rejected on the summit heights (" + p(m.anderson_darling_p, m.p_at_floor) + ")";
+    else if (!m.shape_identified) why = "its shape is " + m.identification;
+    else if (a.contact) {
+      const ModelContact* curves = a.contact->find(to_string(model));
+      if (!curves || !curves->served) why = "it has no contact curves";
+    } else if (model != HeightModel::gaussian && !(m.fit.distribution.shape >= 0.3 && m.fit.distribution.shape <= 50)) {
+      why = "its shape is outside what the tables serve (0.3 to 50)";
+    }
+    if (!why.empty()) {
+      reasons += std::string(reasons.empty() ? "" : "; ") + describe(model) + ": " + why;
+      continue;
+    }
+    if (named < 0 || m.aic < S.models[static_cast<std::size_t>(named)].aic) named = static_cast<int>(model);
+  }
+  if (named >= 0) {
+    v.named = true;
+    v.model = static_cast<HeightModel>(named);
+    const ModelAssessment& m = S.models[static_cast<std::size_t>(named)];
+    text += std::string(" For the contact (the summit heights, what GW integrates): ") + describe(v.model);
+    if (v.model != HeightModel::gaussian)
+      text += ", a = " + short_number(m.fit.distribution.shape) + " [" + short_number(m.shape.lo) + ", " +
+              short_number(m.shape.hi) + "]";
+    text += " (" + (v.tested ? p(m.anderson_darling_p, m.p_at_floor) : std::string("not tested")) + ", Akaike weight " +
+            short_number(m.akaike_weight) + ").";
+    if (H && v.orientation != HeightModel::gaussian && v.model != HeightModel::gaussian && v.model != v.orientation)
+      text += " Its orientation is not the heights': the summits alone can mislead about it.";
+  } else {
+    text += " No model is named for the contact";
+  }
+  if (!reasons.empty()) text += (named >= 0 ? " Not named: " : ": ") + reasons + ".";
+  else if (named < 0) text += ".";
+  if (a.contact && !a.contact->headline.empty()) text += " " + a.contact->headline + ".";
+  v.text = text;
+  return v;
 }
 
 SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOptions& options) {

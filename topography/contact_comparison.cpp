@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -10,6 +11,7 @@
 #include "asperity/scene.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
+#include "asperity/topography/summit_contact.hpp"
 #include "scene_table.hpp"
 
 namespace asperity::topography {
@@ -33,6 +35,62 @@ void fill_curves(ModelContact& model, const ContactModel& contact, const Contact
 
 }  // namespace
 
+std::vector<double> contact_pressures(const ContactOptions& options) {
+  std::vector<double> pressures = options.pressures;
+  if (pressures.empty())
+    for (double f : {1e-5, 1e-4, 1e-3}) pressures.push_back(f * options.contact_modulus);
+  for (double p : pressures)
+    if (!(p > 0) || !std::isfinite(p)) throw Error("contact: pressures must be positive numbers");
+  std::sort(pressures.begin(), pressures.end());
+  return pressures;
+}
+
+void conclude_contact(ContactComparison& comparison) {
+  const ModelContact* measured = comparison.find("measured-summits");
+  if (!measured || !measured->served) return;
+  for (ModelContact& model : comparison.models) {
+    model.stiffness_over_measured.clear();
+    model.separation_minus_measured.clear();
+    if (!model.served) continue;
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
+      model.stiffness_over_measured.push_back(model.at_pressures[k].stiffness / measured->at_pressures[k].stiffness);
+      model.separation_minus_measured.push_back(model.at_pressures[k].mean_separation -
+                                                measured->at_pressures[k].mean_separation);
+    }
+  }
+  // the fitted model whose worst stiffness ratio over the pressures is nearest 1
+  double best = std::numeric_limits<double>::infinity();
+  comparison.closest.clear();
+  for (const ModelContact& model : comparison.models) {
+    if (!model.served || model.label.rfind("measured-summits", 0) == 0) continue;
+    double worst = 0;
+    for (double ratio : model.stiffness_over_measured) worst = std::max(worst, std::fabs(std::log(ratio)));
+    if (worst < best) {
+      best = worst;
+      comparison.closest = model.label;
+    }
+  }
+  std::ostringstream text;
+  text.precision(3);
+  if (comparison.closest.empty()) {
+    text << "no fitted model has contact curves to compare with the measured summits";
+  } else {
+    const ModelContact& closest = *comparison.find(comparison.closest);
+    text << "Closest to GW on the measured summits (no law fitted): " << closest.label << ", stiffness ";
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
+      text << (k ? ", " : "") << closest.stiffness_over_measured[k] << "x";
+      if (k < comparison.measured_stiffness_spread.size())
+        text << " (+-" << 100 * comparison.measured_stiffness_spread[k] << "%)";
+      text << " at " << comparison.pressures[k] << " Pa";
+    }
+    text << "; mean separation ";
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k)
+      text << (k ? ", " : "") << closest.separation_minus_measured[k] << " m";
+    text << " from the measured summits' (the +- is the measured-summit answer's spread over the surrogate ensemble)";
+  }
+  comparison.headline = text.str();
+}
+
 const ModelContact* ContactComparison::find(const std::string& label) const {
   for (const ModelContact& m : models)
     if (m.label == label) return &m;
@@ -51,17 +109,36 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
   comparison.options = options;
   comparison.nominal_area = options.nominal_area > 0 ? options.nominal_area : measured_area;
   if (!(comparison.nominal_area > 0) || !std::isfinite(comparison.nominal_area)) throw Error("contact: bad nominal area");
-  comparison.pressures = options.pressures;
-  if (comparison.pressures.empty())
-    for (double f : {1e-5, 1e-4, 1e-3}) comparison.pressures.push_back(f * options.contact_modulus);
-  for (double p : comparison.pressures)
-    if (!(p > 0) || !std::isfinite(p)) throw Error("contact: pressures must be positive numbers");
-  std::sort(comparison.pressures.begin(), comparison.pressures.end());
+  comparison.pressures = contact_pressures(options);
   comparison.pressure_min = comparison.pressures.front() / 10;
   comparison.pressure_max = comparison.pressures.back() * 3;
 
   const Table default_table = options.table_path.empty() ? Table::open_default() : Table::open(options.table_path);
   const double e_star = options.contact_modulus, area = comparison.nominal_area;
+
+  // GW on the measured summits, no law: with GW's one radius, and with each summit's own
+  for (const bool own_radii : {false, true}) {
+    ModelContact model;
+    model.label = own_radii ? "measured-summits-own-radii" : "measured-summits";
+    try {
+      const SummitContact contact(summits, e_star, area, own_radii);
+      model.mean_summit_height = contact.mean_summit_height();
+      const int points = comparison.options.curve_points;
+      const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
+      for (int k = 0; k < points; ++k) model.curve.push_back(contact.at_pressure(std::exp(lo + (hi - lo) * k / (points - 1))));
+      for (double p : comparison.pressures) model.at_pressures.push_back(contact.at_pressure(p));
+      model.served = true;
+      model.surface.summit_radius = summits.radius;
+      model.surface.summit_density = summits.density;
+      model.surface.nominal_area = area;
+      model.surface.contact_modulus = e_star;
+      model.note = std::to_string(summits.list.size()) + " measured summits, " +
+                   (own_radii ? "each with its own radius 1/kappa_m" : "GW's one radius 1/<kappa_m>") + ", no law fitted";
+    } catch (const Error& error) {
+      model.note = std::string("no curve: ") + error.what();
+    }
+    comparison.models.push_back(std::move(model));
+  }
 
   // the Gaussian from the spectral moments (Nayak-McCool)
   {
@@ -140,6 +217,7 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
     }
     comparison.models.push_back(std::move(model));
   }
+  conclude_contact(comparison);
   return comparison;
 }
 

@@ -54,11 +54,14 @@ ordered_json assessment_json(const SampleAssessment& a) {
                       {"standard_deviation_m", number(d.standard_deviation())},
                       {"estimator", d.model == HeightModel::gaussian ? "maximum likelihood" : "maximum product of spacings"},
                       {"shape_at_bound", m.fit.shape_at_bound},
+                      {"shape_identified", m.shape_identified},
+                      {"identification", m.identification},
                       {"interval_location_m", {number(m.location.lo), number(m.location.hi)}},
                       {"interval_scale_m", {number(m.scale.lo), number(m.scale.hi)}},
                       {"interval_shape", {number(m.shape.lo), number(m.shape.hi)}},
                       {"anderson_darling", number(m.anderson_darling)},
                       {"anderson_darling_p", number(m.anderson_darling_p)},
+                      {"anderson_darling_p_is_bound", m.p_at_floor},
                       {"kolmogorov_smirnov", number(m.kolmogorov_smirnov)},
                       {"kolmogorov_smirnov_p", number(m.kolmogorov_smirnov_p)},
                       {"log_likelihood", number(m.log_likelihood)},
@@ -70,11 +73,15 @@ ordered_json assessment_json(const SampleAssessment& a) {
   }
   return ordered_json{{"sample", a.name},
                       {"n", a.n},
-                      {"bootstrap", a.options.bootstrap},
+                      {"surrogates", a.options.bootstrap},
                       {"seed", a.options.seed},
                       {"confidence", a.options.confidence},
                       {"significance", a.options.significance},
-                      {"intervals", "percentile intervals of the parametric-bootstrap refits"},
+                      {"null_distributions", "from surrogate surfaces of the map's own spectrum with each model's "
+                                             "marginal, every statistic computed on them as on the map"},
+                      {"intervals", a.name.rfind("summit", 0) == 0
+                                        ? "the ensemble's refitted shapes, their spread centred on the estimate"
+                                        : "percentile intervals of the ensemble's refitted shapes"},
                       {"models", models},
                       {"verdict",
                        {{"gaussian_rejected", a.verdict.gaussian_rejected},
@@ -115,12 +122,16 @@ HeightUnit height_unit(const SurfaceAnalysis& a) {
 }
 
 const char* colour_of(const std::string& label) {
+  if (label == "measured-summits") return "#2ca02c";
+  if (label == "measured-summits-own-radii") return "#98df8a";
   if (label == "gaussian-moments") return "#8c8c8c";
   if (label == "gaussian") return "#000000";
   if (label == "weibull-tail") return "#1f77b4";
   return "#d62728";  // weibull-bounded
 }
 const char* legend_of(const std::string& label) {
+  if (label == "measured-summits") return "GW on the measured summits (no law)";
+  if (label == "measured-summits-own-radii") return "measured summits, their own radii";
   if (label == "gaussian-moments") return "Gaussian from m0, m2, m4 (Nayak-McCool)";
   if (label == "gaussian") return "Gaussian fit";
   if (label == "weibull-tail") return "Weibull, tail up";
@@ -253,7 +264,7 @@ std::string contact_svg(const SurfaceAnalysis& a) {
 std::string analysis_json(const SurfaceAnalysis& a) {
   const HeightMap& map = a.map;
   ordered_json j;
-  j["schema"] = "asperity-surface/1";
+  j["schema"] = "asperity-surface/2";
   j["surface"] = {{"source", map.source},
                   {"format", map.format},
                   {"nx", map.nx},
@@ -278,9 +289,17 @@ std::string analysis_json(const SurfaceAnalysis& a) {
                      {"Sa_m", s.mean_absolute},        {"Ssk", s.skewness},                  {"Sku", s.kurtosis},
                      {"min_m", s.min},                 {"max_m", s.max}};
   const SpectralMoments& m = a.moments;
-  j["spectral_moments"] = {{"method", "finite differences of profiles along x and y, averaged"},
-                           {"m0_m2", m.m0}, {"m2", m.m2}, {"m4_per_m2", m.m4}, {"m2x", m.m2x}, {"m2y", m.m2y},
-                           {"m4x_per_m2", m.m4x}, {"m4y_per_m2", m.m4y}, {"alpha", m.alpha}};
+  j["spectral_moments"] = {
+      {"method", "slopes by forward differences, curvatures by second differences (one discrete wavenumber); m2, m4 "
+                 "the equivalent isotropic moments, geometric means along the principal directions (McCool 1986)"},
+      {"m0_m2", m.m0}, {"m2", m.m2}, {"m4_per_m2", m.m4}, {"alpha", m.alpha}, {"m2x", m.m2x}, {"m2y", m.m2y},
+      {"m11", m.m11}, {"m4x_per_m2", m.m4x}, {"m4y_per_m2", m.m4y},
+      {"principal_angle_rad", m.principal_angle},
+      {"m2_principal", {m.m2_principal[0], m.m2_principal[1]}},
+      {"m4_principal_per_m2", {m.m4_principal[0], m.m4_principal[1]}},
+      {"anisotropy", number(m.anisotropy)},
+      {"isotropic", m.anisotropy <= max_isotropic_anisotropy},
+      {"isotropy_limit", max_isotropic_anisotropy}};
   j["correlation"] = {{"level", a.correlation.level},
                       {"lag_x_points", a.correlation.x},
                       {"lag_y_points", a.correlation.y},
@@ -302,20 +321,35 @@ std::string analysis_json(const SurfaceAnalysis& a) {
   for (const SamplingRow& r : a.sampling)
     sampling.push_back({{"factor", r.factor}, {"dx_m", r.dx}, {"dy_m", r.dy}, {"summits", r.summits},
                         {"density_per_m2", r.density}, {"radius_m", r.radius}, {"m2", r.m2},
-                        {"m4_per_m2", r.m4}, {"alpha", r.alpha}});
+                        {"m4_per_m2", r.m4}, {"alpha", r.alpha}, {"anisotropy", number(r.anisotropy)}});
   j["sampling_dependence"] = sampling;
   j["height_histogram"] = histogram_json(map, 60);
+  j["ensemble"] = {{"surrogates", a.surrogates},
+                   {"padded_grid", {a.padded_nx, a.padded_ny}},
+                   {"method", "Gaussian random fields with the periodogram of the map's normal scores (Hann window, "
+                              "padded by two correlation lengths, smoothed over 3 x 3 wavevectors), cut to the map; "
+                              "each model's marginal by F^-1(Phi(g))"}};
   j["fits"]["summit_heights"] = assessment_json(a.summit_heights);
-  if (a.heights) {
-    j["fits"]["heights"] = assessment_json(*a.heights);
-    j["fits"]["heights"]["thinning"] = {{"stride_x_points", a.height_stride_x}, {"stride_y_points", a.height_stride_y}};
-  }
+  j["fits"]["summits_fitted"] = a.summits_fitted;
+  if (a.heights) j["fits"]["heights"] = assessment_json(*a.heights);
+  const SurfaceVerdict& v = a.verdict;
+  j["verdict"] = {{"tested", v.tested},
+                  {"gaussian_rejected", v.gaussian_rejected},
+                  {"gaussian_p_heights", number(v.p_heights)},
+                  {"gaussian_p_heights_is_bound", v.p_heights_bound},
+                  {"gaussian_p_summit_heights", number(v.p_summits)},
+                  {"gaussian_p_summit_heights_is_bound", v.p_summits_bound},
+                  {"rule", "each sample's Gaussian test at half the significance (Bonferroni)"},
+                  {"heights_orientation", v.orientation == HeightModel::gaussian ? "none" : to_string(v.orientation)},
+                  {"model_for_contact", v.named ? to_string(v.model) : "none"},
+                  {"text", v.text}};
   if (a.contact) {
     const ContactComparison& c = *a.contact;
     ordered_json models = ordered_json::array();
     const ModelContact* gaussian = c.find("gaussian");
     for (const ModelContact& mc : c.models) {
       ordered_json mj{{"model", mc.label},
+                      {"mean_summit_height_m", number(mc.mean_summit_height)},
                       {"served", mc.served},
                       {"note", mc.note},
                       {"surface",
@@ -335,6 +369,10 @@ std::string analysis_json(const SurfaceAnalysis& a) {
           sj["area_over_gaussian"] = number(ratio(mc.at_pressures[k].real_area, ref.real_area));
           sj["mean_separation_minus_gaussian_m"] = number(mc.at_pressures[k].mean_separation - ref.mean_separation);
         }
+        if (k < mc.stiffness_over_measured.size()) {
+          sj["stiffness_over_measured_summits"] = number(mc.stiffness_over_measured[k]);
+          sj["mean_separation_minus_measured_summits_m"] = number(mc.separation_minus_measured[k]);
+        }
         at.push_back(sj);
       }
       mj["at_pressures"] = at;
@@ -349,7 +387,19 @@ std::string analysis_json(const SurfaceAnalysis& a) {
                     {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
                     {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes 0.3-50) or, "
                                "with a given table, that table (the default serves 0.5-20)"},
-                    {"models", models}};
+                    {"models", models},
+                    {"measured_summits_spread",
+                     {{"meaning", "relative standard deviation of the measured-summit stiffness, and the standard "
+                                  "deviation of its mean separation [m], over the surrogate ensemble: the "
+                                  "uncertainty of every ratio to it"},
+                      {"stiffness_relative", c.measured_stiffness_spread},
+                      {"mean_separation_m", c.measured_separation_spread}}},
+                    {"closest_fitted_model", c.closest},
+                    {"headline", c.headline}};
+    ordered_json sampling_contact = ordered_json::array();
+    for (const SamplingContact& r : c.sampling)
+      sampling_contact.push_back({{"factor", r.factor}, {"stiffness_over_finest", r.stiffness_over_finest}});
+    j["contact"]["measured_summits_sampling_dependence"] = sampling_contact;
   }
   // a source or note that is not UTF-8 (a path's bytes) is replaced, not an exception
   return j.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
@@ -369,27 +419,30 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
     return out.str();
   }
   out << "  m0 " << g(a.moments.m0) << " m^2, m2 " << g(a.moments.m2) << ", m4 " << g(a.moments.m4)
-      << " 1/m^2, alpha " << g(a.moments.alpha, 3) << "\n";
+      << " 1/m^2, alpha " << g(a.moments.alpha, 3) << ", anisotropy " << g(a.moments.anisotropy, 3)
+      << (a.moments.anisotropy > max_isotropic_anisotropy ? " (not isotropic: Nayak-McCool's moments do not hold)" : "")
+      << "\n";
   out << "  summits " << a.summits.list.size() << ", density " << g(a.summits.density) << " 1/m^2, radius "
       << g(a.summits.radius) << " m\n";
-  out << "  " << a.summit_heights.verdict.text << "\n";
-  if (a.heights) out << "  " << a.heights->verdict.text << "\n";
+  out << "  " << a.verdict.text << "\n";
   if (a.contact) {
     const ContactComparison& c = *a.contact;
     const ModelContact* gaussian = c.find("gaussian");
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-      out << "  at " << g(c.pressures[k]) << " Pa: stiffness per area";
+      out << "  at " << g(c.pressures[k]) << " Pa: stiffness per area [N/m^3] (x the measured summits')";
       for (const ModelContact& mc : c.models) {
+        if (mc.label == "measured-summits-own-radii") continue;
         out << "  " << mc.label << " ";
         if (!mc.served) {
           out << "(none)";
           continue;
         }
         out << g(mc.at_pressures[k].stiffness / c.nominal_area);
-        if (gaussian && gaussian->served && &mc != gaussian)
-          out << " (" << g(ratio(mc.at_pressures[k].stiffness, gaussian->at_pressures[k].stiffness), 3) << "x)";
+        if (k < mc.stiffness_over_measured.size() && mc.label != "measured-summits")
+          out << " (" << g(mc.stiffness_over_measured[k], 3) << "x)";
       }
-      out << " N/m^3\n";
+      (void)gaussian;
+      out << "\n";
     }
     for (const ModelContact& mc : c.models)
       if (!mc.served) out << "  " << mc.label << ": " << mc.note << "\n";
@@ -455,40 +508,60 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
      << g(a.moments.alpha, 3) << " |\n\n";
   if (a.noise_floor.reached) md << "**Noise floor.** " << a.noise_floor.text << ".\n";
   if (!a.noise_floor.reached) {
-  md << "Spectral moments from finite differences at the file's sampling interval (profiles along x and y, averaged); "
-        "they grow as the sampling interval shrinks on a rough surface, see below.\n\n";
+  md << "Spectral moments at the file's sampling interval by one consistent scheme (slopes by forward differences, "
+        "curvatures by second differences); m2 and m4 are the equivalent isotropic moments (geometric means along the "
+        "principal directions, McCool 1986). Anisotropy (ratio of the principal slope variances) "
+     << g(a.moments.anisotropy, 3) << ", steepest at " << g(a.moments.principal_angle * 57.29577951308232, 3)
+     << "° from x"
+     << (a.moments.anisotropy > max_isotropic_anisotropy
+             ? ": **not isotropic** (above " + g(max_isotropic_anisotropy, 2) +
+                   "): Nayak-McCool's Gaussian from the moments assumes an isotropic surface and does not hold here"
+             : "")
+     << ". They grow as the sampling interval shrinks on a rough surface, see below.\n\n";
   md << "## Summits\n\n" << a.summits.list.size() << " summits (" << (a.summits.options.window == 1 ? "8-neighbour maxima" : "maxima within " + std::to_string(a.summits.options.window) + " points")
      << (a.summits.options.min_drop > 0 ? ", at least " + g(a.summits.options.min_drop) + " m above the mean of their neighbours" : "")
      << "): density " << g(a.summits.density) << " /m², radius R = 1/⟨κ_m⟩ = " << g(a.summits.radius)
      << " m (mean curvature −(h_xx + h_yy)/2 from 3-point second differences, averaged over the summits).\n\n";
-  md << "Dependence on the sampling interval (every k-th point):\n\n| k | dx [m] | summits | density [1/m²] | R [m] | m2 | m4 [1/m²] | α |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  md << "Dependence on the sampling interval (every k-th point):\n\n| k | dx [m] | summits | density [1/m²] | R [m] | m2 | m4 [1/m²] | α | anisotropy |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const SamplingRow& r : a.sampling)
     md << "| " << r.factor << " | " << g(r.dx) << " | " << r.summits << " | " << g(r.density) << " | " << g(r.radius) << " | "
-       << g(r.m2) << " | " << g(r.m4) << " | " << g(r.alpha, 3) << " |\n";
+       << g(r.m2) << " | " << g(r.m4) << " | " << g(r.alpha, 3) << " | " << g(r.anisotropy, 3) << " |\n";
   const auto fits_table = [&](const SampleAssessment& s) {
     md << "\n| model | location [m] | scale [m] | shape [" << g(100 * s.options.confidence, 3) << "% interval] | A² | AD p | KS D | KS p | AIC | ΔAIC | Akaike weight |\n"
        << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    const auto p_cell = [](double p, bool bound) { return std::isfinite(p) ? (bound ? "≤ " : "") + g(p, 2) : std::string("–"); };
     for (const ModelAssessment& m : s.models) {
       const HeightDistribution& d = m.fit.distribution;
-      md << "| " << describe(d.model) << " | " << g(d.location) << " | " << g(d.scale) << " | "
-         << (d.model == HeightModel::gaussian ? std::string("–") : g(d.shape, 3) + " [" + g(m.shape.lo, 3) + ", " + g(m.shape.hi, 3) + "]")
-         << " | " << g(m.anderson_darling, 3) << " | " << g(m.anderson_darling_p, 3) << " | " << g(m.kolmogorov_smirnov, 3) << " | "
-         << g(m.kolmogorov_smirnov_p, 3) << " | " << g(m.aic, 6) << " | " << g(m.delta_aic, 3) << " | " << g(m.akaike_weight, 3) << " |\n";
+      std::string shape = "–";
+      if (d.model != HeightModel::gaussian) {
+        shape = g(d.shape, 3);
+        if (!m.shape_identified) shape += " (not identified)";
+        else if (std::isfinite(m.shape.lo)) shape += " [" + g(m.shape.lo, 3) + ", " + g(m.shape.hi, 3) + "]";
+      }
+      md << "| " << describe(d.model) << " | " << g(d.location) << " | " << g(d.scale) << " | " << shape << " | "
+         << g(m.anderson_darling, 3) << " | " << p_cell(m.anderson_darling_p, m.p_at_floor) << " | "
+         << g(m.kolmogorov_smirnov, 3) << " | " << p_cell(m.kolmogorov_smirnov_p, false) << " | " << g(m.aic, 6) << " | "
+         << g(m.delta_aic, 3) << " | " << g(m.akaike_weight, 3) << " |\n";
     }
-    md << "\n**Verdict.** " << s.verdict.text << "\n";
   };
-  md << "\n## Is it Gaussian? Which Weibull?\n\nFits on the summit heights (what the asperity model integrates):\n";
+  md << "\n## Is it Gaussian? Which Weibull?\n\n**Verdict.** " << a.verdict.text << "\n";
+  md << "\nThe summit heights (what the asperity model integrates; a Gaussian surface's summit heights are not "
+        "Gaussian themselves, which the surrogates account for):\n";
   fits_table(a.summit_heights);
   if (a.heights) {
-    md << "\nFits on the heights, for comparison (thinned to one point every " << a.height_stride_x << " x " << a.height_stride_y
-       << " points, where the autocorrelation falls below 0.1, so the values are nearly independent):\n";
+    md << "\nThe heights (a fixed random sample of " << a.heights->n << " points: the marginal of the whole surface, "
+          "whose bound a wear process makes):\n";
     fits_table(*a.heights);
   }
   md << "\nMethod: the Gaussian by maximum likelihood; each three-parameter Weibull by maximum product of spacings "
-        "(well-posed for every shape, including shapes below 1 where maximum likelihood diverges). Anderson–Darling "
-        "and Kolmogorov–Smirnov p-values by parametric bootstrap ("
-     << a.summit_heights.options.bootstrap << " refitted samples, seed " << a.summit_heights.options.seed
-     << "); intervals are percentile intervals of the same refits; AIC from the log-likelihood at each estimate.\n";
+        "(well-posed for every shape, including shapes below 1 where maximum likelihood diverges). The null "
+        "distribution of every statistic and the shape intervals come from "
+     << a.surrogates << " surrogate surfaces (seed " << a.summit_heights.options.seed
+     << "): Gaussian random fields with the spectrum of the map's own heights, given each model's marginal, on which "
+        "every statistic is computed exactly as on the map (summits found the same way), so the tests carry the "
+        "surface's correlation. A p-value shown as ≤ is at its floor 1/(B + 1). A shape whose interval reaches the "
+        "fit's bounds (0.05, 100) or with over a tenth of its refits there is not identified. Akaike weights over all "
+        "three models.\n";
   if (outcome.plots) md << "\n![fits](fits.svg)\n";
   if (a.contact) {
     const ContactComparison& c = *a.contact;
@@ -496,22 +569,38 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
        << g(c.nominal_area) << " m². Separations from each model's mean summit height; stiffness per nominal area. "
           "An asperity model is a statistical statement: where only a few summits are in contact over A0, its "
           "prediction rests on the few highest summits measured, not on the fitted law.\n\n";
+    if (!c.headline.empty()) md << "**" << c.headline << ".**\n\n";
     md << "| model | table |\n|---|---|\n";
     for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
     const ModelContact* gaussian = c.find("gaussian");
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-      md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|\n";
+      md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
       for (const ModelContact& mc : c.models) {
         if (!mc.served) {
-          md << "| " << mc.label << " | – | – | – | – | – | – |\n";
+          md << "| " << mc.label << " | – | – | – | – | – | – | – |\n";
           continue;
         }
         const PhysicalState& s = mc.at_pressures[k];
+        std::string versus = k < mc.stiffness_over_measured.size() ? g(mc.stiffness_over_measured[k], 3) : "–";
+        if (mc.label == "measured-summits" && k < c.measured_stiffness_spread.size())
+          versus = "1 (±" + g(100 * c.measured_stiffness_spread[k], 2) + "%)";
         md << "| " << mc.label << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
-           << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | "
+           << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | " << versus << " | "
            << (gaussian && gaussian->served ? g(ratio(s.stiffness, gaussian->at_pressures[k].stiffness), 3) : "–") << " |\n";
       }
     }
+    if (!c.sampling.empty()) {
+      md << "\nGW on the measured summits at a coarser sampling (every k-th point), its stiffness over the answer at the "
+            "file's sampling, at each pressure: ";
+      for (const SamplingContact& r : c.sampling) {
+        md << "k = " << r.factor << ":";
+        for (double ratio_k : r.stiffness_over_finest) md << " " << g(ratio_k, 3);
+        md << (&r == &c.sampling.back() ? ".\n" : "; ");
+      }
+    }
+    if (!c.measured_stiffness_spread.empty())
+      md << "\n± on the measured summits: the relative standard deviation of their stiffness over the surrogate "
+            "ensemble (surfaces of the same statistics), the uncertainty of each ratio to them.\n";
     if (outcome.plots) md << "\n![contact](contact.svg)\n";
   }
   }  // not at the noise floor

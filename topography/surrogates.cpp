@@ -4,7 +4,6 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 #include <numeric>
-#include <random>
 
 #include "asperity/error.hpp"
 #include "fft.hpp"
@@ -21,8 +20,31 @@ std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-// a uniform in (0, 1) from 53 bits, never 0 or 1
-double uniform(std::mt19937_64& engine) { return (static_cast<double>(engine() >> 11) + 0.5) * 0x1p-53; }
+// xoshiro256** (Blackman & Vigna 2018): a few integer operations a draw (the ensemble draws a
+// complex normal for every wavevector of every surrogate), its sequence defined by its code, so
+// the same on every platform.
+class Xoshiro256 {
+ public:
+  explicit Xoshiro256(std::uint64_t seed) {
+    for (std::uint64_t& word : state_) word = seed = splitmix64(seed);
+  }
+  std::uint64_t operator()() noexcept {
+    const std::uint64_t result = rotate(state_[1] * 5, 7) * 9, t = state_[1] << 17;
+    state_[2] ^= state_[0];
+    state_[3] ^= state_[1];
+    state_[1] ^= state_[2];
+    state_[0] ^= state_[3];
+    state_[2] ^= t;
+    state_[3] = rotate(state_[3], 45);
+    return result;
+  }
+  // a uniform in (-1, 1), never 0... from 53 bits
+  double symmetric() noexcept { return (static_cast<double>((*this)() >> 11) + 0.5) * 0x1p-52 - 1; }
+
+ private:
+  static std::uint64_t rotate(std::uint64_t x, int k) noexcept { return (x << k) | (x >> (64 - k)); }
+  std::uint64_t state_[4];
+};
 
 // Hann window of n points, sampled at the centres
 std::vector<double> hann(std::size_t n) {
@@ -62,9 +84,19 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
     }
     first = last + 1;
   }
-  // the padded grid: three correlation lengths beyond the map (at most the map again)
-  const auto pad = [](std::size_t size, std::size_t length) {
-    return size + std::min(size, std::max<std::size_t>(4, 3 * length));
+  // the padded grid: two correlation lengths beyond the map (the autocorrelation is below 0.1
+  // across the wrap), at most half the map, rounded up to a size of factors 2, 3 and 5 (the
+  // FFT's fastest)
+  const auto smooth = [](std::size_t n) {
+    for (;; ++n) {
+      std::size_t m = n;
+      for (std::size_t f : {2, 3, 5})
+        while (m % f == 0) m /= f;
+      if (m == 1) return n;
+    }
+  };
+  const auto pad = [&](std::size_t size, std::size_t length) {
+    return smooth(size + std::min(std::max<std::size_t>(size / 2, 4), std::max<std::size_t>(8, 2 * length)));
   };
   px_ = pad(nx_, lengths.x);
   py_ = pad(ny_, lengths.y);
@@ -101,21 +133,24 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
 }
 
 void SurrogateFields::generate(std::uint64_t seed, std::size_t index, std::vector<double>& field) const {
-  std::mt19937_64 engine(splitmix64(splitmix64(seed) ^ splitmix64(0x5D0BA7Eull + index)));
+  Xoshiro256 engine(splitmix64(splitmix64(seed) ^ splitmix64(0x5D0BA7Eull + index)));
   const std::size_t half = px_ / 2 + 1;
-  std::vector<detail::Complex> coefficients(py_ * half);
+  // buffers kept by each thread: a surrogate allocates nothing after the first
+  thread_local std::vector<detail::Complex> coefficients;
+  thread_local std::vector<double> padded;
+  coefficients.resize(py_ * half);
+  padded.resize(px_ * py_);
   for (std::size_t k = 0; k < coefficients.size(); ++k) {
     // a complex normal (Marsaglia's polar method: no trigonometry), times the spectrum's amplitude
     double u, v, s;
     do {
-      u = 2 * uniform(engine) - 1;
-      v = 2 * uniform(engine) - 1;
+      u = engine.symmetric();
+      v = engine.symmetric();
       s = u * u + v * v;
     } while (s >= 1 || s == 0);
     const double factor = amplitude_[k] * std::sqrt(-std::log(s) / s);
     coefficients[k] = detail::Complex(factor * u, factor * v);
   }
-  std::vector<double> padded(px_ * py_);
   detail::inverse_2d(coefficients.data(), padded.data(), py_, px_);
   field.assign(nx_ * ny_, std::numeric_limits<double>::quiet_NaN());
   long double sum = 0, squares = 0;

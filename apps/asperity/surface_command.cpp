@@ -192,7 +192,7 @@ void add_surface_command(CLI::App& app) {
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
       ->type_name("DIR")->group(output);
-  command->add_flag("--json", o.json, "write the JSON (schema asperity-surface/1) instead of the summary")
+  command->add_flag("--json", o.json, "write the JSON (schema asperity-surface/2) instead of the summary")
       ->group(output);
   command->footer(
       "Output: a summary on standard output (or the JSON with --json): the map and how it was read,\n"

@@ -607,7 +607,12 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("bootstrap", &topo::ModelAssessment::bootstrap)
       .def_readonly("failed_refits", &topo::ModelAssessment::failed_refits)
       .def_readonly("rejected", &topo::ModelAssessment::rejected,
-                    "The Anderson-Darling p-value is below the significance.");
+                    "The Anderson-Darling p-value is below the significance.")
+      .def_readonly("p_at_floor", &topo::ModelAssessment::p_at_floor,
+                    "The p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value.")
+      .def_readonly("shape_identified", &topo::ModelAssessment::shape_identified,
+                    "The data pin the shape down (its interval stays inside the fit's bounds).")
+      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.");
   py::class_<topo::Verdict>(m, "Verdict", "Which model the evidence favours, and the evidence in words.")
       .def_readonly("gaussian_rejected", &topo::Verdict::gaussian_rejected)
       .def_readonly("best", &topo::Verdict::best, "Lowest AIC among the models not rejected.")
@@ -724,7 +729,24 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("radius", &topo::SamplingRow::radius)
       .def_readonly("m2", &topo::SamplingRow::m2)
       .def_readonly("m4", &topo::SamplingRow::m4)
-      .def_readonly("alpha", &topo::SamplingRow::alpha);
+      .def_readonly("alpha", &topo::SamplingRow::alpha)
+      .def_readonly("anisotropy", &topo::SamplingRow::anisotropy);
+  py::class_<topo::SurfaceVerdict>(m, "SurfaceVerdict",
+                                   "Is the surface Gaussian (its heights' and its summit heights' tests against surrogate\n"
+                                   "surfaces of its own spectrum, each at half the significance), which way its heights\n"
+                                   "lean, and the model named for the contact, in words.")
+      .def_readonly("tested", &topo::SurfaceVerdict::tested)
+      .def_readonly("gaussian_rejected", &topo::SurfaceVerdict::gaussian_rejected)
+      .def_readonly("p_heights", &topo::SurfaceVerdict::p_heights)
+      .def_readonly("p_summits", &topo::SurfaceVerdict::p_summits)
+      .def_readonly("p_heights_bound", &topo::SurfaceVerdict::p_heights_bound)
+      .def_readonly("p_summits_bound", &topo::SurfaceVerdict::p_summits_bound)
+      .def_readonly("orientation", &topo::SurfaceVerdict::orientation,
+                    "The heights' Weibull (weibull_tail or weibull_bounded), or gaussian: no orientation found.")
+      .def_readonly("named", &topo::SurfaceVerdict::named)
+      .def_readonly("model", &topo::SurfaceVerdict::model, "The model named for the contact (when named).")
+      .def_readonly("text", &topo::SurfaceVerdict::text)
+      .def("__repr__", [](const topo::SurfaceVerdict& v) { return v.text; });
   py::class_<topo::AnalysisOptions>(m, "AnalysisOptions", "What analyse_height_map and analyse_surface_file do.")
       .def(py::init([](const std::optional<topo::ReadOptions>& read, bool level,
                        const std::optional<topo::SummitOptions>& summits,
@@ -789,7 +811,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
   py::class_<topo::SurfaceAnalysis>(m, "SurfaceAnalysis",
                                     "A measured surface analysed: the map as analysed, statistics, moments, summits, the fits\n"
                                     "with their evidence, and the contact curves. to_dict() gives all of it as the JSON document\n"
-                                    "(schema asperity-surface/1) that `asperity surface --json` writes.")
+                                    "(schema asperity-surface/2) that `asperity surface --json` writes.")
       .def_readonly("map", &topo::SurfaceAnalysis::map, "The map as analysed (leveled when asked).")
       .def_readonly("leveled", &topo::SurfaceAnalysis::leveled)
       .def_readonly("plane", &topo::SurfaceAnalysis::plane, "The plane subtracted.")
@@ -804,16 +826,17 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("summit_heights", &topo::SurfaceAnalysis::summit_heights, "The fits of the summit heights.")
       .def_readonly("summits_fitted", &topo::SurfaceAnalysis::summits_fitted,
                     "The summit heights fitted (all, or a random subsample of AnalysisOptions.max_fit_sample).")
-      .def_readonly("heights", &topo::SurfaceAnalysis::heights, "The fits of the thinned heights, or None.")
-      .def_readonly("height_stride_x", &topo::SurfaceAnalysis::height_stride_x)
-      .def_readonly("height_stride_y", &topo::SurfaceAnalysis::height_stride_y)
+      .def_readonly("heights", &topo::SurfaceAnalysis::heights,
+                    "The fits of the heights (a fixed random sample of points), or None.")
+      .def_readonly("surrogates", &topo::SurfaceAnalysis::surrogates, "The ensemble's size.")
+      .def_readonly("verdict", &topo::SurfaceAnalysis::verdict)
       .def_readonly("contact", &topo::SurfaceAnalysis::contact, "The contact curves, or None (no contact modulus).")
       .def_readonly("options", &topo::SurfaceAnalysis::options)
       .def("to_dict", [](const topo::SurfaceAnalysis& a) {
         return py::module_::import("json").attr("loads")(path_text(topo::analysis_json(a)));
-      }, "The analysis as a dict: the JSON document (schema asperity-surface/1); NaN is None.")
+      }, "The analysis as a dict: the JSON document (schema asperity-surface/2); NaN is None.")
       .def("json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); },
-           "The JSON document (schema asperity-surface/1) as text.")
+           "The JSON document (schema asperity-surface/2) as text.")
       .def("summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
            "The short summary `asperity surface` prints.")
       .def("write_report", write_report, "directory"_a, report_doc);
@@ -848,7 +871,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       "pixel sizes, units); options: an AnalysisOptions, or its fields as keywords.");
   m.def(
       "analysis_json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); }, "analysis"_a,
-      "The JSON document (schema asperity-surface/1) as text.");
+      "The JSON document (schema asperity-surface/2) as text.");
   m.def(
       "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
       "analysis"_a, "The short summary `asperity surface` prints.");

@@ -433,7 +433,7 @@ def test_analyse_the_real_afm_map(tmp_path):
                                          contact=contact)
     analysis = topography.analyse_surface_file(AFM, options)
     document = analysis.to_dict()
-    assert document["schema"] == "asperity-surface/1" and json.loads(analysis.json()) == document
+    assert document["schema"] == "asperity-surface/2" and json.loads(analysis.json()) == document
     assert document["surface"]["nx"] == 256 and analysis.map.heights.shape == (256, 256) and analysis.leveled
     summits = analysis.summits
     assert document["summits"]["count"] == len(summits) == summits.heights.size > 5
@@ -444,7 +444,8 @@ def test_analyse_the_real_afm_map(tmp_path):
     assert verdict["best"] == analysis.summit_heights.verdict.best.name.replace("_", "-")
     comparison = analysis.contact
     assert comparison is not None and math.isclose(comparison.nominal_area, analysis.map.width * analysis.map.length)
-    assert [m.label for m in comparison.models] == ["gaussian-moments", "gaussian", "weibull-tail", "weibull-bounded"]
+    assert [m.label for m in comparison.models] == ["measured-summits", "measured-summits-own-radii", "gaussian-moments",
+                                                   "gaussian", "weibull-tail", "weibull-bounded"]
     gaussian = comparison.find("gaussian")
     assert gaussian.served and comparison.find("nonsense") is None
     curve = gaussian.curve
@@ -460,7 +461,7 @@ def test_analyse_the_real_afm_map(tmp_path):
     assert outcome.plots and outcome.plot_note == ""
     names = {Path(f).name for f in outcome.files}
     assert names == {"report.md", "report.json", "curves.csv", "summits.csv", "fits.svg", "contact.svg"}
-    assert json.loads((tmp_path / "report" / "report.json").read_text())["schema"] == "asperity-surface/1"
+    assert json.loads((tmp_path / "report" / "report.json").read_text())["schema"] == "asperity-surface/2"
     same = topography.write_report(analysis, str(tmp_path / "again"))
     assert len(same.files) == len(outcome.files)
 

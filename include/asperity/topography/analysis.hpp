@@ -1,12 +1,9 @@
 // The whole path from a measured height map to the evidence and the contact curves:
 // read, level (least-squares plane, stated), height statistics and spectral moments, summits
-// (and their dependence on the sampling interval), the three fits on the summit heights (and on
-// the heights, for comparison) with goodness of fit and a verdict, and the contact curves of
-// each fit (when a contact modulus is given).
-//
-// All heights of a map are strongly correlated, and the tests and intervals assume independent
-// values: the heights are thinned first, to one point per correlation length (the lags where
-// the autocorrelation falls below 0.1, along x and y), and to at most max_height_sample points.
+// (and their dependence on the sampling interval), the three height models tested on the
+// heights and on the summit heights against surrogate surfaces of the map's own spectrum
+// (surface_tests.hpp: the tests carry the surface's correlation), a verdict, and the contact
+// curves of each fit beside GW on the measured summits (when a contact modulus is given).
 #pragma once
 #include <optional>
 #include <string>
@@ -19,6 +16,7 @@
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/summits.hpp"
+#include "asperity/topography/surface_tests.hpp"
 
 namespace asperity::topography {
 
@@ -27,14 +25,15 @@ struct AnalysisOptions {
   bool level = true;                      // subtract the least-squares plane
   SummitOptions summits;
   AssessmentOptions assessment;
-  bool fit_heights = true;                // also fit the (thinned) heights
-  std::size_t max_height_sample = 4000;
+  bool fit_heights = true;                // also test the heights (a fixed random sample of points)
+  std::size_t max_height_sample = 4000;   // the heights tested
   // The summit heights fitted and tested: all of them up to this many, else a reproducible
   // random subsample of this many (seeded by the assessment's seed; stated in the report), so
   // the bootstrap's cost does not grow with the map beyond it.
   std::size_t max_fit_sample = 20000;
   std::vector<std::size_t> sampling_factors = {1, 2, 4};  // summits at k dx (sampling dependence)
   std::optional<ContactOptions> contact;  // contact curves: needs ContactOptions::contact_modulus
+  EnsembleProgress progress;              // the ensemble's progress (surrogates done of total)
 };
 
 struct SamplingRow {
@@ -42,13 +41,33 @@ struct SamplingRow {
   double dx = 0, dy = 0;
   std::size_t summits = 0;
   double density = 0, radius = 0;  // [1/m^2], [m]
-  double m2 = 0, m4 = 0, alpha = 0;
+  double m2 = 0, m4 = 0, alpha = 0, anisotropy = 1;
+};
+
+// What the evidence says, for the surface as a whole (docs/surfaces.md, section 4):
+//   Is it Gaussian? The heights' test and the summit heights' test, each at half the
+//   significance (Bonferroni: the verdict's size stays at most the significance). Either
+//   rejecting says "not Gaussian".
+//   Which Weibull? The heights give the orientation (their marginal is what a wear process
+//   bounds); the summit heights give the law GW integrates. The verdict names a model for the
+//   contact only if it is not rejected on the summit heights, its shape is identified, and it
+//   has contact curves (or, without a modulus, a shape scene tables serve).
+struct SurfaceVerdict {
+  bool tested = false;                 // an ensemble was run
+  bool gaussian_rejected = false;
+  double p_heights = 0, p_summits = 0;  // the Gaussian's Anderson-Darling p on each sample
+  bool p_heights_bound = false, p_summits_bound = false;  // p at its floor 1/(B + 1): a bound
+  HeightModel orientation = HeightModel::gaussian;  // the heights' Weibull, or gaussian: no orientation found
+  bool named = false;                  // a model for the contact is named
+  HeightModel model = HeightModel::gaussian;
+  std::string text;
 };
 
 // A map whose roughness is at the level of its height quantization q (HeightMap::
 // height_resolution, and never below 4 double spacings at the largest height read): Sq within
-// 10 times the rms of rounding to q (q / sqrt(12)), i.e. under 2.9 q, or every height equal. Its summits would be rounding noise: it gets its statistics and
-// this statement, never summits, fits or contact curves.
+// 10 times the rms of rounding to q (q / sqrt(12)), i.e. under 2.9 q, or every height equal. Its
+// summits would be rounding noise: it gets its statistics and this statement, never summits,
+// fits or contact curves.
 struct NoiseFloor {
   bool reached = false;
   double resolution = 0;   // q [m]
@@ -69,10 +88,15 @@ struct SurfaceAnalysis {
   SampleAssessment summit_heights;
   std::size_t summits_fitted = 0;  // of summits.list (AnalysisOptions::max_fit_sample)
   std::optional<SampleAssessment> heights;
-  std::size_t height_stride_x = 1, height_stride_y = 1;
+  std::size_t surrogates = 0;      // the ensemble's size
+  std::size_t padded_nx = 0, padded_ny = 0;  // its fields' grid before cutting
+  SurfaceVerdict verdict;
   std::optional<ContactComparison> contact;
   AnalysisOptions options;
 };
+
+// The verdict of an analysis (its tests, and its contact curves when there are any).
+SurfaceVerdict surface_verdict(const SurfaceAnalysis& analysis);
 
 // Throws asperity::Error (naming the map's source) for a map that is not one (HeightMap::
 // validate), heights all below 1 fm in size (a unit slip), too few summits, or bad options. A map at its

@@ -1,7 +1,11 @@
 // The fits carried through: contact curves of a measured surface, one per height model, side by
-// side (MODEL.md section 3, through asperity::ContactModel), and the ratios between their
-// predictions at the pressures of interest (the paper's point, in numbers, for this surface).
+// side (docs/model.md section 3, through asperity::ContactModel), against the GW answer summed
+// directly over the measured summits, and the ratios between their predictions at the pressures
+// of interest (the paper's point, in numbers, for this surface).
 //
+//   measured-summits  GW summed over the measured summits with GW's one radius (summit_contact.hpp):
+//                     no law fitted; what every model below is compared with
+//   measured-summits-own-radii  the same with each summit's own radius 1/kappa_m
 //   gaussian-moments  the Gaussian that a contact code makes from the spectral moments alone
 //                     (Nayak-McCool: summit density, radius and rms summit height from m0, m2,
 //                     m4; asperity::gaussian_surface_from_moments)
@@ -43,13 +47,22 @@ struct ContactOptions {
 };
 
 struct ModelContact {
-  std::string label;               // gaussian-moments, gaussian, weibull-tail, weibull-bounded
+  std::string label;               // measured-summits(-own-radii), gaussian-moments, gaussian, weibull-tail, weibull-bounded
   bool served = false;
   std::string note;                // the table that served it, or why there is no curve
   PhysicalSurface surface;
   double mean_summit_height = 0;   // [m], in the map's height frame (leveled)
   std::vector<PhysicalState> curve;         // over [pressure_min, pressure_max]
   std::vector<PhysicalState> at_pressures;  // at ContactComparison::pressures
+  // against measured-summits at each pressure: stiffness ratio, mean separation difference [m]
+  std::vector<double> stiffness_over_measured, separation_minus_measured;
+};
+
+// The measured-summit answer at a coarser sampling (every k-th point): its stiffness at each
+// pressure over the answer at the file's sampling.
+struct SamplingContact {
+  std::size_t factor = 1;
+  std::vector<double> stiffness_over_finest;
 };
 
 struct ContactComparison {
@@ -58,8 +71,24 @@ struct ContactComparison {
   double pressure_min = 0, pressure_max = 0;
   double nominal_area = 0;
   std::vector<ModelContact> models;
+  // How much the measured-summit answer varies between surfaces of the same statistics (its
+  // relative standard deviation over the surrogate ensemble, stiffness; separation in metres):
+  // the uncertainty of every ratio to it. Empty without an ensemble.
+  std::vector<double> measured_stiffness_spread, measured_separation_spread;
+  std::vector<SamplingContact> sampling;
+  // The fitted model nearest to the measured summits at the pressures of interest (largest
+  // |ln stiffness ratio| smallest), and the headline in words.
+  std::string closest;
+  std::string headline;
   const ModelContact* find(const std::string& label) const;
 };
+
+// The pressures of interest (sorted) that compare_contact will use.
+std::vector<double> contact_pressures(const ContactOptions& options);
+
+// The measured-summit comparison's uncertainty and sampling dependence, and the headline:
+// called by the analysis once the ensemble and the coarser samplings are known.
+void conclude_contact(ContactComparison& comparison);
 
 // Throws asperity::Error for a missing or bad modulus, bad pressures, curve_points outside
 // [min_curve_points, max_curve_points], or no summits.

@@ -1,4 +1,4 @@
-// The analysis written out: JSON for programs (schema "asperity-surface/1"), a short summary for
+// The analysis written out: JSON for programs (schema "asperity-surface/2"), a short summary for
 // the terminal, and a report folder (Markdown with the plots, JSON, CSV of the curves and of the
 // summits, plots as SVG drawn by the library itself: no program is run).
 #pragma once

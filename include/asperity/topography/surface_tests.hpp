@@ -12,7 +12,8 @@
 //   heights          a fixed random set of the map's valid points (AnalysisOptions::
 //                    max_height_sample), the same positions on every surrogate: the marginal;
 //   summit heights   every summit (up to max_fit_sample), found on each surrogate as on the
-//                    map: what the GW integrals integrate.
+//                    map: what the GW integrals integrate. A summit height threshold (min_drop,
+//                    in metres) is applied on the Gaussian surrogate mu + sigma g for every model.
 // For each sample and model: the fit (ML for the Gaussian, MPS for the Weibulls), its
 // Anderson-Darling A^2 and Kolmogorov-Smirnov D, and p = (1 + #{T_b >= T}) / (B + 1) with T_b
 // the statistic of the model refitted on surrogate b; for the Weibulls the shape's interval
@@ -36,7 +37,7 @@
 
 namespace asperity::topography {
 
-// Called from the thread that started the tests as surrogates complete (done of total).
+// Called as surrogates complete (done of total), under a lock, from the worker threads.
 using EnsembleProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 struct SurfaceTests {
@@ -52,6 +53,10 @@ struct SurfaceTestOptions {
   SummitOptions summits;           // how summits are found (as on the map)
   std::size_t height_sample = 4000;
   std::size_t max_summits = 20000;  // summit heights tested per surface (a random subsample beyond)
+  bool test_heights = true;         // false: the heights' fits only (the Weibull surrogates' marginals)
+  // Called on a worker thread for each surrogate with its summits (on the Gaussian surrogate,
+  // mu + sigma g): what else the ensemble should measure. Must only touch its own b's slot.
+  std::function<void(std::size_t b, const Summits& summits)> on_surrogate;
 };
 
 // `map`: as analysed (leveled); `summit_heights`: the map's summit heights as fitted. Throws

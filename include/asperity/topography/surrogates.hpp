@@ -7,8 +7,9 @@
 // The spectrum: of the map's heights transformed to normal scores (each height replaced by
 // Phi^-1 of its mid-rank, so the spectrum is that of the Gaussian field behind any monotone
 // marginal), Hann-windowed (no leakage from the map's edges, which do not match), on a grid
-// padded beyond the map by three correlation lengths (so a surrogate is not periodic across the
-// map), its periodogram smoothed over the 3 x 3 nearest wavevectors (a periodogram's ordinates
+// padded beyond the map by two correlation lengths (at most half the map; so a surrogate is not
+// periodic across the map: the autocorrelation is below 0.1 across the wrap), to sizes of factors
+// 2, 3 and 5, its periodogram smoothed over the 3 x 3 nearest wavevectors (a periodogram's ordinates
 // are exponentially distributed; smoothing keeps a surrogate from carrying that noise twice).
 // A surrogate is a Gaussian random field with that spectrum (complex normal Fourier
 // coefficients, one inverse FFT), cut to the map's grid, standardized to mean 0 and variance 1
