@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 #include "asperity/error.hpp"
@@ -122,6 +123,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   tests_options.height_sample = options.max_height_sample;
   tests_options.max_summits = options.max_fit_sample > 0 ? options.max_fit_sample : analysis.summits.list.size();
   tests_options.test_heights = options.fit_heights;
+  tests_options.leveled = options.level;
   if (options.contact && options.assessment.bootstrap > 0) {
     surrogate_stiffness.assign(static_cast<std::size_t>(options.assessment.bootstrap), {});
     surrogate_separation.assign(static_cast<std::size_t>(options.assessment.bootstrap), {});

@@ -46,6 +46,19 @@ void inverse_2d(const Complex* in, double* out, std::size_t ny, std::size_t nx) 
                  out, 1.0 / (static_cast<double>(nx) * static_cast<double>(ny)));
 }
 
+void make_hermitian_columns(Complex* coefficients, std::size_t py, std::size_t px) {
+  const std::size_t half = px / 2 + 1;
+  const std::size_t columns = px % 2 == 0 && half > 1 ? 2 : 1;  // kx = 0, and the Nyquist column
+  for (std::size_t c = 0; c < columns; ++c) {
+    const std::size_t i = c == 0 ? 0 : half - 1;
+    for (std::size_t j = 1; j < (py + 1) / 2; ++j)
+      coefficients[(py - j) * half + i] = std::conj(coefficients[j * half + i]);
+    // sqrt(2) Re z: a real normal of the complex draw's variance
+    coefficients[i] = std::sqrt(2.0) * coefficients[i].real();
+    if (py % 2 == 0) coefficients[(py / 2) * half + i] = std::sqrt(2.0) * coefficients[(py / 2) * half + i].real();
+  }
+}
+
 std::vector<double> mean_line_autocovariance(const double* field, std::size_t lines, std::size_t n,
                                              std::size_t line_stride, std::size_t point_stride, double mean,
                                              std::size_t max_lag) {

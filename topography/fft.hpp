@@ -25,6 +25,14 @@ void inverse_rows(const Complex* in, double* out, std::size_t rows, std::size_t 
 void forward_2d(const double* in, Complex* out, std::size_t ny, std::size_t nx);
 void inverse_2d(const Complex* in, double* out, std::size_t ny, std::size_t nx);
 
+// Random Fourier coefficients of a real field, drawn independently over the half plane (py x
+// (px/2 + 1)), made consistent: in the columns kx = 0 and kx = px/2 (px even) a coefficient and
+// the one at -ky are conjugates (row ky takes the conjugate of row py - ky's, each pair then
+// standing for a full complex normal of the drawn variance), and the self-conjugate points
+// (ky = 0, py/2) real with the pair's variance. Without it the inverse transform keeps only the
+// Hermitian part of those columns and halves their variance (the field's mean among them).
+void make_hermitian_columns(Complex* coefficients, std::size_t py, std::size_t px);
+
 // The mean autocovariance of the lines of a field, with missing points (NaN) left out: line r's
 // point k is field[r * line_stride + k * point_stride] (rows: line_stride n, point_stride 1;
 // columns of a row-major nx-wide field: line_stride 1, point_stride nx): C(lag) = sum of (h[k] - mean)(h[k + lag] - mean) over every line and

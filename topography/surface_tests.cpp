@@ -10,6 +10,7 @@
 
 #include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
+#include "asperity/topography/leveling.hpp"
 #include "asperity/topography/surrogates.hpp"
 
 namespace asperity::topography {
@@ -51,6 +52,34 @@ double percentile(std::vector<double> values, double q) {
   const double fraction = position - static_cast<double>(k);
   return k + 1 < values.size() ? values[k] * (1 - fraction) + values[k + 1] * fraction : values[k];
 }
+
+// F^-1(Phi(g)) tabulated on a fine grid of g and interpolated linearly (within ~1e-7 of the
+// scale; direct beyond the table): the Weibull surrogate of a whole surface.
+class MarginalTable {
+ public:
+  explicit MarginalTable(const HeightDistribution& marginal) : marginal_(marginal) {
+    values_.resize(points);
+    for (std::size_t k = 0; k < points; ++k) values_[k] = surrogate_height(marginal, lo + step * static_cast<double>(k));
+  }
+  void apply(const std::vector<double>& g, std::vector<double>& out) const {
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      const double position = (g[k] - lo) / step;
+      if (!(position >= 0 && position < static_cast<double>(points - 1))) {
+        out[k] = std::isnan(g[k]) ? g[k] : surrogate_height(marginal_, g[k]);
+        continue;
+      }
+      const std::size_t i = static_cast<std::size_t>(position);
+      const double f = position - static_cast<double>(i);
+      out[k] = values_[i] + f * (values_[i + 1] - values_[i]);
+    }
+  }
+
+ private:
+  static constexpr std::size_t points = 16385;
+  static constexpr double lo = -8, step = 16.0 / (points - 1);
+  HeightDistribution marginal_;
+  std::vector<double> values_;
+};
 
 // One model refitted on one surrogate sample.
 struct Refit {
@@ -120,12 +149,16 @@ void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const Assess
   m.scale = {percentile(scales, tail), percentile(scales, 1 - tail)};
   if (model == HeightModel::gaussian) return;
   const double lo = percentile(shapes, tail), hi = percentile(shapes, 1 - tail);
+  const double a = m.fit.distribution.shape;
   if (centred_on_estimate) {
     // the spread of the refits around their own centre, carried to the estimate (in ln shape)
-    const double median = percentile(shapes, 0.5), a = m.fit.distribution.shape;
+    const double median = percentile(shapes, 0.5);
     m.shape = {a * median / hi, a * median / lo};
   } else {
-    m.shape = {lo, hi};
+    // the basic bootstrap interval in ln shape, [a^2 / q_hi, a^2 / q_lo]: the surrogates are drawn
+    // at the estimate, so their refits' offset from it is the estimator's own (leveling moves a
+    // skewed marginal's shape), which the interval takes back
+    m.shape = {a * a / hi, a * a / lo};
   }
   const FitOptions bounds;
   const bool interval_at_bound = m.shape.lo <= bounds.shape_min * 1.01 || m.shape.hi >= bounds.shape_max / 1.01;
@@ -255,10 +288,13 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
   }
 
   if (a.bootstrap > 0) {
-    const SurrogateFields fields(map, lengths);
+    const SurrogateFields fields(map, lengths, options.leveled);
     tests.padded_nx = fields.padded_nx();
     tests.padded_ny = fields.padded_ny();
     const std::size_t B = static_cast<std::size_t>(a.bootstrap);
+    // each Weibull marginal as a table in g: a surface's worth of transforms at a few ns each
+    std::vector<MarginalTable> tables;
+    for (int m = 0; m < 3; ++m) tables.emplace_back(H.models[static_cast<std::size_t>(m)].fit.distribution);
     // refits[b][sample * 3 + model]
     std::vector<std::array<Refit, 6>> refits(B);
     std::mutex progress_mutex;
@@ -272,23 +308,38 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
       surface.dx = map.dx;
       surface.dy = map.dy;
       surface.source = "surrogate";
-      // the Gaussian's scale, so that a height threshold (min_drop, in metres) means the same
+      // the Gaussian surface (its scale, so that a height threshold in metres means the same),
+      // leveled as the map was: its summits are every model's (a monotone map keeps them; the
+      // leveling of the others moves them by far less than a point)
       const HeightDistribution& gaussian_marginal = H.models[0].fit.distribution;
       surface.heights.resize(g.size());
       for (std::size_t k = 0; k < g.size(); ++k) surface.heights[k] = surrogate_height(gaussian_marginal, g[k]);
+      if (options.leveled) subtract_plane(surface, fit_plane(surface));
       const Summits found = find_summits(surface, options.summits);
       if (options.on_surrogate) options.on_surrogate(b, found);
-      std::vector<double> g_summits;
+      std::vector<std::size_t> summit_points;
       for (std::size_t k : choose(found.list.size(), options.max_summits, splitmix64(a.seed ^ (0x5u + b * 7919u))))
-        g_summits.push_back(g[found.list[k].j * map.nx + found.list[k].i]);
-      std::vector<double> g_heights;
-      for (std::size_t k : tests.height_positions) g_heights.push_back(g[k]);
+        summit_points.push_back(found.list[k].j * map.nx + found.list[k].i);
+      std::vector<double> x_heights(tests.height_positions.size()), x_summits(summit_points.size());
       for (int m = 0; m < 3; ++m) {
         const HeightModel model = all_height_models[m];
         const HeightDistribution& marginal = H.models[static_cast<std::size_t>(m)].fit.distribution;
-        std::vector<double> x_heights(g_heights.size()), x_summits(g_summits.size());
-        for (std::size_t k = 0; k < g_heights.size(); ++k) x_heights[k] = surrogate_height(marginal, g_heights[k]);
-        for (std::size_t k = 0; k < g_summits.size(); ++k) x_summits[k] = surrogate_height(marginal, g_summits[k]);
+        // the model's surface, leveled as the map was (leveling a skewed surface changes its
+        // marginal: left out, the heights' shape intervals missed the truth in half the maps)
+        const HeightMap* levelled = &surface;
+        HeightMap transformed;
+        if (model != HeightModel::gaussian) {
+          transformed.nx = map.nx;
+          transformed.ny = map.ny;
+          transformed.dx = map.dx;
+          transformed.dy = map.dy;
+          transformed.heights.resize(g.size());
+          tables[static_cast<std::size_t>(m)].apply(g, transformed.heights);
+          if (options.leveled) subtract_plane(transformed, fit_plane(transformed));
+          levelled = &transformed;
+        }
+        for (std::size_t k = 0; k < x_heights.size(); ++k) x_heights[k] = levelled->heights[tests.height_positions[k]];
+        for (std::size_t k = 0; k < x_summits.size(); ++k) x_summits[k] = levelled->heights[summit_points[k]];
         std::sort(x_heights.begin(), x_heights.end());
         std::sort(x_summits.begin(), x_summits.end());
         if (options.test_heights) refits[b][static_cast<std::size_t>(m)] = refit(model, x_heights, marginal, a.fit);

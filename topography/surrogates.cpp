@@ -46,19 +46,12 @@ class Xoshiro256 {
   std::uint64_t state_[4];
 };
 
-// Hann window of n points, sampled at the centres
-std::vector<double> hann(std::size_t n) {
-  std::vector<double> w(n);
-  for (std::size_t k = 0; k < n; ++k) w[k] = 0.5 * (1 - std::cos(2 * pi * (static_cast<double>(k) + 0.5) / static_cast<double>(n)));
-  return w;
-}
-
 }  // namespace
 
 double normal_quantile(double p) { return -std::sqrt(2.0) * boost::math::erfc_inv(2 * p); }
 double normal_cdf(double z) { return 0.5 * boost::math::erfc(-z / std::sqrt(2.0)); }
 
-SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths)
+SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths, bool leveled)
     : nx_(map.nx), ny_(map.ny) {
   if (nx_ < 3 || ny_ < 3 || map.heights.size() != nx_ * ny_)
     throw Error(map.source + ": surrogates need a map of at least 3 x 3 points");
@@ -84,9 +77,15 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
     }
     first = last + 1;
   }
-  // the padded grid: two correlation lengths beyond the map (the autocorrelation is below 0.1
-  // across the wrap), at most half the map, rounded up to a size of factors 2, 3 and 5 (the
-  // FFT's fastest)
+  // The spectrum by Blackman and Tukey: the scores' autocovariance at every lag (x, y) by FFT,
+  // each lag divided by the pairs of valid points it has (unbiased: the periodogram's own
+  // division by N tapers the long lags, and took 2-4x from the spread of a surrogate's mean),
+  // times a lag window (Parzen's, radial, zero beyond the largest lag), laid on the
+  // surrogates' periodic grid and transformed: a spectrum whose surrogates have that
+  // autocovariance at every lag up to the largest. The largest lag is three correlation lengths
+  // (the autocorrelation is then ~0.001 for an exponential one), at most half the map; the
+  // grid is the map plus that lag (so the periodic wrap adds no correlation inside the map),
+  // rounded up to sizes of factors 2, 3 and 5 (the FFT's fastest).
   const auto smooth = [](std::size_t n) {
     for (;; ++n) {
       std::size_t m = n;
@@ -95,41 +94,155 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
       if (m == 1) return n;
     }
   };
-  const auto pad = [&](std::size_t size, std::size_t length) {
-    return smooth(size + std::min(std::max<std::size_t>(size / 2, 4), std::max<std::size_t>(8, 2 * length)));
+  const std::size_t lag_x = std::max<std::size_t>(2, std::min(nx_ / 2, 6 * std::max<std::size_t>(1, lengths.x)));
+  const std::size_t lag_y = std::max<std::size_t>(2, std::min(ny_ / 2, 6 * std::max<std::size_t>(1, lengths.y)));
+  px_ = smooth(nx_ + lag_x);
+  py_ = smooth(ny_ + lag_y);
+  // Autocorrelations on a grid twice the map (no lag wraps onto another), by FFT: of a field
+  // f(x) defined on the valid points, sum_x f(x) f(x + r) at every lag r.
+  const std::size_t ax = smooth(2 * nx_), ay = smooth(2 * ny_), a_half = ax / 2 + 1;
+  std::vector<detail::Complex> spectrum(ay * a_half);
+  const auto autocorrelation = [&](const auto& value_at) {
+    std::vector<double> field(ax * ay, 0.0);
+    for (std::size_t j = 0; j < ny_; ++j)
+      for (std::size_t i = 0; i < nx_; ++i)
+        if (valid_[j * nx_ + i]) field[j * ax + i] = value_at(i, j);
+    detail::forward_2d(field.data(), spectrum.data(), ay, ax);
+    for (detail::Complex& c : spectrum) c = std::norm(c);
+    detail::inverse_2d(spectrum.data(), field.data(), ay, ax);
+    return field;
   };
-  px_ = pad(nx_, lengths.x);
-  py_ = pad(ny_, lengths.y);
-  // the Hann-windowed scores, zero-padded, and their periodogram
-  const std::vector<double> wx = hann(nx_), wy = hann(ny_);
-  std::vector<double> padded(px_ * py_, 0.0);
+  const auto at = [&](const std::vector<double>& field, long rx, long ry) {
+    const std::size_t sx = static_cast<std::size_t>((rx + static_cast<long>(ax)) % static_cast<long>(ax));
+    const std::size_t sy = static_cast<std::size_t>((ry + static_cast<long>(ay)) % static_cast<long>(ay));
+    return field[sy * ax + sx];
+  };
+  const auto within = [&](long rx, long ry) {
+    return std::hypot(static_cast<double>(rx) / static_cast<double>(lag_x),
+                      static_cast<double>(ry) / static_cast<double>(lag_y)) < 1;
+  };
+  // The scores lack what the analysis took out of the map: their mean (0 by construction: ranks)
+  // and, when the map was leveled, its plane. So every lag's autocovariance is low: with the
+  // removed parts as coefficients of variances V_k on the functions phi_0 = 1, phi_1 = x - <x>,
+  // phi_2 = y - <y>,
+  //   E c(r) ~ C(r) - sum_k V_k mu_k(r),  mu_k(r) = the mean of phi_k(x) phi_k(x + r) over r's pairs,
+  // and the scores are exactly orthogonal to each phi_b: sum over all pairs of
+  // phi_b(x) phi_b(y) s(x) s(y) = 0. Taking C(r) = 0 beyond the largest lag makes these the
+  // linear equations sum_k A_bk V_k = B_b, with B_b the sum over the pairs within the largest lag
+  // of phi_b(x) phi_b(y) s(x) s(y) and A_bk the sum over the pairs beyond it of
+  // (phi_b phi_k)(x) (phi_b phi_k)(y): the long lags' negative bias turned back into the
+  // variance a surrogate must carry (without it a surrogate's mean over the map spread 2-4x too
+  // little, and a leveled map's Weibull shape intervals missed the truth in a quarter of maps).
+  double mean_i = 0, mean_j = 0;
   for (std::size_t j = 0; j < ny_; ++j)
     for (std::size_t i = 0; i < nx_; ++i)
-      if (valid_[j * nx_ + i]) padded[j * px_ + i] = wx[i] * wy[j] * scores_[j * nx_ + i];
+      if (valid_[j * nx_ + i]) {
+        mean_i += static_cast<double>(i);
+        mean_j += static_cast<double>(j);
+      }
+  mean_i /= count;
+  mean_j /= count;
+  const int basis = leveled ? 3 : 1;
+  const auto phi = [&](int k, std::size_t i, std::size_t j) {
+    return k == 0 ? 1.0 : k == 1 ? static_cast<double>(i) - mean_i : static_cast<double>(j) - mean_j;
+  };
+  const std::vector<double> values = autocorrelation([&](std::size_t i, std::size_t j) { return scores_[j * nx_ + i]; });
+  const std::vector<double> mask = autocorrelation([](std::size_t, std::size_t) { return 1.0; });
+  std::vector<std::vector<double>> mu(static_cast<std::size_t>(basis));  // autocorrelations of phi_k
+  double lost[3] = {0, 0, 0};
+  {
+    double A[3][3] = {}, B[3] = {};
+    for (int b = 0; b < basis; ++b) {
+      const std::vector<double> weighted =
+          b == 0 ? values : autocorrelation([&](std::size_t i, std::size_t j) { return phi(b, i, j) * scores_[j * nx_ + i]; });
+      mu[static_cast<std::size_t>(b)] = b == 0 ? mask : autocorrelation([&](std::size_t i, std::size_t j) { return phi(b, i, j); });
+      for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
+        for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx)
+          if (within(rx, ry)) B[b] += at(weighted, rx, ry);
+      for (int k = 0; k < basis; ++k) {
+        // beyond = all pairs - the pairs within; all pairs: (sum_x phi_b phi_k)^2
+        double total = 0;
+        for (std::size_t j = 0; j < ny_; ++j)
+          for (std::size_t i = 0; i < nx_; ++i)
+            if (valid_[j * nx_ + i]) total += phi(b, i, j) * phi(k, i, j);
+        const std::vector<double> product =
+            (b == 0 && k == 0) ? mask : autocorrelation([&](std::size_t i, std::size_t j) { return phi(b, i, j) * phi(k, i, j); });
+        double inside = 0;
+        for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
+          for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx)
+            if (within(rx, ry)) inside += at(product, rx, ry);
+        A[b][k] = total * total - inside;
+      }
+    }
+    // Gaussian elimination with partial pivoting (at most 3 x 3); a singular system (a map with
+    // no pair beyond the largest lag) leaves nothing added
+    int order[3] = {0, 1, 2};
+    bool solved = true;
+    for (int c = 0; c < basis && solved; ++c) {
+      int pivot = c;
+      for (int r = c + 1; r < basis; ++r)
+        if (std::fabs(A[r][c]) > std::fabs(A[pivot][c])) pivot = r;
+      if (!(std::fabs(A[pivot][c]) > 0)) solved = false;
+      if (!solved) break;
+      std::swap(A[c], A[pivot]);
+      std::swap(B[c], B[pivot]);
+      std::swap(order[c], order[pivot]);
+      for (int r = c + 1; r < basis; ++r) {
+        const double f = A[r][c] / A[c][c];
+        for (int k = c; k < basis; ++k) A[r][k] -= f * A[c][k];
+        B[r] -= f * B[c];
+      }
+    }
+    if (solved)
+      for (int c = basis - 1; c >= 0; --c) {
+        double v = B[c];
+        for (int k = c + 1; k < basis; ++k) v -= A[c][k] * lost[k];
+        lost[c] = v / A[c][c];
+      }
+    for (double& v : lost) v = std::isfinite(v) ? std::max(0.0, v) : 0.0;
+  }
+  // the windowed autocovariance on the surrogates' grid
   const std::size_t half = px_ / 2 + 1;
-  std::vector<detail::Complex> spectrum(py_ * half);
-  detail::forward_2d(padded.data(), spectrum.data(), py_, px_);
-  std::vector<double> power(py_ * half);
-  for (std::size_t k = 0; k < power.size(); ++k) power[k] = std::norm(spectrum[k]);
-  // smoothed over the 3 x 3 nearest wavevectors: ky wraps around; kx = -1 is the mirror of kx = 1
+  std::vector<double> covariance(px_ * py_, 0.0);
+  for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
+    for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx) {
+      const double u = std::hypot(static_cast<double>(rx) / static_cast<double>(lag_x),
+                                  static_cast<double>(ry) / static_cast<double>(lag_y));
+      if (u >= 1) continue;
+      // a flat-topped window (Tukey's: 1 to half the largest lag, a cosine to 0 beyond), so that
+      // the correlation a surrogate carries is the map's at every lag that matters
+      const double window = u <= 0.5 ? 1 : 0.5 * (1 + std::cos(3.14159265358979323846 * (2 * u - 1)));
+      const std::size_t sx = static_cast<std::size_t>((rx + static_cast<long>(ax)) % static_cast<long>(ax));
+      const std::size_t sy = static_cast<std::size_t>((ry + static_cast<long>(ay)) % static_cast<long>(ay));
+      const double pairs = std::round(mask[sy * ax + sx]);
+      if (pairs < 1) continue;
+      const std::size_t tx = static_cast<std::size_t>((rx + static_cast<long>(px_)) % static_cast<long>(px_));
+      const std::size_t ty = static_cast<std::size_t>((ry + static_cast<long>(py_)) % static_cast<long>(py_));
+      double restored = values[sy * ax + sx] / pairs;
+      for (int k = 0; k < basis; ++k) restored += lost[k] * mu[static_cast<std::size_t>(k)][sy * ax + sx] / pairs;
+      covariance[ty * px_ + tx] = window * restored;
+    }
+  std::vector<detail::Complex> transformed(py_ * half);
+  detail::forward_2d(covariance.data(), transformed.data(), py_, px_);
+  // the spectrum is real (the autocovariance is even); a negative value is estimation noise
   amplitude_.assign(py_ * half, 0.0);
+  for (std::size_t k = 0; k < amplitude_.size(); ++k) amplitude_[k] = std::sqrt(std::max(0.0, transformed[k].real()));
+  // The scale that gives the field unit variance in expectation over the padded grid (the map's
+  // normal scores have unit variance). Not each surrogate's own: a realization's mean and variance
+  // over the map fluctuate as the measured map's do, and a Weibull marginal turns that
+  // fluctuation into one of the shape (standardizing each surrogate made its intervals too narrow).
+  // A coefficient is a complex normal of variance amplitude^2; it and its conjugate make the
+  // field's sum, but in the columns kx = 0 and Nyquist (self-conjugate after the transform along
+  // y), where only the real part counts.
+  double total = 0;
   for (std::size_t j = 0; j < py_; ++j)
     for (std::size_t i = 0; i < half; ++i) {
-      double sum = 0;
-      for (int dj = -1; dj <= 1; ++dj)
-        for (int di = -1; di <= 1; ++di) {
-          long ii = static_cast<long>(i) + di;
-          std::size_t jj = (j + py_ + static_cast<std::size_t>(dj + 1) - 1) % py_;
-          if (ii < 0) {  // the conjugate of (1, -ky)
-            ii = 1;
-            jj = (py_ - jj) % py_;
-          }
-          if (ii >= static_cast<long>(half)) ii = static_cast<long>(half) - 1;
-          sum += power[jj * half + static_cast<std::size_t>(ii)];
-        }
-      amplitude_[j * half + i] = std::sqrt(sum / 9);
+      const bool self_conjugate = i == 0 || (px_ % 2 == 0 && i == half - 1);
+      total += (self_conjugate ? 1.0 : 2.0) * amplitude_[j * half + i] * amplitude_[j * half + i];
     }
-  amplitude_[0] = 0;  // the mean is set by standardizing
+  const double points = static_cast<double>(px_) * static_cast<double>(py_);
+  const double scale = total > 0 ? points / std::sqrt(total) : 0;
+  for (double& a : amplitude_) a *= scale;
 }
 
 void SurrogateFields::generate(std::uint64_t seed, std::size_t index, std::vector<double>& field) const {
@@ -151,24 +264,12 @@ void SurrogateFields::generate(std::uint64_t seed, std::size_t index, std::vecto
     const double factor = amplitude_[k] * std::sqrt(-std::log(s) / s);
     coefficients[k] = detail::Complex(factor * u, factor * v);
   }
+  detail::make_hermitian_columns(coefficients.data(), py_, px_);
   detail::inverse_2d(coefficients.data(), padded.data(), py_, px_);
   field.assign(nx_ * ny_, std::numeric_limits<double>::quiet_NaN());
-  long double sum = 0, squares = 0;
-  std::size_t count = 0;
   for (std::size_t j = 0; j < ny_; ++j)
     for (std::size_t i = 0; i < nx_; ++i)
-      if (valid_[j * nx_ + i]) {
-        const double v = padded[j * px_ + i];
-        sum += v;
-        squares += static_cast<long double>(v) * v;
-        ++count;
-      }
-  const double mean = static_cast<double>(sum / count);
-  const double sd = std::sqrt(std::max(0.0L, squares / count - static_cast<long double>(mean) * mean));
-  const double scale = sd > 0 ? 1 / sd : 0;
-  for (std::size_t j = 0; j < ny_; ++j)
-    for (std::size_t i = 0; i < nx_; ++i)
-      if (valid_[j * nx_ + i]) field[j * nx_ + i] = (padded[j * px_ + i] - mean) * scale;
+      if (valid_[j * nx_ + i]) field[j * nx_ + i] = padded[j * px_ + i];
 }
 
 }  // namespace asperity::topography

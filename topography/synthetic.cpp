@@ -5,6 +5,7 @@
 #include <random>
 
 #include "asperity/error.hpp"
+#include "fft.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -154,6 +155,52 @@ void to_weibull_marginal(HeightMap& map, double shape, bool bounded) {
   }
   map.notes.push_back(std::string("heights mapped to a unit Weibull marginal, shape ") + std::to_string(shape) +
                       (bounded ? ", mirrored (bounded above)" : ", tail up"));
+}
+
+HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, double dy, CorrelationFunction function,
+                                double correlation_length, std::uint64_t seed) {
+  check_intervals(dx, dy);
+  if (nx < 3 || ny < 3 || nx > max_field_points / ny)
+    throw Error("spectral_random_field: needs 3 x 3 points and at most " + std::to_string(max_field_points));
+  if (!(correlation_length > 0 && correlation_length <= max_field_correlation))
+    throw Error("spectral_random_field: the correlation length must lie in (0, 65536] points");
+  const std::size_t px = 2 * nx, py = 2 * ny, half = px / 2 + 1;
+  std::vector<detail::Complex> coefficients(py * half);
+  std::mt19937_64 engine(seed);
+  const double pi = 3.14159265358979323846, xi = correlation_length;
+  double total = 0;  // the spectrum's sum over the full plane: the field's variance before scaling
+  for (std::size_t j = 0; j < py; ++j)
+    for (std::size_t i = 0; i < half; ++i) {
+      const double qx = 2 * pi * static_cast<double>(i) / static_cast<double>(px);
+      const double qy = 2 * pi * static_cast<double>(j <= py / 2 ? j : py - j) / static_cast<double>(py) *
+                        (j <= py / 2 ? 1.0 : -1.0);
+      const double q2 = qx * qx + qy * qy;
+      const double power = (i == 0 && j == 0) ? 0
+                           : function == CorrelationFunction::gaussian ? std::exp(-q2 * xi * xi / 4)
+                                                                       : std::pow(1 + q2 * xi * xi, -1.5);
+      // each half-plane coefficient stands for itself and its conjugate (but for the self-conjugate columns)
+      const bool self_conjugate = i == 0 || (px % 2 == 0 && i == px / 2);
+      total += self_conjugate ? power : 2 * power;
+      const double a = normal(engine), b = normal(engine);
+      coefficients[j * half + i] = std::sqrt(power / 2) * detail::Complex(a, b);
+    }
+  detail::make_hermitian_columns(coefficients.data(), py, px);
+  std::vector<double> padded(px * py);
+  detail::inverse_2d(coefficients.data(), padded.data(), py, px);
+  // inverse_2d divides by px py: the field's variance is total / (px py)^2 in expectation
+  const double scale = static_cast<double>(px) * static_cast<double>(py) / std::sqrt(total);
+  HeightMap map;
+  map.nx = nx;
+  map.ny = ny;
+  map.dx = dx;
+  map.dy = dy;
+  map.format = "synthetic";
+  map.source = std::string("synthetic ") + (function == CorrelationFunction::gaussian ? "Gaussian" : "exponential") +
+               "-correlated field";
+  map.heights.resize(nx * ny);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) map.heights[j * nx + i] = scale * padded[j * px + i];
+  return map;
 }
 
 }  // namespace asperity::topography

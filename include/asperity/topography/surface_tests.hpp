@@ -17,10 +17,12 @@
 // For each sample and model: the fit (ML for the Gaussian, MPS for the Weibulls), its
 // Anderson-Darling A^2 and Kolmogorov-Smirnov D, and p = (1 + #{T_b >= T}) / (B + 1) with T_b
 // the statistic of the model refitted on surrogate b; for the Weibulls the shape's interval
-// from the refitted shapes (a percentile interval for the heights, whose surrogates are drawn at
-// the fitted shape; for the summit heights centred on the estimate: a_hat * m / q_hi ...
-// a_hat * m / q_lo with m the refits' median, since the surrogates' summit shape is that of
-// the fitted marginal, not the summits' estimate). A shape whose interval reaches the fit's
+// from the refitted shapes: for the heights the basic bootstrap interval in ln a,
+// a_hat^2 / q_hi ... a_hat^2 / q_lo (the surrogates are drawn at the fitted shape, so the
+// refits' offset from it is the estimator's own bias, leveling's included, which the interval
+// takes back); for the summit heights centred on the estimate, a_hat m / q_hi ... a_hat m / q_lo
+// with m the refits' median (the surrogates' summit shape is that of the fitted marginal, not the
+// summits' estimate). A shape whose interval reaches the fit's
 // bounds, or with more than a tenth of its refits at a bound, is not identified.
 //
 // Cost: per surrogate one FFT of the padded map, the summits, and four warm-started refits:
@@ -54,6 +56,7 @@ struct SurfaceTestOptions {
   std::size_t height_sample = 4000;
   std::size_t max_summits = 20000;  // summit heights tested per surface (a random subsample beyond)
   bool test_heights = true;         // false: the heights' fits only (the Weibull surrogates' marginals)
+  bool leveled = true;              // the map was leveled: so is every surrogate surface
   // Called on a worker thread for each surrogate with its summits (on the Gaussian surrogate,
   // mu + sigma g): what else the ensemble should measure. Must only touch its own b's slot.
   std::function<void(std::size_t b, const Summits& summits)> on_surrogate;

@@ -12,8 +12,10 @@
 // 2, 3 and 5, its periodogram smoothed over the 3 x 3 nearest wavevectors (a periodogram's ordinates
 // are exponentially distributed; smoothing keeps a surrogate from carrying that noise twice).
 // A surrogate is a Gaussian random field with that spectrum (complex normal Fourier
-// coefficients, one inverse FFT), cut to the map's grid, standardized to mean 0 and variance 1
-// over the map's valid points, and missing where the map is.
+// coefficients, one inverse FFT), of unit variance in expectation, cut to the map's grid, and
+// missing where the map is. Its mean and variance over the map fluctuate from surrogate to
+// surrogate as the measured map's would (a Weibull marginal turns those fluctuations into ones
+// of the shape, so they must not be standardized away).
 //
 // Under a hypothesis the surrogate becomes a surface through a monotone map of its normal scores
 // (a Gaussian: mu + sigma g; a Weibull: F^-1(Phi(g))): the amplitude-adjusted surrogates of
@@ -35,12 +37,14 @@ namespace asperity::topography {
 
 class SurrogateFields {
  public:
-  // `map`: the heights as analysed (leveled), NaN missing; `lengths`: its correlation lengths
-  // (the padding). Throws asperity::Error for a map with fewer than 3 x 3 points.
-  SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths);
+  // `map`: the heights as analysed, NaN missing; `lengths`: its correlation lengths (the largest
+  // lag and the padding); `leveled`: the map's least-squares plane was subtracted (the variance
+  // that took is restored, as the mean's always is). Throws asperity::Error for a map with fewer
+  // than 3 x 3 points.
+  SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths, bool leveled = true);
 
-  // Surrogate `index` of the ensemble `seed`: normal scores on the map's grid (x fastest),
-  // standardized over the valid points, NaN where the map is missing. `field` is resized.
+  // Surrogate `index` of the ensemble `seed`: normal scores on the map's grid (x fastest), unit
+  // variance in expectation, NaN where the map is missing. `field` is resized.
   void generate(std::uint64_t seed, std::size_t index, std::vector<double>& field) const;
 
   // The map's own normal scores (the transform the spectrum was taken of), NaN where missing.

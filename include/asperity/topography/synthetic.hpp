@@ -45,4 +45,15 @@ SpectralMoments expected_spectral_moments(double dx, double dy, const std::vecto
 // Requires unit-variance Gaussian heights (a field of total variance 1).
 void to_weibull_marginal(HeightMap& map, double shape, bool bounded);
 
+// An isotropic Gaussian random field of unit variance with a named correlation function, made
+// by FFT (its power spectrum's square root times complex normals) on a periodic grid twice the
+// map's size in each direction, cut to the map (so it is not periodic):
+//   gaussian     C(r) = exp(-r^2 / xi^2),  S(q) ~ exp(-q^2 xi^2 / 4): narrow band, Nayak alpha small
+//   exponential  C(r) = exp(-r / xi),      S(q) ~ (1 + q^2 xi^2)^(-3/2): broad band, alpha grows
+//                                          as xi / dx does (the alpha ~ 30 at xi = 20 dx)
+// xi in points. The variance is 1 in expectation (each height is exactly N(0, 1)).
+enum class CorrelationFunction { gaussian, exponential };
+HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, double dy, CorrelationFunction function,
+                                double correlation_length, std::uint64_t seed);
+
 }  // namespace asperity::topography
