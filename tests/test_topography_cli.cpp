@@ -43,7 +43,7 @@ CommandRun run(const std::vector<std::string>& arguments) {
 }  // namespace
 
 TEST(TopographyCli, SummaryOfTheRealX3P) {
-  const CommandRun r = run({surfaces + "/digitalsurf-650x650.x3p", "--bootstrap", "20", "--no-height-fit",
+  const CommandRun r = run({surfaces + "/digitalsurf-650x650.x3p", "--ensemble", "40", "--no-height-fit",
                             "--modulus", "1e11", "--pressure", "1e6"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("650 x 650 points"), std::string::npos) << r.out;
@@ -54,7 +54,7 @@ TEST(TopographyCli, SummaryOfTheRealX3P) {
 TEST(TopographyCli, JsonAndReport) {
   const std::string dir = work + "/report";
   std::filesystem::remove_all(dir);
-  const CommandRun r = run({surfaces + "/afm-zsensor-10um.txt", "--bootstrap", "20", "--json", "--report", dir,
+  const CommandRun r = run({surfaces + "/afm-zsensor-10um.txt", "--ensemble", "40", "--json", "--report", dir,
                             "--modulus=2e9", "--load", "1e-5", "--summit-window", "2"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("{", 0), 0u);
@@ -88,13 +88,14 @@ TEST(TopographyCli, NoiseFloorAndTooSmallBootstrap) {
   const std::string plane = work + "/plane.txt";
   std::filesystem::create_directories(work);
   write_text(plane, matrix);
-  const CommandRun r = run({plane, "--bootstrap", "20", "--modulus", "1e11"});
+  const CommandRun r = run({plane, "--ensemble", "40", "--modulus", "1e11"});
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.out.find("noise floor"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("at the level of the heights' quantization"), std::string::npos) << r.err;
   const CommandRun small = run({surfaces + "/afm-zsensor-10um.txt", "--bootstrap", "10"});
   EXPECT_EQ(small.status, 2);
-  EXPECT_NE(small.err.find("a bootstrap of 10 samples can never give p below 0.05"), std::string::npos) << small.err;
+  EXPECT_NE(small.err.find("an ensemble of 10 surrogate surfaces can never give p below 0.025"), std::string::npos)
+      << small.err;
 }
 
 // Bytes of a bad file never reach the terminal as an escape sequence.

@@ -38,7 +38,7 @@ t::SurfaceAnalysis small_analysis(std::uint64_t seed) {
   t::HeightMap map = t::gaussian_random_field(96, 96, 1e-7, 1e-7, {{1.5, 4e-16}}, seed);
   map.source = "synthetic-" + std::to_string(seed);
   t::AnalysisOptions options;
-  options.assessment.bootstrap = 20;
+  options.assessment.bootstrap = 40;
   options.assessment.threads = 2;
   options.fit_heights = false;
   t::ContactOptions contact;

@@ -155,8 +155,9 @@ TEST(TopographySurface, PlantedSummits) {
   EXPECT_THROW(t::find_summits(map, t::SummitOptions{0, 0}), asperity::Error);
 }
 
-// Summit heights with a known Weibull law, on both sides: the whole analysis recovers the
-// shape within its stated interval.
+// Summit heights with a known Weibull law, on both sides: the whole analysis names the model and
+// recovers the shape; planted caps make the summit heights independent, where the i.i.d.
+// bootstrap (assess_sample) is valid and its interval holds the shape.
 TEST(TopographySurface, PlantedWeibullSummitsRecovered) {
   for (bool bounded : {false, true})
     for (double shape : {0.8, 2.0}) {
@@ -175,9 +176,13 @@ TEST(TopographySurface, PlantedWeibullSummitsRecovered) {
       const t::SurfaceAnalysis analysis = t::analyse_height_map(map, options);
       const t::ModelAssessment& m = analysis.summit_heights.model(truth.model);
       EXPECT_EQ(analysis.summits.list.size(), 24u * 24u);
-      EXPECT_LE(m.shape.lo, shape) << (bounded ? "bounded" : "tail") << " a = " << shape << " fit " << m.fit.distribution.shape;
-      EXPECT_GE(m.shape.hi, shape) << (bounded ? "bounded" : "tail") << " a = " << shape << " fit " << m.fit.distribution.shape;
+      EXPECT_NEAR(m.fit.distribution.shape / shape, 1, 0.25) << (bounded ? "bounded" : "tail") << " a = " << shape;
       EXPECT_EQ(analysis.summit_heights.verdict.best, truth.model) << analysis.summit_heights.verdict.text;
+      t::AssessmentOptions independent;
+      independent.bootstrap = 99;
+      const t::ModelAssessment& iid = t::assess_sample("summit heights", heights, independent).model(truth.model);
+      EXPECT_LE(iid.shape.lo, shape) << (bounded ? "bounded" : "tail") << " a = " << shape << " fit " << iid.fit.distribution.shape;
+      EXPECT_GE(iid.shape.hi, shape) << (bounded ? "bounded" : "tail") << " a = " << shape << " fit " << iid.fit.distribution.shape;
     }
 }
 
@@ -203,6 +208,16 @@ TEST(TopographySurface, WeibullMarginalFieldRecovered) {
     // the true model beats the Gaussian by AIC (whether a 5% test rejects it is, by design, chance
     // in 1 of 20 samples, and the thinned heights keep a weak correlation: see docs/surfaces.md)
     EXPECT_LT(m.aic, heights.model(t::HeightModel::gaussian).aic - 50) << heights.verdict.text;
+    // the whole analysis, its tests carrying the field's correlation: the heights' interval holds
+    // the shape, the orientation is the true one, and the surface is not Gaussian
+    t::AnalysisOptions analysis_options;
+    analysis_options.sampling_factors = {1};
+    const t::SurfaceAnalysis analysis = t::analyse_height_map(field, analysis_options);
+    const t::ModelAssessment& marginal = analysis.heights->model(model);
+    EXPECT_LE(marginal.shape.lo, 1.5) << marginal.fit.distribution.shape;
+    EXPECT_GE(marginal.shape.hi, 1.5) << marginal.fit.distribution.shape;
+    EXPECT_EQ(analysis.verdict.orientation, model) << analysis.verdict.text;
+    EXPECT_TRUE(analysis.verdict.gaussian_rejected) << analysis.verdict.text;
   }
 }
 
@@ -215,7 +230,7 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
   };
   for (const Case& c : {Case{"digitalsurf-650x650.x3p", 2482}, Case{"afm-zsensor-10um.txt", 1670}}) {
     t::AnalysisOptions options;
-    options.assessment.bootstrap = 20;
+    options.assessment.bootstrap = 40;
     options.sampling_factors = {1, 2};
     t::ContactOptions contact;
     contact.contact_modulus = 1e11;
@@ -259,7 +274,7 @@ TEST(TopographySurface, ReportFolder) {
   const t::HeightMap map = planted_caps(10, 8, 1e-7, 1e-5, h);
   t::AnalysisOptions options;
   options.level = false;
-  options.assessment.bootstrap = 20;
+  options.assessment.bootstrap = 40;
   t::ContactOptions contact;
   contact.contact_modulus = 1e11;
   contact.curve_points = 5;
@@ -333,6 +348,12 @@ TEST(TopographyHostile, BootstrapTooSmallToRejectIsRefused) {
   t::AssessmentOptions options;
   options.bootstrap = 19;
   EXPECT_THROW(t::assess_sample("exponential", values, options), asperity::Error);
+  // the surface verdict tests each of its two samples at half the significance: 40 at least
+  t::AnalysisOptions analysis;
+  analysis.assessment.bootstrap = 39;
+  EXPECT_THROW(t::analyse_height_map(t::spectral_random_field(64, 64, 1e-7, 1e-7, t::CorrelationFunction::exponential,
+                                                             2, 1), analysis),
+               asperity::Error);
   EXPECT_EQ(t::minimum_bootstrap(0.05), 20);
   EXPECT_EQ(t::minimum_bootstrap(0.01), 100);
   options.bootstrap = 20;

@@ -117,6 +117,15 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   }
   std::vector<std::vector<double>> surrogate_stiffness, surrogate_separation;
 
+  // the surface verdict tests each sample at half the significance: B must reach that
+  const int ensemble = options.assessment.bootstrap;
+  if (ensemble > 0 && ensemble < minimum_bootstrap(options.assessment.significance / 2))
+    throw Error("an ensemble of " + std::to_string(ensemble) + " surrogate surfaces can never give p below " +
+                short_number(options.assessment.significance / 2) +
+                " (the verdict tests the heights and the summit heights, each at half the significance; the smallest "
+                "p-value is 1/(B + 1) = " + short_number(1.0 / (ensemble + 1)) + "): use at least " +
+                std::to_string(minimum_bootstrap(options.assessment.significance / 2)) + ", or 0 for no test");
+  check_bootstrap_size(ensemble, options.assessment.significance);
   SurfaceTestOptions tests_options;
   tests_options.assessment = options.assessment;
   tests_options.summits = options.summits;

@@ -1,6 +1,10 @@
 #include "surface_command.hpp"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -25,7 +29,7 @@ struct Options {
   std::string file, format, pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given, area = not_given,
          confidence = not_given;
-  long long window = 1, bootstrap = 199, seed = 1, threads = 0;
+  long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0;
   bool json = false, no_level = false, no_height_fit = false;
 };
 
@@ -77,7 +81,8 @@ int run_surface(const Options& o) {
   options.level = !o.no_level;
   options.summits.window = static_cast<int>(o.window);
   if (!o.summit_threshold.empty()) options.summits.min_drop = topo::parse_length(o.summit_threshold);
-  options.assessment.bootstrap = static_cast<int>(o.bootstrap);
+  if (o.ensemble >= 0 && o.bootstrap >= 0) usage("give --ensemble or --bootstrap (its former name), not both");
+  if (o.ensemble >= 0 || o.bootstrap >= 0) options.assessment.bootstrap = static_cast<int>(o.ensemble >= 0 ? o.ensemble : o.bootstrap);
   options.assessment.seed = static_cast<std::uint64_t>(o.seed);
   options.assessment.threads = static_cast<int>(o.threads);
   if (given(o.confidence)) {
@@ -114,7 +119,25 @@ int run_surface(const Options& o) {
     for (double load : loads) curves.pressures.push_back(load / a0);
     options.contact = curves;
   }
+  // progress on standard error for an ensemble that takes more than a second: a line that
+  // rewrites itself on a terminal, a line every few seconds otherwise
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  bool printed = false;
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  options.progress = [&](std::size_t done, std::size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start).count();
+    const double since = std::chrono::duration<double>(now - last).count();
+    if (elapsed < 1 || (since < (terminal ? 0.2 : 5) && done < total)) return;
+    last = now;
+    const double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
+    std::fprintf(stderr, "%sasperity surface: ensemble %zu/%zu surrogate surfaces, about %.0f s left%s",
+                 terminal ? "\r" : "", done, total, left, terminal ? "  " : "\n");
+    printed = true;
+  };
   const topo::SurfaceAnalysis analysis = topo::analyse_height_map(std::move(map), options);
+  if (printed && terminal) std::fputc('\n', stderr);
   std::cout << (o.json ? topo::analysis_json(analysis) : topo::analysis_summary(analysis));
   if (!o.report.empty()) {
     const topo::ReportOutcome outcome = topo::write_report(analysis, o.report);
@@ -159,14 +182,17 @@ void add_surface_command(CLI::App& app) {
   add_text(*command, "--summit-threshold", o.summit_threshold,
            "summits: at least this high above the mean of their 8 neighbours (a length with its unit, e.g. 2nm)")
       ->type_name("LENGTH")->group(analysis);
-  add_whole_number(*command, "--bootstrap", o.bootstrap, 0, 100000,
-                   "parametric bootstrap samples for the p-values and intervals (default 199; 0: none)")
+  add_whole_number(*command, "--ensemble", o.ensemble, 0, 100000,
+                   "surrogate surfaces of the map's own spectrum for the p-values and intervals (default 99; at "
+                   "least 40: the verdict tests at 2.5%; 0: no tests)")
+      ->group(analysis);
+  add_whole_number(*command, "--bootstrap", o.bootstrap, 0, 100000, "the same as --ensemble (its former name)")
       ->group(analysis);
   add_number(*command, "--confidence", o.confidence, "of the intervals (default 0.95)")->type_name("P")->group(analysis);
-  add_whole_number(*command, "--seed", o.seed, 0, 9223372036854775807LL, "of the bootstrap (default 1: reproducible)")
+  add_whole_number(*command, "--seed", o.seed, 0, 9223372036854775807LL, "of the ensemble (default 1: reproducible)")
       ->group(analysis);
   add_whole_number(*command, "--threads", o.threads, 0, 1024,
-                   "for the bootstrap and the scene tables (default 0: all cores; fewer if the system refuses more)")
+                   "for the ensemble and the scene tables (default 0: all cores; fewer if the system refuses more)")
       ->group(analysis);
   command->add_flag("--no-height-fit", o.no_height_fit, "fit the summit heights only")->group(analysis);
   const char* contact = "Contact curves (SI units)";
@@ -198,7 +224,8 @@ void add_surface_command(CLI::App& app) {
       "Output: a summary on standard output (or the JSON with --json): the map and how it was read,\n"
       "height statistics, spectral moments and Nayak's alpha, summits (density, radius, their\n"
       "dependence on the sampling interval), the three fits of the summit heights with Anderson-Darling\n"
-      "and Kolmogorov-Smirnov p-values by parametric bootstrap, AIC and a verdict, and with a modulus\n"
+      "and Kolmogorov-Smirnov p-values against surrogate surfaces of the map's spectrum, AIC and a verdict,\n"
+      "and with a modulus GW on the measured summits beside\n"
       "the contact curves of each fit and their ratios at the pressures of interest (docs/surfaces.md).\n" +
       std::string(exit_status_help));
   CLI::App* self = command;

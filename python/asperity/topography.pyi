@@ -261,7 +261,7 @@ class AssessmentOptions:
     confidence: float
     significance: float
     fit: FitOptions
-    def __init__(self, bootstrap: int = 199, seed: int = 1, threads: int = 0, confidence: float = 0.95,
+    def __init__(self, bootstrap: int = 99, seed: int = 1, threads: int = 0, confidence: float = 0.95,
                  significance: float = 0.05, fit: Optional[FitOptions] = None) -> None: ...
 
 class Interval:

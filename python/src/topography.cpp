@@ -577,7 +577,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
              if (fit) options.fit = *fit;
              return options;
            }),
-           "bootstrap"_a = 199, "seed"_a = 1, "threads"_a = 0, "confidence"_a = 0.95, "significance"_a = 0.05,
+           "bootstrap"_a = topo::AssessmentOptions{}.bootstrap, "seed"_a = 1, "threads"_a = 0, "confidence"_a = 0.95, "significance"_a = 0.05,
            "fit"_a = py::none(),
            "bootstrap: B parametric-bootstrap samples (0: no p-values, no intervals); seed: reproducible; threads:\n"
            "0 for all cores; confidence of the intervals; significance of the tests for the verdict.")

@@ -428,7 +428,7 @@ def test_options_that_set_the_work_are_bounded():
 
 def test_analyse_the_real_afm_map(tmp_path):
     contact = topography.ContactOptions(2e9, pressures=[1e5], table_path=asperity.Table.default_path(), threads=2)
-    options = topography.AnalysisOptions(assessment=topography.AssessmentOptions(bootstrap=20, threads=2),
+    options = topography.AnalysisOptions(assessment=topography.AssessmentOptions(bootstrap=40, threads=2),
                                          summits=topography.SummitOptions(window=2), fit_heights=False,
                                          contact=contact)
     analysis = topography.analyse_surface_file(AFM, options)

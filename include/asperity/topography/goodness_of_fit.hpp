@@ -40,7 +40,9 @@ FitStatistics fit_statistics(const HeightDistribution& distribution, const std::
 inline constexpr int max_bootstrap = 100000;
 
 struct AssessmentOptions {
-  int bootstrap = 199;         // B (0 to max_bootstrap); 0: no p-values and no intervals (no test: the verdict says so)
+  // B, bootstrap samples (assess_sample) or surrogate surfaces (the surface analysis), 0 to
+  // max_bootstrap; 0: no p-values and no intervals (no test: the verdict says so)
+  int bootstrap = 99;
   std::uint64_t seed = 1;
   int threads = 0;             // 0: the hardware's
   double confidence = 0.95;    // of the intervals
