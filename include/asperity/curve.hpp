@@ -27,8 +27,11 @@ struct GridReference;
 
 struct CurveOptions {
   // The largest error the lookup grid may add to the table's own, in ln X (so relative in X)
-  // where X >= 1e-100, and 100 times that below. Smaller costs memory, never time.
+  // where X >= 1e-100, and grid_far_factor times that below. Smaller costs memory, never time.
   double grid_tolerance = 1e-13;
+  // 1 to 1e6: 100 for a full table (its bound is 1e-10 where X < 1e-100), 1 for a scene table's
+  // curves (their tolerance holds everywhere in their range).
+  double grid_far_factor = 100;
   // The separations the grid covers (within the table's range); outside, the table's own
   // layout answers (a scene table: the scene's range).
   double grid_min_separation = -1.0 / 0.0;

@@ -71,7 +71,7 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
   if (!(options.grid_min_separation < options.grid_max_separation))
     throw Error("CurveOptions: the grid's separations must be an interval (min < max)");
   auto data = std::make_shared<detail::CurveData>();
-  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
+  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance, options.grid_far_factor);
   // where the grid covers the whole table, the table's own layout answers only outside it
   if (options.grid_min_separation <= compact.table_min() && options.grid_max_separation >= compact.table_max())
     compact.keep_outside_only();
