@@ -129,7 +129,8 @@ inline Precise reference_log(Distribution distribution, Side side, double shape_
 //   F_n(0) = 2^((n-1)/2) Gamma((n+1)/2) / sqrt(2 pi); the bounded side is exactly 0 (-inf).
 // - The Weibull tail's integer orders n = 0, 1, 2: for s <= 0 (d = -s) the moments of z + d,
 //   J_0 = 1, J_1 = Gamma(1+1/a) + d, J_2 = Gamma(1+2/a) + 2 d Gamma(1+1/a) + d^2; for
-//   0 < s <= 1 (t = s^a) J_n = sum_k C(n,k) (-s)^(n-k) Gamma(1 + k/a, t) (upper incomplete).
+//   s > 0 (t = s^a) J_0 = exp(-t) and J_1 = Gamma(1/a, t)/a (upper incomplete), which do not
+//   cancel, and for 0 < s <= 1 J_2 = sum_k C(2,k) (-s)^(2-k) Gamma(1 + k/a, t).
 // - The Weibull bounded side where tau = d^a <= 1, every order: exp(-z^a) as its power series,
 //   term by term K_n(d) = a d^(n+a) sum_m (-tau)^m / m! B(n + 1, a (m + 1)).
 // nullopt elsewhere.
@@ -168,11 +169,11 @@ inline std::optional<Precise> closed_form_log(Distribution distribution, Side si
     if (n == 1) return log(moment(1) + d);
     return log(moment(2) + 2 * d * moment(1) + d * d);
   }
-  if (separation > 1) return std::nullopt;  // the sum cancels more and more beyond the bulk
   const Precise t = pow(separation, shape);
   if (n == 0) return -t;
+  if (n == 1) return log(boost::math::tgamma(1 / shape, t) / shape);  // = Gamma(1 + 1/a, t) - s e^-t
+  if (separation > 1) return std::nullopt;  // the sum cancels more and more beyond the bulk
   auto upper = [&](int k) { return k == 0 ? Precise(exp(-t)) : Precise(boost::math::tgamma(1 + Precise(k) / shape, t)); };
-  if (n == 1) return log(upper(1) - separation * upper(0));
   return log(upper(2) - 2 * separation * upper(1) + separation * separation * upper(0));
 }
 

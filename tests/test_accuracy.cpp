@@ -15,8 +15,10 @@
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "accuracy_harness.hpp"
+#include "asperity/error.hpp"
 #include "asperity/table.hpp"
 
 namespace {
@@ -431,6 +433,119 @@ TEST(Accuracy, ValuesStayFiniteAndOrderedInTheFarTail) {
       EXPECT_GE(curve.value(5, s), 0.0);
     }
   }
+}
+
+// ---- issue #28 ----
+
+// Curves made on two threads (a blended curve takes up to ~60 ms).
+std::vector<Curve> make_curves(const std::vector<std::pair<Side, double>>& specs) {
+  std::vector<Curve> curves(specs.size());
+  std::vector<std::thread> pool;
+  for (unsigned worker = 0; worker < 2; ++worker)
+    pool.emplace_back([&, worker] {
+      for (std::size_t i = worker; i < specs.size(); i += 2)
+        curves[i] = table().curve(Distribution::weibull, specs[i].first, specs[i].second);
+    });
+  for (std::thread& thread : pool) thread.join();
+  return curves;
+}
+
+// Checks probes against test::grid_tolerance's classes (1e-12 where X >= 1e-100, 1e-10 below and
+// beyond the table) and records the worst per band.
+void check_against_classes(std::vector<Probe>& probes, const std::string& band,
+                           std::map<std::string, Worst>& report) {
+  test::evaluate(probes);
+  for (const Probe& probe : probes) {
+    if (probe.reference < std::log(1e-300) && probe.reference > -std::numeric_limits<double>::infinity()) continue;
+    const bool large = probe.reference >= std::log(1e-100);
+    const double tolerance = test::grid_tolerance(*probe.curve, probe.reference, probe.separation);
+    char where[220];
+    std::snprintf(where, sizeof where, "%s shape %.17g order %g s %.17g", probe.label.c_str(), probe.curve->shape(),
+                  order_of(probe.twice_order), probe.separation);
+    Worst& worst = report[band + (large ? ", X >= 1e-100" : ", X < 1e-100")];
+    if (probe.error > worst.error || worst.where.empty()) worst = {probe.error, where};
+    EXPECT_LE(probe.error, tolerance) << where << " value " << probe.value << " reference " << probe.reference;
+  }
+}
+
+// First contact, order 0: J_0 = exp(-s^a) is followed to its closed form down to where
+// s^a <= 2^-60 (issue #28: held at its value at 2^-70 up to 2^-67, 5.3e-11 at a = 0.5; held at
+// J_0(0) until s^a ~ 2e-12, 2.0e-12 at a = 3.54), falling (to the rounding of ln J_0) and never
+// above 1, at every tail node and between nodes, through the scalar and the batch path; s <= 0
+// exactly 1.
+TEST(Accuracy, WeibullOrderZeroFollowsItsClosedFormToFirstContact) {
+  std::vector<std::pair<Side, double>> specs;
+  for (double shape : served_nodes(*table().find(Distribution::weibull, Side::tail))) specs.push_back({Side::tail, shape});
+  for (double shape : {0.51, 0.6, 1.73, 3.54, 12.3}) specs.push_back({Side::tail, shape});
+  const std::vector<Curve> curves = make_curves(specs);
+  // ascending; just below each power of two too (checked for the error there, not for the fall
+  // from the point before it: one ulp of s moves ln J_0 by less than its rounding)
+  std::vector<double> ascending;
+  std::vector<char> neighbour;
+  for (int k = 75; k >= -3; --k)
+    for (double factor : {1.0, 1.25, 1.5, 1.75}) {
+      const double binade = std::ldexp(factor, -k);
+      if (factor == 1.0) ascending.push_back(std::nextafter(binade, 0.0)), neighbour.push_back(0);
+      ascending.push_back(binade);
+      neighbour.push_back(factor == 1.0);
+    }
+  double worst = 0;
+  std::string worst_where;
+  int checked = 0;
+  for (std::size_t c = 0; c < curves.size(); c += test::subsample_stride()) {
+    const Curve& curve = curves[c];
+    const double shape = curve.shape();
+    std::vector<double> batch(ascending.size());
+    curve.log_value_batch(0, ascending.data(), batch.data(), ascending.size());
+    double previous = 0, before_previous = 0;
+    for (std::size_t i = 0; i < ascending.size(); ++i) {
+      const double s = ascending[i];
+      const test::Precise exact = -boost::multiprecision::pow(test::Precise(s), test::Precise(shape));
+      if (exact < -690) break;
+      const double value = curve.log_value(0, s);
+      const double error = std::fabs(std::expm1(value - static_cast<double>(exact)));
+      char where[160];
+      std::snprintf(where, sizeof where, "shape %.17g s %.17g", shape, s);
+      if (error > worst) worst = error, worst_where = where;
+      ++checked;
+      EXPECT_LE(error, 1e-12) << where << ": ln J_0 " << value << " exact " << static_cast<double>(exact);
+      EXPECT_LE(value, 0.0) << where;
+      const double earlier = neighbour[i] ? before_previous : previous;
+      EXPECT_LE(value, earlier) << where << ": J_0 rises";
+      EXPECT_LE(batch[i], earlier) << where << " (batch)";
+      EXPECT_NEAR(batch[i], value, 2e-14 * (1 + std::fabs(value))) << where << " (batch)";
+      before_previous = previous;
+      previous = value;
+      EXPECT_EQ(curve.log_value(0, -s), 0.0) << "shape " << shape << " s " << -s;
+    }
+  }
+  std::printf("\nOrder 0 next to first contact: %d values, largest error %.2e (%s)\n", checked, worst, worst_where.c_str());
+}
+
+// Just below every power of two next to s = 0 (where the lookup grid's first-contact zones end,
+// its answer farthest from the truth): the integer orders at every tail node against their closed
+// forms, the half-integer orders at every eighth node against the quadrature.
+TEST(Accuracy, EveryOrderAtTheEndsOfTheFirstContactZones) {
+  const std::vector<double> nodes = served_nodes(*table().find(Distribution::weibull, Side::tail));
+  std::vector<std::pair<Side, double>> specs;
+  for (double shape : nodes) specs.push_back({Side::tail, shape});
+  const std::vector<Curve> curves = make_curves(specs);
+  std::vector<Probe> probes;
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    for (int e = 10; e <= 70; ++e)
+      for (double sign : {1.0, -1.0}) {
+        const double s = sign * std::nextafter(std::ldexp(1.0, -e), 0.0);
+        for (int k : {2, 4}) {
+          Probe probe{&curves[i], k, s, 0, "weibull tail"};
+          probe.closed_form = true;
+          probes.push_back(probe);
+        }
+        if (i % 8 == 0 && e % 10 == 0)
+          for (int k : {1, 3, 5}) probes.push_back({&curves[i], k, s, 0, "weibull tail"});
+      }
+  std::map<std::string, Worst> report;
+  check_against_classes(probes, "|s| = 2^-70 ... 2^-10", report);
+  print(report, "every tail node at the ends of the first-contact zones");
 }
 
 }  // namespace

@@ -152,8 +152,11 @@ struct Builder {
           const double truth = checks[o * check_count + g];
           // what is asked, plus four units in the last place of ln X (the rounding of the
           // reference and of the quintic: a relative error |ln X| eps that no method escapes)
-          const double allowed = (truth >= log_of_1e_minus_100 ? tolerance : far_tolerance) +
-                                 8.8817841970012523e-16 * std::fabs(truth);
+          double allowed = (truth >= log_of_1e_minus_100 ? tolerance : far_tolerance) +
+                           8.8817841970012523e-16 * std::fabs(truth);
+          // the Weibull order 0 where -s^a is below the tolerance: relative (find_first_contact_zones)
+          if (orders[o] == orders::count && reference.exact_order_zero && truth != 0)
+            allowed = std::min(allowed, 1e-3 * std::fabs(truth));
           const double error = std::fabs(fast_quintic(c, 0, check_y[g]) - truth) / allowed;
           worst = std::max(worst, std::isnan(error) ? std::numeric_limits<double>::infinity() : error);
         }
@@ -171,13 +174,14 @@ int biased_exponent(double magnitude) {
 
 }  // namespace
 
-// Next to s = 0 the grid answers what the closed forms give just inside |s| = 2^-70 (X_n(0),
-// or exp(-s^a) there for the Weibull order 0), for |s| < z. With D the larger of the
+// Next to s = 0 the grid answers what the closed forms give just inside |s| = 2^-70 (X_n(0);
+// not the Weibull order 0, whose closed form the grid fits), for |s| < z. With D the larger of the
 // tolerance and how far the table's value at 2^-69 is from that, past z (at every power of two
 // up to 2^-10) ln X_n has moved the right way by more than 2 D and monotonely, so the grid's
 // values (within the tolerance) lie beyond the zone's on their side: monotone across s = 0.
 // The table's own value wanders next to s = 0 at small shapes; the zone also covers that
-// wander where it stays within 20 D. Inside the zone the answer is within ~5 D of the truth.
+// wander where it stays within 20 D. Inside the zone the answer is within ~5 D of the truth,
+// farthest from it at the zone's end (a power of two), where a check should look.
 void find_first_contact_zones(Builder& builder, double upper_limit, int side) {
   const GridReference& reference = builder.reference;
   const double sign = side ? -1.0 : 1.0;
@@ -191,6 +195,21 @@ void find_first_contact_zones(Builder& builder, double upper_limit, int side) {
     allowed[k] = applies ? 2 * difference : 0;
     builder.first_contact_zone[k][side] = applies ? 4 * zero_zone : 0;
     previous[k] = near[k];
+  }
+  // The Weibull order 0 is its closed form ln J_0 = -s^a: held at its value at 2^-70 only while
+  // s^a <= 2^-60 (J_0 to 1e-18), and followed from there on (fit_binade: to 1e-3 of s^a where s^a
+  // is below the tolerance, so that it stays below 0 and falls). Held until it had moved by the
+  // tolerance's width instead, it was off by s^a there: 5e-11 at a = 0.5, s = 2^-67; 2e-12 at
+  // a = 3.54, s = 2^-11 (issue #28).
+  const bool exact_zero = reference.exact_order_zero && allowed[orders::count] > 0;
+  if (exact_zero) {
+    allowed[orders::count] = 0;
+    builder.first_contact_zone[orders::count][side] = zero_zone;  // no binade held ...
+    for (double top = 2 * zero_zone; top <= std::min(upper_limit, 1.0); top *= 2) {  // ... but these
+      reference.log_values(sign * top, moved);
+      if (!(std::fabs(moved[orders::count]) <= 8.673617379884035e-19)) break;  // 2^-60
+      builder.first_contact_zone[orders::count][side] = top;
+    }
   }
   const double last = std::min(upper_limit, 1.0 / 1024);
   for (double top = 4 * zero_zone; top <= last; top *= 2) {
@@ -219,6 +238,7 @@ void describe_grid(GridReference& reference, const CompactCurve& compact, double
   const double inside_zero_zone = std::nextafter(zero_zone, 0.0);  // the compact curve's closed forms
   compact.log_values(inside_zero_zone, 0, order_count - 1, reference.next_to_zero[0].data());
   compact.log_values(-inside_zero_zone, 0, order_count - 1, reference.next_to_zero[1].data());
+  reference.exact_order_zero = compact.distribution() == Distribution::weibull;
 }
 
 FastGridBuild build_fast_grid(const GridReference& reference, double tolerance, double far_factor) {
