@@ -132,7 +132,8 @@ inline Precise reference_log(Distribution distribution, Side side, double shape_
 //   s > 0 (t = s^a) J_0 = exp(-t) and J_1 = Gamma(1/a, t)/a (upper incomplete), which do not
 //   cancel, and for 0 < s <= 1 J_2 = sum_k C(2,k) (-s)^(2-k) Gamma(1 + k/a, t).
 // - The Weibull bounded side where tau = d^a <= 1, every order: exp(-z^a) as its power series,
-//   term by term K_n(d) = a d^(n+a) sum_m (-tau)^m / m! B(n + 1, a (m + 1)).
+//   term by term K_n(d) = a d^(n+a) sum_m (-tau)^m / m! B(n + 1, a (m + 1)); where tau > 1 the
+//   orders 0 and 1: K_0 = 1 - exp(-tau), K_1 = d - gamma(1/a, tau)/a (lower incomplete).
 // nullopt elsewhere.
 inline std::optional<Precise> closed_form_log(Distribution distribution, Side side, double shape_value,
                                               int twice_order, double separation_value) {
@@ -149,7 +150,11 @@ inline std::optional<Precise> closed_form_log(Distribution distribution, Side si
   if (side == Side::bounded) {
     if (separation >= 0) return -inf;
     const Precise distance = -separation, tau = pow(distance, shape);
-    if (tau > 1) return std::nullopt;
+    if (tau > 1) {
+      if (twice_order == 0) return log(-boost::multiprecision::expm1(-tau));
+      if (twice_order == 2) return log(distance - boost::math::tgamma_lower(1 / shape, tau) / shape);
+      return std::nullopt;
+    }
     Precise sum = 0, power = 1;  // power = (-tau)^m / m!
     for (int m = 0; m < 400; ++m) {
       const Precise term = power * boost::math::beta(order + 1, shape * (m + 1));

@@ -127,6 +127,19 @@ TEST(EvalCsv, NamesAShapeOutsideTheTableWithItsOwnDigits) {
       << errors.str();
 }
 
+// Issue #28: the served range is exact: a shape a hair outside [0.5, 20] is refused, and one a
+// hair off a grid node is interpolated (not served as the node).
+TEST(EvalCsv, TheShapeRangeIsExact) {
+  std::stringstream input("dist,side,shape,sep\nweibull,tail,0.49999999999995,1\nweibull,tail,20.0000000000001,1\n"
+                          "weibull,tail,0.5,1\nweibull,tail,20,1\n"),
+      output, errors;
+  EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 2);
+  EXPECT_NE(errors.str().find("line 2: shape 0.49999999999995 is outside the table's range [0.5, 20]"),
+            std::string::npos) << errors.str();
+  EXPECT_NE(errors.str().find("line 3: shape 20.0000000000001 is outside"), std::string::npos) << errors.str();
+  EXPECT_EQ(lines(output.str()).size(), 3u);
+}
+
 TEST(EvalCsv, RefusesAnOverlongLineAndGoesOn) {
   std::string text = "\xEF\xBB\xBF" "dist,side,shape,sep\nweibull,tail,2,";
   text += std::string(cli::max_line_bytes, '1');
