@@ -590,4 +590,44 @@ TEST(Accuracy, EveryOrderAtTheEndsOfTheFirstContactZones) {
   print(report, "every tail node at the ends of the first-contact zones");
 }
 
+// Large shapes in the far tail (issue #28: a = 17.4-20 at t = 100-230 reached 1.0-3.5e-12, from
+// the knots' second derivatives, whose rounding grows like t^2, over knots 0.082 apart in ln t):
+// the served nodes from 12 up densely over t = 100-230 and out to the table's end, and every tail
+// node across the segments' junction at s = t = 1.
+TEST(Accuracy, LargeShapesInTheFarTailAndTheJunctionAtOne) {
+  const std::vector<double> nodes = served_nodes(*table().find(Distribution::weibull, Side::tail));
+  std::vector<std::pair<Side, double>> specs;
+  for (double shape : nodes) specs.push_back({Side::tail, shape});
+  const std::vector<Curve> curves = make_curves(specs);
+  std::vector<Probe> probes;
+  for (const Curve& curve : curves) {
+    const double shape = curve.shape();
+    if (shape >= 12) {
+      for (int i = 0; i <= 40; ++i) {
+        const double t = 100 * std::pow(2.3, i / 40.0), s = std::pow(t, 1 / shape);
+        for (int k = 0; k < order_count; ++k) {
+          if (k % 2 == 1 && i % 5 != 0) continue;  // the half-integer orders every fifth (quadrature)
+          Probe probe{&curve, k, s, 0, "weibull tail"};
+          probe.closed_form = k % 2 == 0;
+          if (k == 4) probe.closed_form = false;  // J_2 has no closed form past s = 1
+          if (k == 4 && i % 5 != 0) continue;
+          probes.push_back(probe);
+        }
+      }
+      for (double t : {400.0, 700.0, 760.0})
+        for (int k = 0; k < order_count; ++k) probes.push_back({&curve, k, std::pow(t, 1 / shape), 0, "weibull tail"});
+    }
+    for (double s : {1 - 1e-3, 1 - 1e-9, std::nextafter(1.0, 0.0), 1.0, std::nextafter(1.0, 2.0), 1 + 1e-9, 1 + 1e-3})
+      for (int k : {0, 2, 4}) {
+        if (k == 4 && s > 1) continue;
+        Probe probe{&curve, k, s, 0, "weibull tail"};
+        probe.closed_form = true;
+        probes.push_back(probe);
+      }
+  }
+  std::map<std::string, Worst> report;
+  check_against_classes(probes, "far tail and s = 1", report);
+  print(report, "large shapes in the far tail, every node at s = 1");
+}
+
 }  // namespace
