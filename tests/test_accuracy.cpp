@@ -116,11 +116,29 @@ TEST(Accuracy, GridShapesBothSidesAndGaussian) {
   print(report, "grid shapes 0.5, 1, 2, 3, 5, 20 and the Gaussian");
 }
 
-// The tolerance between grid shapes (issue #10 asks 1e-10): met on the tail everywhere and on
-// the bounded side up to a = 4; above, the bounded side keeps the 1e-9 of issue #2 (its
-// measured worst, about 5e-10 near tau = d^a = 10 at n = 1/2, is printed per shape range).
-double between_tolerance(const Curve& curve) {
-  return curve.side() == Side::bounded && curve.shape() > 4 ? 1e-9 : 1e-10;
+// The tolerance between grid shapes (issues #10, #28): 1e-10 on both sides at every shape (the
+// bounded side's grid is 2/3 as wide as the tail's for it: 5.5e-10 near tau = d^a = 10 at
+// n = 1/2 before).
+double between_tolerance(const Curve&) { return 1e-10; }
+
+// Midpoints (in the grid variable) of a set's grid intervals inside the served range, every
+// `every`-th, and the last: where interpolation across shapes is weakest.
+std::vector<double> interval_midpoints(const CurveSet& set, std::size_t every, double from = 0) {
+  auto midpoint = [&](std::size_t i) {
+    const double q = 0.5 * (shape_grid_variable(set.shapes[i]) + shape_grid_variable(set.shapes[i + 1]));
+    double lo = set.shapes[i], hi = set.shapes[i + 1];
+    for (int step = 0; step < 100; ++step) (shape_grid_variable(0.5 * (lo + hi)) < q ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+  };
+  std::vector<double> shapes;
+  std::size_t last = 0, counted = 0;
+  for (std::size_t i = 0; i + 1 < set.shapes.size(); ++i) {
+    if (set.shapes[i] < std::max(from, set.shape_min) || set.shapes[i + 1] > set.shape_max) continue;
+    if (counted++ % every == 0) shapes.push_back(midpoint(i));
+    last = i;
+  }
+  if ((counted - 1) % every != 0) shapes.push_back(midpoint(last));
+  return shapes;
 }
 
 std::string shape_range(double shape) {
@@ -130,31 +148,16 @@ std::string shape_range(double shape) {
 TEST(Accuracy, BetweenGridShapes) {
   std::mt19937_64 rng(11);
   std::map<std::string, Worst> report;
-  const CurveSet* set = table().find(Distribution::weibull, Side::tail);
-  ASSERT_NE(set, nullptr);
-  // Midpoints (in the grid variable) of grid intervals across the served range: the worst place.
-  auto midpoint = [&](std::size_t i) {
-    const double q = 0.5 * (shape_grid_variable(set->shapes[i]) + shape_grid_variable(set->shapes[i + 1]));
-    double lo = set->shapes[i], hi = set->shapes[i + 1];
-    for (int step = 0; step < 100; ++step) (shape_grid_variable(0.5 * (lo + hi)) < q ? lo : hi) = 0.5 * (lo + hi);
-    return 0.5 * (lo + hi);
-  };
-  std::vector<double> shapes;
-  std::size_t last = 0;
-  for (std::size_t i = 0; i + 1 < set->shapes.size(); ++i) {
-    if (set->shapes[i] < set->shape_min || set->shapes[i + 1] > set->shape_max) continue;
-    if (i % 11 == 0) shapes.push_back(midpoint(i));  // every eleventh interval
-    last = i;
-  }
-  // The last interval, 18.66 to 20, where the curves are steepest in the shape: its midpoint
-  // 19.3158... is the audit's point of issue #10 (n = 2, s = 1.035).
-  if (last % 11 != 0) shapes.push_back(midpoint(last));
-  shapes.push_back(1.73);
   std::vector<Curve> curves;
-  curves.reserve(2 * shapes.size());
-  for (double shape : shapes) {
-    curves.push_back(table().curve(Distribution::weibull, Side::tail, shape));
-    curves.push_back(table().curve(Distribution::weibull, Side::bounded, shape));
+  for (Side side : {Side::tail, Side::bounded}) {
+    const CurveSet* set = table().find(Distribution::weibull, side);
+    ASSERT_NE(set, nullptr);
+    // every eleventh interval's midpoint and the last's (18.66 to 20 on the tail, where the
+    // curves are steepest in the shape: 19.3158..., the audit's point of issue #10), 1.73, and
+    // 19.316, the audit's point of issue #28 on the bounded side
+    std::vector<double> shapes = interval_midpoints(*set, 11);
+    shapes.insert(shapes.end(), {1.73, 19.315827758577377});
+    for (double shape : shapes) curves.push_back(table().curve(Distribution::weibull, side, shape));
   }
   std::vector<Probe> probes;
   for (const Curve& curve : curves) {
@@ -628,6 +631,34 @@ TEST(Accuracy, LargeShapesInTheFarTailAndTheJunctionAtOne) {
   std::map<std::string, Worst> report;
   check_against_classes(probes, "far tail and s = 1", report);
   print(report, "large shapes in the far tail, every node at s = 1");
+}
+
+// Between grid shapes on the bounded side above a = 4 (issue #28: 5.5e-10 at a = 19.316,
+// s = -1.127, n = 1/2): every interval's midpoint, where tau = d^a = 3, 10, 30, every order.
+TEST(Accuracy, BoundedBetweenEveryPairOfLargeShapes) {
+  const CurveSet& set = *table().find(Distribution::weibull, Side::bounded);
+  std::vector<std::pair<Side, double>> specs;
+  for (double shape : interval_midpoints(set, 1, 4.0)) specs.push_back({Side::bounded, shape});
+  const std::vector<Curve> curves = make_curves(specs);
+  std::vector<Probe> probes;
+  for (const Curve& curve : curves)
+    for (double tau : {3.0, 10.0, 30.0})
+      for (int k = 0; k < order_count; ++k) {
+        Probe probe{&curve, k, -std::pow(tau, 1 / curve.shape()), 0, "weibull bounded"};
+        probe.closed_form = k == 0 || k == 2;
+        probes.push_back(probe);
+      }
+  test::evaluate(probes);
+  Worst worst;
+  for (const Probe& probe : probes) {
+    char where[160];
+    std::snprintf(where, sizeof where, "shape %.17g order %g s %.17g", probe.curve->shape(), order_of(probe.twice_order),
+                  probe.separation);
+    if (probe.error > worst.error) worst = {probe.error, where};
+    EXPECT_LE(probe.error, 1e-10) << where << " value " << probe.value << " reference " << probe.reference;
+  }
+  std::printf("\nBetween bounded grid shapes above a = 4 (%zu midpoints, tau = 3, 10, 30): %.2e (%s)\n",
+              curves.size(), worst.error, worst.where.c_str());
 }
 
 }  // namespace

@@ -588,7 +588,7 @@ TEST(SceneFromDefaultTable, ServedWithTheTestedBoundOrRefused) {
   const Scene scene = sweep_scene(1e-8);
   const std::vector<SceneCurveView> views = serve_scene(table, scene);
   for (const SceneCurveView& view : views) {
-    EXPECT_LE(view.error_bound, 1e-9);
+    EXPECT_LE(view.error_bound, 1e-10);
     for (int twice_order : view.spec.twice_orders) {
       const double separation = 0.5 * (view.separation_min + view.separation_max);
       const double reference = static_cast<double>(test::reference_log(view.spec.distribution, view.spec.side,

@@ -11,7 +11,7 @@
 
 namespace asperity {
 namespace {
-constexpr double between_grid_bound = 1e-9;  // docs/accuracy.md, tests/test_accuracy.cpp
+constexpr double between_grid_bound = 1e-10;  // docs/accuracy.md, tests/test_accuracy.cpp
 }
 
 double separation_at_load(const Curve& curve, double load) {
