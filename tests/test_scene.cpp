@@ -583,6 +583,40 @@ TEST(SceneTableSlow, StoredBoundsHoldOnDenseChecksAt1e6And1e10) {
   check_stored_bounds(1e-10);
 }
 
+// A scene's tolerance holds where X < 1e-100 too (its grid does not take the default table's 100
+// times more there): a Weibull tail over t = 125 to 729 and the Gaussian over [20, 38] at 1e-11,
+// which could not be made before issue #28, within the stored bound at J_0 and J_1 (closed forms).
+TEST(SceneTable, KeepsItsToleranceWhereXIsBelow1e100) {
+  const Scene scene = parse_scene(R"(
+max_rel_error = 1e-11
+[[curve]]
+distribution = "weibull"
+shape = 3
+orders = [0, 1, 1.5]
+separation = [5, 9]
+[[curve]]
+distribution = "gaussian"
+orders = [2.5]
+separation = [20, 38]
+)",
+                                  "deep.toml");
+  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+  const Table table(result.table);
+  const CurveSet& set = *table.find(Distribution::weibull, Side::tail);
+  const Curve curve = table.curve(Distribution::weibull, Side::tail, 3.0);
+  for (int k = 0; k < order_count; ++k) EXPECT_LE(set.max_rel_error[k], 1e-11) << k;
+  for (int i = 0; i <= 32; ++i) {
+    const double s = 5 + 4.0 * i / 32;
+    for (int k : {0, 2}) {
+      const double exact = static_cast<double>(*test::closed_form_log(Distribution::weibull, Side::tail, 3.0, k, s));
+      EXPECT_LE(std::fabs(std::expm1(curve.log_value(k, s) - exact)), set.max_rel_error[k]) << "s " << s << " order " << k;
+    }
+  }
+  const Curve gaussian = table.curve(Distribution::gaussian, Side::tail, 0);
+  const double reference = static_cast<double>(test::reference_log(Distribution::gaussian, Side::tail, 2, 2.5, 33.0));
+  EXPECT_LE(std::fabs(std::expm1(gaussian.log_value(5, 33.0) - reference)), 1e-11);
+}
+
 TEST(SceneFromDefaultTable, ServedWithTheTestedBoundOrRefused) {
   const Table table = Table::open(ASPERITY_TEST_TABLE);
   const Scene scene = sweep_scene(1e-8);
