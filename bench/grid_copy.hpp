@@ -40,7 +40,7 @@ inline GridCopy copy_grid(const Table& table, Distribution distribution, Side si
     compact.log_values(separation, 0, order_count - 1, out);
   };
   detail::describe_grid(reference, compact, options.grid_min_separation, options.grid_max_separation);
-  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
+  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance, options.grid_far_factor);
   GridCopy copy;
   copy.grid = build.grid;
   copy.directory = std::move(build.directory);  // a move: copy.grid.directory still points into it

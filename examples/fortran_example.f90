@@ -4,7 +4,7 @@
 ! and the error paths with their status codes. Build against an installed tree with gfortran alone:
 !   gfortran fortran_example.f90 $(pkg-config --cflags --libs asperity)
 program fortran_example
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
   use asperity
   implicit none
 
@@ -12,7 +12,7 @@ program fortran_example
   character(kind=c_char, len=64), target :: path
   type(c_ptr) :: table, gaussian, missing, worn, model
   type(asperity_physical_state) :: state
-  real(c_double) :: h, f52, ratio, sigma
+  real(c_double) :: h, f52, ratio, sigma, lo, hi
   real(c_double) :: separations(5), values(5)
   integer(c_int) :: status
   integer :: i
@@ -55,6 +55,10 @@ program fortran_example
   if (status /= ASPERITY_OK) stop 'cannot load the worn curve'
   if (asperity_curve_order_mask(worn) /= ior(ASPERITY_ORDER_I1_2, ASPERITY_ORDER_I3_2)) stop 'wrong order mask'
   if (.not. ieee_is_nan(asperity_eval(worn, 0_c_int, -0.5_c_double))) stop 'an order not held answered'
+  ! The separations it serves: every one for the default table's curves (a scene table's curve
+  ! serves its scene's range, and answers NaN outside it).
+  status = asperity_curve_range(worn, lo, hi)
+  if (status /= ASPERITY_OK .or. ieee_is_finite(lo) .or. ieee_is_finite(hi)) stop 'a full table limits its range'
   write (*, '(a, es16.7)') 'worn surface, K_3/2(-0.5) =', asperity_eval(worn, 3_c_int, -0.5_c_double)
   call asperity_curve_close(worn)
 

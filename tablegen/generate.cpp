@@ -20,6 +20,7 @@ std::string GenerateOptions::describe() const {
   std::ostringstream text;
   text.precision(12);
   text << "shapes=" << shape_min << ":" << shape_max << ":" << shape_log_step << " (step in ln a - 1/a)"
+       << " (bounded side: " << shape_log_step * bounded_step_factor << ")"
        << " sides=" << (tail ? "tail" : "") << (tail && bounded ? "," : "") << (bounded ? "bounded" : "")
        << " gaussian=" << (gaussian ? "yes" : "no") << " tolerance=" << tolerance
        << " check_stride=" << check_stride;
@@ -40,13 +41,15 @@ double shape_of_grid_variable(double q) {
 }
 }  // namespace
 
-std::vector<double> shape_grid(const GenerateOptions& options) {
+std::vector<double> shape_grid(const GenerateOptions& options, Side side) {
   if (!(options.shape_min > 0) || !(options.shape_max >= options.shape_min) || !(options.shape_log_step > 0))
     throw Error("the shape grid needs 0 < LO <= HI and STEP > 0");
   if (options.shape_min == options.shape_max) return {options.shape_min};
+  const double log_step =
+      side == Side::bounded ? options.shape_log_step * GenerateOptions::bounded_step_factor : options.shape_log_step;
   // Refuse a grid a table may not hold before making it (a step of 1e-9 would be 1e10 nodes).
   const double nodes = (shape_grid_variable(options.shape_max) - shape_grid_variable(options.shape_min)) /
-                           options.shape_log_step + shape_stencil + 6;
+                           log_step + shape_stencil + 6;
   if (!(nodes <= schema::max_shapes))
     throw Error("the shape grid would have " + std::to_string(static_cast<long long>(std::min(nodes, 1e18))) +
                 " nodes, more than a table holds (" + std::to_string(schema::max_shapes) + "): use a larger STEP");
@@ -62,7 +65,7 @@ std::vector<double> shape_grid(const GenerateOptions& options) {
   double first_step = 0, last_step = 0;
   for (std::size_t piece = 0; piece + 1 < anchors.size(); ++piece) {
     const double q_lo = shape_grid_variable(anchors[piece]), q_hi = shape_grid_variable(anchors[piece + 1]);
-    const int intervals = std::max(1, static_cast<int>(std::ceil((q_hi - q_lo) / options.shape_log_step - 1e-9)));
+    const int intervals = std::max(1, static_cast<int>(std::ceil((q_hi - q_lo) / log_step - 1e-9)));
     const double step = (q_hi - q_lo) / intervals;
     if (piece == 0) first_step = step;
     last_step = step;
@@ -145,7 +148,6 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
   table.generator = std::string("asperity tablegen ") + ASPERITY_VERSION_STRING +
                     " (Boost.odeint runge_kutta_fehlberg78, Boost.Math exp_sinh/tanh_sinh)";
   table.generator_options = options.describe();
-  const std::vector<double> shapes = shape_grid(options);
   auto add_set = [&](Distribution distribution, Side side, std::vector<double> set_shapes) {
     CurveSet set;
     set.distribution = distribution;
@@ -158,8 +160,8 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
     set.max_rel_error.assign(set.shapes.size() * order_count, 0.0);
     table.sets.push_back(std::move(set));
   };
-  if (options.tail) add_set(Distribution::weibull, Side::tail, shapes);
-  if (options.bounded) add_set(Distribution::weibull, Side::bounded, shapes);
+  if (options.tail) add_set(Distribution::weibull, Side::tail, shape_grid(options, Side::tail));
+  if (options.bounded) add_set(Distribution::weibull, Side::bounded, shape_grid(options, Side::bounded));
   if (options.gaussian) add_set(Distribution::gaussian, Side::tail, {2.0});
   if (table.sets.empty()) throw Error("nothing to generate: choose at least one side or --gaussian");
 

@@ -13,7 +13,11 @@ namespace asperity::tablegen {
 struct GenerateOptions {
   double shape_min = 0.5;
   double shape_max = 20;
-  double shape_log_step = 0.075;  // spacing of the shape grid in q = ln(a) - 1/a
+  double shape_log_step = 0.075;  // spacing of the shape grid in q = ln(a) - 1/a (tail side)
+  // The bounded side's grid is this much finer: between shapes its curves are the hardest to
+  // interpolate (where tau = d^a ~ 10 turns the first-contact power law into the all-touching
+  // polynomial); at the tail's spacing they reached 5.5e-10 there, at 2/3 of it 8.7e-12.
+  static constexpr double bounded_step_factor = 2.0 / 3.0;
   bool tail = true;
   bool bounded = true;
   bool gaussian = true;
@@ -24,7 +28,8 @@ struct GenerateOptions {
   std::string describe() const;
 };
 
-std::vector<double> shape_grid(const GenerateOptions& options);
+// The shape grid of one side (the Gaussian has the one shape 2).
+std::vector<double> shape_grid(const GenerateOptions& options, Side side = Side::tail);
 
 // progress(done, total) is called from worker threads, serialized.
 TableData generate_table(const GenerateOptions& options,

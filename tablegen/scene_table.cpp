@@ -54,6 +54,10 @@ struct Shape {
   double shape;
   std::vector<Requirement> requirements;
   std::vector<double> fine;  // knot data on the fine layout
+  // What the table serves at this shape (the file holds all six orders, and Table::curve serves
+  // them): every order over the hull of its curves' separations, to the strictest tolerance they
+  // ask; nothing outside (Curve::serves). Set by serve_hull.
+  double served_min = 0, served_max = 0, tolerance = 1;
 };
 
 struct Group {
@@ -62,19 +66,40 @@ struct Group {
   std::vector<Shape> shapes;  // ascending
 };
 
+// A curve given by its loads is served a little past the separations they resolve to (by
+// quadrature): the table's own X_3/2, within its tolerance of the integral, reaches the loads
+// inside what it serves (serve_scene resolves them again on it).
+constexpr double load_range_margin = 1e-3;
+
+void serve_hull(Shape& shape, const std::vector<SceneCurveReport>& reports) {
+  shape.served_min = std::numeric_limits<double>::infinity();
+  shape.served_max = -shape.served_min;
+  shape.tolerance = 1;
+  for (const Requirement& requirement : shape.requirements) {
+    double lo = requirement.separation_min, hi = requirement.separation_max;
+    if (reports[requirement.report].curve.by_load) {
+      const double margin = load_range_margin * (hi - lo);
+      lo -= margin;
+      hi += margin;
+    }
+    shape.served_min = std::min(shape.served_min, lo);
+    shape.served_max = std::max(shape.served_max, hi);
+    shape.tolerance = std::min(shape.tolerance, requirement.tolerance);
+  }
+}
+
 bool overlaps(double a_lo, double a_hi, double b_lo, double b_hi) { return a_hi >= b_lo && a_lo <= b_hi; }
 
 double group_tolerance(const Group& group) {
   double tolerance = 1;
-  for (const Shape& shape : group.shapes)
-    for (const Requirement& requirement : shape.requirements) tolerance = std::min(tolerance, requirement.tolerance);
+  for (const Shape& shape : group.shapes) tolerance = std::min(tolerance, shape.tolerance);
   return tolerance;
 }
 
 using detail::parallel_for;
 
 // The largest error in H of the quintic through every factor-th fine knot of a segment, at the
-// fine knots it drops, where a requirement asks (its orders, its separations).
+// fine knots it drops, where the shape is served (every order, its separations).
 double thinning_error(const Shape& shape, const SegmentMap& map, int first_knot, int knots, int total_knots,
                       int factor) {
   double worst = 0;
@@ -84,26 +109,24 @@ double thinning_error(const Shape& shape, const SegmentMap& map, int first_knot,
     map.s_of_u(map.u_lo + fine_step * j, separation, unused1, unused2);
     return separation;
   };
-  for (const Requirement& requirement : shape.requirements)
-    for (int twice_order : requirement.twice_orders) {
-      const double* data = &shape.fine[(static_cast<std::size_t>(twice_order) * total_knots + first_knot) * 3];
-      for (int start = 0; start + factor <= knots - 1; start += factor) {
-        const double s_a = separation_at(start), s_b = separation_at(start + factor);
-        if (!overlaps(std::min(s_a, s_b), std::max(s_a, s_b), requirement.separation_min, requirement.separation_max))
-          continue;
-        const double* left_knot = data + start * 3;
-        const double* right_knot = data + (start + factor) * 3;
-        const double left[3] = {left_knot[0], left_knot[1] * coarse_step, left_knot[2] * coarse_step * coarse_step};
-        const double right[3] = {right_knot[0], right_knot[1] * coarse_step, right_knot[2] * coarse_step * coarse_step};
-        for (int m = 1; m < factor; ++m) {
-          const double separation = separation_at(start + m);
-          if (separation < requirement.separation_min || separation > requirement.separation_max) continue;
-          const double x = static_cast<double>(m) / factor;
-          const double error = std::fabs(detail::quintic_hermite(left, right, x) - data[(start + m) * 3]);
-          worst = std::max(worst, std::isnan(error) ? 1.0 : error);
-        }
+  for (int twice_order = 0; twice_order < order_count; ++twice_order) {
+    const double* data = &shape.fine[(static_cast<std::size_t>(twice_order) * total_knots + first_knot) * 3];
+    for (int start = 0; start + factor <= knots - 1; start += factor) {
+      const double s_a = separation_at(start), s_b = separation_at(start + factor);
+      if (!overlaps(std::min(s_a, s_b), std::max(s_a, s_b), shape.served_min, shape.served_max)) continue;
+      const double* left_knot = data + start * 3;
+      const double* right_knot = data + (start + factor) * 3;
+      const double left[3] = {left_knot[0], left_knot[1] * coarse_step, left_knot[2] * coarse_step * coarse_step};
+      const double right[3] = {right_knot[0], right_knot[1] * coarse_step, right_knot[2] * coarse_step * coarse_step};
+      for (int m = 1; m < factor; ++m) {
+        const double separation = separation_at(start + m);
+        if (separation < shape.served_min || separation > shape.served_max) continue;
+        const double x = static_cast<double>(m) / factor;
+        const double error = std::fabs(detail::quintic_hermite(left, right, x) - data[(start + m) * 3]);
+        worst = std::max(worst, std::isnan(error) ? 1.0 : error);
       }
     }
+  }
   return worst;
 }
 
@@ -128,83 +151,113 @@ std::vector<double> thin(const std::vector<double>& fine, const std::vector<Segm
   return coarse;
 }
 
-// Checks a thinned curve against quadrature across each requirement's range. Returns the
-// error per order (all six, at the same points) and marks the segments where a requested
-// order failed.
 // How a scene curve is served (CurveOptions, stored with the table): the lookup grid over the
-// scene's separations only, to a tenth of the strictest tolerance asked of the shape.
+// separations it serves, and only those, to a tenth of its tolerance there, X < 1e-100 included.
 CurveOptions grid_options(const Shape& shape) {
   CurveOptions options;
-  double tolerance = 1, lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Requirement& requirement : shape.requirements) {
-    tolerance = std::min(tolerance, requirement.tolerance);
-    lo = std::min(lo, requirement.separation_min);
-    hi = std::max(hi, requirement.separation_max);
-  }
-  options.grid_tolerance = std::max(1e-13, 0.1 * tolerance);
-  options.grid_min_separation = lo;
-  options.grid_max_separation = hi;
+  options.grid_tolerance = std::max(1e-14, 0.1 * shape.tolerance);
+  options.grid_far_factor = 1;
+  options.grid_min_separation = options.served_min_separation = shape.served_min;
+  options.grid_max_separation = options.served_max_separation = shape.served_max;
   return options;
 }
 
-// Where a scene curve is checked: uniform and random over each requirement's range, and
-// log-spaced toward both of its ends, toward every segment end inside it and toward s = 0 (down
-// to the smallest doubles) where the range reaches it: the places an interpolant is weakest.
-std::vector<double> check_points(const Requirement& requirement, const std::vector<SegmentMap>& maps,
-                                 std::mt19937_64& rng) {
-  const double lo = requirement.separation_min, hi = requirement.separation_max, width = hi - lo;
+// Where a served curve is checked: at every interval of its layout inside what it serves, where
+// a quintic Hermite interpolant's error peaks (x^3 (1 - x)^3 h^6 H^(6)/720: the middle; and a
+// quarter from each end; eighths in the two intervals at each end of a segment, where H^(6) may
+// change fastest), uniform and random over the range, log-spaced toward both of its ends and
+// toward every segment end, toward s = 0 down to the smallest doubles, and past the table's end
+// (the series) log-spaced: the places a stored bound would otherwise miss the peak (issue #28).
+std::vector<double> check_points(const Shape& shape, const std::vector<SegmentSpec>& layout,
+                                 const std::vector<SegmentMap>& maps, std::mt19937_64& rng) {
+  const double lo = shape.served_min, hi = shape.served_max;
+  const double width = std::isfinite(hi - lo) ? hi - lo : 0.0;
   std::vector<double> points;
   const int uniform_points = 96;
   for (int i = 0; i <= uniform_points; ++i) points.push_back(lo + width * i / uniform_points);
-  std::uniform_real_distribution<double> pick(lo, hi);
+  std::uniform_real_distribution<double> pick(lo, lo + width);
   for (int i = 0; i < 64; ++i) points.push_back(pick(rng));
+  for (std::size_t g = 0; g < maps.size(); ++g) {
+    const SegmentMap& map = maps[g];
+    const int intervals = layout[g].knots - 1;
+    const double step = (map.u_hi - map.u_lo) / intervals;
+    for (int j = 0; j < intervals; ++j) {
+      const double s_a = map.separation_of_u(map.u_lo + step * j), s_b = map.separation_of_u(map.u_lo + step * (j + 1));
+      if (!overlaps(std::min(s_a, s_b), std::max(s_a, s_b), lo, hi)) continue;
+      const int parts = j < 2 || j >= intervals - 2 ? 8 : 4;
+      for (int k = 1; k < parts; ++k) points.push_back(map.separation_of_u(map.u_lo + step * (j + double(k) / parts)));
+    }
+  }
   std::vector<double> ends = {lo, hi};
   for (const SegmentMap& map : maps) ends.insert(ends.end(), {map.s_lo, map.s_hi});
-  for (double end : ends)
+  for (double end : ends) {
+    if (!std::isfinite(end)) continue;
     for (int k = 1; k <= 15; ++k) {
-      const double step = std::max(std::fabs(end), 1e-3) * std::pow(10.0, -k);
-      points.insert(points.end(), {end - step, end + step});
+      const double offset = std::max(std::fabs(end), 1e-3) * std::pow(10.0, -k);
+      points.insert(points.end(), {end - offset, end + offset});
     }
-  for (double magnitude : {1e-300, 1e-200, 1e-100, 1e-50, 1e-30, 1e-20, 1e-15, 1e-12, 1e-9, 1e-6, 1e-4, 1e-3, 1e-2})
+  }
+  for (int k = 4; k <= 80; ++k) {  // 1e-1 down to 1e-20, four a decade; then every ten decades
+    const double magnitude = std::pow(10.0, -k / 4.0);
     points.insert(points.end(), {magnitude, -magnitude});
-  points.push_back(0.0);
+  }
+  for (double magnitude = 1e-30; magnitude > 1e-305; magnitude *= 1e-10) points.insert(points.end(), {magnitude, -magnitude});
+  // the lookup grid's binades end at powers of two, and so does its first-contact zone, where
+  // it answers X_n(0) and is farthest from the truth just below its end
+  for (int k = -10; k <= 72; ++k) {
+    const double binade = std::ldexp(1.0, -k), below = std::nextafter(binade, 0.0);
+    points.insert(points.end(), {binade, -binade, below, -below});
+  }
+  points.insert(points.end(), {0.0, 4.9406564584124654e-324, -4.9406564584124654e-324});
+  const double table_max = maps.back().s_hi;
+  if (table_max > 0 && hi > table_max)  // the series past the table, log-spaced
+    for (int k = 1; k <= 48; ++k) points.push_back(table_max * std::pow(hi / table_max, k / 48.0));
   std::vector<double> inside;
   for (double point : points)
     if (point >= lo && point <= hi) inside.push_back(point);
+  std::sort(inside.begin(), inside.end());
+  inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
   return inside;
 }
 
+// Checks a thinned curve as it is served (its lookup grid included) against quadrature at
+// check_points. Returns, per order, the largest error found plus the grid's own largest
+// difference from the table (where the points may fall beside the grid's peaks): the bound the
+// file stores. Marks the segments where an order's bound there exceeds the shape's tolerance,
+// and gives each requirement's bound (its orders, its separations).
 std::vector<double> verify(const Group& group, const Shape& shape, const std::vector<SegmentSpec>& layout,
                            const std::vector<double>& data, std::vector<char>& failed_segments,
                            std::vector<double>& requirement_error) {
   const Curve curve(group.distribution, group.side, shape.shape, layout, data.data(), Curve::all_orders,
                     grid_options(shape));
+  const double grid_error = curve.grid_error();
   const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, group.distribution, group.side, shape.shape);
   const CurveId id{group.distribution, group.side, shape.shape};
   std::vector<double> errors(order_count, 0.0);
   requirement_error.assign(shape.requirements.size(), 0.0);
   std::mt19937_64 rng(97);
-  for (std::size_t r = 0; r < shape.requirements.size(); ++r) {
-    const Requirement& requirement = shape.requirements[r];
-    for (double separation : check_points(requirement, maps, rng)) {
-      std::size_t segment = 0;
-      while (segment + 1 < maps.size() && separation > maps[segment].s_hi) ++segment;
-      for (int twice_order = 0; twice_order < order_count; ++twice_order) {
-        const double reference = log_integral(id, order_of(twice_order), separation);
-        const double value = curve.log_value(twice_order, separation);
-        double error;
-        if (std::isinf(reference) && reference < 0) error = value == reference ? 0 : 1;
-        else error = std::fabs(std::expm1(value - reference));
-        if (std::isnan(error)) error = 1;
-        errors[twice_order] = std::max(errors[twice_order], error);
-        const bool requested = std::find(requirement.twice_orders.begin(), requirement.twice_orders.end(),
-                                         twice_order) != requirement.twice_orders.end();
-        if (!requested) continue;
-        requirement_error[r] = std::max(requirement_error[r], error);
-        if (error > requirement.tolerance) failed_segments[segment] = 1;
+  for (double separation : check_points(shape, layout, maps, rng)) {
+    std::size_t segment = 0;
+    while (segment + 1 < maps.size() && separation > maps[segment].s_hi) ++segment;
+    for (int twice_order = 0; twice_order < order_count; ++twice_order) {
+      const double reference = log_integral(id, order_of(twice_order), separation);
+      const double value = curve.log_value(twice_order, separation);
+      double error;
+      if (std::isinf(reference) && reference < 0) error = value == reference ? 0 : 1;
+      else error = std::fabs(std::expm1(value - reference)) + grid_error;
+      if (std::isnan(error)) error = 1;
+      errors[twice_order] = std::max(errors[twice_order], error);
+      if (error > shape.tolerance) failed_segments[segment] = 1;
+      for (std::size_t r = 0; r < shape.requirements.size(); ++r) {
+        const Requirement& requirement = shape.requirements[r];
+        if (separation >= requirement.separation_min && separation <= requirement.separation_max &&
+            std::find(requirement.twice_orders.begin(), requirement.twice_orders.end(), twice_order) !=
+                requirement.twice_orders.end())
+          requirement_error[r] = std::max(requirement_error[r], error);
       }
     }
   }
+  for (double& error : errors) error = std::max(error, grid_error);
   return errors;
 }
 
@@ -262,8 +315,6 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
       report.separation_min = curve.range_min;
       report.separation_max = curve.range_max;
     }
-    // the bounded side is 0 from s = 0 on: nothing to tabulate there
-    if (curve.side == Side::bounded) report.separation_max = std::min(report.separation_max, -1e-12);
     result.curves.push_back(report);
     auto group = std::find_if(groups.begin(), groups.end(), [&](const Group& g) {
       return g.distribution == curve.distribution && g.side == curve.side;
@@ -281,6 +332,8 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
     shape->requirements.push_back({result.curves.size() - 1, curve.twice_orders, report.separation_min,
                                    report.separation_max, curve.max_rel_error});
   }
+  for (Group& group : groups)
+    for (Shape& shape : group.shapes) serve_hull(shape, result.curves);
 
   std::ostringstream options;
   options.precision(12);
@@ -291,11 +344,10 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
   for (Group& group : groups) {
     std::sort(group.shapes.begin(), group.shapes.end(), [](const Shape& a, const Shape& b) { return a.shape < b.shape; });
     double range_lo = std::numeric_limits<double>::infinity(), range_hi = -range_lo;
-    for (const Shape& shape : group.shapes)
-      for (const Requirement& requirement : shape.requirements) {
-        range_lo = std::min(range_lo, requirement.separation_min);
-        range_hi = std::max(range_hi, requirement.separation_max);
-      }
+    for (const Shape& shape : group.shapes) {
+      range_lo = std::min(range_lo, shape.served_min);
+      range_hi = std::max(range_hi, shape.served_max);
+    }
     const std::vector<SegmentSpec> base =
         split_for_range(default_layout(group.distribution, group.side), range_lo, range_hi);
     const double tolerance = group_tolerance(group);

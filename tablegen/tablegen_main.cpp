@@ -67,12 +67,14 @@ void apply_shapes(const std::string& spec, tablegen::GenerateOptions& options) {
     usage("--shapes needs " + format_double(scene_shape_min) + " <= LO <= HI <= " + format_double(scene_shape_max) +
           ", got LO " + format_double(lo) + ", HI " + format_double(hi));
   if (!(step > 0)) usage("--shapes needs STEP > 0");
-  // The grid's spacing in q = ln a - 1/a is at most STEP: bound the node count before making it.
-  const double intervals = (shape_grid_variable(hi) - shape_grid_variable(lo)) / step;
+  // The grid's spacing in q = ln a - 1/a is at most STEP (2/3 of it on the bounded side): bound
+  // the node count before making it.
+  const double factor = tablegen::GenerateOptions::bounded_step_factor;
+  const double intervals = (shape_grid_variable(hi) - shape_grid_variable(lo)) / (step * factor);
   if (!(intervals <= max_grid_shapes)) {
     usage("--shapes " + quote_text(spec) + " asks for about " + format_double(std::ceil(intervals)) +
-          " grid shapes; at most " + std::to_string(max_grid_shapes) + " (STEP >= " +
-          approximately(1.001 * (shape_grid_variable(hi) - shape_grid_variable(lo)) / max_grid_shapes) +
+          " grid shapes on the bounded side; at most " + std::to_string(max_grid_shapes) + " (STEP >= " +
+          approximately(1.001 * (shape_grid_variable(hi) - shape_grid_variable(lo)) / (max_grid_shapes * factor)) +
           " for this range)");
   }
   options.shape_min = lo;
@@ -193,11 +195,15 @@ int generate(Options options) {
     }
   };
   if (!quiet)
-    std::fprintf(stderr, "tablegen: Weibull %s%s%s on %zu grid shapes (%s to %s served)%s\n",
+    std::fprintf(stderr, "tablegen: Weibull %s%s%s on %zu%s grid shapes (%s to %s served)%s\n",
                  generate.tail ? "tail" : "", generate.tail && generate.bounded ? " and " : "",
                  generate.bounded ? "bounded side" : (generate.tail ? " side" : "no side"),
-                 tablegen::shape_grid(generate).size(), format_double(generate.shape_min).c_str(),
-                 format_double(generate.shape_max).c_str(), generate.gaussian ? ", and the Gaussian" : "");
+                 tablegen::shape_grid(generate, generate.tail ? Side::tail : Side::bounded).size(),
+                 generate.tail && generate.bounded
+                     ? (" and " + std::to_string(tablegen::shape_grid(generate, Side::bounded).size())).c_str()
+                     : "",
+                 format_double(generate.shape_min).c_str(), format_double(generate.shape_max).c_str(),
+                 generate.gaussian ? ", and the Gaussian" : "");
   const TableData table = tablegen::generate_table(generate, progress);
   if (!quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
   tablegen::write_table_file(table, options.out);
@@ -238,8 +244,8 @@ int main(int argc, char** argv) {
       ->type_name("SCENE.toml");
   cli::add_text(app, "--shapes", o.shapes,
                 "Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5, uniform in q = ln(a) - 1/a "
-                "between them with spacing at most STEP, six nodes more past each end; every node within "
-                "[0.3, 50], at most 1000 (default 0.5:20:0.075)")
+                "between them with spacing at most STEP (2/3 of it on the bounded side), six nodes more past each "
+                "end; every node within [0.3, 50], at most 1000 (default 0.5:20:0.075)")
       ->type_name("LO:HI:STEP");
   cli::add_text(app, "--sides", o.sides, "Weibull sides to tabulate: tail, bounded, both (default) or none")
       ->type_name("LIST");

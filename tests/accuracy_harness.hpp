@@ -27,14 +27,19 @@ struct Probe {
   bool closed_form = false;
 };
 
-// Fills reference, value and error of every probe (relative error |X/X_ref - 1|, from logs).
-// ASPERITY_TEST_SUBSAMPLE=k keeps every k-th probe: the sanitizer pass of CI uses it (it checks
-// memory and undefined behaviour; the full numerical sweep runs in the optimized pass).
+// ASPERITY_TEST_SUBSAMPLE=k: the sweeps keep every k-th point. The sanitizer pass of CI uses it
+// (it checks memory and undefined behaviour; the full numerical sweep runs in the optimized pass).
+inline std::size_t subsample_stride() {
+  const char* text = std::getenv("ASPERITY_TEST_SUBSAMPLE");
+  return text ? static_cast<std::size_t>(std::max(1L, std::strtol(text, nullptr, 10))) : 1;
+}
+
+// Fills reference, value and error of every probe (relative error |X/X_ref - 1|, from logs),
+// every subsample_stride()-th probe only where that is above 1.
 inline void evaluate(std::vector<Probe>& probes) {
-  if (const char* text = std::getenv("ASPERITY_TEST_SUBSAMPLE")) {
-    const long stride = std::max(1L, std::strtol(text, nullptr, 10));
+  if (const std::size_t stride = subsample_stride(); stride > 1) {
     std::vector<Probe> kept;
-    for (std::size_t i = 0; i < probes.size(); i += static_cast<std::size_t>(stride)) kept.push_back(probes[i]);
+    for (std::size_t i = 0; i < probes.size(); i += stride) kept.push_back(probes[i]);
     probes.swap(kept);
   }
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());

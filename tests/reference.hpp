@@ -129,9 +129,11 @@ inline Precise reference_log(Distribution distribution, Side side, double shape_
 //   F_n(0) = 2^((n-1)/2) Gamma((n+1)/2) / sqrt(2 pi); the bounded side is exactly 0 (-inf).
 // - The Weibull tail's integer orders n = 0, 1, 2: for s <= 0 (d = -s) the moments of z + d,
 //   J_0 = 1, J_1 = Gamma(1+1/a) + d, J_2 = Gamma(1+2/a) + 2 d Gamma(1+1/a) + d^2; for
-//   0 < s <= 1 (t = s^a) J_n = sum_k C(n,k) (-s)^(n-k) Gamma(1 + k/a, t) (upper incomplete).
+//   s > 0 (t = s^a) J_0 = exp(-t) and J_1 = Gamma(1/a, t)/a (upper incomplete), which do not
+//   cancel, and for 0 < s <= 1 J_2 = sum_k C(2,k) (-s)^(2-k) Gamma(1 + k/a, t).
 // - The Weibull bounded side where tau = d^a <= 1, every order: exp(-z^a) as its power series,
-//   term by term K_n(d) = a d^(n+a) sum_m (-tau)^m / m! B(n + 1, a (m + 1)).
+//   term by term K_n(d) = a d^(n+a) sum_m (-tau)^m / m! B(n + 1, a (m + 1)); where tau > 1 the
+//   orders 0 and 1: K_0 = 1 - exp(-tau), K_1 = d - gamma(1/a, tau)/a (lower incomplete).
 // nullopt elsewhere.
 inline std::optional<Precise> closed_form_log(Distribution distribution, Side side, double shape_value,
                                               int twice_order, double separation_value) {
@@ -148,7 +150,11 @@ inline std::optional<Precise> closed_form_log(Distribution distribution, Side si
   if (side == Side::bounded) {
     if (separation >= 0) return -inf;
     const Precise distance = -separation, tau = pow(distance, shape);
-    if (tau > 1) return std::nullopt;
+    if (tau > 1) {
+      if (twice_order == 0) return log(-boost::multiprecision::expm1(-tau));
+      if (twice_order == 2) return log(distance - boost::math::tgamma_lower(1 / shape, tau) / shape);
+      return std::nullopt;
+    }
     Precise sum = 0, power = 1;  // power = (-tau)^m / m!
     for (int m = 0; m < 400; ++m) {
       const Precise term = power * boost::math::beta(order + 1, shape * (m + 1));
@@ -168,11 +174,11 @@ inline std::optional<Precise> closed_form_log(Distribution distribution, Side si
     if (n == 1) return log(moment(1) + d);
     return log(moment(2) + 2 * d * moment(1) + d * d);
   }
-  if (separation > 1) return std::nullopt;  // the sum cancels more and more beyond the bulk
   const Precise t = pow(separation, shape);
   if (n == 0) return -t;
+  if (n == 1) return log(boost::math::tgamma(1 / shape, t) / shape);  // = Gamma(1 + 1/a, t) - s e^-t
+  if (separation > 1) return std::nullopt;  // the sum cancels more and more beyond the bulk
   auto upper = [&](int k) { return k == 0 ? Precise(exp(-t)) : Precise(boost::math::tgamma(1 + Precise(k) / shape, t)); };
-  if (n == 1) return log(upper(1) - separation * upper(0));
   return log(upper(2) - 2 * separation * upper(1) + separation * separation * upper(0));
 }
 

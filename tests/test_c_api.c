@@ -105,6 +105,23 @@ static void curve_statuses(const asperity_table *table) {
   CHECK(asperity_curve_order_mask(NULL) == 0u);
 }
 
+/* The separations a curve serves: the whole axis for a full table's curve (a scene table's
+ * range: tests/test_scene.cpp); NaN and ASPERITY_BAD_HANDLE for NULL. */
+static void curve_range(const asperity_table *table) {
+  char err[512];
+  double lo = 0, hi = 0;
+  asperity_curve *curve = asperity_curve_open(table, "weibull", "bounded", 2.0, err, sizeof err);
+  CHECK(curve != NULL);
+  if (!curve) return;
+  CHECK(asperity_curve_range(curve, &lo, &hi) == ASPERITY_OK);
+  CHECK(isinf(lo) && lo < 0 && isinf(hi) && hi > 0);
+  CHECK(asperity_curve_range(NULL, &lo, &hi) == ASPERITY_BAD_HANDLE);
+  CHECK(isnan(lo) && isnan(hi));
+  CHECK(asperity_curve_range(curve, NULL, &hi) == ASPERITY_BAD_HANDLE && isnan(hi));
+  CHECK(strcmp(asperity_status_string(ASPERITY_OUTSIDE_RANGE), "unknown status") != 0);
+  asperity_curve_close(curve);
+}
+
 /* The batch calls with out overlapping sep: the values of separate buffers. */
 static void overlapping_batches(const asperity_curve *curve) {
   enum { n = 1000 };
@@ -232,6 +249,7 @@ int main(void) {
   table_statuses();
   curve_statuses(table);
   rms_height_scale(table);
+  curve_range(table);
   overlapping_batches(curve);
 
   asperity_curve_close(curve);

@@ -3,6 +3,7 @@
 // with good rows kept, any line ending; and the one number reader and writer of the commands.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -125,6 +126,54 @@ TEST(EvalCsv, NamesAShapeOutsideTheTableWithItsOwnDigits) {
   EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 1);
   EXPECT_NE(errors.str().find("shape 0.4999999 is outside the table's range [0.5, 20]"), std::string::npos)
       << errors.str();
+}
+
+// Issue #28: the served range is exact: a shape a hair outside [0.5, 20] is refused, and one a
+// hair off a grid node is interpolated (not served as the node).
+TEST(EvalCsv, TheShapeRangeIsExact) {
+  std::stringstream input("dist,side,shape,sep\nweibull,tail,0.49999999999995,1\nweibull,tail,20.0000000000001,1\n"
+                          "weibull,tail,0.5,1\nweibull,tail,20,1\n"),
+      output, errors;
+  EXPECT_EQ(cli::eval_csv(table(), input, output, errors), 2);
+  EXPECT_NE(errors.str().find("line 2: shape 0.49999999999995 is outside the table's range [0.5, 20]"),
+            std::string::npos) << errors.str();
+  EXPECT_NE(errors.str().find("line 3: shape 20.0000000000001 is outside"), std::string::npos) << errors.str();
+  EXPECT_EQ(lines(output.str()).size(), 3u);
+}
+
+// A scene table (here one made in memory from the default table's knots, served over [-2, -0.5])
+// refuses a row outside what it serves, naming the range; the bounded side at s >= 0 is 0.
+TEST(EvalCsv, RefusesASeparationOutsideWhatASceneTableServes) {
+  const CurveSet& full = *table().find(Distribution::weibull, Side::bounded);
+  const std::size_t index = static_cast<std::size_t>(std::find(full.shapes.begin(), full.shapes.end(), 2.0) -
+                                                     full.shapes.begin());
+  ASSERT_LT(index, full.shapes.size());
+  CurveSet set = full;
+  set.shapes = {2.0};
+  set.shape_min = set.shape_max = 2.0;
+  set.knots.assign(full.knots.begin() + index * full.curve_stride(), full.knots.begin() + (index + 1) * full.curve_stride());
+  set.max_rel_error.assign(full.max_rel_error.begin() + index * order_count,
+                           full.max_rel_error.begin() + (index + 1) * order_count);
+  set.grid_tolerance = {1e-13};
+  set.grid_separations = {-2.0, -0.5};
+  TableData data;
+  data.exact_shapes = true;
+  data.sets.push_back(set);
+  const Table scene(std::move(data));
+  std::stringstream input("dist,side,shape,sep\nweibull,bounded,2,-1\nweibull,bounded,2,-3\nweibull,bounded,2,-0.25\n"
+                          "weibull,bounded,2,0.5\nweibull,bounded,2,-2\n"),
+      output, errors;
+  EXPECT_EQ(cli::eval_csv(scene, input, output, errors), 2);
+  EXPECT_NE(errors.str().find("line 3: sep -3 is outside the separations this table serves for weibull bounded 2: "
+                              "[-2, -0.5]"),
+            std::string::npos)
+      << errors.str();
+  EXPECT_NE(errors.str().find("line 4: sep -0.25 is outside"), std::string::npos) << errors.str();
+  const std::vector<std::string> rows = lines(output.str());
+  ASSERT_EQ(rows.size(), 4u) << output.str();
+  EXPECT_EQ(fields(rows[1])[3], "-1");
+  EXPECT_EQ(fields(rows[2])[4], "0");  // s = 0.5: out of contact, exactly 0
+  EXPECT_EQ(fields(rows[3])[3], "-2");
 }
 
 TEST(EvalCsv, RefusesAnOverlongLineAndGoesOn) {

@@ -46,6 +46,15 @@ TEST(Tablegen, ShapeGridHasTheAnchorsAndACentredMargin) {
   EXPECT_EQ(std::count_if(shapes.begin(), shapes.end(), [](double a) { return a > 20; }), shape_stencil / 2);
   for (std::size_t i = 1; i < shapes.size(); ++i)
     EXPECT_LE(shape_grid_variable(shapes[i]) - shape_grid_variable(shapes[i - 1]), options.shape_log_step + 1e-12);
+  // the bounded side's grid: the same anchors and margin, 2/3 of the spacing (issue #28)
+  const std::vector<double> bounded = tablegen::shape_grid(options, Side::bounded);
+  for (double anchor : {0.5, 1.0, 2.0, 3.0, 5.0, 20.0})
+    EXPECT_NE(std::find(bounded.begin(), bounded.end(), anchor), bounded.end()) << anchor;
+  EXPECT_EQ(std::count_if(bounded.begin(), bounded.end(), [](double a) { return a > 20; }), shape_stencil / 2);
+  for (std::size_t i = 1; i < bounded.size(); ++i)
+    EXPECT_LE(shape_grid_variable(bounded[i]) - shape_grid_variable(bounded[i - 1]),
+              options.shape_log_step * tablegen::GenerateOptions::bounded_step_factor + 1e-12);
+  EXPECT_GT(bounded.size(), shapes.size() * 5 / 4);
 }
 
 }  // namespace

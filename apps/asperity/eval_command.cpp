@@ -35,7 +35,8 @@ void add_eval_command(CLI::App& app) {
       "Output: dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,lnI1_2,lnI1,lnI3_2,lnI2,lnI5_2, numbers in\n"
       "the shortest form that reads back to the same double; I* underflow to 0 below ~1e-308, lnI*\n"
       "stay finite (-inf where the value is exactly 0). A bad row is named by its line on standard\n"
-      "error and skipped; every good row is written.\n" +
+      "error and skipped; every good row is written. A scene table (docs/scenes.md) serves each curve\n"
+      "over its scene's separations only: a row outside them is refused, naming the range.\n" +
       std::string(exit_status_help));
   set_action(*command, [options] {
     const Table table = open_table(options->table);

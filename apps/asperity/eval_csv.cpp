@@ -178,6 +178,14 @@ std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& ou
       continue;
     }
     const Curve& curve = *found;
+    if (!curve.serves(separation)) {  // beyond what a scene table modelled: refused, never a guess
+      reject("sep " + format_double(separation) + " is outside the separations this table serves for " +
+             to_string(distribution) + " " + to_string(side) +
+             (distribution == Distribution::gaussian ? std::string() : " " + format_double(shape)) + ": [" +
+             format_double(curve.served_min_separation()) + ", " + format_double(curve.served_max_separation()) +
+             "]" + (side == Side::bounded ? " (and s >= 0, where X is 0)" : ""));
+      continue;
+    }
     std::string row = std::string(to_string(distribution)) + "," + to_string(side) + "," +
                       (distribution == Distribution::gaussian ? std::string(fields[2]) : format_double(shape)) + "," +
                       format_double(separation);

@@ -8,7 +8,9 @@
 
 namespace asperity::cli {
 
-// Processes every row; a bad row is reported on `errors` with its line number and skipped.
+// Processes every row; a bad row is reported on `errors` with its line number and skipped: one
+// the table cannot parse or resolve, or whose separation lies outside what the curve serves (a
+// scene table's range: Curve::serves), named with that range.
 // Lines end with LF, CRLF or a lone CR; a line longer than max_line_bytes is a bad row.
 // Returns the number of bad rows (a bad or missing header counts as one and stops). Stops early
 // when `output` fails (the caller reports the write error). Throws asperity::Error when reading

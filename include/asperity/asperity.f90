@@ -48,6 +48,9 @@ module asperity
   integer(c_int), parameter, public :: ASPERITY_NOT_IN_TABLE = 13    ! no such curve set, or the shape is outside it
   integer(c_int), parameter, public :: ASPERITY_NO_MEMORY = 14
   integer(c_int), parameter, public :: ASPERITY_FAILURE = 15         ! anything else: the message says what
+  ! asperity_eval_batch, asperity_contact, asperity_model_at_*: a separation outside the curve's
+  ! range (a scene table's: asperity_curve_range); those outputs NaN
+  integer(c_int), parameter, public :: ASPERITY_OUTSIDE_RANGE = 16
 
   ! Order masks for asperity_curve_load: bit 2**twice_order keeps X_(twice_order/2); combine with
   ! ior(). A curve of fewer orders takes less memory and answers NaN for the others.
@@ -80,6 +83,7 @@ module asperity
 
   public :: asperity_table_load, asperity_table_open, asperity_table_close
   public :: asperity_curve_load, asperity_curve_open, asperity_curve_order_mask, asperity_curve_close
+  public :: asperity_curve_range
   public :: asperity_eval, asperity_eval_log, asperity_eval_batch, asperity_eval_log_batch
   public :: asperity_contact, asperity_standardized_from_origin, asperity_origin_from_standardized
   public :: asperity_version, asperity_status_string, asperity_contact_modulus, asperity_height_scale_from_rms
@@ -150,6 +154,17 @@ module asperity
       import :: c_ptr
       type(c_ptr), value :: curve
     end subroutine
+
+    ! The separations the curve serves, [min, max]: IEEE -infinity and +infinity for a full
+    ! table's curves, a scene table's range for its curves; outside it every query answers NaN
+    ! (the bounded side at sep >= 0 excepted: exactly 0). Returns ASPERITY_OK, or
+    ! ASPERITY_BAD_HANDLE for c_null_ptr (min and max NaN).
+    function asperity_curve_range(curve, min, max) bind(c, name="asperity_curve_range")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: curve
+      real(c_double), intent(out) :: min, max
+      integer(c_int) :: asperity_curve_range
+    end function
 
     ! X_n(sep); NaN on bad input. Pure: no side effect, so usable in pure procedures.
     pure function asperity_eval(curve, twice_order, sep) bind(c, name="asperity_eval")

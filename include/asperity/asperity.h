@@ -48,7 +48,10 @@ typedef enum asperity_status {
   ASPERITY_BAD_NAME = 12,        /* dist or side is not a known name */
   ASPERITY_NOT_IN_TABLE = 13,    /* the table has no such curve set, or the shape is outside it */
   ASPERITY_NO_MEMORY = 14,
-  ASPERITY_FAILURE = 15          /* anything else: the message says what */
+  ASPERITY_FAILURE = 15,         /* anything else: the message says what */
+  /* asperity_eval_batch, asperity_contact, asperity_model_at_*: some separations lie outside the
+   * ones the curve serves (a scene table's range, asperity_curve_range): their outputs are NaN */
+  ASPERITY_OUTSIDE_RANGE = 16
 } asperity_status;
 
 /* Order masks: bit (1 << twice_order) keeps the integral of order twice_order / 2. A curve
@@ -85,21 +88,31 @@ asperity_curve *asperity_curve_open(const asperity_table *table, const char *dis
                                     double shape, char *err, size_t err_size);
 void asperity_curve_close(asperity_curve *curve);
 
+/* The separations a curve serves: *min = -INFINITY and *max = INFINITY for a full table's curves,
+ * a scene table's range for its curves (docs/scenes.md). Outside it every query answers NaN, except
+ * on the bounded side at sep >= 0, where the values are exactly 0. Returns ASPERITY_OK, or
+ * ASPERITY_BAD_HANDLE for a NULL argument (then *min and *max, where given, are NaN). */
+int asperity_curve_range(const asperity_curve *curve, double *min, double *max);
+
 /* twice_order: 0 -> I0, 1 -> I1/2, 2 -> I1, 3 -> I3/2, 4 -> I2, 5 -> I5/2; sep in the origin
- * convention (docs/model.md). NaN on bad input (NULL curve, bad order, NaN or infinite sep). */
+ * convention (docs/model.md). NaN on bad input (NULL curve, bad order, NaN or infinite sep, a sep
+ * outside the curve's range: asperity_curve_range). */
 double asperity_eval(const asperity_curve *curve, int twice_order, double sep);
 /* ln of the value: finite wherever the value is positive, -inf where it is exactly 0. */
 double asperity_eval_log(const asperity_curve *curve, int twice_order, double sep);
 /* out[i] = asperity_eval(curve, twice_order, sep[i]) for i < n, vectorized for the widest
  * instruction set this CPU has (results agree with asperity_eval to rounding: a few ulp of
- * ln X). out may overlap sep in any way. Returns a status code: the first problem found, every
- * other output still written. */
+ * ln X). out may overlap sep in any way. Returns a status code, every other output still written:
+ * ASPERITY_BAD_SEPARATION if some sep are NaN or infinite, else ASPERITY_OUTSIDE_RANGE if some lie
+ * outside the curve's range (their outputs NaN). */
 int asperity_eval_batch(const asperity_curve *curve, int twice_order, const double *sep, double *out, size_t n);
 /* The same for asperity_eval_log. */
 int asperity_eval_log_batch(const asperity_curve *curve, int twice_order, const double *sep, double *out, size_t n);
 
 /* The physical quantities of docs/model.md section 3 in one call, for N summits of radius R, height
- * scale sigma_s and plane-strain modulus E*. Returns a status code (NaNs on failure). */
+ * scale sigma_s and plane-strain modulus E*. Returns a status code (NaNs on failure):
+ * ASPERITY_BAD_SEPARATION, ASPERITY_OUTSIDE_RANGE (sep outside the curve's range) or
+ * ASPERITY_BAD_PARAMETER. */
 typedef struct asperity_contact_state {
   double count, area, load, stiffness, stiffness_ratio;
 } asperity_contact_state;
@@ -133,7 +146,9 @@ asperity_model *asperity_model_open(const asperity_table *table, const char *dis
                                     double nominal_area, double contact_modulus, char *err, size_t err_size);
 void asperity_model_close(asperity_model *model);
 /* Each returns a status code (ASPERITY_BAD_HANDLE for NULL, ASPERITY_BAD_SEPARATION for a NaN
- * input, whose outputs are NaN) and fills *out. A load, pressure or area <= 0 is no contact. */
+ * input, ASPERITY_OUTSIDE_RANGE for a separation, or a load, pressure or area whose separation,
+ * outside the range a scene table's curve serves; the outputs of both NaN) and fills *out. A load,
+ * pressure or area <= 0 is no contact. */
 int asperity_model_at_separation(const asperity_model *model, double separation, asperity_physical_state *out);
 int asperity_model_at_load(const asperity_model *model, double load, asperity_physical_state *out);
 int asperity_model_at_pressure(const asperity_model *model, double pressure, asperity_physical_state *out);

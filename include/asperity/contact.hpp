@@ -34,15 +34,16 @@ ContactScales contact_scales(const Surface& surface) noexcept;
 // The state from ln X and X of orders 0, 1/2, 1, 3/2 (Curve::contact_orders).
 ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept;
 
-// Returns false (and NaNs) for a non-physical surface (a value <= 0 or not finite) or a
-// NaN/infinite separation. Never throws or allocates. Inline (below): one call to the kernel
+// Returns false (and NaNs) for a non-physical surface (a value <= 0 or not finite), a
+// NaN/infinite separation, or one the curve does not serve (Curve::serves: outside a scene
+// table's range). Never throws or allocates. Inline (below): one call to the kernel
 // built for this CPU, which computes the factors too (Curve::contact_products_of_surface); the
 // rare rest out of line.
 bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept;
 // The same with the factors computed once (contact_scales(surface)): a surface queried at many
 // separations saves their square root and products on every query (bench_lookup
 // BM_ContactAllFour against BM_ContactAllFourScales). False (and NaNs) where a factor is not in
-// (0, DBL_MAX] or the separation is NaN or infinite.
+// (0, DBL_MAX] or the separation is NaN, infinite or not served.
 // (A name of its own: braces, contact_at(curve, {N, R, sigma_s, E*}, s, out), stay a Surface.)
 bool contact_at_scales(const Curve& curve, const ContactScales& scales, double separation, ContactState& out) noexcept;
 

@@ -9,7 +9,9 @@
 // table's own layout and the series answer. No allocation, no exception, no lock.
 // Accuracy: the table's measured error plus at most CurveOptions::grid_tolerance (docs/accuracy.md).
 // Errors by value: NaN for a NaN or infinite separation, an order outside 0..5 or one the
-// curve does not hold; value 0 (log -inf) where the integral is exactly 0 (bounded side, s >= 0).
+// curve does not hold, or a separation outside the separations it serves (a scene table's
+// range: served_min_separation, served_max_separation; a full table's curves serve every s);
+// value 0 (log -inf) where the integral is exactly 0 (bounded side, s >= 0), wherever s is.
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -27,12 +29,21 @@ struct GridReference;
 
 struct CurveOptions {
   // The largest error the lookup grid may add to the table's own, in ln X (so relative in X)
-  // where X >= 1e-100, and 100 times that below. Smaller costs memory, never time.
+  // where X >= 1e-100, and grid_far_factor times that below. Smaller costs memory, never time.
   double grid_tolerance = 1e-13;
+  // 1 to 1e6: 100 for a full table (its bound is 1e-10 where X < 1e-100), 1 for a scene table's
+  // curves (their tolerance holds everywhere in their range).
+  double grid_far_factor = 100;
   // The separations the grid covers (within the table's range); outside, the table's own
   // layout answers (a scene table: the scene's range).
   double grid_min_separation = -1.0 / 0.0;
   double grid_max_separation = 1.0 / 0.0;
+  // The separations the curve serves: outside them every lookup answers NaN (the bounded side
+  // at s >= 0 excepted, where X is exactly 0). A scene table's curves serve the range its scene
+  // asked for, no more (Table::curve narrows what is given here to it); the grid never covers
+  // more than this.
+  double served_min_separation = -1.0 / 0.0;
+  double served_max_separation = 1.0 / 0.0;
   // contact_orders (and contact_at) from a second copy of orders 0..3 laid out for one 4-lane
   // vector: 192 bytes more per grid interval (+67% of the grid), for four quantities at ~1.3x
   // the cost of one (docs/speed-vs-error.md). Off: they cost four lookups' worth of loads.
@@ -118,6 +129,16 @@ class Curve {
     return static_cast<unsigned>(twice_order) < static_cast<unsigned>(order_count) &&
            (lookup_.order_mask >> twice_order & 1u);
   }
+  // The separations the curve serves, [served_min_separation, served_max_separation]: -inf and
+  // +inf for a full table's curves (and a default Curve); a scene table's range for its curves
+  // (docs/scenes.md).
+  // Outside it every lookup (scalar, batch, contact_orders, log_values) answers NaN, except on
+  // the bounded side at s >= 0, where X is exactly 0 (log -inf) wherever the range ends.
+  double served_min_separation() const noexcept;
+  double served_max_separation() const noexcept;
+  // True where the curve answers (the range above, or the bounded side at s >= 0); false for
+  // NaN and outside.
+  bool serves(double separation) const noexcept;
   // The separations the table's knots span, from the end of the all-touching segment (which
   // reaches -inf) to the start of the series beyond the table (see asymptotic.hpp).
   double table_min_separation() const noexcept;

@@ -24,8 +24,9 @@ class InverseCurve {
   // for n = 1/2 the slope is not available and the inverse refuses (asperity::Error).
   InverseCurve(const Curve& curve, int twice_order);
 
-  // s with ln X_n(s) = log_value. NaN for NaN; +inf gives -inf (infinite contact); -inf gives
-  // +inf on the tail side (no contact) and 0 on the bounded side (first contact).
+  // s with ln X_n(s) = log_value. NaN for NaN, and where s would lie outside the separations
+  // the curve serves (Curve::serves: a scene table's range); +inf gives -inf (infinite contact);
+  // -inf gives +inf on the tail side (no contact) and 0 on the bounded side (first contact).
   double separation_at_log(double log_value) const noexcept;
   double separation_at(double value) const noexcept;
 

@@ -22,7 +22,7 @@ struct SceneCurveView {
 // Throws asperity::Error if the table lacks a curve, a shape is outside it, or its error bound
 // is looser than the scene asks (generate a scene table then).
 //   Bounds: a table's stored, measured error (max_rel_error) at one of its own shapes; between
-//   the grid shapes of a full table, the tested bound of docs/accuracy.md (1e-9).
+//   the grid shapes of a full table, the tested bound of docs/accuracy.md (1e-10).
 std::vector<SceneCurveView> serve_scene(const Table& table, const Scene& scene);
 
 // The separation where X_3/2 = load on a curve (bisection on ln X_3/2, which falls with s).

@@ -21,10 +21,13 @@ struct CurveSet {
   std::vector<double> knots;         // [shape][order][knot][3]
   std::vector<double> max_rel_error; // [shape][order], measured by the generator
   // Optional (scene tables; empty otherwise): per shape, the lookup grid's tolerance and the
-  // separations it covers [shape][2] (CurveOptions).
+  // separations the curve serves [shape][2], which its grid covers (CurveOptions): outside them
+  // a lookup answers NaN.
   std::vector<double> grid_tolerance;
   std::vector<double> grid_separations;
   CurveOptions curve_options(std::size_t shape_index) const;
+  // `asked`, its served separations narrowed to the curve's own; throws Error where they do not meet.
+  CurveOptions curve_options(std::size_t shape_index, const CurveOptions& asked) const;
 
   int total_knots() const;
   std::size_t curve_stride() const { return static_cast<std::size_t>(order_count) * total_knots() * 3; }

@@ -32,8 +32,9 @@
 //                                    served (the runtime's lookup grid included)
 //       grid_tolerance  [S]          optional (scene tables): the tolerance of the runtime's
 //                                    lookup grid for the curve (CurveOptions; 1e-13 if absent)
-//       grid_separations [S][2]      optional (scene tables): the separations the grid covers
-//                                    (the scene's range); outside, the table's layout answers
+//       grid_separations [S][2]      optional (scene tables): the separations the curve serves
+//                                    (its scene's range), which the grid covers; outside them a
+//                                    lookup answers NaN (X = 0 on the bounded side, s >= 0, excepted)
 #pragma once
 #include "asperity/segment_kind.hpp"
 #include <cstddef>

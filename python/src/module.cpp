@@ -221,6 +221,15 @@ void bind(py::module_& m) {
       .def_property_readonly("side", &Curve::side)
       .def_property_readonly("shape", &Curve::shape, "The Weibull shape a (2 for the Gaussian).")
       .def_property_readonly("order_mask", &Curve::order_mask, "Bit 1 << twice_order for each order held.")
+      .def_property_readonly("served_min_separation", &Curve::served_min_separation,
+                             "The separations the curve serves start here: -inf for a full table's curves, a scene\n"
+                             "table's range for its curves. Outside them value() and log_value() answer NaN\n"
+                             "(the bounded side at s >= 0 excepted: exactly 0).")
+      .def_property_readonly("served_max_separation", &Curve::served_max_separation,
+                             "The separations the curve serves end here: +inf for a full table's curves.")
+      .def("serves", py::vectorize(&Curve::serves), "separation"_a,
+           "True where the curve answers: inside [served_min_separation, served_max_separation], or the\n"
+           "bounded side at s >= 0 (exactly 0); False for NaN.")
       .def_property_readonly("table_min_separation", &Curve::table_min_separation,
                              "Where the knots start (below: the all-touching segment).")
       .def_property_readonly("table_max_separation", &Curve::table_max_separation,

@@ -244,6 +244,13 @@ def test_bad_separations_give_nan(weibull2):
     assert np.isnan(out[:3]).all() and np.isfinite(out[3])
 
 
+def test_served_separations(weibull2):
+    # a full table's curve serves every separation (a scene table's, its scene's range: NaN outside)
+    assert weibull2.served_min_separation == -np.inf and weibull2.served_max_separation == np.inf
+    assert weibull2.serves(1.0) and not weibull2.serves(np.nan)
+    assert weibull2.serves([-1e300, 0.0, 1e300, np.nan]).tolist() == [True, True, True, False]
+
+
 # ---- errors carry the library's message ----
 
 def test_errors(table, weibull2, tmp_path):

@@ -60,6 +60,14 @@ int eval_batch(const asperity_curve* curve, int twice_order, const double* sep, 
   int status = ASPERITY_OK;
   for (size_t i = 0; i < n; ++i)
     if (!std::isfinite(sep[i])) status = ASPERITY_BAD_SEPARATION;
+  // and, for a curve that serves a range only (a scene table's), for separations outside it
+  const asperity::Curve& served = curve->curve;
+  if (status == ASPERITY_OK && (served.served_min_separation() > -HUGE_VAL || served.served_max_separation() < HUGE_VAL))
+    for (size_t i = 0; i < n; ++i)
+      if (!served.serves(sep[i])) {
+        status = ASPERITY_OUTSIDE_RANGE;
+        break;
+      }
   auto run = [&](const double* in, double* to, size_t count) {
     if (log_output) curve->curve.log_value_batch(twice_order, in, to, count);
     else curve->curve.value_batch(twice_order, in, to, count);
@@ -219,7 +227,9 @@ static int physical_query(const asperity_model* model, double input, asperity_ph
   const asperity::PhysicalState state = (model->model.*query)(input);
   *out = {state.separation, state.mean_separation, state.count, state.real_area, state.area_fraction,
           state.load, state.pressure, state.stiffness, state.stiffness_over_load};
-  return std::isnan(input) ? ASPERITY_BAD_SEPARATION : ASPERITY_OK;
+  if (std::isnan(input)) return ASPERITY_BAD_SEPARATION;
+  // the count is NaN for a number in only where the separation is not served (a scene table's range)
+  return std::isnan(state.count) ? ASPERITY_OUTSIDE_RANGE : ASPERITY_OK;
 }
 
 int asperity_model_at_separation(const asperity_model* model, double separation, asperity_physical_state* out) {
@@ -280,7 +290,19 @@ int asperity_contact(const asperity_curve* curve, double summit_count, double su
                                        sep, state);
   *out = {state.count, state.area, state.load, state.stiffness, state.stiffness_ratio};
   if (ok) return ASPERITY_OK;
-  return std::isfinite(sep) ? ASPERITY_BAD_PARAMETER : ASPERITY_BAD_SEPARATION;
+  if (!std::isfinite(sep)) return ASPERITY_BAD_SEPARATION;
+  return curve->curve.serves(sep) ? ASPERITY_BAD_PARAMETER : ASPERITY_OUTSIDE_RANGE;
+}
+
+int asperity_curve_range(const asperity_curve* curve, double* min, double* max) {
+  if (!curve || !min || !max) {
+    if (min) *min = not_a_number;
+    if (max) *max = not_a_number;
+    return ASPERITY_BAD_HANDLE;
+  }
+  *min = curve->curve.served_min_separation();
+  *max = curve->curve.served_max_separation();
+  return ASPERITY_OK;
 }
 
 double asperity_standardized_from_origin(const asperity_curve* curve, double sep) {
@@ -311,6 +333,7 @@ const char* asperity_status_string(int status) {
     case ASPERITY_NOT_IN_TABLE: return "the table has no such curve, or the shape is outside it";
     case ASPERITY_NO_MEMORY: return "out of memory";
     case ASPERITY_FAILURE: return "failure";
+    case ASPERITY_OUTSIDE_RANGE: return "a separation lies outside the ones the curve serves (a scene table's range)";
     default: return "unknown status";
   }
 }

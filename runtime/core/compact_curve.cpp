@@ -122,6 +122,7 @@ double CompactCurve::log_value_closed_order_zero(double separation) const noexce
 void CompactCurve::log_values(double separation, int first, int last, double* out) const noexcept {
   if (first < 0 || last >= order_count || first > last) return;
   const bool finite = std::isfinite(separation);
+  const bool inside = separation >= served_min_ && separation <= served_max_;
   const bool weibull = distribution_ == Distribution::weibull;
   std::size_t segment = maps_.size();  // not looked up yet
   double u = 0, position = 0;
@@ -130,10 +131,12 @@ void CompactCurve::log_values(double separation, int first, int last, double* ou
     double& result = out[k - first];
     if (!has_order(k) || !finite) {
       result = not_a_number;
-    } else if (weibull && k == 0) {
-      result = log_value_closed_order_zero(separation);
     } else if (side_ == Side::bounded && separation >= 0) {
       result = minus_infinity;
+    } else if (!inside) {  // beyond what a scene table modelled: refused, never a guess
+      result = not_a_number;
+    } else if (weibull && k == 0) {
+      result = log_value_closed_order_zero(separation);
     } else if (side_ == Side::tail && std::fabs(separation) < zero_zone) {
       result = zero_log_[k];
     } else if (separation > table_max_) {

@@ -1,5 +1,6 @@
 #include "asperity/curve.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -66,15 +67,20 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
 
 void Curve::build(detail::CompactCurve& compact, const detail::GridReference& reference_in,
                   const CurveOptions& options) {
-  detail::GridReference reference = reference_in;
-  detail::describe_grid(reference, compact, options.grid_min_separation, options.grid_max_separation);
   if (!(options.grid_min_separation < options.grid_max_separation))
     throw Error("CurveOptions: the grid's separations must be an interval (min < max)");
+  if (!(options.served_min_separation < options.served_max_separation))
+    throw Error("CurveOptions: the served separations must be an interval (min < max)");
+  // the grid never covers what the curve does not serve (it may then cover nothing)
+  const double grid_min = std::max(options.grid_min_separation, options.served_min_separation);
+  const double grid_max = std::min(options.grid_max_separation, options.served_max_separation);
+  detail::GridReference reference = reference_in;
+  detail::describe_grid(reference, compact, grid_min, grid_max);
   auto data = std::make_shared<detail::CurveData>();
-  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance);
+  detail::FastGridBuild build = detail::build_fast_grid(reference, options.grid_tolerance, options.grid_far_factor);
   // where the grid covers the whole table, the table's own layout answers only outside it
-  if (options.grid_min_separation <= compact.table_min() && options.grid_max_separation >= compact.table_max())
-    compact.keep_outside_only();
+  if (grid_min <= compact.table_min() && grid_max >= compact.table_max()) compact.keep_outside_only();
+  compact.serve_only(options.served_min_separation, options.served_max_separation);
   detail::CurveLookup lookup;
   lookup.grid = build.grid;
   data->directory = std::move(build.directory);  // a move: lookup.grid.directory still points into it
@@ -114,6 +120,16 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
 Distribution Curve::distribution() const noexcept { return data_ ? data_->outside.distribution() : Distribution::weibull; }
 Side Curve::side() const noexcept { return data_ ? data_->outside.side() : Side::tail; }
 double Curve::shape() const noexcept { return data_ ? data_->outside.shape() : 0.0; }
+// A default Curve limits no separation (it holds no order: every query answers NaN anyway).
+double Curve::served_min_separation() const noexcept {
+  return data_ ? data_->outside.served_min() : -std::numeric_limits<double>::infinity();
+}
+double Curve::served_max_separation() const noexcept {
+  return data_ ? data_->outside.served_max() : std::numeric_limits<double>::infinity();
+}
+bool Curve::serves(double separation) const noexcept {
+  return data_ ? data_->outside.serves(separation) : !std::isnan(separation);
+}
 double Curve::table_min_separation() const noexcept { return data_ ? data_->outside.table_min() : not_a_number; }
 double Curve::table_max_separation() const noexcept { return data_ ? data_->outside.table_max() : not_a_number; }
 std::size_t Curve::grid_intervals() const noexcept { return data_ ? static_cast<std::size_t>(lookup_.grid.intervals) : 0; }

@@ -85,6 +85,7 @@ void fit_quintic(const double* values, double* out) {
 struct Builder {
   const GridReference& reference;
   double tolerance;
+  double far_tolerance;  // where X < 1e-100
   std::array<int, order_count> orders{};  // the held orders
   int held = 0;
   double achieved = 0;
@@ -108,14 +109,24 @@ struct Builder {
 
   // One binade's intervals first..last (of `knots`) at |s| = base (1 + (i + 1/2 + y)/knots):
   // appends their coefficients [held order][interval][6] to `block` and returns the largest
-  // error at the check points relative to what is allowed there.
+  // error at the check points relative to what is allowed there: the three where the
+  // interpolation error of a smooth curve peaks, or (dense) sixteen across each interval, for a
+  // binade whose error stalled (where the table's pieces do not meet, the error is not a
+  // smooth curve's, and the three would understate what it reports).
   double fit_binade(double sign, double base, double knots, std::int64_t first, std::int64_t last,
-                    std::vector<double>& block) const {
+                    std::vector<double>& block, bool dense = false) const {
     const Nodes& n = nodes();
+    std::vector<double> check_y(n.check.begin(), n.check.end());
+    if (dense) {
+      check_y.clear();
+      for (int g = 0; g < 16; ++g) check_y.push_back((g + 0.5) / 16 - 0.5);
+    }
+    const int check_count = static_cast<int>(check_y.size());
     const std::int64_t count = last - first + 1;
     block.assign(static_cast<std::size_t>(count) * held * 6, 0.0);
     double worst = 0;
-    std::vector<double> values(static_cast<std::size_t>(6) * held), checks(static_cast<std::size_t>(3) * held);
+    std::vector<double> values(static_cast<std::size_t>(6) * held),
+        checks(static_cast<std::size_t>(check_count) * held);
     std::vector<double> left(held);
     for (std::int64_t i = first; i <= last; ++i) {
       auto at = [&](double y) { return sign * base * (1 + (static_cast<double>(i) + 0.5 + y) / knots); };
@@ -129,21 +140,24 @@ struct Builder {
         for (int o = 0; o < held; ++o) values[o * 6 + k] = point[o];
       }
       for (int o = 0; o < held; ++o) left[o] = values[o * 6 + 5];
-      for (int g = 0; g < 3; ++g) {
+      for (int g = 0; g < check_count; ++g) {
         double point[order_count];
-        evaluate(at(n.check[g]), base, point);
-        for (int o = 0; o < held; ++o) checks[o * 3 + g] = point[o];
+        evaluate(at(check_y[g]), base, point);
+        for (int o = 0; o < held; ++o) checks[o * check_count + g] = point[o];
       }
       for (int o = 0; o < held; ++o) {
         double* c = &block[(static_cast<std::size_t>(o) * count + (i - first)) * 6];
         fit_quintic(&values[o * 6], c);
-        for (int g = 0; g < 3; ++g) {
-          const double truth = checks[o * 3 + g];
+        for (int g = 0; g < check_count; ++g) {
+          const double truth = checks[o * check_count + g];
           // what is asked, plus four units in the last place of ln X (the rounding of the
           // reference and of the quintic: a relative error |ln X| eps that no method escapes)
-          const double allowed = (truth >= log_of_1e_minus_100 ? tolerance : 100 * tolerance) +
-                                 8.8817841970012523e-16 * std::fabs(truth);
-          const double error = std::fabs(fast_quintic(c, 0, n.check[g]) - truth) / allowed;
+          double allowed = (truth >= log_of_1e_minus_100 ? tolerance : far_tolerance) +
+                           8.8817841970012523e-16 * std::fabs(truth);
+          // the Weibull order 0 where -s^a is below the tolerance: relative (find_first_contact_zones)
+          if (orders[o] == orders::count && reference.exact_order_zero && truth != 0)
+            allowed = std::min(allowed, 1e-3 * std::fabs(truth));
+          const double error = std::fabs(fast_quintic(c, 0, check_y[g]) - truth) / allowed;
           worst = std::max(worst, std::isnan(error) ? std::numeric_limits<double>::infinity() : error);
         }
       }
@@ -160,13 +174,14 @@ int biased_exponent(double magnitude) {
 
 }  // namespace
 
-// Next to s = 0 the grid answers what the closed forms give just inside |s| = 2^-70 (X_n(0),
-// or exp(-s^a) there for the Weibull order 0), for |s| < z. With D the larger of the
+// Next to s = 0 the grid answers what the closed forms give just inside |s| = 2^-70 (X_n(0);
+// not the Weibull order 0, whose closed form the grid fits), for |s| < z. With D the larger of the
 // tolerance and how far the table's value at 2^-69 is from that, past z (at every power of two
 // up to 2^-10) ln X_n has moved the right way by more than 2 D and monotonely, so the grid's
 // values (within the tolerance) lie beyond the zone's on their side: monotone across s = 0.
 // The table's own value wanders next to s = 0 at small shapes; the zone also covers that
-// wander where it stays within 20 D. Inside the zone the answer is within ~5 D of the truth.
+// wander where it stays within 20 D. Inside the zone the answer is within ~5 D of the truth,
+// farthest from it at the zone's end (a power of two), where a check should look.
 void find_first_contact_zones(Builder& builder, double upper_limit, int side) {
   const GridReference& reference = builder.reference;
   const double sign = side ? -1.0 : 1.0;
@@ -180,6 +195,21 @@ void find_first_contact_zones(Builder& builder, double upper_limit, int side) {
     allowed[k] = applies ? 2 * difference : 0;
     builder.first_contact_zone[k][side] = applies ? 4 * zero_zone : 0;
     previous[k] = near[k];
+  }
+  // The Weibull order 0 is its closed form ln J_0 = -s^a: held at its value at 2^-70 only while
+  // s^a <= 2^-60 (J_0 to 1e-18), and followed from there on (fit_binade: to 1e-3 of s^a where s^a
+  // is below the tolerance, so that it stays below 0 and falls). Held until it had moved by the
+  // tolerance's width instead, it was off by s^a there: 5e-11 at a = 0.5, s = 2^-67; 2e-12 at
+  // a = 3.54, s = 2^-11 (issue #28).
+  const bool exact_zero = reference.exact_order_zero && allowed[orders::count] > 0;
+  if (exact_zero) {
+    allowed[orders::count] = 0;
+    builder.first_contact_zone[orders::count][side] = zero_zone;  // no binade held ...
+    for (double top = 2 * zero_zone; top <= std::min(upper_limit, 1.0); top *= 2) {  // ... but these
+      reference.log_values(sign * top, moved);
+      if (!(std::fabs(moved[orders::count]) <= 8.673617379884035e-19)) break;  // 2^-60
+      builder.first_contact_zone[orders::count][side] = top;
+    }
   }
   const double last = std::min(upper_limit, 1.0 / 1024);
   for (double top = 4 * zero_zone; top <= last; top *= 2) {
@@ -208,11 +238,13 @@ void describe_grid(GridReference& reference, const CompactCurve& compact, double
   const double inside_zero_zone = std::nextafter(zero_zone, 0.0);  // the compact curve's closed forms
   compact.log_values(inside_zero_zone, 0, order_count - 1, reference.next_to_zero[0].data());
   compact.log_values(-inside_zero_zone, 0, order_count - 1, reference.next_to_zero[1].data());
+  reference.exact_order_zero = compact.distribution() == Distribution::weibull;
 }
 
-FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) {
+FastGridBuild build_fast_grid(const GridReference& reference, double tolerance, double far_factor) {
   if (!(tolerance > 0)) throw Error("the lookup grid's tolerance must be positive");
-  Builder builder{reference, tolerance};
+  if (!(far_factor >= 1 && far_factor <= 1e6)) throw Error("the lookup grid's far factor must lie in [1, 1e6]");
+  Builder builder{reference, tolerance, far_factor * tolerance};
   for (int order = 0; order < order_count; ++order)
     if (reference.order_mask >> order & 1u) builder.orders[builder.held++] = order;
 
@@ -252,7 +284,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
       const double from = std::max(lower, base), to = std::min(upper, 2 * base);
       knots = std::max(1.0, knots / 4);
       std::int64_t first = 0, last = 0;
-      auto fit = [&](double knots_in_binade) {  // the worst error at the check points, relative
+      auto fit = [&](double knots_in_binade, bool dense = false) {  // the worst at the check points, relative
         first = static_cast<std::int64_t>(std::floor((from / base - 1) * knots_in_binade));
         last = std::min(static_cast<std::int64_t>(knots_in_binade) - 1,
                         static_cast<std::int64_t>(std::floor((to / base - 1) * knots_in_binade)));
@@ -263,7 +295,7 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
                   << ": its lookup grid would take more than 2^17 intervals";
           throw Error(message.str());
         }
-        return builder.fit_binade(sign, base, knots_in_binade, first, last, block);
+        return builder.fit_binade(sign, base, knots_in_binade, first, last, block, dense);
       };
       struct Try { double knots, worst; };
       std::vector<Try> tries;
@@ -278,9 +310,10 @@ FastGridBuild build_fast_grid(const GridReference& reference, double tolerance) 
           for (const Try& t : tries) best = std::min(best, t.worst);
           for (const Try& t : tries)
             if (t.worst <= 1.5 * best) {
-              if (t.knots != knots) worst = fit(knots = t.knots);
+              knots = t.knots;
               break;
             }
+          worst = fit(knots, true);  // what it reports, from dense checks
           break;
         }
         knots *= 2;

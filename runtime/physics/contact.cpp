@@ -62,14 +62,14 @@ bool detail::contact_at_checked(const Curve& curve, const Surface& surface, doub
                                 ContactState& out) noexcept {
   const bool usable = positive_finite(surface.summit_count) & positive_finite(surface.summit_radius) &
                       positive_finite(surface.height_scale) & positive_finite(surface.contact_modulus) &
-                      finite(separation);
+                      finite(separation) & curve.serves(separation);
   return answer(usable, curve, contact_scales_of(surface), separation, out);
 }
 
 bool detail::contact_at_checked(const Curve& curve, const ContactScales& scales, double separation,
                                 ContactState& out) noexcept {
   const bool usable = positive_finite(scales.count) & positive_finite(scales.area) & positive_finite(scales.load) &
-                      positive_finite(scales.stiffness) & finite(separation);
+                      positive_finite(scales.stiffness) & finite(separation) & curve.serves(separation);
   return answer(usable, curve, scales, separation, out);
 }
 

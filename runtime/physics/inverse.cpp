@@ -39,9 +39,11 @@ InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(curve),
     throw Error("an inverse needs the curve to hold orders n and n - 1, n >= 1");
   // The separations spanned: from deep contact to the far tail (tail side), or to first contact
   // (bounded side); the tabulated values are those between ln X = -690 and the deep-contact end.
-  const double s_deep = curve.table_min_separation() * 4;  // all-touching segment: well inside
+  // A scene table's curve: only the separations it serves.
+  const double s_deep = std::max(curve.table_min_separation() * 4, curve.served_min_separation());
   y_hi_ = curve.log_value(twice_order, s_deep);
-  double hi = curve.side() == Side::bounded ? -1e-300 : curve.table_max_separation();
+  double hi = std::min(curve.side() == Side::bounded ? -1e-300 : curve.table_max_separation(),
+                       curve.served_max_separation());
   if (curve.log_value(twice_order, hi) <= lowest_value) hi = solve(lowest_value, s_deep, hi);
   y_lo_ = curve.log_value(twice_order, hi);
   if (!(y_hi_ > y_lo_) || !std::isfinite(y_hi_) || !std::isfinite(y_lo_)) throw Error("an inverse: the curve is not monotone");
@@ -73,17 +75,23 @@ double InverseCurve::newton(double separation, double log_value) const noexcept 
 
 // Values the table does not hold: deeper than its deep end (grow the bracket toward -inf), or
 // below ln X = -690 (grow it toward +inf on the tail side; up to first contact on the bounded).
+// The brackets stay within the separations the curve serves (a scene table's range).
 double InverseCurve::untabulated(double log_value) const noexcept {
+  const double range_min = curve_.served_min_separation(), range_max = curve_.served_max_separation();
   double lo, hi;
   if (log_value > y_hi_) {
     hi = knots_[2 * intervals_];
     lo = hi;
-    for (int i = 0; i < 1100 && curve_.log_value(twice_order_, lo) < log_value; ++i) lo = lo * 2 - 1;
+    for (int i = 0; i < 1100 && lo > range_min && curve_.log_value(twice_order_, lo) < log_value; ++i)
+      lo = std::max(lo * 2 - 1, range_min);
   } else {
     lo = knots_[0];
     hi = curve_.side() == Side::bounded ? -1e-300 : lo + 1;  // the bounded side: up to first contact
-    for (int i = 0; i < 2000 && curve_.side() == Side::tail && curve_.log_value(twice_order_, hi) > log_value; ++i)
-      hi = lo + (hi - lo) * 2;
+    hi = std::min(hi, range_max);
+    for (int i = 0; i < 2000 && curve_.side() == Side::tail && hi < range_max &&
+                    curve_.log_value(twice_order_, hi) > log_value;
+         ++i)
+      hi = std::min(lo + (hi - lo) * 2, range_max);
   }
   return solve(log_value, lo, hi);
 }
@@ -93,7 +101,11 @@ double InverseCurve::separation_at_log(double log_value) const noexcept {
   if (log_value == std::numeric_limits<double>::infinity()) return -std::numeric_limits<double>::infinity();
   if (log_value == -std::numeric_limits<double>::infinity())
     return curve_.side() == Side::bounded ? 0.0 : std::numeric_limits<double>::infinity();
-  if (!(log_value >= y_lo_ && log_value <= y_hi_)) return newton(untabulated(log_value), log_value);
+  if (!(log_value >= y_lo_ && log_value <= y_hi_)) {
+    // beyond what the curve serves (a scene table's range): NaN, as its lookups there
+    const double separation = newton(untabulated(log_value), log_value);
+    return curve_.serves(separation) ? separation : nan;
+  }
   double position = (log_value - y_lo_) * inv_step_;
   int interval = static_cast<int>(position);
   if (interval > intervals_ - 1) interval = intervals_ - 1;

@@ -11,7 +11,7 @@
 
 namespace asperity {
 namespace {
-constexpr double between_grid_bound = 1e-9;  // docs/accuracy.md, tests/test_accuracy.cpp
+constexpr double between_grid_bound = 1e-10;  // docs/accuracy.md, tests/test_accuracy.cpp
 }
 
 double separation_at_load(const Curve& curve, double load) {
@@ -20,14 +20,17 @@ double separation_at_load(const Curve& curve, double load) {
   const double target = std::log(load);
   // ln X_3/2 falls as s grows: bracket the root, then TOMS 748 (Boost.Math)
   auto excess = [&](double separation) { return curve.log_value(orders::load, separation) - target; };
-  double lo = -1, hi = curve.side() == Side::bounded ? -1e-300 : 1;
+  // brackets within the separations the curve serves (a scene table's range)
+  const double range_min = curve.served_min_separation(), range_max = curve.served_max_separation();
+  double lo = std::max(-1.0, range_min), hi = std::min(curve.side() == Side::bounded ? -1e-300 : 1.0, range_max);
+  if (!(lo < hi)) lo = range_min, hi = range_max;  // a range beside [-1, 1]
   for (int i = 0; !(excess(lo) > 0); ++i) {
-    if (i > 1100) return nan;
-    lo *= 2;
+    if (i > 1100 || lo == range_min) return nan;
+    lo = std::max(lo < 0 ? lo * 2 : lo - (hi - lo), range_min);
   }
   for (int i = 0; !(excess(hi) < 0); ++i) {
-    if (i > 2000 || curve.side() == Side::bounded) return nan;
-    hi = hi < 1 ? 1 : hi * 1.5;
+    if (i > 2000 || curve.side() == Side::bounded || hi == range_max) return nan;
+    hi = std::min(hi < 1 ? 1 : hi * 1.5, range_max);
   }
   boost::uintmax_t iterations = 200;
   try {
@@ -59,7 +62,7 @@ std::vector<SceneCurveView> serve_scene(const Table& table, const Scene& scene) 
       if (!(mask & order_bit(orders::load))) view.curve = table.curve(spec.distribution, spec.side, spec.shape, mask);
     }
     for (std::size_t i = 0; i < set->shapes.size(); ++i)
-      if (std::fabs(set->shapes[i] - spec.shape) <= 1e-12 * spec.shape || spec.distribution == Distribution::gaussian) {
+      if (set->shapes[i] == spec.shape || spec.distribution == Distribution::gaussian) {  // a node: its own error
         double stored = 0;
         if (!set->max_rel_error.empty())
           for (int twice_order : spec.twice_orders)

@@ -102,10 +102,26 @@ void CurveSet::validate(const std::string& context) const {
 
 CurveOptions CurveSet::curve_options(std::size_t shape_index) const {
   CurveOptions options;
-  if (shape_index < grid_tolerance.size()) {
+  if (shape_index < grid_tolerance.size()) {  // a scene table: its tolerance everywhere in its range
     options.grid_tolerance = grid_tolerance[shape_index];
-    options.grid_min_separation = grid_separations[2 * shape_index];
-    options.grid_max_separation = grid_separations[2 * shape_index + 1];
+    options.grid_far_factor = 1;
+    options.grid_min_separation = options.served_min_separation = grid_separations[2 * shape_index];
+    options.grid_max_separation = options.served_max_separation = grid_separations[2 * shape_index + 1];
+  }
+  return options;
+}
+
+CurveOptions CurveSet::curve_options(std::size_t shape_index, const CurveOptions& asked) const {
+  const CurveOptions own = curve_options(shape_index);
+  CurveOptions options = asked;
+  options.served_min_separation = std::max(asked.served_min_separation, own.served_min_separation);
+  options.served_max_separation = std::min(asked.served_max_separation, own.served_max_separation);
+  if (!(options.served_min_separation < options.served_max_separation)) {
+    std::ostringstream message;
+    message << "the separations asked to be served, [" << shortest(asked.served_min_separation) << ", "
+            << shortest(asked.served_max_separation) << "], lie outside the curve's own, ["
+            << shortest(own.served_min_separation) << ", " << shortest(own.served_max_separation) << "]";
+    throw Error(message.str());
   }
   return options;
 }
@@ -143,9 +159,12 @@ Curve Table::make_curve(Distribution distribution, Side side, double shape, unsi
   }
   if (distribution == Distribution::gaussian)
     return Curve(distribution, side, 2.0, set->layout, set->knots.data(), order_mask,
-                 options ? *options : set->curve_options(0));
+                 options ? set->curve_options(0, *options) : set->curve_options(0));
+  // A shape is a grid node only when it is that double: one a hair off it is interpolated (in
+  // the far tail ln X moves by t ln t da/a, 1e-9 at t = 700 for da/a = 1e-12), and a scene
+  // table, which cannot interpolate, refuses it.
   if (data_.exact_shapes && std::none_of(set->shapes.begin(), set->shapes.end(), [&](double node) {
-        return std::fabs(shape - node) <= 1e-12 * shape;
+        return shape == node;
       })) {
     std::ostringstream message;
     message << "this scene table serves only its own " << to_string(distribution) << " " << to_string(side)
@@ -155,7 +174,7 @@ Curve Table::make_curve(Distribution distribution, Side side, double shape, unsi
     throw Error(message.str());
   }
   const double lo = set->shape_min, hi = set->shape_max;
-  if (!std::isfinite(shape) || shape < lo * (1 - 1e-12) || shape > hi * (1 + 1e-12)) {
+  if (!(shape >= lo && shape <= hi)) {  // also NaN
     std::ostringstream message;
     message << "shape " << shortest(shape) << " is outside the table's range [" << shortest(lo) << ", "
             << shortest(hi) << "]";
@@ -164,9 +183,9 @@ Curve Table::make_curve(Distribution distribution, Side side, double shape, unsi
   const std::size_t count = set->shapes.size(), stride = set->curve_stride();
   // A grid shape: its knots as they are.
   for (std::size_t i = 0; i < count; ++i)
-    if (std::fabs(shape - set->shapes[i]) <= 1e-12 * shape)
+    if (shape == set->shapes[i])
       return Curve(distribution, side, set->shapes[i], set->layout, &set->knots[i * stride], order_mask,
-                   options ? *options : set->curve_options(i));
+                   options ? set->curve_options(i, *options) : set->curve_options(i));
 
   // Between grid shapes: Lagrange in q over the shape_stencil nearest nodes, centred.
   std::size_t upper = 1;

@@ -24,13 +24,25 @@ class CompactCurve {
                const double* knot_data, unsigned order_mask);
 
   // ln X_n(s) for twice_order = first..last into out[0..]; NaN for an order not held, for NaN
-  // and for infinite s; -inf where X is exactly 0 (bounded side, s >= 0).
+  // and for infinite s, and for s outside the served range; -inf where X is exactly 0 (bounded
+  // side, s >= 0, wherever the served range ends).
   void log_values(double separation, int first, int last, double* out) const noexcept;
   double log_value(int twice_order, double separation) const noexcept;
 
   // Frees the interval data of every segment but the first (the all-touching one, below
   // table_min): what is left answers s < table_min, s > table_max, s = 0 and |s| < 2^-70.
   void keep_outside_only();
+  // The separations answered (CurveOptions::served_min_separation ...); every s at first.
+  void serve_only(double min_separation, double max_separation) noexcept {
+    served_min_ = min_separation;
+    served_max_ = max_separation;
+  }
+  double served_min() const noexcept { return served_min_; }
+  double served_max() const noexcept { return served_max_; }
+  // s in the served range, or the bounded side at s >= 0 (exactly 0); false for NaN
+  bool serves(double separation) const noexcept {
+    return (separation >= served_min_ && separation <= served_max_) || (side_ == Side::bounded && separation >= 0);
+  }
 
   Distribution distribution() const noexcept { return distribution_; }
   Side side() const noexcept { return side_; }
@@ -53,6 +65,7 @@ class CompactCurve {
   double shape_ = 0;
   unsigned order_mask_ = 0;
   double table_min_ = 0, table_max_ = 0;
+  double served_min_ = -1.0 / 0.0, served_max_ = 1.0 / 0.0;
   std::vector<SegmentMap> maps_;
   std::vector<double> inverse_step_;       // per segment: intervals per unit of u
   std::vector<std::ptrdiff_t> first_;      // per segment: its first interval

@@ -35,6 +35,9 @@ struct GridReference {
   // s < 0), where the closed forms answer: X_n(0), or exp(-s^a) for the Weibull order 0; NaN
   // on the bounded side (X_n -> 0 there: nothing to meet). What the grid meets next to s = 0.
   std::array<std::array<double, order_count>, 2> next_to_zero{};
+  // The Weibull tail: order 0 is its closed form ln J_0 = -s^a (0 for s <= 0), which the grid
+  // follows down to where s^a <= 2^-60 (not a first-contact zone of the tolerance's width).
+  bool exact_order_zero = false;
 };
 
 // Fills what `reference` says about the curve from its compact form (all but log_values): the
@@ -43,14 +46,17 @@ void describe_grid(GridReference& reference, const CompactCurve& compact, double
 
 // The grid covers |s| from 2^-70 to the table's ends on each side the table covers. In each
 // binade the knot count is doubled until the quintics reproduce the compact curve at the check
-// points to `tolerance` in ln X (absolute: relative in X) where X >= 1e-100, and to 100 times
-// that below. A binade whose error stops falling (less than 16x over four doublings: the
-// table's pieces meet only to its own error there) keeps what it has, and the error is reported
-// (FastGridBuild::achieved, Curve::grid_error). Next to s = 0 the grid answers the closed
-// form's value (next_to_zero) until ln X_n has moved by more than twice the tolerance and the
-// table's own difference there: every curve monotone across s = 0, within ~5 times that. Throws asperity::Error if the compact curve is
-// not finite somewhere inside its range, or if the grid would take more than 2^17 interval fits
-// (the default table's curves take at most ~3,100, those of shapes 0.34-35 ~7,600).
-FastGridBuild build_fast_grid(const GridReference& reference, double tolerance);
+// points to `tolerance` in ln X (absolute: relative in X) where X >= 1e-100, and to far_factor
+// times that below (CurveOptions::grid_far_factor). A binade whose error stops falling (less
+// than 16x over four doublings: the table's pieces meet only to its own error there) keeps what
+// it has, and the error is reported (FastGridBuild::achieved, Curve::grid_error). Next to s = 0
+// the grid answers the closed form's value (next_to_zero) until ln X_n has moved by more than
+// twice the tolerance and the table's own difference there: every curve monotone across s = 0,
+// within ~5 times that; the Weibull order 0 (exact_order_zero) until s^a > 2^-60, then to 1e-3
+// of s^a where s^a is below the tolerance (so that it stays monotone and below 0). Throws
+// asperity::Error if the compact curve is not finite somewhere inside its range, or if the grid
+// would take more than 2^17 interval fits (the default table's curves take at most ~3,100, those
+// of shapes 0.34-35 ~7,600).
+FastGridBuild build_fast_grid(const GridReference& reference, double tolerance, double far_factor = 100);
 
 }  // namespace asperity::detail
