@@ -12,6 +12,7 @@
 #include "asperity/error.hpp"
 #include "asperity/topography/distribution_fit.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
+#include "spacing_fit.hpp"
 
 namespace t = asperity::topography;
 
@@ -216,4 +217,43 @@ TEST(TopographyFit, AndersonDarlingSizeAndPower) {
               bootstrap, sets, size, power);
   EXPECT_NEAR(size, 0.05, 3 * std::sqrt(0.05 * 0.95 / sets));
   EXPECT_GT(power, 0.5);
+}
+
+// The spacing objective's gradient, which the L-BFGS fit relies on, against central differences
+// (ties included), and the fit against a derivative-free search of the same objective.
+TEST(TopographyFit, SpacingGradientIsExact) {
+  for (double shape : {0.6, 1.5, 4.0, 12.0}) {
+    t::HeightDistribution d{t::HeightModel::weibull_tail, -1, 2, shape};
+    std::vector<double> x = t::draw_sample(d, 300, 11);
+    std::sort(x.begin(), x.end());
+    std::vector<double> y(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k) y[k] = x[k] - x[0];
+    y[150] = y[149];  // a tie
+    const t::detail::SpacingProblem problem{&y, std::log(1e-6)};
+    for (double gap : {1e-3, 0.1, 1.0}) {
+      const double p[3] = {std::log(gap), std::log(2.0), std::log(shape)};
+      double gradient[3];
+      t::detail::spacing_objective(problem, p, gradient);
+      for (int k = 0; k < 3; ++k) {
+        double plus[3] = {p[0], p[1], p[2]}, minus[3] = {p[0], p[1], p[2]};
+        const double h = 1e-6;
+        plus[k] += h;
+        minus[k] -= h;
+        const double numeric =
+            (t::detail::spacing_objective(problem, plus, nullptr) - t::detail::spacing_objective(problem, minus, nullptr)) /
+            (2 * h);
+        EXPECT_NEAR(gradient[k], numeric, 1e-6 * std::max(1.0, std::fabs(numeric)))
+            << "shape " << shape << " gap " << gap << " parameter " << k;
+      }
+    }
+    // the maximum L-BFGS finds is no lower than a fine derivative-free scan around it finds
+    const t::FitResult fit = t::fit_height_distribution(t::HeightModel::weibull_tail, x);
+    double best = -std::numeric_limits<double>::infinity();
+    for (int a = -20; a <= 20; ++a) {
+      t::HeightDistribution near = fit.distribution;
+      near.shape *= 1 + 0.002 * a;
+      best = std::max(best, t::mean_log_spacing(near, x));
+    }
+    EXPECT_GE(fit.objective, best - 1e-12) << "shape " << shape;
+  }
 }

@@ -345,6 +345,13 @@ def gaussian_random_field(nx: int, ny: int, dx: float, dy: float, spectrum: Sequ
 def expected_spectral_moments(dx: float, dy: float, spectrum: Sequence[SpectrumComponent]) -> SpectralMoments: ...
 def to_weibull_marginal(map: HeightMap, shape: float, bounded: bool = False) -> None: ...
 
+class CorrelationFunction(enum.Enum):
+    gaussian = 0
+    exponential = 1
+
+def spectral_random_field(nx: int, ny: int, dx: float, dy: float, function: CorrelationFunction,
+                          correlation_length: float, seed: int = 1) -> HeightMap: ...
+
 class ContactOptions:
     contact_modulus: float
     nominal_area: float

@@ -526,3 +526,13 @@ def test_stubs_name_what_the_submodule_holds():
                 m for m in dir(cls) if not m.startswith("_")}
             assert {m for m in members if not m.startswith("_")} == bound, name
             assert all(hasattr(cls, m) for m in members), name
+
+
+def test_spectral_random_field():
+    field = topography.spectral_random_field(128, 96, 1e-7, 1e-7, topography.CorrelationFunction.exponential, 6.0, seed=3)
+    assert field.heights.shape == (96, 128)
+    assert abs(float(np.var(field.heights)) - 1) < 0.2
+    again = topography.spectral_random_field(128, 96, 1e-7, 1e-7, topography.CorrelationFunction.exponential, 6.0, seed=3)
+    assert np.array_equal(field.heights, again.heights)
+    with pytest.raises(asperity.Error):
+        topography.spectral_random_field(2, 96, 1e-7, 1e-7, topography.CorrelationFunction.gaussian, 2.0)

@@ -6,11 +6,12 @@
 //
 // The spectrum: of the map's heights transformed to normal scores (each height replaced by
 // Phi^-1 of its mid-rank, so the spectrum is that of the Gaussian field behind any monotone
-// marginal), Hann-windowed (no leakage from the map's edges, which do not match), on a grid
-// padded beyond the map by two correlation lengths (at most half the map; so a surrogate is not
-// periodic across the map: the autocorrelation is below 0.1 across the wrap), to sizes of factors
-// 2, 3 and 5, its periodogram smoothed over the 3 x 3 nearest wavevectors (a periodogram's ordinates
-// are exponentially distributed; smoothing keeps a surrogate from carrying that noise twice).
+// marginal), estimated by Blackman and Tukey: the scores' autocovariance at every lag by FFT,
+// divided by each lag's pairs (missing points left out), with the variance the analysis took
+// from the map (its mean, and its plane when leveled) restored from the long lags' bias, under a
+// flat-topped lag window to six correlation lengths (at most three quarters of the map), laid on
+// a grid the map plus that lag wide (so a surrogate is not periodic across the map) and
+// transformed (surrogates.cpp says why each step).
 // A surrogate is a Gaussian random field with that spectrum (complex normal Fourier
 // coefficients, one inverse FFT), of unit variance in expectation, cut to the map's grid, and
 // missing where the map is. Its mean and variance over the map fluctuate from surrogate to
