@@ -46,6 +46,14 @@ void inverse_2d(const Complex* in, double* out, std::size_t ny, std::size_t nx) 
                  out, 1.0 / (static_cast<double>(nx) * static_cast<double>(ny)));
 }
 
+void transform_columns(Complex* data, std::size_t ny, std::size_t width, std::size_t first, std::size_t count,
+                       bool forward) {
+  if (count == 0) return;
+  const Stride stride{static_cast<std::ptrdiff_t>(width) * complex_size, complex_size};
+  pocketfft::c2c(Shape{ny, count}, stride, stride, Shape{0}, forward, data + first, data + first,
+                 forward ? 1.0 : 1.0 / static_cast<double>(ny));
+}
+
 std::vector<double> mean_line_autocovariance(const double* field, std::size_t lines, std::size_t n,
                                              std::size_t line_stride, std::size_t point_stride, double mean,
                                              std::size_t max_lag) {
