@@ -157,6 +157,7 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   direction_.assign(points, 0.0);
   work_.assign(points, 0.0);
   increment_.assign(points, 0.0);
+  stiffness_x_.assign(points, 0.0);
   spectrum_.assign(sy_ * half, {0.0, 0.0});
   kernel_.assign(sy_ * half, 0.0);
 
@@ -183,52 +184,60 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
     // pressure is the sum over aliases q + Q of 2/(E*|q + Q|) sinc(qx dx/2) sinc(qy dy/2); the
     // terms of m and -m nearly cancel (the sines alternate), so the sum over the square
     // |m|, |n| <= M converges like 1/M^2, and Richardson's step on M and M/2 removes that term.
-    const int inner = aliases / 2;
-    std::vector<double> sx_factor(2 * aliases + 1), qx2(2 * aliases + 1), sy_factor(2 * aliases + 1),
-        qy2(2 * aliases + 1);
-    for (std::size_t ky = 0; ky < sy_; ++ky) {
-      const double qy = wavenumber(ky, sy_, dy_);
-      for (int n = -aliases; n <= aliases; ++n) {
-        const double q = qy + n * alias_y;
-        sy_factor[n + aliases] = sinc(q * dy_ / 2);
-        qy2[n + aliases] = q * q;
+    const int inner = aliases / 2, width = 2 * aliases + 1;
+    // per column: the aliases' x sinc factors and squared wavenumbers
+    std::vector<double> x_factor(half * width), x_squared(half * width);
+    for (std::size_t kx = 0; kx < half; ++kx)
+      for (int m = -aliases; m <= aliases; ++m) {
+        const double q = wavenumber(kx, sx_, dx_) + m * alias_x;
+        x_factor[kx * width + m + aliases] = sinc(q * dx_ / 2);
+        x_squared[kx * width + m + aliases] = q * q;
       }
-      for (std::size_t kx = 0; kx < half; ++kx) {
-        const double qx = wavenumber(kx, sx_, dx_);
-        double value;
-        if (!love) {
-          const double q = std::hypot(qx, qy);
-          value = q > 0 ? 2 / (modulus * q) : 0.0;
-        } else if (kx == 0 && ky == 0) {
-          value = 0;  // the mean: every alias's sinc vanishes, and the mean pressure moves no gap
-        } else {
-          for (int m = -aliases; m <= aliases; ++m) {
-            const double q = qx + m * alias_x;
-            sx_factor[m + aliases] = sinc(q * dx_ / 2);
-            qx2[m + aliases] = q * q;
-          }
-          double outer_sum = 0, inner_sum = 0;
-          for (int n = -aliases; n <= aliases; ++n) {
-            const double syf = sy_factor[n + aliases], y2 = qy2[n + aliases];
-            if (syf == 0) continue;
-            const bool inner_row = std::abs(n) <= inner;
-            double row = 0, inner_row_sum = 0;
-            for (int m = -aliases; m <= aliases; ++m) {
-              const double term = sx_factor[m + aliases] / std::sqrt(qx2[m + aliases] + y2);
-              row += term;
-              if (inner_row && std::abs(m) <= inner) inner_row_sum += term;
-            }
-            outer_sum += syf * row;
-            inner_sum += syf * inner_row_sum;
-          }
-          // error ~ c / M^2: S = S_M + (S_M - S_{M/2}) / 3 when M/2 is exactly half
-          const double extrapolated =
-              inner * 2 == aliases && inner > 0 ? outer_sum + (outer_sum - inner_sum) / 3 : outer_sum;
-          value = 2 / modulus * extrapolated;
+    // rows ky and sy - ky have the same kernel (it is even in qy): the first half, mirrored
+    const std::size_t rows = sy_ / 2 + 1;
+    in_parallel(threads_, rows, [&](std::size_t first, std::size_t count) {
+      std::vector<double> y_factor(width), y_squared(width);
+      for (std::size_t ky = first; ky < first + count; ++ky) {
+        const double qy = wavenumber(ky, sy_, dy_);
+        for (int n = -aliases; n <= aliases; ++n) {
+          const double q = qy + n * alias_y;
+          y_factor[n + aliases] = sinc(q * dy_ / 2);
+          y_squared[n + aliases] = q * q;
         }
-        kernel_[ky * half + kx] = value;
+        for (std::size_t kx = 0; kx < half; ++kx) {
+          const double qx = wavenumber(kx, sx_, dx_);
+          double value;
+          if (!love) {
+            const double q = std::hypot(qx, qy);
+            value = q > 0 ? 2 / (modulus * q) : 0.0;
+          } else if (kx == 0 && ky == 0) {
+            value = 0;  // the mean: every alias's sinc vanishes, and the mean pressure moves no gap
+          } else {
+            const double* xf = &x_factor[kx * width];
+            const double* x2 = &x_squared[kx * width];
+            double outer_sum = 0, inner_sum = 0;
+            for (int n = -aliases; n <= aliases; ++n) {
+              const double yf = y_factor[n + aliases], y2 = y_squared[n + aliases];
+              if (yf == 0) continue;
+              double row = 0, inner_row = 0;
+              for (int m = 0; m < width; ++m) {
+                const double term = xf[m] / std::sqrt(x2[m] + y2);
+                row += term;
+                if (std::abs(m - aliases) <= inner) inner_row += term;
+              }
+              outer_sum += yf * row;
+              if (std::abs(n) <= inner) inner_sum += yf * inner_row;
+            }
+            // error ~ c / M^2: S = S_M + (S_M - S_{M/2}) / 3 when M/2 is exactly half
+            const double extrapolated =
+                inner * 2 == aliases && inner > 0 ? outer_sum + (outer_sum - inner_sum) / 3 : outer_sum;
+            value = 2 / modulus * extrapolated;
+          }
+          kernel_[ky * half + kx] = value;
+          if (ky > 0 && sy_ - ky != ky) kernel_[(sy_ - ky) * half + kx] = value;
+        }
       }
-    }
+    });
     // the self-compliance: the real-space kernel at zero offset, the mean of the full spectrum
     double total = 0;
     for (std::size_t ky = 0; ky < sy_; ++ky)
@@ -306,38 +315,38 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   seed();
   std::fill(t.begin(), t.end(), 0.0);
   bool conjugate = false;
-  double previous = 1;
+  double previous = 1, scale = 1;  // scale: the load's rescaling of p, applied with the next convolution
   Solve solve;
+  // Every loop runs over the map's points only (a padded grid's other three quarters never
+  // carry pressure); k = j * sx + i.
+  const std::size_t nx = nx_, ny = ny_, sx = sx_;
   for (int iteration = 0;; ++iteration) {
     apply(p, u);
-    double approach = target;
+    double approach = target, sum = 0;
     std::size_t contact = 0;
-    if (by_pressure) {
-      double sum = 0;
-      for (std::size_t k = 0; k < points; ++k)
-        if (active_[k] && p[k] > 0) {
-          sum += u[k] - heights_[k];
-          ++contact;
-        }
-      approach = contact > 0 ? -sum / static_cast<double>(contact) : 0.0;
-    }
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+        p[k] *= scale;
+        u[k] *= scale;
+        const bool in = active_[k] && p[k] > 0;
+        sum += in ? u[k] - heights_[k] : 0.0;
+        contact += in;
+      }
+    scale = 1;
+    if (by_pressure) approach = contact > 0 ? -sum / static_cast<double>(contact) : 0.0;
     double weighted = 0, load = 0, penetration = 0, squares = 0;
-    contact = 0;
-    for (std::size_t k = 0; k < points; ++k) {
-      if (!active_[k]) {
-        g[k] = 0;
-        continue;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+        const double gap = active_[k] ? u[k] - heights_[k] + approach : 0.0;
+        g[k] = gap;
+        if (p[k] > 0) {
+          weighted += p[k] * std::fabs(gap);
+          load += p[k];
+          squares += gap * gap;
+        } else if (active_[k]) {
+          penetration = std::max(penetration, -gap);
+        }
       }
-      g[k] = u[k] - heights_[k] + approach;
-      if (p[k] > 0) {
-        ++contact;
-        weighted += p[k] * std::fabs(g[k]);
-        load += p[k];
-        squares += g[k] * g[k];
-      } else {
-        penetration = std::max(penetration, -g[k]);
-      }
-    }
     const double residual =
         std::max(load > 0 ? weighted / (load * rms_) : (contact == 0 ? 0.0 : INFINITY), penetration / rms_);
     report(by_pressure ? "pressure" : "gap", iteration, residual, contact);
@@ -359,21 +368,23 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
       continue;
     }
     const double beta = conjugate ? squares / previous : 0.0;
-    for (std::size_t k = 0; k < points; ++k) t[k] = active_[k] && p[k] > 0 ? g[k] + beta * t[k] : 0.0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) t[k] = p[k] > 0 ? g[k] + beta * t[k] : 0.0;
     previous = squares;
     apply(t, w);
-    double mean_w = 0;
-    if (by_pressure) {
-      for (std::size_t k = 0; k < points; ++k)
-        if (active_[k] && p[k] > 0) mean_w += w[k];
-      mean_w /= static_cast<double>(contact);
-    }
-    double numerator = 0, denominator = 0;
-    for (std::size_t k = 0; k < points; ++k)
-      if (active_[k] && p[k] > 0) {
-        numerator += g[k] * t[k];
-        denominator += (w[k] - mean_w) * t[k];
-      }
+    // step = sum g t / sum (w - mean w) t over the contact set (by pressure the mean of w is the
+    // flat's move); sum t is near zero, so w's mean enters through a small product
+    double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
+        if (p[k] > 0) {
+          sum_w += w[k];
+          sum_t += t[k];
+          sum_wt += w[k] * t[k];
+          numerator += g[k] * t[k];
+        }
+    const double mean_w = by_pressure ? sum_w / static_cast<double>(contact) : 0.0;
+    const double denominator = sum_wt - mean_w * sum_t;
     double step;
     if (denominator > 0 && std::isfinite(numerator)) {
       step = numerator / denominator;
@@ -387,23 +398,24 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     }
     std::size_t overlaps = 0;
     const double overlap_step = step > 0 ? step : 1 / self_compliance_;
-    for (std::size_t k = 0; k < points; ++k) {
-      if (!active_[k]) continue;
-      if (p[k] > 0) p[k] = std::max(p[k] - step * t[k], 0.0);
-      if (p[k] == 0 && g[k] < 0) {
-        p[k] = -overlap_step * g[k];
-        ++overlaps;
+    double total_now = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+        double value = p[k] > 0 ? std::max(p[k] - step * t[k], 0.0) : 0.0;
+        if (value == 0 && active_[k] && g[k] < 0) {
+          value = -overlap_step * g[k];
+          ++overlaps;
+        }
+        p[k] = value;
+        total_now += value;
       }
-    }
     conjugate = overlaps == 0;
     if (by_pressure) {
-      double sum = 0;
-      for (std::size_t k = 0; k < points; ++k) sum += p[k];
-      if (!(sum > 0)) {
+      if (!(total_now > 0)) {
         seed();
         conjugate = false;
       } else {
-        for (double& value : p) value *= total / sum;
+        scale = total / total_now;
       }
     }
   }
@@ -416,25 +428,28 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
 // a finite difference; the mean gap moves by 1 - <G x> over the map.
 void ExactContact::stiffness_of(ContactStep& step) {
   if (step.contact_points == 0) return;
-  const std::size_t points = sx_ * sy_;
-  if (step.contact_points == points) {  // periodic, full contact: no approach moves the flat
+  if (step.contact_points == sx_ * sy_) {  // periodic, full contact: no approach moves the flat
     step.stiffness = step.stiffness_per_area = step.approach_stiffness = INFINITY;
     return;
   }
-  std::vector<double>& x = increment_;
+  std::vector<double>& x = stiffness_x_;
+  std::vector<double>& w = increment_;
   std::vector<double>& r = work_;
   std::vector<double>& d = direction_;
-  std::vector<double>& w = displacement_;  // the solution's displacements are no longer needed
-  auto in_contact = [&](std::size_t k) { return active_[k] && pressure_[k] > 0; };
-  for (std::size_t k = 0; k < points; ++k) x[k] = in_contact(k) ? 1 / self_compliance_ : 0.0;
+  const std::size_t nx = nx_, ny = ny_, sx = sx_;
+  const std::vector<double>& p = pressure_;
+  // from an isolated pixel's increment (the last step's increments, tried, took more iterations)
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) x[k] = p[k] > 0 ? 1 / self_compliance_ : 0.0;
   apply(x, w);
   double squares = 0;
   const double norm = std::sqrt(static_cast<double>(step.contact_points));
-  for (std::size_t k = 0; k < points; ++k) {
-    r[k] = in_contact(k) ? 1 - w[k] : 0.0;
-    d[k] = r[k];
-    squares += r[k] * r[k];
-  }
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+      r[k] = p[k] > 0 ? 1 - w[k] : 0.0;
+      d[k] = r[k];
+      squares += r[k] * r[k];
+    }
   int iteration = 0;
   for (;; ++iteration) {
     const double residual = std::sqrt(squares) / norm;
@@ -449,35 +464,36 @@ void ExactContact::stiffness_of(ContactStep& step) {
                   number(options_.tolerance) + ")");
     apply(d, w);
     double curvature = 0;
-    for (std::size_t k = 0; k < points; ++k)
-      if (in_contact(k)) curvature += d[k] * w[k];
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) curvature += d[k] * w[k];  // d is 0 off contact
     if (!(curvature > 0)) throw Error("the stiffness solve broke down (a search direction of no curvature)");
     const double alpha = squares / curvature;
     double next = 0;
-    for (std::size_t k = 0; k < points; ++k)
-      if (in_contact(k)) {
-        x[k] += alpha * d[k];
-        r[k] -= alpha * w[k];
-        next += r[k] * r[k];
-      }
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
+        if (p[k] > 0) {
+          x[k] += alpha * d[k];
+          r[k] -= alpha * w[k];
+          next += r[k] * r[k];
+        }
     const double beta = next / squares;
     squares = next;
-    for (std::size_t k = 0; k < points; ++k) d[k] = in_contact(k) ? r[k] + beta * d[k] : 0.0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) d[k] = p[k] > 0 ? r[k] + beta * d[k] : 0.0;
   }
   apply(x, w);
   double increment = 0, moved = 0;
-  for (std::size_t k = 0; k < points; ++k) {
-    increment += x[k];
-    if (active_[k]) moved += w[k];
-  }
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+      increment += x[k];
+      moved += active_[k] ? w[k] : 0.0;
+    }
   const double mean_pressure = increment / static_cast<double>(nx_ * ny_);
   const double gap_change = 1 - moved / static_cast<double>(valid_points_);
   step.stiffness_iterations = iteration;
   step.stiffness_per_area = mean_pressure / gap_change;
   step.stiffness = step.stiffness_per_area * nominal_area_;
   step.approach_stiffness = mean_pressure * nominal_area_;
-  // the displacements of the solution again (gap_field reads them)
-  apply(pressure_, displacement_);
 }
 
 ContactStep ExactContact::describe(const Solve& solve) {

@@ -146,7 +146,7 @@ class ExactContact {
   std::vector<double> kernel_;       // the real spectrum of G on the solve grid (sy x (sx/2 + 1))
   std::vector<unsigned char> active_;  // on the solve grid: may carry pressure (a valid map point)
   std::vector<double> heights_;      // on the solve grid, about the mean plane (0 where inactive)
-  std::vector<double> pressure_, displacement_, direction_, work_, increment_;  // solve grid
+  std::vector<double> pressure_, displacement_, direction_, work_, increment_, stiffness_x_;  // solve grid
   std::vector<std::complex<double>> spectrum_;  // sy x (sx/2 + 1)
   double approach_ = 0;              // the last solution's rigid-body position
 };
