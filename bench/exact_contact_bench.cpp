@@ -7,7 +7,7 @@
 // The surface: self-affine, H 0.8, roll-off at a quarter of the map, cutoff at 4 pixels, rms
 // height 1 um on a 1 mm map, E* 1e11 Pa; the load steps p / (E* h'_rms) = 0.01, 0.02, 0.05, 0.1
 // (area fractions of about 2% to 20%), each from the last (a warm start), the incremental
-// stiffness solved at each. Counters: seconds per step, iterations per step (constrained and
+// stiffness solved at each. Counters: seconds per step (wall, and CPU over all threads), iterations per step (constrained and
 // stiffness), seconds per iteration, and that over the FFT pair's time.
 //
 //   build/bench/exact_contact_bench                        # all sizes (2048^2 takes minutes)
@@ -18,6 +18,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <ctime>
 #include <vector>
 
 #include "asperity/topography/exact_contact.hpp"
@@ -61,7 +62,7 @@ void steps(benchmark::State& state, ContactBoundary boundary, ContactKernel kern
   const std::vector<double> loads{0.01, 0.02, 0.05, 0.1};
   const std::size_t grid = boundary == ContactBoundary::padded ? 2 * n : n;
   const double pair = fft_pair_seconds(grid);
-  double total = 0, setup = 0;
+  double total = 0, setup = 0, cpu = 0;
   long iterations = 0, stiffness_iterations = 0, count = 0;
   for (auto _ : state) {
     ExactContactOptions options;
@@ -74,9 +75,11 @@ void steps(benchmark::State& state, ContactBoundary boundary, ContactKernel kern
     setup += seconds_since(built);
     for (double load : loads) {
       const auto start = std::chrono::steady_clock::now();
+      const std::clock_t cpu_start = std::clock();
       if (!warm) solver = ExactContact(map, options);
       const ContactStep step = solver.at_pressure(load * unit);
       const double seconds = seconds_since(start);
+      cpu += static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
       total += seconds;
       iterations += step.iterations;
       stiffness_iterations += step.stiffness_iterations;
@@ -90,6 +93,9 @@ void steps(benchmark::State& state, ContactBoundary boundary, ContactKernel kern
   // stiffness one): count both as their convolutions
   const double convolutions = 2.0 * static_cast<double>(iterations) + static_cast<double>(stiffness_iterations);
   state.counters["s_per_step"] = total / static_cast<double>(count);
+  // the process's CPU time over all threads: on a machine shared with other work the wall time
+  // above grows, this one less so
+  state.counters["cpu_s_per_step"] = cpu / static_cast<double>(count);
   state.counters["iterations_per_step"] = static_cast<double>(iterations) / static_cast<double>(count);
   state.counters["stiffness_iterations_per_step"] = static_cast<double>(stiffness_iterations) / static_cast<double>(count);
   state.counters["s_per_convolution"] = total / convolutions;
