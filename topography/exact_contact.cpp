@@ -7,6 +7,7 @@
 #include <sstream>
 #include <thread>
 
+#include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
 #include "asperity/topography/summits.hpp"
 #include "fft.hpp"
@@ -29,8 +30,8 @@ double wavenumber(std::size_t k, std::size_t n, double h) {
   return 2 * pi * signed_k / (static_cast<double>(n) * h);
 }
 
-// f(first, count) over [0, total) in `threads` contiguous parts, the first on this thread (and
-// every part whose thread the system refuses).
+// f(first, count) over [0, total) in `threads` contiguous blocks, on the project's threads
+// (detail::parallel_for: a thread the system refuses is no error).
 template <class Function>
 void in_parallel(int threads, std::size_t total, Function&& f) {
   const std::size_t parts = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), total);
@@ -38,17 +39,10 @@ void in_parallel(int threads, std::size_t total, Function&& f) {
     f(std::size_t{0}, total);
     return;
   }
-  std::vector<std::thread> workers;
-  for (std::size_t t = 1; t < parts; ++t) {
-    const std::size_t first = t * total / parts, count = (t + 1) * total / parts - first;
-    try {
-      workers.emplace_back([&f, first, count] { f(first, count); });
-    } catch (const std::system_error&) {
-      f(first, count);
-    }
-  }
-  f(std::size_t{0}, total / parts);
-  for (std::thread& worker : workers) worker.join();
+  asperity::detail::parallel_for(parts, static_cast<int>(parts), [&](std::size_t part) {
+    const std::size_t first = part * total / parts;
+    f(first, (part + 1) * total / parts - first);
+  });
 }
 
 double sinc(double x) { return x == 0 ? 1.0 : std::sin(x) / x; }
