@@ -170,4 +170,36 @@ TEST(PressureOverclosure, RefusesWhatItCannotDo) {
   EXPECT_NO_THROW(cli::write_pressure_overclosure(out, law, cli::CardFormat::abaqus, cli::CardUnits::si, ""));
 }
 
+// A tabulated curve (asperity exact-contact): its points as given, rounded to the card's digits,
+// in the law's card with its own notes; points out of order refused.
+TEST(PressureOverclosure, TabulatedCurve) {
+  const std::vector<cli::PressureOverclosurePoint> points{{0, -2e-7}, {1e6, -1.5e-7}, {1e7, -1.0000000000001234e-7}};
+  std::ostringstream out;
+  cli::write_tabulated_pressure_overclosure(out, points, cli::CardFormat::calculix, cli::CardUnits::mm, "a curve",
+                                            "points: 2 solutions\nfirst point: first contact");
+  EXPECT_EQ(out.str(),
+            "** a curve\n"
+            "** units: overclosure in mm, pressure in MPa\n"
+            "** overclosure: interpenetration of the contact surfaces (a clearance is negative), measured\n"
+            "**   from the rough surface's mean summit height to the flat\n"
+            "** points: 2 solutions\n"
+            "** first point: first contact\n"
+            "** beyond the last point CalculiX keeps the last pressure; node-to-face contact makes a contact\n"
+            "**   spring only within a clearance of 1e-3 sqrt(spring area) (ccx manual, *SURFACE BEHAVIOR)\n"
+            "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR\n"
+            "0,-0.0002\n1,-0.00015\n10,-0.0001\n");
+  std::ostringstream csv;
+  cli::write_tabulated_pressure_overclosure(csv, points, cli::CardFormat::csv, cli::CardUnits::si, "", "");
+  EXPECT_EQ(csv.str(), "pressure_Pa,overclosure_m\n0,-2e-07\n1000000,-1.5e-07\n10000000,-1e-07\n");
+  std::ostringstream refused;
+  const auto write = [&](const std::vector<cli::PressureOverclosurePoint>& p) {
+    cli::write_tabulated_pressure_overclosure(refused, p, cli::CardFormat::abaqus, cli::CardUnits::si, "", "");
+  };
+  EXPECT_THROW(write({{0, -2e-7}}), Error);                            // one point
+  EXPECT_THROW(write({{0, -1e-7}, {1e6, -2e-7}}), Error);              // overclosure falling
+  EXPECT_THROW(write({{1e6, -2e-7}, {1e5, -1e-7}}), Error);            // pressure falling
+  EXPECT_THROW(write({{0, -2e-7}, {NAN, -1e-7}}), Error);              // not finite
+  EXPECT_THROW(write({{-1, -2e-7}, {1e6, -1e-7}}), Error);             // negative pressure
+}
+
 }  // namespace

@@ -59,6 +59,14 @@ void make_hermitian_columns(Complex* coefficients, std::size_t py, std::size_t p
   }
 }
 
+void transform_columns(Complex* data, std::size_t ny, std::size_t width, std::size_t first, std::size_t count,
+                       bool forward) {
+  if (count == 0) return;
+  const Stride stride{static_cast<std::ptrdiff_t>(width) * complex_size, complex_size};
+  pocketfft::c2c(Shape{ny, count}, stride, stride, Shape{0}, forward, data + first, data + first,
+                 forward ? 1.0 : 1.0 / static_cast<double>(ny));
+}
+
 std::vector<double> mean_line_autocovariance(const double* field, std::size_t lines, std::size_t n,
                                              std::size_t line_stride, std::size_t point_stride, double mean,
                                              std::size_t max_lag) {

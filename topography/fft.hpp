@@ -33,6 +33,13 @@ void inverse_2d(const Complex* in, double* out, std::size_t ny, std::size_t nx);
 // Hermitian part of those columns and halves their variance (the field's mean among them).
 void make_hermitian_columns(Complex* coefficients, std::size_t py, std::size_t px);
 
+// Columns first ... first + count - 1 of a ny x width complex array (row r at data + r * width),
+// each transformed along y in place: forward (e^{-2 pi i k m / ny}) unscaled, or backward scaled
+// by 1/ny. With forward_rows / inverse_rows, a 2-D transform in parts that threads can share
+// (forward_rows on all rows, then the columns, gives forward_2d).
+void transform_columns(Complex* data, std::size_t ny, std::size_t width, std::size_t first, std::size_t count,
+                       bool forward);
+
 // The mean autocovariance of the lines of a field, with missing points (NaN) left out: line r's
 // point k is field[r * line_stride + k * point_stride] (rows: line_stride n, point_stride 1;
 // columns of a row-major nx-wide field: line_stride 1, point_stride nx): C(lag) = sum of (h[k] - mean)(h[k + lag] - mean) over every line and

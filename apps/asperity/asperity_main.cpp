@@ -14,6 +14,7 @@
 #include "command_line.hpp"
 #include "contact_command.hpp"
 #include "eval_command.hpp"
+#include "exact_contact_command.hpp"
 #include "summary_command.hpp"
 #include "surface_command.hpp"
 
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   add_summary_command(app);
   add_contact_command(app);
   add_surface_command(app);
+  add_exact_contact_command(app);
   app.footer(std::string("Run 'asperity COMMAND --help' for a command's options.\n") + exit_status_help);
   return run(app, argc, argv);
 }

@@ -161,20 +161,24 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
   return table;
 }
 
-void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
-                                CardUnits units, const std::string& description) {
+namespace {
+
+// The card (or CSV) of `points`; `notes` (lines without the "** ") go after the units and the
+// datum, where each kind of table states where its points come from.
+void write_card(std::ostream& out, const std::vector<PressureOverclosurePoint>& points, CardFormat format,
+                CardUnits units, const std::string& description, const std::string& notes) {
   const double length = units == CardUnits::mm ? 1e3 : 1.0;     // m -> mm
   const double pressure = units == CardUnits::mm ? 1e-6 : 1.0;  // Pa -> MPa = N/mm^2
   const char* length_unit = units == CardUnits::mm ? "mm" : "m";
   const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
   if (format == CardFormat::calculix)
-    for (std::size_t i = 1; i < table.points.size(); ++i)
-      if ((table.points[i].overclosure - table.points[i - 1].overclosure) * length < 1e-10)
+    for (std::size_t i = 1; i < points.size(); ++i)
+      if ((points[i].overclosure - points[i - 1].overclosure) * length < 1e-10)
         throw Error(std::string("two overclosures are closer than 1e-10 ") + length_unit +
                     ", which CalculiX moves apart: write the card in mm (--units mm) or give a larger tolerance");
   if (format == CardFormat::csv) {
     out << "pressure_" << pressure_unit << ",overclosure_" << length_unit << "\n";
-    for (const PressureOverclosurePoint& point : table.points)
+    for (const PressureOverclosurePoint& point : points)
       out << card_number(point.pressure * pressure) << "," << card_number(point.overclosure * length) << "\n";
     return;
   }
@@ -182,20 +186,50 @@ void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTabl
   for (std::string line; std::getline(lines, line);) out << "** " << line << "\n";
   out << "** units: overclosure in " << length_unit << ", pressure in " << pressure_unit << "\n"
       << "** overclosure: interpenetration of the contact surfaces (a clearance is negative), measured\n"
-      << "**   from the rough surface's mean summit height to the flat\n"
-      << "** from " << short_number(table.pressure_min * pressure) << " to "
-      << short_number(table.pressure_max * pressure) << " " << pressure_unit << " linear interpolation between the points is within " << table.tolerance << "\n"
-      << "**   (relative, in pressure) of the law: measured " << table.max_error << " at most, at "
-      << table.checked_points << " points\n"
-      << "** first point: zero pressure where the law's tangent at the lowest pressure reaches zero\n";
+      << "**   from the rough surface's mean summit height to the flat\n";
+  std::istringstream note_lines(notes);
+  for (std::string line; std::getline(note_lines, line);) out << "** " << line << "\n";
   if (format == CardFormat::calculix)
     out << "** beyond the last point CalculiX keeps the last pressure; node-to-face contact makes a contact\n"
         << "**   spring only within a clearance of 1e-3 sqrt(spring area) (ccx manual, *SURFACE BEHAVIOR)\n";
   else
     out << "** beyond the last point Abaqus continues the last slope\n";
   out << "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR\n";
-  for (const PressureOverclosurePoint& point : table.points)
+  for (const PressureOverclosurePoint& point : points)
     out << card_number(point.pressure * pressure) << "," << card_number(point.overclosure * length) << "\n";
+}
+
+}  // namespace
+
+void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
+                                CardUnits units, const std::string& description) {
+  const double pressure = units == CardUnits::mm ? 1e-6 : 1.0;
+  const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
+  std::ostringstream notes;
+  notes << "from " << short_number(table.pressure_min * pressure) << " to "
+        << short_number(table.pressure_max * pressure) << " " << pressure_unit
+        << " linear interpolation between the points is within " << table.tolerance << "\n"
+        << "  (relative, in pressure) of the law: measured " << table.max_error << " at most, at "
+        << table.checked_points << " points\n"
+        << "first point: zero pressure where the law's tangent at the lowest pressure reaches zero\n";
+  write_card(out, table.points, format, units, description, notes.str());
+}
+
+void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<PressureOverclosurePoint>& points,
+                                          CardFormat format, CardUnits units, const std::string& description,
+                                          const std::string& notes) {
+  if (points.size() < 2) throw Error("a tabulated pressure-overclosure curve needs at least two points");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const PressureOverclosurePoint& point = points[i];
+    if (!(std::isfinite(point.pressure) && std::isfinite(point.overclosure) && point.pressure >= 0))
+      throw Error("a point of the pressure-overclosure curve is not finite, or its pressure is negative");
+    if (i > 0 && !(point.overclosure > points[i - 1].overclosure && point.pressure >= points[i - 1].pressure))
+      throw Error("the pressure-overclosure curve must rise in overclosure, its pressure never falling");
+  }
+  std::vector<PressureOverclosurePoint> rounded;
+  for (const PressureOverclosurePoint& point : points)
+    rounded.push_back({round_to_card(point.pressure), round_to_card(point.overclosure)});
+  write_card(out, rounded, format, units, description, notes);
 }
 
 bool parse_card_format(const std::string& name, CardFormat& format) {

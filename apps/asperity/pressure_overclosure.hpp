@@ -59,6 +59,16 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
 void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
                                 CardUnits units, const std::string& description);
 
+// A curve given by its points (a tabulated law: the exact contact of a measured map, `asperity
+// exact-contact`), in the same card: ascending in overclosure, the pressure never falling
+// (points[0] may be the zero pressure at first contact); `notes` (one line per '\n') in the
+// header where a law's card states its interpolation error. Points are rounded to the card's
+// 13 digits. Throws asperity::Error for fewer than two points, a point not finite or of
+// negative pressure, points out of order, or as write_pressure_overclosure does.
+void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<PressureOverclosurePoint>& points,
+                                          CardFormat format, CardUnits units, const std::string& description,
+                                          const std::string& notes);
+
 bool parse_card_format(const std::string& name, CardFormat& format);
 bool parse_card_units(const std::string& name, CardUnits& units);
 

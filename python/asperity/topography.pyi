@@ -352,6 +352,55 @@ class CorrelationFunction(enum.Enum):
 def spectral_random_field(nx: int, ny: int, dx: float, dy: float, function: CorrelationFunction,
                           correlation_length: float, seed: int = 1) -> HeightMap: ...
 
+def self_affine_surface(nx: int, ny: int, dx: float, dy: float, *, hurst: float = 0.8, rolloff_wavelength: float = 0.0,
+                        cutoff_wavelength: float = 0.0, rms_height: float = 1e-6, seed: int = 1) -> HeightMap: ...
+def spectral_rms_gradient(map: HeightMap) -> float: ...
+
+class ContactStep:
+    """One load step of the exact contact (SI units)."""
+    pressure: float
+    load: float
+    mean_gap: float
+    separation_from_mean_summit: float
+    approach: float
+    area_fraction: float
+    real_area: float
+    stiffness: float
+    stiffness_per_area: float
+    approach_stiffness: float
+    max_pressure: float
+    contact_points: int
+    clusters: int
+    iterations: int
+    solves: int
+    residual: float
+    stiffness_iterations: int
+    stiffness_residual: float
+
+class ExactContact:
+    """The exact elastic contact of a height map with a flat (boundary elements on FFTs)."""
+    def __init__(self, map: HeightMap, *, contact_modulus: float, boundary: str = "periodic", kernel: str = "fourier",
+                 tolerance: float = 1e-8, max_iterations: int = 20000, love_aliases: int = 16, stiffness: bool = True,
+                 threads: int = 0) -> None: ...
+    def at_pressure(self, pressure: float) -> ContactStep: ...
+    def at_mean_gap(self, mean_gap: float) -> ContactStep: ...
+    def pressure_field(self) -> FloatArray: ...
+    def gap_field(self) -> FloatArray: ...
+    @property
+    def nx(self) -> int: ...
+    @property
+    def ny(self) -> int: ...
+    @property
+    def rms_height(self) -> float: ...
+    @property
+    def max_height(self) -> float: ...
+    @property
+    def mean_summit_height(self) -> float: ...
+    @property
+    def summits(self) -> int: ...
+    @property
+    def nominal_area(self) -> float: ...
+
 class ContactOptions:
     contact_modulus: float
     nominal_area: float

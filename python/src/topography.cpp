@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,11 +23,13 @@
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/contact_comparison.hpp"
 #include "asperity/topography/distribution_fit.hpp"
+#include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/height_map.hpp"
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/statistics.hpp"
+#include "asperity/topography/self_affine.hpp"
 #include "asperity/topography/summits.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/synthetic.hpp"
@@ -114,6 +118,21 @@ py::array_t<T> summit_field(const topo::Summits& summits, Field field) {
   py::array_t<T> out(static_cast<py::ssize_t>(summits.list.size()));
   T* data = out.mutable_data();
   for (std::size_t k = 0; k < summits.list.size(); ++k) data[k] = static_cast<T>(field(summits.list[k]));
+  return out;
+}
+
+// A solver and the lock that makes its calls one at a time: a solve runs without the GIL and
+// changes the solver's state (the warm start), so two Python threads must not run one together.
+struct ExactContactHandle {
+  ExactContactHandle(const topo::HeightMap& map, const topo::ExactContactOptions& options) : solver(map, options) {}
+  topo::ExactContact solver;
+  std::mutex lock;
+};
+
+// A field of the map's grid as a new (ny, nx) array.
+py::array_t<double> grid_array(const std::vector<double>& field, std::size_t nx, std::size_t ny) {
+  py::array_t<double> out({static_cast<py::ssize_t>(ny), static_cast<py::ssize_t>(nx)});
+  std::copy(field.begin(), field.end(), out.mutable_data());
   return out;
 }
 
@@ -681,6 +700,138 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
   m.def("to_weibull_marginal", &topo::to_weibull_marginal, "map"_a, "shape"_a, "bounded"_a = false,
         "Maps each height of a unit-variance Gaussian field to a unit Weibull of the shape (bounded: mirrored,\n"
         "bounded above), in place. Holds the GIL (other Python threads see the map before or after).");
+
+  // ---- the exact contact of a map (exact_contact.hpp, self_affine.hpp) ----
+  m.def(
+      "self_affine_surface",
+      [](const Count& nx, const Count& ny, double dx, double dy, double hurst, double rolloff_wavelength,
+         double cutoff_wavelength, double rms_height, std::uint64_t seed) {
+        const std::size_t columns = to_size(nx.object, "nx"), rows = to_size(ny.object, "ny");
+        topo::SelfAffineSpectrum spectrum;
+        spectrum.hurst = hurst;
+        spectrum.rolloff_wavelength = rolloff_wavelength;
+        spectrum.cutoff_wavelength = cutoff_wavelength;
+        spectrum.rms_height = rms_height;
+        return without_gil([&] { return topo::self_affine_surface(columns, rows, dx, dy, spectrum, seed); });
+      },
+      "nx"_a, "ny"_a, "dx"_a, "dy"_a, py::kw_only(), "hurst"_a = 0.8, "rolloff_wavelength"_a = 0.0,
+      "cutoff_wavelength"_a = 0.0, "rms_height"_a = 1e-6, "seed"_a = 1,
+      "A periodic self-affine Gaussian surface: C(q) flat below the roll-off wavenumber 2 pi / rolloff_wavelength\n"
+      "(0: the map's size), q^(-2(1 + hurst)) up to 2 pi / cutoff_wavelength (0: Nyquist), zero beyond; mean 0,\n"
+      "rms height exactly rms_height [m]; reproducible from seed. Raises asperity.Error for bad sizes or spectra.");
+  m.def(
+      "spectral_rms_gradient",
+      [](const topo::HeightMap& map) { return without_gil([copy = map] { return topo::spectral_rms_gradient(copy); }); },
+      "map"_a,
+      "The rms gradient sqrt(<|grad h|^2>) of a map taken as periodic, from its Fourier spectrum: the slope in\n"
+      "the area-load law A/A0 = kappa p / (E* h'_rms). Raises asperity.Error for missing points.");
+  py::class_<topo::ContactStep>(m, "ContactStep",
+                                "One load step of the exact contact: nominal pressure and load, the mean gap (the\n"
+                                "separation of the flat from the mean plane), that less the mean summit height (the GW\n"
+                                "curves' datum), area, stiffness -dP/d(mean gap) from the incremental solve, contact\n"
+                                "patches, and the solve's iterations and residual.")
+      .def_readonly("pressure", &topo::ContactStep::pressure, "Mean nominal pressure [Pa].")
+      .def_readonly("load", &topo::ContactStep::load, "[N] on the map's area.")
+      .def_readonly("mean_gap", &topo::ContactStep::mean_gap, "Separation of the flat from the mean plane [m].")
+      .def_readonly("separation_from_mean_summit", &topo::ContactStep::separation_from_mean_summit,
+                    "mean_gap less the mean summit height [m].")
+      .def_readonly("approach", &topo::ContactStep::approach, "The flat's rigid-body position [m].")
+      .def_readonly("area_fraction", &topo::ContactStep::area_fraction)
+      .def_readonly("real_area", &topo::ContactStep::real_area, "[m^2]")
+      .def_readonly("stiffness", &topo::ContactStep::stiffness, "-dP/d(mean gap) [N/m].")
+      .def_readonly("stiffness_per_area", &topo::ContactStep::stiffness_per_area, "[N/m^3]")
+      .def_readonly("approach_stiffness", &topo::ContactStep::approach_stiffness, "-dP/d(approach) [N/m].")
+      .def_readonly("max_pressure", &topo::ContactStep::max_pressure, "[Pa]")
+      .def_readonly("contact_points", &topo::ContactStep::contact_points)
+      .def_readonly("clusters", &topo::ContactStep::clusters, "Contact patches (4-neighbour; wrapped when periodic).")
+      .def_readonly("iterations", &topo::ContactStep::iterations)
+      .def_readonly("solves", &topo::ContactStep::solves)
+      .def_readonly("residual", &topo::ContactStep::residual)
+      .def_readonly("stiffness_iterations", &topo::ContactStep::stiffness_iterations)
+      .def_readonly("stiffness_residual", &topo::ContactStep::stiffness_residual)
+      .def("__repr__", [](const topo::ContactStep& s) {
+        return "ContactStep(pressure=" + std::string(py::repr(py::float_(s.pressure))) +
+               ", mean_gap=" + std::string(py::repr(py::float_(s.mean_gap))) +
+               ", area_fraction=" + std::string(py::repr(py::float_(s.area_fraction))) + ")";
+      });
+  py::class_<ExactContactHandle>(
+      m, "ExactContact",
+      "The exact elastic contact of a height map with a flat (boundary elements on FFTs, Polonsky-Keer's\n"
+      "constrained conjugate gradient; docs/exact-contact.md). boundary: 'periodic' or 'padded' (non-periodic,\n"
+      "zero padding); kernel: 'fourier' (point force) or 'love' (pixel-constant pressure). Each step starts\n"
+      "from the last solution. A solve that does not converge raises asperity.Error. Calls on one solver run\n"
+      "one at a time (a lock), without the GIL.")
+      .def(py::init([](const topo::HeightMap& map, double contact_modulus, const std::string& boundary,
+                       const std::string& kernel, double tolerance, int max_iterations, int love_aliases,
+                       bool stiffness, int threads) {
+             topo::ExactContactOptions options;
+             options.contact_modulus = contact_modulus;
+             if (!topo::parse_contact_boundary(boundary, options.boundary))
+               throw py::value_error("boundary must be 'periodic' or 'padded', not '" + boundary + "'");
+             if (!topo::parse_contact_kernel(kernel, options.kernel))
+               throw py::value_error("kernel must be 'fourier' or 'love', not '" + kernel + "'");
+             options.tolerance = tolerance;
+             options.max_iterations = max_iterations;
+             options.love_aliases = love_aliases;
+             options.stiffness = stiffness;
+             options.threads = threads;
+             return without_gil([copy = map, &options] { return std::make_unique<ExactContactHandle>(copy, options); });
+           }),
+           "map"_a, py::kw_only(), "contact_modulus"_a, "boundary"_a = "periodic", "kernel"_a = "fourier",
+           "tolerance"_a = 1e-8, "max_iterations"_a = 20000, "love_aliases"_a = 16, "stiffness"_a = true,
+           "threads"_a = 0)
+      .def(
+          "at_pressure",
+          [](ExactContactHandle& h, double pressure) {
+            py::gil_scoped_release unlocked;
+            std::lock_guard<std::mutex> guard(h.lock);
+            return h.solver.at_pressure(pressure);
+          },
+          "pressure"_a, "The contact at a mean nominal pressure [Pa] >= 0.")
+      .def(
+          "at_mean_gap",
+          [](ExactContactHandle& h, double mean_gap) {
+            py::gil_scoped_release unlocked;
+            std::lock_guard<std::mutex> guard(h.lock);
+            return h.solver.at_mean_gap(mean_gap);
+          },
+          "mean_gap"_a, "The contact at a mean gap [m] > 0 (the separation from the mean plane).")
+      .def(
+          "pressure_field",
+          [](ExactContactHandle& h) {
+            std::vector<double> field;
+            {
+              py::gil_scoped_release unlocked;
+              std::lock_guard<std::mutex> guard(h.lock);
+              field = h.solver.pressure_field();
+            }
+            return grid_array(field, h.solver.nx(), h.solver.ny());
+          },
+          "The last solution's pressure [Pa] as a (ny, nx) array (0 off contact).")
+      .def(
+          "gap_field",
+          [](ExactContactHandle& h) {
+            std::vector<double> field;
+            {
+              py::gil_scoped_release unlocked;
+              std::lock_guard<std::mutex> guard(h.lock);
+              field = h.solver.gap_field();
+            }
+            return grid_array(field, h.solver.nx(), h.solver.ny());
+          },
+          "The last solution's gap [m] as a (ny, nx) array (0 in contact, NaN at missing points).")
+      .def_property_readonly("nx", [](const ExactContactHandle& h) { return h.solver.nx(); })
+      .def_property_readonly("ny", [](const ExactContactHandle& h) { return h.solver.ny(); })
+      .def_property_readonly("rms_height", [](const ExactContactHandle& h) { return h.solver.rms_height(); },
+                             "About the mean plane [m].")
+      .def_property_readonly("max_height", [](const ExactContactHandle& h) { return h.solver.max_height(); },
+                             "The highest point above the mean plane [m].")
+      .def_property_readonly("mean_summit_height",
+                             [](const ExactContactHandle& h) { return h.solver.mean_summit_height(); },
+                             "Above the mean plane [m] (NaN without summits).")
+      .def_property_readonly("summits", [](const ExactContactHandle& h) { return h.solver.summits(); })
+      .def_property_readonly("nominal_area", [](const ExactContactHandle& h) { return h.solver.nominal_area(); },
+                             "[m^2]");
 
   // ---- contact curves of the fits (contact_comparison.hpp) ----
   py::class_<topo::ContactOptions>(m, "ContactOptions", "The contact curves of each fit.")

@@ -1,0 +1,400 @@
+#include "exact_contact_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asperity/error.hpp"
+#include "asperity/surface.hpp"
+#include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/height_map_io.hpp"
+#include "asperity/topography/leveling.hpp"
+#include "asperity/topography/units.hpp"
+#include "command_line.hpp"
+#include "number_text.hpp"
+#include "pressure_overclosure.hpp"
+
+namespace asperity::cli {
+namespace {
+namespace topo = asperity::topography;
+
+constexpr double not_given = NAN;  // add_number only ever stores finite numbers
+constexpr long max_steps = 10000;
+
+struct Options {
+  std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, fields, card,
+      card_format, units;
+  double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
+         tolerance = not_given;
+  long long max_iterations = 20000;
+  bool json = false, no_level = false, no_stiffness = false, quiet = false;
+};
+
+bool given(double value) { return !std::isnan(value); }
+
+[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.push_back("");
+  return parts;
+}
+
+std::vector<double> positive_numbers(const std::string& text, const std::string& name) {
+  std::vector<double> values;
+  for (const std::string& part : split(text, ',')) {
+    const double value = number_from_text(part, name);
+    if (!(value > 0)) usage(name + ": '" + quote_text(part) + "' is not a positive number");
+    values.push_back(value);
+  }
+  if (values.size() > static_cast<std::size_t>(max_steps)) usage(name + ": more than 10000 values");
+  return values;
+}
+
+topo::ReadOptions read_options(const Options& o) {
+  topo::ReadOptions read;
+  if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
+    usage("--format: unknown format '" + quote_text(o.format) + "' (auto, x3p, gsf, matrix, xyz)");
+  read.lateral_unit = o.unit;
+  read.height_unit = o.height_unit;
+  if (!o.pixel_size.empty()) {
+    const std::vector<std::string> parts = split(o.pixel_size, ',');
+    if (parts.empty() || parts.size() > 2) usage("--pixel-size: one length, or two (x,y)");
+    read.pixel_size_x = topo::parse_length(parts[0], o.unit);
+    read.pixel_size_y = parts.size() == 2 ? topo::parse_length(parts[1], o.unit) : read.pixel_size_x;
+    if (!(read.pixel_size_x > 0 && read.pixel_size_y > 0 && std::isfinite(read.pixel_size_x) &&
+          std::isfinite(read.pixel_size_y)))
+      usage("--pixel-size must be positive");
+  }
+  return read;
+}
+
+// The steps asked: by pressure (true) or by mean gap, in the order given.
+struct Steps {
+  bool by_pressure = true;
+  std::vector<double> values;
+};
+
+Steps steps_from(const Options& o) {
+  const int asked = !o.pressures.empty() + !o.gaps.empty() + !o.sweep.empty();
+  if (asked != 1)
+    usage(asked == 0 ? "the load steps are required: --pressure, --gap or --sweep"
+                     : "give one of --pressure, --gap, --sweep");
+  Steps steps;
+  if (!o.pressures.empty()) {
+    steps.values = positive_numbers(o.pressures, "--pressure");
+  } else if (!o.gaps.empty()) {
+    steps.by_pressure = false;
+    steps.values = positive_numbers(o.gaps, "--gap");
+  } else {
+    const std::vector<std::string> parts = split(o.sweep, ':');
+    if (parts.size() != 4) usage("--sweep wants KIND:FROM:TO:COUNT, got '" + quote_text(o.sweep) + "'");
+    if (parts[0] != "pressure" && parts[0] != "gap")
+      usage("--sweep: unknown KIND '" + quote_text(parts[0]) + "' (pressure, gap)");
+    steps.by_pressure = parts[0] == "pressure";
+    const double from = number_from_text(parts[1], "--sweep FROM"), to = number_from_text(parts[2], "--sweep TO");
+    const double count = number_from_text(parts[3], "--sweep COUNT");
+    if (!(count >= 2 && count <= max_steps && count == std::floor(count)))
+      usage("--sweep COUNT must be a whole number from 2 to 10000, got '" + quote_text(parts[3]) + "'");
+    if (!(from > 0 && to > 0)) usage("--sweep needs FROM, TO > 0");
+    const long n = static_cast<long>(count);
+    for (long k = 0; k < n; ++k) {
+      const double fraction = static_cast<double>(k) / static_cast<double>(n - 1);
+      // pressures logarithmic, gaps linear; the ends exactly as given
+      const double value = k == 0       ? from
+                           : k == n - 1 ? to
+                           : steps.by_pressure
+                               ? std::exp(std::log(from) + fraction * (std::log(to) - std::log(from)))
+                               : from + fraction * (to - from);
+      steps.values.push_back(value);
+    }
+  }
+  return steps;
+}
+
+// A field as a 16-bit binary PGM (P5), black at 0 and white at `top`; rows in the map's order
+// (the first row, y = 0, at the top); NaN (a missing point) black.
+void write_pgm(const std::string& path, const std::vector<double>& field, std::size_t nx, std::size_t ny, double top) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw Error("cannot write " + quote_text(path, 4096));
+  out << "P5\n" << nx << " " << ny << "\n65535\n";
+  std::vector<unsigned char> row(2 * nx);
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double v = field[j * nx + i];
+      const double level = std::isnan(v) || !(top > 0) ? 0.0 : std::clamp(v / top, 0.0, 1.0);
+      const auto value = static_cast<std::uint16_t>(std::lround(level * 65535));
+      row[2 * i] = static_cast<unsigned char>(value >> 8);
+      row[2 * i + 1] = static_cast<unsigned char>(value & 0xff);
+    }
+    out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size()));
+  }
+  out.close();
+  if (!out) throw Error("writing " + quote_text(path, 4096) + " failed");
+}
+
+std::string csv_row(const topo::ContactStep& s) {
+  std::ostringstream row;
+  row << format_double(s.pressure) << "," << format_double(s.load) << "," << format_double(s.mean_gap) << ","
+      << format_double(s.separation_from_mean_summit) << "," << format_double(s.approach) << ","
+      << format_double(s.area_fraction) << "," << format_double(s.real_area) << "," << s.contact_points << ","
+      << s.clusters << "," << format_double(s.stiffness) << "," << format_double(s.stiffness_per_area) << ","
+      << format_double(s.approach_stiffness) << "," << format_double(s.max_pressure) << "," << s.iterations << ","
+      << s.solves << "," << format_double(s.residual) << "," << s.stiffness_iterations << ","
+      << format_double(s.stiffness_residual) << "\n";
+  return row.str();
+}
+
+nlohmann::json step_json(const topo::ContactStep& s) {
+  // JSON has no infinity: null for a stiffness in full contact
+  auto value = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  return {{"pressure_Pa", value(s.pressure)},
+          {"load_N", value(s.load)},
+          {"mean_gap_m", value(s.mean_gap)},
+          {"separation_from_mean_summit_m", value(s.separation_from_mean_summit)},
+          {"approach_m", value(s.approach)},
+          {"area_fraction", value(s.area_fraction)},
+          {"real_area_m2", value(s.real_area)},
+          {"contact_points", s.contact_points},
+          {"clusters", s.clusters},
+          {"stiffness_N_per_m", value(s.stiffness)},
+          {"stiffness_per_area_N_per_m3", value(s.stiffness_per_area)},
+          {"approach_stiffness_N_per_m", value(s.approach_stiffness)},
+          {"max_pressure_Pa", value(s.max_pressure)},
+          {"iterations", s.iterations},
+          {"solves", s.solves},
+          {"residual", value(s.residual)},
+          {"stiffness_iterations", s.stiffness_iterations},
+          {"stiffness_residual", value(s.stiffness_residual)}};
+}
+
+int run_exact_contact(const Options& o, const CLI::App& command) {
+  const bool four_moduli = given(o.e1) || given(o.nu1) || given(o.e2) || given(o.nu2);
+  if (four_moduli && given(o.modulus)) usage("give --modulus or --e1 --nu1 --e2 --nu2, not both");
+  if (four_moduli && !(given(o.e1) && given(o.nu1) && given(o.e2) && given(o.nu2)))
+    usage("--e1 --nu1 --e2 --nu2 go together");
+  if (!four_moduli && !given(o.modulus)) usage("the contact modulus is required: --modulus E* [Pa] or --e1 --nu1 --e2 --nu2");
+  const double modulus = four_moduli ? contact_modulus_from(o.e1, o.nu1, o.e2, o.nu2) : o.modulus;
+  if (!(modulus > 0)) usage("--modulus must be positive");
+  topo::ExactContactOptions options;
+  options.contact_modulus = modulus;
+  if (!o.boundary.empty() && !topo::parse_contact_boundary(o.boundary, options.boundary))
+    usage("--boundary: '" + quote_text(o.boundary) + "' is not periodic or padded");
+  if (!o.kernel.empty() && !topo::parse_contact_kernel(o.kernel, options.kernel))
+    usage("--kernel: '" + quote_text(o.kernel) + "' is not fourier or love");
+  if (given(o.tolerance)) {
+    if (!(o.tolerance >= topo::min_contact_tolerance && o.tolerance <= topo::max_contact_tolerance))
+      usage("--tolerance must be from 1e-14 to 0.01");
+    options.tolerance = o.tolerance;
+  }
+  options.max_iterations = static_cast<int>(o.max_iterations);
+  options.stiffness = !o.no_stiffness;
+  CardFormat card_format = CardFormat::calculix;
+  CardUnits card_units = CardUnits::si;
+  if (!o.card_format.empty() && !parse_card_format(o.card_format, card_format))
+    usage("--card-format: '" + quote_text(o.card_format) + "' is not calculix, abaqus or csv");
+  if (!o.units.empty() && !parse_card_units(o.units, card_units)) usage("--units: '" + quote_text(o.units) + "' is not si or mm");
+  if (o.card.empty() && (!o.card_format.empty() || !o.units.empty())) usage("--card-format and --units go with --card");
+  const Steps steps = steps_from(o);
+
+  topo::HeightMap map = topo::read_height_map(o.file, read_options(o));
+  if (!o.no_level) topo::subtract_plane(map, topo::fit_plane(map));
+
+  // progress on standard error once a solve has run for 2 s, then every 2 s
+  using clock = std::chrono::steady_clock;
+  clock::time_point step_start = clock::now(), last_line = step_start;
+  std::size_t step_index = 0;
+  if (!o.quiet)
+    options.progress = [&](const topo::ContactProgress& progress) {
+      const clock::time_point now = clock::now();
+      if (now - step_start < std::chrono::seconds(2) || now - last_line < std::chrono::seconds(2)) return;
+      last_line = now;
+      std::ostringstream line;
+      line << "step " << step_index + 1 << "/" << steps.values.size() << ": " << progress.stage << " iteration "
+           << progress.iteration << ", residual " << progress.residual << ", " << progress.contact_points
+           << " points in contact";
+      note(command, line.str());
+    };
+  topo::ExactContact solver(map, options);
+
+  std::vector<topo::ContactStep> results;
+  for (step_index = 0; step_index < steps.values.size(); ++step_index) {
+    step_start = clock::now();
+    const double value = steps.values[step_index];
+    results.push_back(steps.by_pressure ? solver.at_pressure(value) : solver.at_mean_gap(value));
+    if (!o.fields.empty()) {
+      const std::string stem = o.fields + "/step-" + std::to_string(step_index + 1);
+      const std::vector<double> pressure = solver.pressure_field(), gap = solver.gap_field();
+      double top_gap = 0;
+      for (double g : gap)
+        if (g > top_gap) top_gap = g;
+      write_pgm(stem + "-pressure.pgm", pressure, map.nx, map.ny, results.back().max_pressure);
+      write_pgm(stem + "-gap.pgm", gap, map.nx, map.ny, top_gap);
+    }
+  }
+
+  const std::string boundary = topo::contact_boundary_name(options.boundary);
+  const std::string kernel = topo::contact_kernel_name(options.kernel);
+  if (!o.card.empty()) {
+    if (!std::isfinite(solver.mean_summit_height())) throw Error("the map has no summits: the card's datum (the mean summit height) does not exist");
+    std::vector<PressureOverclosurePoint> points;
+    points.push_back({0.0, solver.mean_summit_height() - solver.max_height()});  // first contact
+    std::vector<topo::ContactStep> sorted = results;
+    std::sort(sorted.begin(), sorted.end(),
+              [](const topo::ContactStep& a, const topo::ContactStep& b) { return a.pressure < b.pressure; });
+    for (const topo::ContactStep& s : sorted)
+      if (s.pressure > 0 && -s.separation_from_mean_summit > points.back().overclosure)
+        points.push_back({s.pressure, -s.separation_from_mean_summit});
+    std::ostringstream description, notes;
+    description << "asperity " ASPERITY_VERSION_STRING ": the exact elastic contact of a measured surface with a flat\n"
+                << "(boundary elements, " << boundary << " boundary, " << kernel << " kernel, E* "
+                << format_double(modulus) << " Pa)\n"
+                << "map: " << map.source << " (" << map.nx << " x " << map.ny << " points)";
+    notes << "points: " << points.size() - 1 << " solutions of the contact problem (relative residual at most "
+          << options.tolerance << ");\n"
+          << "  the card interpolates linearly between them: give as many pressures as the analysis needs\n"
+          << "first point: zero pressure at first contact (the flat at the map's highest point)";
+    std::ofstream out(o.card);
+    if (!out) throw Error("cannot write " + quote_text(o.card, 4096));
+    write_tabulated_pressure_overclosure(out, points, card_format, card_units, description.str(), notes.str());
+    out.close();
+    if (!out) throw Error("writing " + quote_text(o.card, 4096) + " failed");
+  }
+
+  if (o.json) {
+    nlohmann::json steps_json = nlohmann::json::array();
+    for (const topo::ContactStep& s : results) steps_json.push_back(step_json(s));
+    nlohmann::json document = {
+        {"schema", "asperity-exact-contact/1"},
+        {"map",
+         {{"source", map.source},
+          {"nx", map.nx},
+          {"ny", map.ny},
+          {"dx_m", map.dx},
+          {"dy_m", map.dy},
+          {"missing_points", map.missing_points()},
+          {"leveled", !o.no_level},
+          {"rms_height_m", solver.rms_height()},
+          {"max_height_m", solver.max_height()},
+          {"summits", solver.summits()},
+          {"mean_summit_height_m", std::isfinite(solver.mean_summit_height()) ? nlohmann::json(solver.mean_summit_height())
+                                                                               : nlohmann::json(nullptr)},
+          {"nominal_area_m2", solver.nominal_area()}}},
+        {"solver",
+         {{"contact_modulus_Pa", modulus},
+          {"boundary", boundary},
+          {"kernel", kernel},
+          {"tolerance", options.tolerance},
+          {"driven_by", steps.by_pressure ? "pressure" : "mean_gap"}}},
+        {"steps", steps_json}};
+    std::cout << document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  } else {
+    std::cout << "# asperity exact-contact: " << terminal_text(quote_text(map.source, 4096)) << ", " << map.nx << " x "
+              << map.ny << " points, dx " << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
+              << (o.no_level ? "" : ", leveled") << "\n"
+              << "# " << boundary << " boundary, " << kernel << " kernel, E* " << format_double(modulus)
+              << " Pa, tolerance " << format_double(options.tolerance) << "\n"
+              << "# datum: mean_gap_m is the separation of the flat from the mean plane of the map; the mean summit\n"
+              << "# height is " << format_double(solver.mean_summit_height()) << " m above it ("
+              << solver.summits() << " summits), the highest point " << format_double(solver.max_height()) << " m\n"
+              << "pressure_Pa,load_N,mean_gap_m,separation_from_mean_summit_m,approach_m,area_fraction,real_area_m2,"
+                 "contact_points,clusters,stiffness_N_per_m,stiffness_per_area_N_per_m3,approach_stiffness_N_per_m,"
+                 "max_pressure_Pa,iterations,solves,residual,stiffness_iterations,stiffness_residual\n";
+    for (const topo::ContactStep& s : results) std::cout << csv_row(s);
+  }
+  return exit_success;
+}
+
+}  // namespace
+
+void add_exact_contact_command(CLI::App& app) {
+  auto options = std::make_shared<Options>();
+  Options& o = *options;
+  CLI::App* command = app.add_subcommand(
+      "exact-contact",
+      "the exact elastic contact of a measured height map with a flat (boundary elements on FFTs): real area, "
+      "mean gap, load, stiffness and contact patches at each pressure or mean gap (CSV or JSON)");
+  command->add_option("FILE", o.file, "the height map")
+      ->required()
+      ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
+                             ""));
+  const char* reading = "Reading";
+  add_text(*command, "--format", o.format, "auto (default: by content, then extension), x3p, gsf, matrix, xyz")
+      ->type_name("NAME")->group(reading);
+  add_text(*command, "--pixel-size", o.pixel_size,
+           "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "
+           "else it overrides the file's")
+      ->type_name("LENGTH[,LENGTH]")->group(reading);
+  add_text(*command, "--unit", o.unit, "unit of x, y (and of heights unless --height-unit) for files without units")
+      ->type_name("UNIT")->group(reading);
+  add_text(*command, "--height-unit", o.height_unit, "unit of the heights in the file (overrides the file's)")
+      ->type_name("UNIT")->group(reading);
+  command->add_flag("--no-level", o.no_level, "do not subtract the least-squares plane")->group(reading);
+  const char* material = "Material (SI units)";
+  add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (plane strain)")->type_name("PA")->group(material);
+  add_number(*command, "--e1", o.e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)")
+      ->type_name("PA")->group(material);
+  add_number(*command, "--nu1", o.nu1, "Poisson's ratio of body 1")->group(material);
+  add_number(*command, "--e2", o.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group(material);
+  add_number(*command, "--nu2", o.nu2, "Poisson's ratio of body 2")->group(material);
+  const char* load = "Load steps (one kind; solved in the order given, each from the last)";
+  add_text(*command, "--pressure", o.pressures, "nominal pressures [Pa], comma-separated")
+      ->type_name("PA[,PA...]")->group(load);
+  add_text(*command, "--gap", o.gaps, "mean gaps [m] (separations from the mean plane), comma-separated")
+      ->type_name("M[,M...]")->group(load);
+  add_text(*command, "--sweep", o.sweep, "COUNT steps from FROM to TO: KIND pressure (logarithmic) or gap (linear)")
+      ->type_name("KIND:FROM:TO:COUNT")->group(load);
+  const char* solver = "Solver";
+  add_text(*command, "--boundary", o.boundary,
+           "periodic (default: the map repeats) or padded (non-periodic: zero padding to twice the map each way)")
+      ->type_name("NAME")->group(solver);
+  add_text(*command, "--kernel", o.kernel,
+           "fourier (default: the point-force Fourier kernel) or love (pixel-constant pressure, Love's coefficients)")
+      ->type_name("NAME")->group(solver);
+  add_number(*command, "--tolerance", o.tolerance,
+             "relative residual: pressure-weighted mean |gap| in contact and largest penetration, in rms heights "
+             "(default 1e-8)")
+      ->type_name("REL")->group(solver);
+  add_whole_number(*command, "--max-iterations", o.max_iterations, 1, 1000000,
+                   "per solve; beyond them the command fails (default 20000)")
+      ->group(solver);
+  command->add_flag("--no-stiffness", o.no_stiffness, "skip the incremental solve (stiffness 0)")->group(solver);
+  command->add_flag("--quiet", o.quiet, "no progress on standard error")->group(solver);
+  const char* output = "Output";
+  command->add_flag("--json", o.json, "write JSON (schema asperity-exact-contact/1) instead of CSV")->group(output);
+  add_text(*command, "--fields", o.fields,
+           "write each step's pressure and gap fields as 16-bit PGM images into DIR (step-K-pressure.pgm, "
+           "step-K-gap.pgm: white at the largest value, first row at the top)")
+      ->type_name("DIR")->group(output);
+  add_text(*command, "--card", o.card,
+           "write the solved curve as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card (overclosure from the "
+           "mean summit height)")
+      ->type_name("FILE")->group(output);
+  add_text(*command, "--card-format", o.card_format, "calculix (default), abaqus or csv")->type_name("FORMAT")->group(output);
+  add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
+  command->footer(
+      "Output: CSV, one row per step: pressure_Pa (nominal: load over the map's area), load_N,\n"
+      "mean_gap_m (the separation of the flat from the map's mean plane: the mean gap), \n"
+      "separation_from_mean_summit_m (less the mean summit height: the GW curves' datum), approach_m\n"
+      "(the flat's rigid-body position), area_fraction, real_area_m2, contact_points, clusters (4-neighbour\n"
+      "patches), stiffness_N_per_m (-dP/d mean gap, from the incremental solve), stiffness_per_area_N_per_m3,\n"
+      "approach_stiffness_N_per_m, max_pressure_Pa, iterations, solves, residual, stiffness_iterations,\n"
+      "stiffness_residual; '#' lines first say what was solved (docs/exact-contact.md). A solve that does\n"
+      "not converge is an error. Progress goes to standard error once a solve runs for 2 s.\n" +
+      std::string(exit_status_help));
+  CLI::App* self = command;
+  set_action(*command, [options, self] { return run_exact_contact(*options, *self); });
+}
+
+}  // namespace asperity::cli

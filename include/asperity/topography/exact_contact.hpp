@@ -1,0 +1,158 @@
+// The exact elastic contact of a height map (docs/exact-contact.md): the frictionless normal
+// contact of a linear-elastic half-space (contact modulus E*) with a rigid flat, the map being
+// the gap between them before loading, by the boundary-element method on FFTs (Stanley and Kato
+// 1997) solved by the constrained conjugate gradient of Polonsky and Keer (1999). It neglects
+// nothing a Greenwood-Williamson model neglects (coalescence, interaction, the bulk): it is the
+// reference the asperity models of the same map are judged against.
+//
+// Assumptions: small slopes (half-space theory), frictionless, linear elastic, no adhesion; the
+// map is sampled on its grid, the pressure constant over each pixel (love) or band-limited
+// (fourier); missing points (NaN) never touch and are left out of the mean gap.
+//
+// Boundary: `periodic` repeats the map (a measured map's opposite edges differ: the periodic
+// solve sees a step there); `padded` places the map in a grid twice as long each way whose other
+// three quarters carry no pressure (non-periodic by zero padding). Kernel: `fourier` is the
+// point-force Fourier kernel 2/(E* |q|) on the solve grid; `love` is the pixel-constant
+// influence coefficients (Love 1929: uniform pressure over each pixel, displacement at the pixel
+// centres): periodic by its exact alias sum in Fourier space, padded by the real-space
+// coefficients on the doubled grid, which makes the padded Love solve exactly non-periodic (no
+// images). The padded Fourier solve keeps images two map lengths apart.
+//
+// Datum: the separation of the flat is the mean gap u = <gap> over the map's valid points, the
+// gap measured between the flat and the deformed surface; for a periodic map without missing
+// points it is the distance of the flat from the mean plane of the map (the displacements have
+// zero mean). `separation_from_mean_summit` is the same separation less the mean summit height
+// (summits.hpp, 8 neighbours) above the mean plane: the datum of the GW curves
+// (contact_model.hpp's mean_separation). Heights are taken about their mean (the mean plane).
+//
+// Convergence: a solve stops when the pressure-weighted mean |gap| over the contact points is
+// at most `tolerance` times the rms height and no point outside the contact penetrates the flat
+// by more than that; it never returns an unconverged answer: after max_iterations it throws
+// asperity::Error naming the iterations and the residual reached. Memory: a few arrays the size
+// of the solve grid (O(N)); each iteration costs two convolutions (O(N log N)).
+#pragma once
+#include <complex>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "asperity/topography/height_map.hpp"
+
+namespace asperity::topography {
+
+enum class ContactBoundary { periodic, padded };
+enum class ContactKernel { fourier, love };
+
+bool parse_contact_boundary(const std::string& name, ContactBoundary& boundary);
+bool parse_contact_kernel(const std::string& name, ContactKernel& kernel);
+const char* contact_boundary_name(ContactBoundary boundary);
+const char* contact_kernel_name(ContactKernel kernel);
+
+// What a long solve reports now and then (every iteration; the caller throttles).
+struct ContactProgress {
+  const char* stage = "";       // "pressure", "gap", "stiffness"
+  int iteration = 0;
+  double residual = 0;          // the stopping residual (relative; see above)
+  std::size_t contact_points = 0;
+};
+
+// Limits, checked before anything is allocated: the solve grid (the map's, or four times it
+// padded) of at most max_contact_points points.
+inline constexpr std::size_t max_contact_points = std::size_t{1} << 26;
+inline constexpr double min_contact_tolerance = 1e-14, max_contact_tolerance = 1e-2;
+
+struct ExactContactOptions {
+  double contact_modulus = 0;  // E* [Pa]; required
+  ContactBoundary boundary = ContactBoundary::periodic;
+  ContactKernel kernel = ContactKernel::fourier;
+  double tolerance = 1e-8;     // relative residual (see above)
+  int max_iterations = 20000;  // per solve (each constrained CG and each stiffness CG)
+  int love_aliases = 16;       // periodic Love kernel: aliases summed each way (|m|, |n| <= this)
+  bool stiffness = true;       // solve the incremental problem at every step
+  int threads = 0;             // that share each FFT (0: every core; 1 to 1024)
+  std::function<void(const ContactProgress&)> progress;  // may be empty
+};
+
+// One load step. Pressures are nominal: load over the map's area nx dx ny dy.
+struct ContactStep {
+  double pressure = 0;                    // mean nominal pressure [Pa]
+  double load = 0;                        // [N] on the map's area
+  double mean_gap = 0;                    // separation of the flat from the mean plane [m]
+  double separation_from_mean_summit = 0; // mean_gap less the mean summit height [m]
+  double approach = 0;                    // the flat's position above the mean plane, rigid-body [m]
+  double area_fraction = 0;               // contact points / map points
+  double real_area = 0;                   // [m^2]
+  double stiffness = 0;                   // -dP/d(mean gap) [N/m], 0 without contact
+  double stiffness_per_area = 0;          // -dp/d(mean gap) [N/m^3]
+  double approach_stiffness = 0;          // -dP/d(approach) [N/m] (equal to stiffness when periodic,
+                                          // without missing points); +inf for both in full contact
+  double max_pressure = 0;                // [Pa]
+  std::size_t contact_points = 0;
+  std::size_t clusters = 0;               // connected contact patches (4-neighbour; wrapped when periodic)
+  int iterations = 0;                     // constrained CG iterations (all solves of a gap-driven step)
+  int solves = 0;                         // constrained solves (1 when driven by pressure)
+  double residual = 0;                    // reached (<= tolerance)
+  int stiffness_iterations = 0;           // CG iterations of the incremental problem
+  double stiffness_residual = 0;          // its relative residual
+};
+
+class ExactContact {
+ public:
+  // Throws asperity::Error for a bad map (HeightMap::validate), a modulus not finite and > 0, a
+  // tolerance outside [min_contact_tolerance, max_contact_tolerance], max_iterations < 1,
+  // love_aliases outside [1, 1000], a solve grid beyond max_contact_points, or a map whose valid
+  // heights are all equal.
+  ExactContact(const HeightMap& map, const ExactContactOptions& options);
+
+  // The contact at a mean nominal pressure [Pa] > 0 (0: no contact), from the last solution
+  // (a warm start). Throws asperity::Error for a pressure not finite and >= 0, or no convergence.
+  ContactStep at_pressure(double pressure);
+  // The contact at a mean gap [m] > 0 (the separation from the mean plane; at or above the
+  // highest point: no contact), from the last solution. Throws asperity::Error for a gap not
+  // finite and > 0, or no convergence.
+  ContactStep at_mean_gap(double mean_gap);
+
+  std::size_t nx() const noexcept { return nx_; }
+  std::size_t ny() const noexcept { return ny_; }
+  double rms_height() const noexcept { return rms_; }
+  double max_height() const noexcept { return max_height_; }   // above the mean plane [m]
+  double mean_summit_height() const noexcept { return mean_summit_; }  // above the mean plane [m]
+  std::size_t summits() const noexcept { return summits_; }
+  double nominal_area() const noexcept { return nominal_area_; }
+  const ExactContactOptions& options() const noexcept { return options_; }
+
+  // The last solution on the map's grid (row j at j * nx, x fastest): pressure [Pa] (0 off
+  // contact and at missing points) and gap [m] (0 in contact, NaN at missing points).
+  std::vector<double> pressure_field() const;
+  std::vector<double> gap_field() const;
+
+ private:
+  void apply(const std::vector<double>& in, std::vector<double>& out);  // out = G in, on the solve grid
+  struct Solve {
+    int iterations = 0;
+    double residual = 0, approach = 0;
+  };
+  Solve constrained(bool by_pressure, double target);
+  void stiffness_of(ContactStep& step);
+  ContactStep describe(const Solve& solve);
+  void report(const char* stage, int iteration, double residual, std::size_t contact) const;
+
+  ExactContactOptions options_;
+  std::size_t nx_ = 0, ny_ = 0, sx_ = 0, sy_ = 0;  // map grid; solve grid
+  double dx_ = 0, dy_ = 0, rms_ = 0, max_height_ = 0, mean_summit_ = 0, nominal_area_ = 0, self_compliance_ = 0;
+  std::size_t summits_ = 0, valid_points_ = 0;
+  int threads_ = 1;
+  std::vector<double> kernel_;       // the real spectrum of G on the solve grid (sy x (sx/2 + 1))
+  std::vector<unsigned char> active_;  // on the solve grid: may carry pressure (a valid map point)
+  std::vector<double> heights_;      // on the solve grid, about the mean plane (0 where inactive)
+  std::vector<double> pressure_, displacement_, direction_, work_, increment_, stiffness_x_;  // solve grid
+  std::vector<std::complex<double>> spectrum_;  // sy x (sx/2 + 1)
+  double approach_ = 0;              // the last solution's rigid-body position
+};
+
+// Connected contact patches of a contact mask (nx x ny, x fastest; nonzero: in contact), by
+// 4-neighbour connectivity, wrapped across opposite edges when `periodic`.
+std::size_t count_clusters(const std::vector<unsigned char>& contact, std::size_t nx, std::size_t ny, bool periodic);
+
+}  // namespace asperity::topography

@@ -1,0 +1,103 @@
+"""asperity.topography.ExactContact: the exact elastic contact of a map from Python, against
+Westergaard's wavy surface (closed forms), on the real AFM map of tests/data/surfaces/, its
+fields as arrays, its errors, and one solver shared by threads (a lock, no GIL held)."""
+import math
+import threading
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity import topography
+
+AFM = Path(__file__).resolve().parents[2] / "tests" / "data" / "surfaces" / "afm-zsensor-10um.txt"
+
+
+def wavy(nx=256, wavelength=1e-3, amplitude=1e-6):
+    x = np.arange(nx) / nx
+    heights = np.tile(amplitude * np.cos(2 * math.pi * x), (4, 1))
+    return topography.HeightMap(heights, wavelength / nx, wavelength / nx)
+
+
+def test_westergaard_wavy_surface():
+    modulus, wavelength, amplitude = 1e11, 1e-3, 1e-6
+    full = math.pi * modulus * amplitude / wavelength
+    solver = topography.ExactContact(wavy(), contact_modulus=modulus, tolerance=1e-10)
+    for ratio in (0.1, 0.5):
+        step = solver.at_pressure(ratio * full)
+        assert step.area_fraction == pytest.approx(2 / math.pi * math.asin(math.sqrt(ratio)), abs=1.5 / 256)
+        assert step.max_pressure == pytest.approx(2 * math.sqrt(ratio) * full, rel=1e-4)
+        assert step.mean_gap == pytest.approx(amplitude * (1 - ratio * (1 - math.log(ratio))), abs=2e-4 * amplitude)
+        assert step.residual <= 1e-10 and step.solves == 1 and step.clusters == 1
+    pressure = solver.pressure_field()
+    assert pressure.shape == (4, 256) and pressure.dtype == np.float64
+    assert pressure.mean() == pytest.approx(0.5 * full, rel=1e-12)
+    gap = solver.gap_field()
+    assert gap.shape == (4, 256) and np.all(gap[pressure > 0] == 0) and np.all(gap >= 0)
+    assert gap.mean() == pytest.approx(step.mean_gap, rel=1e-12)
+
+
+def test_a_real_map_by_pressure_and_by_gap():
+    surface = topography.read_height_map(AFM)
+    topography.subtract_plane(surface, topography.fit_plane(surface))
+    solver = topography.ExactContact(surface, contact_modulus=1e11, boundary="padded", kernel="love")
+    step = solver.at_pressure(1e7)
+    assert 0 < step.area_fraction < 0.01 and step.stiffness > 0 and step.clusters >= 1
+    assert step.separation_from_mean_summit == pytest.approx(step.mean_gap - solver.mean_summit_height)
+    again = topography.ExactContact(surface, contact_modulus=1e11, boundary="padded", kernel="love")
+    by_gap = again.at_mean_gap(step.mean_gap)
+    assert by_gap.pressure == pytest.approx(step.pressure, rel=1e-5) and by_gap.solves > 1
+
+
+def test_errors():
+    surface = wavy(32)
+    with pytest.raises(asperity.Error):
+        topography.ExactContact(surface, contact_modulus=-1)
+    with pytest.raises(ValueError):
+        topography.ExactContact(surface, contact_modulus=1e11, boundary="open")
+    with pytest.raises(ValueError):
+        topography.ExactContact(surface, contact_modulus=1e11, kernel="hertz")
+    solver = topography.ExactContact(surface, contact_modulus=1e11, max_iterations=1)
+    with pytest.raises(asperity.Error, match="did not converge"):
+        solver.at_pressure(1e8)
+    with pytest.raises(asperity.Error):
+        solver.at_mean_gap(-1e-9)
+
+
+def test_self_affine_surface():
+    surface = topography.self_affine_surface(64, 32, 1e-6, 1e-6, hurst=0.7, rms_height=2e-7, seed=3)
+    assert surface.heights.shape == (32, 64)
+    assert surface.heights.std() == pytest.approx(2e-7, rel=1e-12) and abs(surface.heights.mean()) < 1e-20
+    # the spectral gradient against numpy's FFT
+    h = surface.heights
+    qx = 2 * math.pi * np.fft.fftfreq(64, 1e-6)
+    qy = 2 * math.pi * np.fft.fftfreq(32, 1e-6)
+    q2 = qx[None, :] ** 2 + qy[:, None] ** 2
+    expected = math.sqrt((q2 * np.abs(np.fft.fft2(h)) ** 2).sum()) / h.size
+    assert topography.spectral_rms_gradient(surface) == pytest.approx(expected, rel=1e-12)
+    with pytest.raises(asperity.Error):
+        topography.self_affine_surface(64, 64, 1e-6, 1e-6, hurst=1.5)
+
+
+def test_one_solver_shared_by_threads():
+    surface = topography.self_affine_surface(64, 64, 1e-6, 1e-6, seed=5)
+    solver = topography.ExactContact(surface, contact_modulus=1e11, threads=1)
+    reference = topography.ExactContact(surface, contact_modulus=1e11, threads=1).at_pressure(1e8)
+    results, errors = [], []
+
+    def work():
+        try:
+            for _ in range(3):
+                results.append(solver.at_pressure(1e8).contact_points)
+        except Exception as error:  # noqa: BLE001 - reported below
+            errors.append(error)
+
+    threads = [threading.Thread(target=work) for _ in range(3)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert not errors and len(results) == 9
+    # each from a different warm start: the same contact to within a few points
+    assert all(abs(r - reference.contact_points) <= 3 for r in results)

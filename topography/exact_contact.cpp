@@ -1,0 +1,655 @@
+#include "asperity/topography/exact_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <thread>
+
+#include "asperity/detail/parallel_for.hpp"
+#include "asperity/error.hpp"
+#include "asperity/topography/summits.hpp"
+#include "fft.hpp"
+
+namespace asperity::topography {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+std::string number(double value) {
+  std::ostringstream text;
+  text.precision(6);
+  text << value;
+  return text.str();
+}
+
+// The signed wavenumber [rad/m] of DFT index k on n points of spacing h.
+double wavenumber(std::size_t k, std::size_t n, double h) {
+  const double signed_k = k <= n / 2 ? static_cast<double>(k) : static_cast<double>(k) - static_cast<double>(n);
+  return 2 * pi * signed_k / (static_cast<double>(n) * h);
+}
+
+// f(first, count) over [0, total) in `threads` contiguous blocks, on the project's threads
+// (detail::parallel_for: a thread the system refuses is no error).
+template <class Function>
+void in_parallel(int threads, std::size_t total, Function&& f) {
+  const std::size_t parts = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), total);
+  if (parts <= 1) {
+    f(std::size_t{0}, total);
+    return;
+  }
+  asperity::detail::parallel_for(parts, static_cast<int>(parts), [&](std::size_t part) {
+    const std::size_t first = part * total / parts;
+    f(first, (part + 1) * total / parts - first);
+  });
+}
+
+double sinc(double x) { return x == 0 ? 1.0 : std::sin(x) / x; }
+
+// X asinh(Y / |X|) + Y asinh(X / |Y|) = X ln(Y + r) + Y ln(X + r) - X ln|X| - Y ln|Y|: an
+// antiderivative of 1/r = 1 / sqrt(X^2 + Y^2) in X and Y (the last two terms are functions of X
+// alone and of Y alone, which cancel in the rectangle's double difference), finite at X, Y = 0.
+double love_antiderivative(double x, double y) {
+  const double a = x == 0 ? 0.0 : x * std::asinh(y / std::fabs(x));
+  const double b = y == 0 ? 0.0 : y * std::asinh(x / std::fabs(y));
+  return a + b;
+}
+
+// The displacement at (x, y) under unit pressure over [-a, a] x [-b, b], times pi E*:
+// the integral of 1/r over the rectangle (Love 1929; Johnson 1985, eq. 3.25).
+double love_coefficient(double x, double y, double a, double b) {
+  return love_antiderivative(x + a, y + b) - love_antiderivative(x - a, y + b) - love_antiderivative(x + a, y - b) +
+         love_antiderivative(x - a, y - b);
+}
+
+}  // namespace
+
+bool parse_contact_boundary(const std::string& name, ContactBoundary& boundary) {
+  if (name == "periodic") boundary = ContactBoundary::periodic;
+  else if (name == "padded") boundary = ContactBoundary::padded;
+  else return false;
+  return true;
+}
+
+bool parse_contact_kernel(const std::string& name, ContactKernel& kernel) {
+  if (name == "fourier") kernel = ContactKernel::fourier;
+  else if (name == "love") kernel = ContactKernel::love;
+  else return false;
+  return true;
+}
+
+const char* contact_boundary_name(ContactBoundary boundary) {
+  return boundary == ContactBoundary::periodic ? "periodic" : "padded";
+}
+
+const char* contact_kernel_name(ContactKernel kernel) { return kernel == ContactKernel::fourier ? "fourier" : "love"; }
+
+ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& options) : options_(options) {
+  map.validate();
+  const double modulus = options.contact_modulus;
+  if (!(std::isfinite(modulus) && modulus > 0)) throw Error("the contact modulus must be finite and positive");
+  if (!(options.tolerance >= min_contact_tolerance && options.tolerance <= max_contact_tolerance))
+    throw Error("the tolerance must be between " + number(min_contact_tolerance) + " and " +
+                number(max_contact_tolerance) + ", got " + number(options.tolerance));
+  if (options.max_iterations < 1) throw Error("max_iterations must be at least 1");
+  if (options.love_aliases < 1 || options.love_aliases > 1000) throw Error("love_aliases must be from 1 to 1000");
+  if (options.threads < 0 || options.threads > 1024) throw Error("threads must be from 0 to 1024");
+  threads_ = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  nx_ = map.nx;
+  ny_ = map.ny;
+  dx_ = map.dx;
+  dy_ = map.dy;
+  const std::size_t factor = options.boundary == ContactBoundary::padded ? 2 : 1;
+  if (nx_ > max_contact_points / factor || ny_ > max_contact_points / factor ||
+      nx_ * factor > max_contact_points / (ny_ * factor))
+    throw Error("the solve grid of " + std::to_string(nx_) + " x " + std::to_string(ny_) + " points" +
+                (factor == 2 ? " padded to twice each way" : "") + " exceeds " + std::to_string(max_contact_points) +
+                " points");
+  sx_ = nx_ * factor;
+  sy_ = ny_ * factor;
+  nominal_area_ = map.width() * map.length();
+
+  double sum = 0;
+  for (double h : map.heights)
+    if (!std::isnan(h)) {
+      sum += h;
+      ++valid_points_;
+    }
+  const double mean = sum / static_cast<double>(valid_points_);
+  double squares = 0, highest = -std::numeric_limits<double>::infinity(), lowest = -highest;
+  for (double h : map.heights)
+    if (!std::isnan(h)) {
+      squares += (h - mean) * (h - mean);
+      highest = std::max(highest, h);
+      lowest = std::min(lowest, h);
+    }
+  rms_ = std::sqrt(squares / static_cast<double>(valid_points_));
+  max_height_ = highest - mean;
+  if (!(highest > lowest && rms_ > 0)) throw Error(map.source + ": the heights are all equal: a flat has no contact problem to solve");
+
+  HeightMap centred = map;
+  for (double& h : centred.heights) h -= mean;
+  const Summits found = find_summits(centred);
+  summits_ = found.list.size();
+  double summit_sum = 0;
+  for (const Summit& s : found.list) summit_sum += s.height;
+  mean_summit_ = summits_ > 0 ? summit_sum / static_cast<double>(summits_) : std::numeric_limits<double>::quiet_NaN();
+
+  const std::size_t points = sx_ * sy_, half = sx_ / 2 + 1;
+  active_.assign(points, 0);
+  heights_.assign(points, 0.0);
+  for (std::size_t j = 0; j < ny_; ++j)
+    for (std::size_t i = 0; i < nx_; ++i) {
+      const double h = map.heights[j * nx_ + i];
+      if (std::isnan(h)) continue;
+      active_[j * sx_ + i] = 1;
+      heights_[j * sx_ + i] = h - mean;
+    }
+  pressure_.assign(points, 0.0);
+  displacement_.assign(points, 0.0);
+  direction_.assign(points, 0.0);
+  work_.assign(points, 0.0);
+  increment_.assign(points, 0.0);
+  stiffness_x_.assign(points, 0.0);
+  spectrum_.assign(sy_ * half, {0.0, 0.0});
+  kernel_.assign(sy_ * half, 0.0);
+
+  if (options.kernel == ContactKernel::love && options.boundary == ContactBoundary::padded) {
+    // Real-space coefficients for every offset within the map, wrapped onto the doubled grid:
+    // the circular convolution is then the linear one (no images).
+    std::vector<double> coefficients(points);
+    const double a = dx_ / 2, b = dy_ / 2;
+    for (std::size_t j = 0; j < sy_; ++j) {
+      const double y = static_cast<double>(j <= ny_ ? j : sy_ - j) * dy_;
+      for (std::size_t i = 0; i < sx_; ++i) {
+        const double x = static_cast<double>(i <= nx_ ? i : sx_ - i) * dx_;
+        coefficients[j * sx_ + i] = love_coefficient(x, y, a, b) / (pi * modulus);
+      }
+    }
+    self_compliance_ = coefficients[0];
+    detail::forward_2d(coefficients.data(), spectrum_.data(), sy_, sx_);
+    for (std::size_t k = 0; k < kernel_.size(); ++k) kernel_[k] = spectrum_[k].real();
+  } else {
+    const bool love = options.kernel == ContactKernel::love;
+    const int aliases = love ? options.love_aliases : 0;
+    const double alias_x = 2 * pi / dx_, alias_y = 2 * pi / dy_;
+    // The periodic Love kernel: the displacement at the pixel centres of the pixel-constant
+    // pressure is the sum over aliases q + Q of 2/(E*|q + Q|) sinc(qx dx/2) sinc(qy dy/2); the
+    // terms of m and -m nearly cancel (the sines alternate), so the sum over the square
+    // |m|, |n| <= M converges like 1/M^2, and Richardson's step on M and M/2 removes that term.
+    const int inner = aliases / 2, width = 2 * aliases + 1;
+    // per column: the aliases' x sinc factors and squared wavenumbers
+    std::vector<double> x_factor(half * width), x_squared(half * width);
+    for (std::size_t kx = 0; kx < half; ++kx)
+      for (int m = -aliases; m <= aliases; ++m) {
+        const double q = wavenumber(kx, sx_, dx_) + m * alias_x;
+        x_factor[kx * width + m + aliases] = sinc(q * dx_ / 2);
+        x_squared[kx * width + m + aliases] = q * q;
+      }
+    // rows ky and sy - ky have the same kernel (it is even in qy): the first half, mirrored
+    const std::size_t rows = sy_ / 2 + 1;
+    in_parallel(threads_, rows, [&](std::size_t first, std::size_t count) {
+      std::vector<double> y_factor(width), y_squared(width);
+      for (std::size_t ky = first; ky < first + count; ++ky) {
+        const double qy = wavenumber(ky, sy_, dy_);
+        for (int n = -aliases; n <= aliases; ++n) {
+          const double q = qy + n * alias_y;
+          y_factor[n + aliases] = sinc(q * dy_ / 2);
+          y_squared[n + aliases] = q * q;
+        }
+        for (std::size_t kx = 0; kx < half; ++kx) {
+          const double qx = wavenumber(kx, sx_, dx_);
+          double value;
+          if (!love) {
+            const double q = std::hypot(qx, qy);
+            value = q > 0 ? 2 / (modulus * q) : 0.0;
+          } else if (kx == 0 && ky == 0) {
+            value = 0;  // the mean: every alias's sinc vanishes, and the mean pressure moves no gap
+          } else {
+            const double* xf = &x_factor[kx * width];
+            const double* x2 = &x_squared[kx * width];
+            double outer_sum = 0, inner_sum = 0;
+            for (int n = -aliases; n <= aliases; ++n) {
+              const double yf = y_factor[n + aliases], y2 = y_squared[n + aliases];
+              if (yf == 0) continue;
+              double row = 0, inner_row = 0;
+              for (int m = 0; m < width; ++m) {
+                const double term = xf[m] / std::sqrt(x2[m] + y2);
+                row += term;
+                if (std::abs(m - aliases) <= inner) inner_row += term;
+              }
+              outer_sum += yf * row;
+              if (std::abs(n) <= inner) inner_sum += yf * inner_row;
+            }
+            // error ~ c / M^2: S = S_M + (S_M - S_{M/2}) / 3 when M/2 is exactly half
+            const double extrapolated =
+                inner * 2 == aliases && inner > 0 ? outer_sum + (outer_sum - inner_sum) / 3 : outer_sum;
+            value = 2 / modulus * extrapolated;
+          }
+          kernel_[ky * half + kx] = value;
+          if (ky > 0 && sy_ - ky != ky) kernel_[(sy_ - ky) * half + kx] = value;
+        }
+      }
+    });
+    // the self-compliance: the real-space kernel at zero offset, the mean of the full spectrum
+    double total = 0;
+    for (std::size_t ky = 0; ky < sy_; ++ky)
+      for (std::size_t kx = 0; kx < half; ++kx) {
+        const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
+        total += (single ? 1.0 : 2.0) * kernel_[ky * half + kx];
+      }
+    self_compliance_ = total / static_cast<double>(points);
+  }
+}
+
+// The 2-D transform in three parts that the threads share: rows to spectra, then each block of
+// columns forward, times the kernel and back, then rows back.
+void ExactContact::apply(const std::vector<double>& in, std::vector<double>& out) {
+  const std::size_t half = sx_ / 2 + 1;
+  detail::Complex* spectrum = spectrum_.data();
+  in_parallel(threads_, sy_, [&](std::size_t first, std::size_t count) {
+    detail::forward_rows(in.data() + first * sx_, spectrum + first * half, count, sx_);
+  });
+  in_parallel(threads_, half, [&](std::size_t first, std::size_t count) {
+    detail::transform_columns(spectrum, sy_, half, first, count, true);
+    for (std::size_t r = 0; r < sy_; ++r)
+      for (std::size_t c = first; c < first + count; ++c) spectrum[r * half + c] *= kernel_[r * half + c];
+    detail::transform_columns(spectrum, sy_, half, first, count, false);
+  });
+  in_parallel(threads_, sy_, [&](std::size_t first, std::size_t count) {
+    detail::inverse_rows(spectrum + first * half, out.data() + first * sx_, count, sx_);
+  });
+}
+
+void ExactContact::report(const char* stage, int iteration, double residual, std::size_t contact) const {
+  if (!options_.progress) return;
+  ContactProgress progress;
+  progress.stage = stage;
+  progress.iteration = iteration;
+  progress.residual = residual;
+  progress.contact_points = contact;
+  options_.progress(progress);
+}
+
+// Polonsky and Keer (1999): conjugate gradients on the contact set, projected on p >= 0, with
+// the points that penetrate the flat outside it added back (and the conjugation restarted when
+// the set changes). By pressure, the flat's position is the one that makes the mean gap over
+// the contact set zero, and the pressures are rescaled to the load after each step; by approach
+// the flat's position is given.
+ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
+  const std::size_t points = sx_ * sy_;
+  std::vector<double>& p = pressure_;
+  std::vector<double>& u = displacement_;
+  std::vector<double>& t = direction_;
+  std::vector<double>& g = work_;
+  std::vector<double>& w = increment_;
+  const double map_points = static_cast<double>(nx_ * ny_);
+  const double total = by_pressure ? target * map_points : 0.0;
+  const double tolerance = options_.tolerance;
+
+  auto seed = [&] {
+    if (by_pressure) {
+      double sum = 0;
+      for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
+      if (sum > 0) {
+        for (double& value : p) value *= total / sum;
+      } else {
+        for (std::size_t k = 0; k < points; ++k)
+          p[k] = active_[k] ? total / static_cast<double>(valid_points_) : 0.0;
+      }
+    } else {
+      double sum = 0;
+      for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
+      if (!(sum > 0))
+        for (std::size_t k = 0; k < points; ++k)
+          p[k] = active_[k] ? std::max(heights_[k] - target, 0.0) / self_compliance_ : 0.0;
+    }
+  };
+  seed();
+  std::fill(t.begin(), t.end(), 0.0);
+  bool conjugate = false;
+  double previous = 1, scale = 1;  // scale: the load's rescaling of p, applied with the next convolution
+  Solve solve;
+  // Every loop runs over the map's points only (a padded grid's other three quarters never
+  // carry pressure); k = j * sx + i.
+  const std::size_t nx = nx_, ny = ny_, sx = sx_;
+  for (int iteration = 0;; ++iteration) {
+    apply(p, u);
+    double approach = target, sum = 0;
+    std::size_t contact = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+        p[k] *= scale;
+        u[k] *= scale;
+        const bool in = active_[k] && p[k] > 0;
+        sum += in ? u[k] - heights_[k] : 0.0;
+        contact += in;
+      }
+    scale = 1;
+    if (by_pressure) approach = contact > 0 ? -sum / static_cast<double>(contact) : 0.0;
+    double weighted = 0, load = 0, penetration = 0, squares = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+        const double gap = active_[k] ? u[k] - heights_[k] + approach : 0.0;
+        g[k] = gap;
+        if (p[k] > 0) {
+          weighted += p[k] * std::fabs(gap);
+          load += p[k];
+          squares += gap * gap;
+        } else if (active_[k]) {
+          penetration = std::max(penetration, -gap);
+        }
+      }
+    const double residual =
+        std::max(load > 0 ? weighted / (load * rms_) : (contact == 0 ? 0.0 : INFINITY), penetration / rms_);
+    report(by_pressure ? "pressure" : "gap", iteration, residual, contact);
+    if (residual <= tolerance) {
+      solve.iterations = iteration;
+      solve.residual = residual;
+      solve.approach = approach;
+      approach_ = approach;
+      return solve;
+    }
+    if (iteration >= options_.max_iterations)
+      throw Error("the contact solve did not converge: " + std::to_string(iteration) + " iterations reached a residual of " +
+                  number(residual) + " (tolerance " + number(tolerance) + ")");
+    if (contact == 0) {
+      // nothing in contact yet something penetrates (by approach): start again from the overlap
+      for (std::size_t k = 0; k < points; ++k)
+        p[k] = active_[k] ? std::max(heights_[k] - target, 0.0) / self_compliance_ : 0.0;
+      conjugate = false;
+      continue;
+    }
+    const double beta = conjugate ? squares / previous : 0.0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) t[k] = p[k] > 0 ? g[k] + beta * t[k] : 0.0;
+    previous = squares;
+    apply(t, w);
+    // step = sum g t / sum (w - mean w) t over the contact set (by pressure the mean of w is the
+    // flat's move); sum t is near zero, so w's mean enters through a small product
+    double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
+        if (p[k] > 0) {
+          sum_w += w[k];
+          sum_t += t[k];
+          sum_wt += w[k] * t[k];
+          numerator += g[k] * t[k];
+        }
+    const double mean_w = by_pressure ? sum_w / static_cast<double>(contact) : 0.0;
+    const double denominator = sum_wt - mean_w * sum_t;
+    double step;
+    if (denominator > 0 && std::isfinite(numerator)) {
+      step = numerator / denominator;
+    } else if (conjugate) {
+      conjugate = false;  // steepest descent from the same point
+      continue;
+    } else {
+      // the gap is uniform over the contact set, yet points outside it penetrate: no step on the
+      // set, and the penetrating points get the pressure that would lift an isolated pixel
+      step = 0;
+    }
+    std::size_t overlaps = 0;
+    const double overlap_step = step > 0 ? step : 1 / self_compliance_;
+    double total_now = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+        double value = p[k] > 0 ? std::max(p[k] - step * t[k], 0.0) : 0.0;
+        if (value == 0 && active_[k] && g[k] < 0) {
+          value = -overlap_step * g[k];
+          ++overlaps;
+        }
+        p[k] = value;
+        total_now += value;
+      }
+    conjugate = overlaps == 0;
+    if (by_pressure) {
+      if (!(total_now > 0)) {
+        seed();
+        conjugate = false;
+      } else {
+        scale = total / total_now;
+      }
+    }
+  }
+}
+
+// The incremental problem: the flat moves by a unit approach with the contact set held; the
+// pressure increment x on the contact set C solves G_CC x = 1 (conjugate gradients). The
+// stiffness of a held contact set is the tangent of the load-approach curve (Barber 2003: the
+// contact set grows by a set of zero pressure), so this is dP/d(approach) without the noise of
+// a finite difference; the mean gap moves by 1 - <G x> over the map.
+void ExactContact::stiffness_of(ContactStep& step) {
+  if (step.contact_points == 0) return;
+  if (step.contact_points == sx_ * sy_) {  // periodic, full contact: no approach moves the flat
+    step.stiffness = step.stiffness_per_area = step.approach_stiffness = INFINITY;
+    return;
+  }
+  std::vector<double>& x = stiffness_x_;
+  std::vector<double>& w = increment_;
+  std::vector<double>& r = work_;
+  std::vector<double>& d = direction_;
+  const std::size_t nx = nx_, ny = ny_, sx = sx_;
+  const std::vector<double>& p = pressure_;
+  // from an isolated pixel's increment (the last step's increments, tried, took more iterations)
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) x[k] = p[k] > 0 ? 1 / self_compliance_ : 0.0;
+  apply(x, w);
+  double squares = 0;
+  const double norm = std::sqrt(static_cast<double>(step.contact_points));
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+      r[k] = p[k] > 0 ? 1 - w[k] : 0.0;
+      d[k] = r[k];
+      squares += r[k] * r[k];
+    }
+  int iteration = 0;
+  for (;; ++iteration) {
+    const double residual = std::sqrt(squares) / norm;
+    report("stiffness", iteration, residual, step.contact_points);
+    if (residual <= options_.tolerance) {
+      step.stiffness_residual = residual;
+      break;
+    }
+    if (iteration >= options_.max_iterations)
+      throw Error("the stiffness solve did not converge: " + std::to_string(iteration) +
+                  " iterations reached a residual of " + number(residual) + " (tolerance " +
+                  number(options_.tolerance) + ")");
+    apply(d, w);
+    double curvature = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) curvature += d[k] * w[k];  // d is 0 off contact
+    if (!(curvature > 0)) throw Error("the stiffness solve broke down (a search direction of no curvature)");
+    const double alpha = squares / curvature;
+    double next = 0;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
+        if (p[k] > 0) {
+          x[k] += alpha * d[k];
+          r[k] -= alpha * w[k];
+          next += r[k] * r[k];
+        }
+    const double beta = next / squares;
+    squares = next;
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) d[k] = p[k] > 0 ? r[k] + beta * d[k] : 0.0;
+  }
+  apply(x, w);
+  double increment = 0, moved = 0;
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
+      increment += x[k];
+      moved += active_[k] ? w[k] : 0.0;
+    }
+  const double mean_pressure = increment / static_cast<double>(nx_ * ny_);
+  const double gap_change = 1 - moved / static_cast<double>(valid_points_);
+  step.stiffness_iterations = iteration;
+  step.stiffness_per_area = mean_pressure / gap_change;
+  step.stiffness = step.stiffness_per_area * nominal_area_;
+  step.approach_stiffness = mean_pressure * nominal_area_;
+}
+
+ContactStep ExactContact::describe(const Solve& solve) {
+  ContactStep step;
+  std::vector<unsigned char> contact(nx_ * ny_, 0);
+  double load = 0, gaps = 0, highest = 0;
+  for (std::size_t j = 0; j < ny_; ++j)
+    for (std::size_t i = 0; i < nx_; ++i) {
+      const std::size_t k = j * sx_ + i;
+      if (!active_[k]) continue;
+      if (pressure_[k] > 0) {
+        contact[j * nx_ + i] = 1;
+        ++step.contact_points;
+        load += pressure_[k];
+        highest = std::max(highest, pressure_[k]);
+      } else {
+        gaps += std::max(displacement_[k] - heights_[k] + solve.approach, 0.0);
+      }
+    }
+  const double map_points = static_cast<double>(nx_ * ny_);
+  step.pressure = load / map_points;
+  step.load = step.pressure * nominal_area_;
+  step.mean_gap = gaps / static_cast<double>(valid_points_);
+  step.separation_from_mean_summit = step.mean_gap - mean_summit_;
+  step.approach = solve.approach;
+  step.area_fraction = static_cast<double>(step.contact_points) / map_points;
+  step.real_area = step.area_fraction * nominal_area_;
+  step.max_pressure = highest;
+  step.clusters = count_clusters(contact, nx_, ny_, options_.boundary == ContactBoundary::periodic);
+  step.iterations = solve.iterations;
+  step.solves = 1;
+  step.residual = solve.residual;
+  return step;
+}
+
+ContactStep ExactContact::at_pressure(double pressure) {
+  if (!(std::isfinite(pressure) && pressure >= 0))
+    throw Error("the mean pressure must be finite and non-negative, got " + number(pressure));
+  if (pressure == 0) {
+    std::fill(pressure_.begin(), pressure_.end(), 0.0);
+    std::fill(displacement_.begin(), displacement_.end(), 0.0);
+    Solve none;
+    none.approach = approach_ = max_height_;
+    return describe(none);
+  }
+  const Solve solve = constrained(true, pressure);
+  ContactStep step = describe(solve);
+  if (options_.stiffness) stiffness_of(step);
+  return step;
+}
+
+ContactStep ExactContact::at_mean_gap(double mean_gap) {
+  if (!(std::isfinite(mean_gap) && mean_gap > 0))
+    throw Error("the mean gap must be finite and positive, got " + number(mean_gap));
+  if (mean_gap >= max_height_) {
+    std::fill(pressure_.begin(), pressure_.end(), 0.0);
+    std::fill(displacement_.begin(), displacement_.end(), 0.0);
+    Solve none;
+    none.approach = approach_ = mean_gap;
+    return describe(none);
+  }
+  // The mean gap is the approach plus the mean displacement over the map: equal for a periodic
+  // map without missing points (one solve), otherwise a secant search on the approach (the
+  // mean gap grows with it), bracketed once the target is passed.
+  const double tolerance = 10 * options_.tolerance * rms_;
+  bool had_contact = false;
+  for (std::size_t k = 0; k < pressure_.size(); ++k)
+    if (pressure_[k] > 0) had_contact = true;
+  double offset = 0;
+  if (had_contact) {
+    // the offset between approach and mean gap of the last solution, a good first guess
+    Solve last;
+    last.approach = approach_;
+    offset = approach_ - describe(last).mean_gap;
+  }
+  int iterations = 0, solves = 0;
+  double low = -INFINITY, low_value = 0, high = INFINITY, high_value = 0;  // approaches bracketing the target
+  double approach = mean_gap + offset, previous = NAN, previous_value = NAN;
+  ContactStep step;
+  for (;;) {
+    const Solve solve = constrained(false, approach);
+    iterations += solve.iterations;
+    ++solves;
+    step = describe(solve);
+    const double f = step.mean_gap - mean_gap;
+    if (std::fabs(f) <= tolerance) break;
+    if (solves >= 60)
+      throw Error("the mean-gap search did not converge: " + std::to_string(solves) + " solves left a gap error of " +
+                  number(f) + " m");
+    if (f < 0 && approach > low) {
+      low = approach;
+      low_value = f;
+    }
+    if (f > 0 && approach < high) {
+      high = approach;
+      high_value = f;
+    }
+    double next = std::isnan(previous) ? approach - f : approach - f * (approach - previous) / (f - previous_value);
+    if (std::isfinite(low) && std::isfinite(high) && !(next > low && next < high)) {
+      next = low - low_value * (high - low) / (high_value - low_value);  // regula falsi in the bracket
+      if (!(next > low && next < high)) next = 0.5 * (low + high);
+    }
+    if (!std::isfinite(next)) next = approach - f;
+    previous = approach;
+    previous_value = f;
+    approach = next;
+  }
+  step.iterations = iterations;
+  step.solves = solves;
+  if (options_.stiffness) stiffness_of(step);
+  return step;
+}
+
+std::vector<double> ExactContact::pressure_field() const {
+  std::vector<double> field(nx_ * ny_);
+  for (std::size_t j = 0; j < ny_; ++j)
+    for (std::size_t i = 0; i < nx_; ++i) field[j * nx_ + i] = pressure_[j * sx_ + i];
+  return field;
+}
+
+std::vector<double> ExactContact::gap_field() const {
+  std::vector<double> field(nx_ * ny_);
+  for (std::size_t j = 0; j < ny_; ++j)
+    for (std::size_t i = 0; i < nx_; ++i) {
+      const std::size_t k = j * sx_ + i;
+      field[j * nx_ + i] = !active_[k] ? std::numeric_limits<double>::quiet_NaN()
+                           : pressure_[k] > 0 ? 0.0
+                                              : std::max(displacement_[k] - heights_[k] + approach_, 0.0);
+    }
+  return field;
+}
+
+std::size_t count_clusters(const std::vector<unsigned char>& contact, std::size_t nx, std::size_t ny, bool periodic) {
+  if (contact.size() != nx * ny) throw Error("count_clusters: the mask is not nx x ny");
+  std::vector<std::size_t> parent(contact.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto root = [&](std::size_t k) {
+    while (parent[k] != k) {
+      parent[k] = parent[parent[k]];
+      k = parent[k];
+    }
+    return k;
+  };
+  auto join = [&](std::size_t a, std::size_t b) {
+    if (!contact[a] || !contact[b]) return;
+    a = root(a);
+    b = root(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  };
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const std::size_t k = j * nx + i;
+      if (!contact[k]) continue;
+      if (i + 1 < nx) join(k, k + 1);
+      else if (periodic && nx > 1) join(k, j * nx);
+      if (j + 1 < ny) join(k, k + nx);
+      else if (periodic && ny > 1) join(k, i);
+    }
+  std::size_t clusters = 0;
+  for (std::size_t k = 0; k < contact.size(); ++k)
+    if (contact[k] && root(k) == k) ++clusters;
+  return clusters;
+}
+
+}  // namespace asperity::topography
