@@ -86,7 +86,10 @@ void conclude_contact(ContactComparison& comparison) {
     text << "; mean separation ";
     for (std::size_t k = 0; k < comparison.pressures.size(); ++k)
       text << (k ? ", " : "") << closest.separation_minus_measured[k] << " m";
-    text << " from the measured summits' (the +- is the measured-summit answer's spread over the surrogate ensemble)";
+    text << " from the measured summits'";
+    if (!comparison.measured_stiffness_spread.empty())
+      text << " (the +- is the measured-summit answer's spread over the surrogate ensemble)";
+    if (best > std::log(1.25)) text << "; no fitted model is within 25% at every pressure";
   }
   comparison.headline = text.str();
 }
