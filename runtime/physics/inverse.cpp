@@ -70,7 +70,8 @@ double InverseCurve::newton(double separation, double log_value) const noexcept 
   curve_.log_values(separation, twice_order_ - 2, twice_order_, logs);
   const double slope = -0.5 * twice_order_ * std::exp(logs[0] - logs[2]);
   const double next = separation - (logs[2] - log_value) / slope;
-  return std::isfinite(next) ? next : separation;
+  // a step out of what the curve serves (an ulp past a scene table's range end) is no polish
+  return std::isfinite(next) && curve_.serves(next) ? next : separation;
 }
 
 // Values the table does not hold: deeper than its deep end (grow the bracket toward -inf), or
