@@ -7,7 +7,7 @@ table -- a row per surface: statistics, fits, verdict, contact ratios -- plus ea
 document (schema asperity-surface/2):
 
     from asperity import batch
-    rows = batch.analyse_files(paths, "results", bootstrap=199, contact_modulus=1.1e11)
+    rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)
     # results/surfaces.csv (the table), results/<name>.json (each surface's analysis)
 
 A run can be interrupted at any point and started again: a surface whose JSON was finished with

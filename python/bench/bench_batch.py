@@ -2,8 +2,8 @@
 """asperity.batch against a plain loop, in one run (docs/surfaces.md: "Many surfaces (Dask)").
 
   FILES synthetic Gaussian maps of SIZE x SIZE points (correlation 2 points, seeds 1..FILES) written
-  as GSF files, each analysed with the default ensemble (199 surrogates) and the contact curves
-  (E* = 1.1e11 Pa):
+  as GSF files, each analysed with the default ensemble (AssessmentOptions().bootstrap surrogates)
+  and the contact curves (E* = 1.1e11 Pa):
   - loop: analyse_surface_file(path).json() written per file, one file after the other in this
     process, each analysis on every core (the library's own threads): the way without the batch;
   - batch: analyse_files on a LocalCluster of a worker process per core, one thread each and each
@@ -41,7 +41,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--files", type=int, default=16)
     parser.add_argument("--size", type=int, default=192)
-    parser.add_argument("--bootstrap", type=int, default=199)
+    parser.add_argument("--bootstrap", type=int, default=topography.AssessmentOptions().bootstrap)
     parser.add_argument("--rounds", type=int, default=3)
     args = parser.parse_args()
     cores = os.cpu_count() or 1
