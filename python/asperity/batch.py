@@ -37,7 +37,10 @@ _SCHEMA = "asperity-surface/2"
 _MODELS = ("gaussian", "weibull_tail", "weibull_bounded")
 _SAMPLES = ("summit_heights", "heights")
 # the contact models whose stiffness is compared with GW summed over the measured summits
-_CONTACT_MODELS = ("gaussian-moments", "gaussian", "weibull-tail", "weibull-bounded", "measured-summits-own-radii")
+_CONTACT_MODELS = ("gaussian-moments", "gaussian", "weibull-tail", "weibull-bounded", "measured-summits-own-radii",
+                   "persson", "exact")
+# the curves compared with the exact contact, when it was solved
+_EXACT_MODELS = ("measured-summits",) + _CONTACT_MODELS[:-1]
 
 COLUMNS = [
     "source", "name", "status", "error", "seconds",
@@ -54,10 +57,11 @@ COLUMNS = [
     for model in _MODELS
     for field in (("ad_p", "ad_p_is_bound", "akaike_weight") if model == "gaussian" else
                   ("shape", "shape_lo", "shape_hi", "shape_identified", "ad_p", "ad_p_is_bound", "akaike_weight"))
-] + ["verdict_text", "contact_closest_model", "contact_headline"]
+] + ["verdict_text", "contact_closest_model", "contact_headline", "contact_closest_to_exact"]
 """The table's fixed columns, in order. With contact curves, each pressure k (0, 1, ...) adds
 pressure_{k}_Pa, measured_summits_stiffness_spread_{k} and, for each model m compared with the
-measured summits, stiffness_over_measured_{k}_{m}: see row_from_json."""
+measured summits, stiffness_over_measured_{k}_{m}; with the exact contact solved, for each curve m
+stiffness_over_exact_{k}_{m} and area_over_exact_{k}_{m}: see row_from_json."""
 
 
 # ---- options: a plain, picklable description of an AnalysisOptions, and its fingerprint ----
@@ -245,8 +249,10 @@ def row_from_json(document, source=None, name=None) -> dict:
     with contact curves, for each pressure k: pressure_{k}_Pa, measured_summits_stiffness_spread_{k}
     (the relative spread of GW over the measured summits across the ensemble: the uncertainty of the
     ratios) and stiffness_over_measured_{k}_{model} for gaussian-moments, gaussian, weibull-tail,
-    weibull-bounded and measured-summits-own-radii (None where a model has no curve). Missing
-    values (a map at its noise floor, no heights fitted) are None."""
+    weibull-bounded, measured-summits-own-radii, persson and exact (None where a model has no
+    curve); with the exact contact solved, stiffness_over_exact_{k}_{model} and
+    area_over_exact_{k}_{model} for measured-summits and the others but exact. Missing values (a
+    map at its noise floor, no heights fitted) are None."""
     d = json.loads(document) if isinstance(document, (str, bytes)) else document
     if d.get("schema") != _SCHEMA:
         raise ValueError(f"not an {_SCHEMA} document (schema {d.get('schema')!r})")
@@ -288,6 +294,9 @@ def row_from_json(document, source=None, name=None) -> dict:
     if contact:
         row["contact_closest_model"] = contact["closest_fitted_model"]
         row["contact_headline"] = contact["headline"]
+        references = contact.get("references", {})
+        exact_solved = bool(references.get("exact")) and _models_served(contact, "exact")
+        row["contact_closest_to_exact"] = references.get("closest_to_exact") or None
         models = {m["model"]: m for m in contact["models"]}
         spread = contact["measured_summits_spread"]["stiffness_relative"]
         for k, pressure in enumerate(contact["pressures_Pa"]):
@@ -297,7 +306,19 @@ def row_from_json(document, source=None, name=None) -> dict:
                 at = models.get(label, {}).get("at_pressures", [])
                 value = at[k].get("stiffness_over_measured_summits") if k < len(at) and models[label]["served"] else None
                 row[f"stiffness_over_measured_{k}_{label}"] = value
+            if not exact_solved:
+                continue
+            for label in _EXACT_MODELS:
+                at = models.get(label, {}).get("at_pressures", [])
+                served = k < len(at) and models[label]["served"]
+                row[f"stiffness_over_exact_{k}_{label}"] = at[k].get("stiffness_over_exact") if served else None
+                row[f"area_over_exact_{k}_{label}"] = at[k].get("area_over_exact") if served else None
     return row
+
+
+def _models_served(contact, label):
+    """Whether the contact block holds a served curve of that label."""
+    return any(m["model"] == label and m["served"] for m in contact["models"])
 
 
 def _failed_row(source, name, error, seconds=None):
