@@ -94,8 +94,9 @@ double integrate_piece(const F& f, double w_a, double z_a, double w_b, double z_
 }  // namespace detail
 
 // The per-summit mean values at separation s for `law` over `heights` (see the top of the file).
+// `load_only`: the load alone (the others 0), for searches over many separations.
 inline RoughSurfaceValues law_integrals(const ContactLaw& law, const SummitHeights& heights, double s,
-                                        ContactHistory history = {}) {
+                                        ContactHistory history = {}, bool load_only = false) {
   const double sigma = heights.scale, inf = std::numeric_limits<double>::infinity();
   const bool tail = heights.side == Side::tail;
   const double orientation = tail ? 1 : -1;
@@ -164,9 +165,10 @@ inline RoughSurfaceValues law_integrals(const ContactLaw& law, const SummitHeigh
     }
     return total;
   };
+  out.load = integrate([&](double w) { return asperity_response(law, sigma * w).load; });
+  if (load_only) return out;
   out.count = integrate([](double) { return 1.0; });
   out.area = integrate([&](double w) { return asperity_response(law, sigma * w).area; });
-  out.load = integrate([&](double w) { return asperity_response(law, sigma * w).load; });
   // JKR's and MD's dP/domega are infinite where fixed grips lose contact (a vertical tangent,
   // ~ (omega - omega_min)^-1/2): where that is the edge, the stiffness by parts instead,
   // K = -(dz/ds / sigma) int P(sigma w) phi'(z) dw, the law's edge fixed in w (no jump terms)
@@ -194,6 +196,27 @@ inline RoughSurfaceValues law_integrals(const ContactLaw& law, const SummitHeigh
     if (w > w_lo && w < w_hi) out.stiffness += jump_at(points.interference[k]) * summit_density(heights, z_of(w)) / sigma;
   }
   return out;
+}
+
+// The greatest tension (-load, per summit) while the flat is withdrawn under fixed grips after
+// reaching separation s0 (Fuller & Tabor 1975): a grid over s from s0 to past the last
+// asperity's pull-off (the law's lowest interference), refined by golden section.
+inline double pull_off(const ContactLaw& law, const SummitHeights& heights, double s0) {
+  const ContactHistory history{true, s0};
+  auto tension = [&](double s) { return -law_integrals(law, heights, s, history, true).load; };
+  double best_s = s0, best = tension(s0);
+  const double step = 0.05, reach = 6 - law.lowest_interference / heights.scale;
+  for (double s = s0 + step; s <= s0 + reach; s += step) {
+    const double t = tension(s);
+    if (t > best) best = t, best_s = s;
+  }
+  double a = std::max(s0, best_s - step), b = best_s + step;
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 40; ++i) {
+    const double c = b - r * (b - a), d = a + r * (b - a);
+    if (tension(c) > tension(d)) b = d; else a = c;
+  }
+  return std::max(best, tension(0.5 * (a + b)));
 }
 
 }  // namespace asperity::test

@@ -421,4 +421,35 @@ TEST(RoughSurfaceReference, StiffnessIsSlopeOfLoad) {
   }
 }
 
+// Fuller-Tabor's pull-off (docs/contact-laws.md section 5): JKR asperities loaded to the mean summit
+// height and pulled off under fixed grips keep the smooth surface's pull-off as sigma/delta_c -> 0
+// and lose it as sigma grows; the paper gives figures only, so these are the curve's ends
+TEST(RoughSurfaceReference, FullerTaborEnds) {
+  const double gamma = 0.05;
+  const ContactLaw law = jkr_law(R, E, gamma);
+  const double delta_c = 0.75 * std::cbrt(pi * pi * gamma * gamma * R / (E * E)), smooth = 1.5 * pi * gamma * R;
+  auto fraction = [&](double dc) {
+    return asperity::test::pull_off(law, {Distribution::gaussian, Side::tail, 2, dc * delta_c}, 0.0) / (0.5 * smooth);
+  };
+  const double fine = fraction(0.05), medium = fraction(1.0), coarse = fraction(3.0);
+  EXPECT_GT(fine, 0.999);
+  EXPECT_LT(fine, 1.0);
+  EXPECT_LT(medium, fine);
+  EXPECT_LT(coarse, 0.1);
+  EXPECT_GT(coarse, 0);
+}
+
+// Kogut-Etsion 2003's surface: below psi ~ 0.6 hardly a summit yields, and their load is GW's
+// elastic one; at psi = 8 the plastic summits carry less than Hertz's
+TEST(RoughSurfaceReference, KogutEtsionElasticLimit) {
+  const ContactLaw ke = kogut_etsion_law(R, E, Y, NU), hertz = hertz_law(R, E);
+  for (double s : {1.0, 2.0, 3.0}) {
+    const SummitHeights smooth{Distribution::gaussian, Side::tail, 2, 0.25 * ke.critical_interference};  // psi = 0.5
+    EXPECT_LT(relative(law_integrals(ke, smooth, s).load, law_integrals(hertz, smooth, s).load), 1e-4) << s;
+    const SummitHeights rough{Distribution::gaussian, Side::tail, 2, 64 * ke.critical_interference};  // psi = 8
+    EXPECT_LT(law_integrals(ke, rough, s).load, 0.8 * law_integrals(hertz, rough, s).load) << s;
+    EXPECT_NEAR(plasticity_index(ke, smooth.scale), 0.5, 1e-12);
+  }
+}
+
 }  // namespace
