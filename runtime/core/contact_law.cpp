@@ -153,7 +153,7 @@ double jkr_root(double d) noexcept {
     const double step = f / fp;
     x -= step;
     if (x <= x_min) return x_min;
-    if (step <= 1e-17 * x) break;
+    if (step <= 4e-16 * x) break;  // converged to rounding (f may stay a few ulps above 0)
   }
   return x;
 }
