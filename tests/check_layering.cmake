@@ -4,7 +4,7 @@ cmake_minimum_required(VERSION 3.18)
 #   cmake -DSOURCE_DIR=<project> -P tests/check_layering.cmake
 set(layer_core model layout curve asymptotic instruction_set error segment_kind
     detail/fast_math detail/quintic_hermite detail/compact_curve detail/fast_grid detail/fast_grid_build detail/curve_data
-    detail/contact_ratio detail/intrinsics detail/parallel_for contact_scales)
+    detail/contact_ratio detail/intrinsics detail/parallel_for contact_scales contact_law)
 set(layer_table table table_schema table_data table_file)
 set(layer_physics contact contact_model inverse surface persson physics)
 set(layer_scene scene scene_curves)
