@@ -59,12 +59,25 @@ int main(int argc, char** argv) {
   int maps = 100, surrogates = 99, threads = 0;
   std::size_t size = 256;
   std::string only;
-  for (int k = 1; k + 1 < argc; k += 2) {
+  const char* usage = "usage: surface_ensembles [--maps M] [--surrogates B] [--size N] [--family NAME] [--threads T]\n";
+  for (int k = 1; k < argc; k += 2) {
+    if (k + 1 >= argc) {  // a lone word (--help included): the usage, not a half-hour run
+      std::fputs(usage, stderr);
+      return 2;
+    }
     if (!std::strcmp(argv[k], "--maps")) maps = std::atoi(argv[k + 1]);
     else if (!std::strcmp(argv[k], "--surrogates")) surrogates = std::atoi(argv[k + 1]);
     else if (!std::strcmp(argv[k], "--size")) size = static_cast<std::size_t>(std::atol(argv[k + 1]));
     else if (!std::strcmp(argv[k], "--family")) only = argv[k + 1];
     else if (!std::strcmp(argv[k], "--threads")) threads = std::atoi(argv[k + 1]);
+    else {
+      std::fprintf(stderr, "surface_ensembles: unknown option %s\n%s", argv[k], usage);
+      return 2;
+    }
+  }
+  if (maps < 1 || surrogates < 0 || size < 16 || threads < 0) {
+    std::fputs(usage, stderr);
+    return 2;
   }
   std::printf("| family | alpha | summits | Gaussian verdict rejects | heights' test rejects (5%%) | summit heights' test "
               "rejects (5%%) | heights' orientation right | heights' shape interval holds a | identified |\n"
