@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "asperity/layout.hpp"
-#include "quadrature.hpp"
+#include "asperity/generator/quadrature.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 
 struct ChainOptions {
   double tolerance = 1e-14;  // odeint absolute = relative tolerance on H (H error = relative error of X)
@@ -17,4 +17,4 @@ struct ChainOptions {
 std::vector<double> integrate_curve(const CurveId& curve, const std::vector<SegmentSpec>& layout,
                                     const ChainOptions& options);
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

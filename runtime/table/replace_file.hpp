@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-namespace asperity::tablegen {
+namespace asperity {
 
 // Throws asperity::Error (and leaves the target as it was, with no temporary file behind) if
 // the target is not a regular file (a symbolic link, device, FIFO or directory: refused, never
@@ -18,4 +18,4 @@ void replace_file(const std::string& path, const void* data, std::size_t size);
 // The temporary-file name prefix in the target's directory (".tablegen-").
 inline constexpr const char* temporary_prefix = ".tablegen-";
 
-}  // namespace asperity::tablegen
+}  // namespace asperity

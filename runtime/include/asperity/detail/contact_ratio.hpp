@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "asperity/detail/fast_math.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity::detail {
 

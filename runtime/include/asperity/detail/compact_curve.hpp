@@ -10,7 +10,7 @@
 
 #include "asperity/asymptotic.hpp"
 #include "asperity/layout.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity::detail {
 

@@ -15,7 +15,7 @@
 
 #include "asperity/error.hpp"
 
-namespace asperity::tablegen {
+namespace asperity {
 namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw Error("writing the table failed: " + what); }
@@ -155,4 +155,4 @@ void replace_file(const std::string& path, const void* data, std::size_t size) {
     fail("'" + path + "' was written, but syncing its directory failed: " + reason());
 }
 
-}  // namespace asperity::tablegen
+}  // namespace asperity

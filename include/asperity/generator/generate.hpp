@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "asperity/table.hpp"
-#include "chain_ode.hpp"
+#include "asperity/generator/chain_ode.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 
 struct GenerateOptions {
   double shape_min = 0.5;
@@ -42,4 +42,4 @@ std::vector<double> check_separations(const Curve& curve, const std::vector<Segm
 // The largest relative error per order at those points (what a table stores as max_rel_error).
 std::vector<double> measure_curve_error(const Curve& curve, const std::vector<SegmentSpec>& layout, int check_stride);
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

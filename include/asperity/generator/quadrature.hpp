@@ -3,9 +3,9 @@
 // in scaled forms that never underflow: what seeds the ODE chain where it cannot close
 // (X_-1/2 and its slope), fills the all-touching segment, and checks the finished table.
 #pragma once
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 
 struct CurveId {
   Distribution distribution;
@@ -20,4 +20,4 @@ double log_integral(const CurveId& curve, double order, double separation);
 // d ln X_-1/2 / ds, which the chain cannot give (it would need X_-3/2).
 double log_slope_minus_half(const CurveId& curve, double separation);
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

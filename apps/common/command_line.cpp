@@ -10,8 +10,9 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/surface.hpp"
 #include "asperity/table_schema.hpp"
-#include "number_text.hpp"
+#include "asperity/number_text.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -138,6 +139,14 @@ CLI::Option* add_whole_number(CLI::App& command, const std::string& name, long l
                                                  std::to_string(lo) + " to " + std::to_string(hi));
                   })
       ->type_name("N");
+}
+
+double contact_modulus_option(double modulus, double e1, double nu1, double e2, double nu2) {
+  try {
+    return contact_modulus_given(modulus, e1, nu1, e2, nu2);
+  } catch (const Error& error) {
+    throw CLI::ValidationError(error.what());
+  }
 }
 
 double number_from_text(const std::string& text, const std::string& what) {

@@ -15,7 +15,7 @@
 #include "asperity/scene.hpp"
 #include "asperity/table.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 
 struct SceneCurveReport {
   SceneCurve curve;                  // with the separation range resolved (loads -> separations)
@@ -37,4 +37,4 @@ SceneResult generate_scene_table(const Scene& scene, int threads = 0);
 // The separation where X_3/2 = load (dimensionless), by root finding on the quadrature.
 double separation_at_load(Distribution distribution, Side side, double shape, double load);
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

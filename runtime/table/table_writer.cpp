@@ -1,4 +1,4 @@
-#include "table_writer.hpp"
+#include "asperity/table_writer.hpp"
 
 #include <hdf5.h>
 
@@ -11,7 +11,7 @@
 #include "hdf5_handle.hpp"
 #include "replace_file.hpp"
 
-namespace asperity::tablegen {
+namespace asperity {
 namespace {
 
 using detail::Hdf5Handle;
@@ -157,4 +157,4 @@ void write_table_file(const TableData& table, const std::string& path) {
   replace_file(path, bytes.data(), bytes.size());
 }
 
-}  // namespace asperity::tablegen
+}  // namespace asperity

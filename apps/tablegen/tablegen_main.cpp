@@ -1,4 +1,5 @@
-// tablegen: generate an asperity table file (command line on CLI11, apps/asperity/command_line.hpp).
+// tablegen: generate an asperity table file (the generator: asperity/generator/; the command
+// line on CLI11: apps/common/command_line.hpp).
 //   tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]
 //            [--tolerance REL] [--density F] [--threads N] [--quiet]
 //   tablegen --scene SCENE.toml --out FILE [--threads N] [--quiet]
@@ -18,16 +19,14 @@
 #include "asperity/scene.hpp"
 #include "asperity/table_schema.hpp"
 #include "command_line.hpp"
-#include "generate.hpp"
-#include "number_text.hpp"
-#include "scene_table.hpp"
-#include "table_writer.hpp"
+#include "asperity/generator/generate.hpp"
+#include "asperity/number_text.hpp"
+#include "asperity/generator/scene_table.hpp"
+#include "asperity/table_writer.hpp"
 
 namespace {
 
 using namespace asperity;
-using asperity::cli::format_double;
-using asperity::cli::quote_text;
 
 // A derived number in a message: four significant digits are enough to act on.
 std::string approximately(double value) {
@@ -45,7 +44,7 @@ constexpr int max_grid_shapes = 1000;
 constexpr double max_tail_exponent_log = 100 * 2.302585092994046;  // ln(1e100)
 
 struct Options {
-  tablegen::GenerateOptions generate;
+  generator::GenerateOptions generate;
   std::string out, scene, shapes, sides;
   double tolerance = NAN, density = NAN;
   long long threads = 0;
@@ -55,7 +54,7 @@ struct Options {
 [[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
 // Parses and checks --shapes LO:HI:STEP against the generator's reach before it runs.
-void apply_shapes(const std::string& spec, tablegen::GenerateOptions& options) {
+void apply_shapes(const std::string& spec, generator::GenerateOptions& options) {
   std::vector<std::string> parts;
   std::stringstream stream(spec);
   for (std::string part; std::getline(stream, part, ':');) parts.push_back(part);
@@ -69,7 +68,7 @@ void apply_shapes(const std::string& spec, tablegen::GenerateOptions& options) {
   if (!(step > 0)) usage("--shapes needs STEP > 0");
   // The grid's spacing in q = ln a - 1/a is at most STEP (2/3 of it on the bounded side): bound
   // the node count before making it.
-  const double factor = tablegen::GenerateOptions::bounded_step_factor;
+  const double factor = generator::GenerateOptions::bounded_step_factor;
   const double intervals = (shape_grid_variable(hi) - shape_grid_variable(lo)) / (step * factor);
   if (!(intervals <= max_grid_shapes)) {
     usage("--shapes " + quote_text(spec) + " asks for about " + format_double(std::ceil(intervals)) +
@@ -80,7 +79,7 @@ void apply_shapes(const std::string& spec, tablegen::GenerateOptions& options) {
   options.shape_min = lo;
   options.shape_max = hi;
   options.shape_log_step = step;
-  const std::vector<double> grid = tablegen::shape_grid(options);
+  const std::vector<double> grid = generator::shape_grid(options);
   if (grid.front() < scene_shape_min || grid.back() > scene_shape_max) {
     usage("--shapes " + quote_text(spec) + ": the grid runs " + std::to_string(shape_stencil / 2) +
           " nodes past each end (for the interpolation between shapes), here from " + approximately(grid.front()) +
@@ -89,7 +88,7 @@ void apply_shapes(const std::string& spec, tablegen::GenerateOptions& options) {
   }
 }
 
-void apply_sides(const std::string& sides, tablegen::GenerateOptions& options) {
+void apply_sides(const std::string& sides, generator::GenerateOptions& options) {
   options.tail = options.bounded = false;
   std::stringstream stream(sides);
   for (std::string side; std::getline(stream, side, ',');) {
@@ -125,13 +124,13 @@ int generate_scene(const Options& options, int threads) {
   check_scene(scene);
   if (!options.quiet)
     std::fprintf(stderr, "tablegen: scene %s: %zu curves\n", quote_text(options.scene, 200).c_str(), scene.curves.size());
-  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, threads);
+  const generator::SceneResult result = generator::generate_scene_table(scene, threads);
   if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
-  tablegen::write_table_file(result.table, options.out);
+  write_table_file(result.table, options.out);
   std::printf("%-16s %-8s %-8s %7s %-14s %-24s %9s %9s %6s %8s\n", "curve", "dist", "side", "shape", "orders",
               "separations", "asked", "achieved", "knots", "memory");
   std::size_t bytes = 0;
-  for (const tablegen::SceneCurveReport& report : result.curves) {
+  for (const generator::SceneCurveReport& report : result.curves) {
     std::string orders;
     for (int twice_order : report.curve.twice_orders)
       orders += (orders.empty() ? "" : ",") + std::string(twice_order % 2 ? std::to_string(twice_order) + "/2"
@@ -150,7 +149,7 @@ int generate_scene(const Options& options, int threads) {
 }
 
 int generate(Options options) {
-  tablegen::GenerateOptions& generate = options.generate;
+  generator::GenerateOptions& generate = options.generate;
   if (!options.shapes.empty()) apply_shapes(options.shapes, generate);
   if (!options.sides.empty()) apply_sides(options.sides, generate);
   if (options.gaussian && options.no_gaussian) usage("give --gaussian or --no-gaussian, not both");
@@ -198,15 +197,15 @@ int generate(Options options) {
     std::fprintf(stderr, "tablegen: Weibull %s%s%s on %zu%s grid shapes (%s to %s served)%s\n",
                  generate.tail ? "tail" : "", generate.tail && generate.bounded ? " and " : "",
                  generate.bounded ? "bounded side" : (generate.tail ? " side" : "no side"),
-                 tablegen::shape_grid(generate, generate.tail ? Side::tail : Side::bounded).size(),
+                 generator::shape_grid(generate, generate.tail ? Side::tail : Side::bounded).size(),
                  generate.tail && generate.bounded
-                     ? (" and " + std::to_string(tablegen::shape_grid(generate, Side::bounded).size())).c_str()
+                     ? (" and " + std::to_string(generator::shape_grid(generate, Side::bounded).size())).c_str()
                      : "",
                  format_double(generate.shape_min).c_str(), format_double(generate.shape_max).c_str(),
                  generate.gaussian ? ", and the Gaussian" : "");
-  const TableData table = tablegen::generate_table(generate, progress);
+  const TableData table = generator::generate_table(generate, progress);
   if (!quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
-  tablegen::write_table_file(table, options.out);
+  write_table_file(table, options.out);
   double worst = 0;
   std::size_t curves = 0;
   for (const CurveSet& set : table.sets) {

@@ -2,16 +2,17 @@
 // waiting on a FIFO, its size bounded before a byte is read. Internal: not installed.
 #pragma once
 #include <cstdint>
-#include <stdexcept>
 #include <string>
+
+#include "asperity/error.hpp"
 
 namespace asperity::detail {
 
 enum class FileFailure { missing, unreadable, too_large };
 
-class RegularFileError : public std::runtime_error {
+class RegularFileError : public Error {
  public:
-  RegularFileError(FileFailure failure, const std::string& what) : std::runtime_error(what), failure_(failure) {}
+  RegularFileError(FileFailure failure, const std::string& what) : Error(what), failure_(failure) {}
   FileFailure failure() const noexcept { return failure_; }
 
  private:

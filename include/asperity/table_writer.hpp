@@ -8,7 +8,7 @@
 
 #include "asperity/table.hpp"
 
-namespace asperity::tablegen {
+namespace asperity {
 
 // The whole table file's bytes. Throws asperity::Error for data that CurveSet::validate refuses
 // or text too long for an attribute.
@@ -16,4 +16,4 @@ std::vector<unsigned char> table_file_bytes(const TableData& table);
 
 void write_table_file(const TableData& table, const std::string& path);
 
-}  // namespace asperity::tablegen
+}  // namespace asperity

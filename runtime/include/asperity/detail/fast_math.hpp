@@ -80,13 +80,12 @@ static constexpr Exp2Table<128> exp2_table = make_exp2_table<128>();
 // is latency-bound). 2^m goes into the result's bits by integer arithmetic (fast_exp: by one
 // exact multiplication where the result is surely normal), and subnormal
 // results are made from normal doubles (exp_below_normal): a floating-point operation that makes
-// a subnormal costs a microcode assist of ~100 ns on x86, and the tails reach X < 1e-308
-// (bench_lookup: BM_StdExp/subnormal_results 98 ns, BM_FastExp/subnormal_results 10 ns).
+// a subnormal costs a microcode assist on x86, and the tails reach X < 1e-308 (bench_lookup:
+// BM_StdExp/subnormal_results against BM_FastExp/subnormal_results).
 // Two forms of the same arithmetic: fast_exp_lanes for loops that vectorize (the special
 // values by bit masks, every load unconditional) and fast_exp for one call at a time (the
-// special values by branches, which predict well and are cheaper there: BM_FastExp 7.0 ns,
-// BM_FastExpLanes 15 ns, BM_StdExp 12 ns, one call at a time, baseline x86-64). Same bits for
-// every x.
+// special values by branches, which predict well and are cheaper there: bench_lookup's
+// BM_FastExp against BM_FastExpLanes and BM_StdExp, one call at a time). Same bits for every x.
 struct ExpParts {
   std::uint64_t scale;     // 2^(j/128) e^r, in [0.99, 2.01]
   std::uint64_t exponent;  // the result's biased exponent: that of scale + m (two's complement)
@@ -189,10 +188,9 @@ static ASPERITY_ALWAYS_INLINE double fast_exp_of(double x) noexcept {
 #if defined(__AVX512F__)
   // In the AVX-512 kernels' build, vscalefpd applies 2^m for m in [-1100, 1100]: it rounds a
   // subnormal result once (the same bits as exp_below_normal) and gives 0 and inf beyond the
-  // range, so the tails' tiny results take no branch of their own (bench_lookup
-  // BM_ScalarKind/gaussian 6.39 -> 5.84 ns over the whole table, weibull_tail_a0.5 6.77 ->
-  // 5.66, where ~3% of random queries are below DBL_MIN; Zen 5, alternated builds). With the
-  // default MXCSR: under flush-to-zero those results are 0.
+  // range, so the tails' tiny results take no branch of their own (faster in bench_lookup's
+  // BM_ScalarKind rows, whose random queries reach below DBL_MIN). With the default MXCSR:
+  // under flush-to-zero those results are 0.
   if (__builtin_expect(parts.m + 1100 <= 1100 + 1100, 1))
     return _mm_cvtsd_f64(_mm_scalef_sd(_mm_set_sd(double_of(parts.scale)),
                                        _mm_set_sd(static_cast<double>(static_cast<std::int64_t>(parts.m)))));

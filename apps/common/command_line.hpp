@@ -48,6 +48,11 @@ Table open_table(const std::string& path);
 // values such as --sweep KIND:FROM:TO:COUNT).
 double number_from_text(const std::string& text, const std::string& what);
 
+// --modulus, or --e1 --nu1 --e2 --nu2 (NaN: not given), checked by the library's one check
+// (asperity/surface.hpp's contact_modulus_given): NaN where none is given; its refusal as a usage
+// error.
+double contact_modulus_option(double modulus, double e1, double nu1, double e2, double nu2);
+
 // "<program> <command>" of a (sub)command, for messages.
 std::string command_name(const CLI::App& command);
 // One line on standard error: "<program> <command>: warning: <message>" and "...: <message>".
