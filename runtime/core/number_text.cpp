@@ -1,4 +1,4 @@
-#include "number_text.hpp"
+#include "asperity/number_text.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -6,26 +6,36 @@
 #include <cstdlib>
 #include <system_error>
 
-namespace asperity::cli {
+namespace asperity {
 
-bool read_double(std::string_view text, double& value) {
+std::size_t read_double_prefix(std::string_view text, double& value) {
   // from_chars takes no '+' (strtod does): allow one in front of a number.
+  std::size_t sign = 0;
   if (!text.empty() && text.front() == '+') {
     text.remove_prefix(1);
-    if (text.empty() || text.front() == '+' || text.front() == '-') return false;
+    sign = 1;
+    if (text.empty() || text.front() == '+' || text.front() == '-') return 0;
   }
-  if (text.empty()) return false;
+  if (text.empty()) return 0;
   double parsed = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), parsed);
-  if (end != text.data() + text.size()) return false;
+  if (end == text.data()) return 0;
   if (error == std::errc::result_out_of_range) {
     // Syntax is valid and the magnitude is beyond the doubles: round as IEEE does. strtod on
     // a terminated copy tells overflow (HUGE_VAL) from underflow (0 or a subnormal).
-    const std::string copy(text);
+    const std::string copy(text.data(), end);
     parsed = std::strtod(copy.c_str(), nullptr);
   } else if (error != std::errc()) {
-    return false;
+    return 0;
   }
+  value = parsed;
+  return sign + static_cast<std::size_t>(end - text.data());
+}
+
+bool read_double(std::string_view text, double& value) {
+  double parsed = 0;
+  const std::size_t used = read_double_prefix(text, parsed);
+  if (used == 0 || used != text.size()) return false;
   value = parsed;
   return true;
 }
@@ -101,4 +111,4 @@ std::string terminal_text(std::string_view text) {
   return out;
 }
 
-}  // namespace asperity::cli
+}  // namespace asperity

@@ -1,4 +1,4 @@
-#include "pressure_overclosure.hpp"
+#include "asperity/pressure_overclosure.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -8,7 +8,7 @@
 
 #include "asperity/error.hpp"
 
-namespace asperity::cli {
+namespace asperity {
 namespace {
 
 // The cards carry 13 significant digits: CalculiX reads each field as 20 characters (f20.0),
@@ -247,4 +247,4 @@ bool parse_card_units(const std::string& name, CardUnits& units) {
   return true;
 }
 
-}  // namespace asperity::cli
+}  // namespace asperity

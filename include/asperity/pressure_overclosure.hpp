@@ -21,7 +21,7 @@
 
 #include "asperity/contact_model.hpp"
 
-namespace asperity::cli {
+namespace asperity {
 
 enum class CardFormat { calculix, abaqus, csv };
 enum class CardUnits { si, mm };  // overclosure in m and pressure in Pa, or mm and MPa (N/mm^2)
@@ -72,4 +72,4 @@ void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<P
 bool parse_card_format(const std::string& name, CardFormat& format);
 bool parse_card_units(const std::string& name, CardUnits& units);
 
-}  // namespace asperity::cli
+}  // namespace asperity
