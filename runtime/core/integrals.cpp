@@ -1,4 +1,4 @@
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 #include <cmath>
 #include <limits>
