@@ -3,7 +3,9 @@
 docs/exact-contact.md and its figures docs/exact-contact-*.svg/.png: the validations against
 closed forms (Hertz, Westergaard, the self-affine area-load slope), the kernel's and the
 boundary's effects, the two real maps of tests/data/surfaces solved beside the GW models of
-`asperity surface`, and the speed table from exact_contact_bench's JSON.
+`asperity surface`, every curve of `asperity surface --exact` against the exact one, Persson's
+theory against the exact solution of self-affine surfaces, and the speed table from
+exact_contact_bench's JSON.
 
 Run by scripts/exact-contact-report.sh: exact_contact_report.py BUILD_DIR BENCH_JSON
 """
@@ -266,6 +268,45 @@ def real_maps():
         ratios)
 
 
+# ---- the surface report: every curve against the exact one; Persson against it ----
+def surface_report():
+    data = REPO / "tests" / "data" / "surfaces"
+    rows = []
+    for name, label in SURFACES:
+        out = json.loads(run(["surface", str(data / name), "--modulus", str(MODULUS), "--pressure",
+                              ",".join(f"{p:g}" for p in MAP_PRESSURES), "--ensemble", "0", "--no-height-fit",
+                              "--exact", "--json"]))
+        contact = out["contact"]
+        for model in contact["models"]:
+            if not model["served"] or model["model"] == "exact":
+                continue
+            at = model["at_pressures"]
+            rows.append([label, model["model"],
+                         " / ".join(f"{s['stiffness_over_exact']:.2f}" for s in at),
+                         " / ".join(f"{s['area_over_exact']:.2f}" for s in at),
+                         " / ".join(f"{1e9 * s['mean_separation_minus_exact_m']:+.0f}" for s in at)])
+        rows.append([label, "closest: " + contact["references"]["closest_to_exact"], "", "", ""])
+    # Persson against the exact solution of periodic self-affine surfaces (Fourier kernel: the
+    # spectrum's own model)
+    persson_rows = []
+    for rolloff in (4, 16):
+        surface = rough(512, 1 / rolloff)
+        gradient = topo.spectral_rms_gradient(surface)
+        theory = topo.PerssonContact(topo.radial_power_spectrum(surface, edges="none"), contact_modulus=MODULUS)
+        solver = topo.ExactContact(surface, contact_modulus=MODULUS)
+        for reduced in (0.005, 0.02, 0.05, 0.1):
+            p = reduced * MODULUS * gradient
+            e, t = solver.at_pressure(p), theory.at_pressure(p)
+            persson_rows.append([f"L/{rolloff}", f"{reduced:g}", f"{e.area_fraction:.4f}",
+                                 f"{t.area_fraction / e.area_fraction:.3f}", f"{t.mean_gap / e.mean_gap:.3f}",
+                                 f"{t.stiffness_per_area / e.stiffness_per_area:.3f}"])
+    sections["surface-report"] = table(
+        ["map", "curve", "stiffness / exact at 1e5 / 1e6 / 1e7 / 1e8 Pa", "real area / exact",
+         "mean separation - exact [nm]"], rows)
+    sections["persson"] = table(["roll-off", "p/(E* h')", "exact area fraction", "Persson / exact: area",
+                                 "mean gap", "stiffness"], persson_rows)
+
+
 # ---- speed ----
 def speed():
     if not BENCH or not BENCH.exists():
@@ -291,9 +332,9 @@ def speed():
 
 def main():
     # PARTS=maps,speed (say) measures those parts only; the other sections keep their text
-    parts = os.environ.get("PARTS", "hertz,wavy,self_affine,maps,speed").split(",")
+    parts = os.environ.get("PARTS", "hertz,wavy,self_affine,maps,report,speed").split(",")
     for name, part in (("hertz", hertz), ("wavy", westergaard), ("self_affine", self_affine), ("maps", real_maps),
-                       ("speed", speed)):
+                       ("report", surface_report), ("speed", speed)):
         if name in parts:
             part()
     page = DOCS / "exact-contact.md"

@@ -161,6 +161,11 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     analysis.contact = compare_contact(analysis.summit_heights, analysis.summits, analysis.moments,
                                        map.width() * map.length(), *options.contact);
     ContactComparison& c = *analysis.contact;
+    // Persson and the exact contact, separations from the same mean summit height as the rest
+    double mean_summit = 0;
+    for (const Summit& s : analysis.summits.list) mean_summit += s.height;
+    mean_summit /= static_cast<double>(analysis.summits.list.size());
+    add_reference_contact(c, map, mean_summit, options.exact_progress);
     // the spread of the measured-summit answer over the ensemble
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
       std::vector<double> stiffness, separation;

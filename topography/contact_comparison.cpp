@@ -8,11 +8,12 @@
 #include <string>
 
 #include "asperity/error.hpp"
+#include "asperity/generator/scene_table.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
+#include "asperity/topography/persson_contact.hpp"
 #include "asperity/topography/summit_contact.hpp"
-#include "asperity/generator/scene_table.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -24,16 +25,197 @@ std::string shape_text(double shape) {
   return text.str();
 }
 
-void fill_curves(ModelContact& model, const ContactModel& contact, const ContactComparison& comparison) {
-  const int points = comparison.options.curve_points;  // checked by compare_contact
+// The pressures of every curve: log-uniform over [pressure_min, pressure_max].
+std::vector<double> curve_pressures(const ContactComparison& comparison) {
+  const int points = comparison.options.curve_points;
   const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
-  for (int k = 0; k < points; ++k)
-    model.curve.push_back(contact.at_pressure(std::exp(lo + (hi - lo) * k / (points - 1))));
-  for (double p : comparison.pressures) model.at_pressures.push_back(contact.at_pressure(p));
+  std::vector<double> pressures;
+  for (int k = 0; k < points; ++k) pressures.push_back(std::exp(lo + (hi - lo) * k / (points - 1)));
+  return pressures;
+}
+
+void fill_curves(ModelContact& model, const ContactModel& contact, const ContactComparison& comparison) {
+  // a table answers NaN outside what it serves: no curve rather than a curve of NaN
+  const auto state = [&](double p) {
+    const PhysicalState s = contact.at_pressure(p);
+    if (std::isnan(s.stiffness) || std::isnan(s.mean_separation))
+      throw Error("the table gives no value at " + shape_text(p) + " Pa");
+    return s;
+  };
+  for (double p : curve_pressures(comparison)) model.curve.push_back(state(p));
+  for (double p : comparison.pressures) model.at_pressures.push_back(state(p));
   model.served = true;
 }
 
+// A fitted law (not a reference, not the measured summits).
+bool is_fitted(const std::string& label) {
+  return label == "gaussian-moments" || label == "gaussian" || label == "weibull-tail" || label == "weibull-bounded";
+}
+
+// A reference's state at nominal pressure p over the comparison's nominal area A0.
+PhysicalState reference_state(double p, double mean_gap, double area_fraction, double stiffness_per_area,
+                              double count, double mean_summit_height, double area) {
+  PhysicalState state{};
+  state.separation = mean_gap;
+  state.mean_separation = mean_gap - mean_summit_height;
+  state.count = count;
+  state.area_fraction = area_fraction;
+  state.real_area = area_fraction * area;
+  state.pressure = p;
+  state.load = p * area;
+  state.stiffness = stiffness_per_area * area;
+  state.stiffness_over_load = stiffness_per_area / p;
+  return state;
+}
+
+void conclude_against_exact(ContactComparison& comparison) {
+  comparison.closest_to_exact.clear();
+  comparison.exact_headline.clear();
+  const ModelContact* exact = comparison.find("exact");
+  for (ModelContact& model : comparison.models) {
+    model.stiffness_over_exact.clear();
+    model.area_over_exact.clear();
+    model.separation_minus_exact.clear();
+  }
+  if (!exact || !exact->served) return;
+  double best = std::numeric_limits<double>::infinity();
+  for (ModelContact& model : comparison.models) {
+    if (!model.served || model.label == "exact") continue;
+    double worst = 0;
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
+      const PhysicalState &m = model.at_pressures[k], &e = exact->at_pressures[k];
+      model.stiffness_over_exact.push_back(m.stiffness / e.stiffness);
+      model.area_over_exact.push_back(m.real_area / e.real_area);
+      model.separation_minus_exact.push_back(m.mean_separation - e.mean_separation);
+      worst = std::max(worst, std::fabs(std::log(model.stiffness_over_exact.back())));
+    }
+    if (model.label != "measured-summits-own-radii" && worst < best) {  // NaN never wins
+      best = worst;
+      comparison.closest_to_exact = model.label;
+    }
+  }
+  std::ostringstream text;
+  text.precision(3);
+  const auto describe = [&](const ModelContact& m) {
+    text << m.label << ": stiffness ";
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k) text << (k ? ", " : "") << m.stiffness_over_exact[k] << "x";
+    text << ", real area ";
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k) text << (k ? ", " : "") << m.area_over_exact[k] << "x";
+    text << ", mean separation ";
+    for (std::size_t k = 0; k < comparison.pressures.size(); ++k)
+      text << (k ? ", " : "") << m.separation_minus_exact[k] << " m";
+  };
+  text << "Against the exact elastic contact of the map at ";
+  for (std::size_t k = 0; k < comparison.pressures.size(); ++k) text << (k ? ", " : "") << comparison.pressures[k];
+  text << " Pa: ";
+  if (comparison.closest_to_exact.empty()) {
+    text << "no other curve to compare";
+  } else {
+    text << "closest ";
+    describe(*comparison.find(comparison.closest_to_exact));
+    for (const char* label : {"measured-summits", "persson"}) {
+      const ModelContact* m = comparison.find(label);
+      if (m && m->served && comparison.closest_to_exact != label) {
+        text << "; ";
+        describe(*m);
+      }
+    }
+    if (best > std::log(1.25)) text << "; no curve is within 25% in stiffness at every pressure";
+  }
+  comparison.exact_headline = text.str();
+}
+
 }  // namespace
+
+void add_reference_contact(ContactComparison& comparison, const HeightMap& map, double mean_summit_height,
+                           const ExactProgress& progress) {
+  const ContactOptions& options = comparison.options;
+  const double area = comparison.nominal_area;
+  if (options.exact && (options.exact_points < min_exact_points || options.exact_points > max_exact_points))
+    throw Error("contact: exact_points must be from " + std::to_string(min_exact_points) + " to " +
+                std::to_string(max_exact_points) + ", not " + std::to_string(options.exact_points));
+  if (options.persson) {
+    ModelContact model;
+    model.label = "persson";
+    model.mean_summit_height = mean_summit_height;
+    try {
+      const RadialPowerSpectrum spectrum = radial_power_spectrum(map, SpectrumEdges::periodic_component);
+      const PerssonContact persson(spectrum, options.contact_modulus);
+      const auto state = [&](double p) {
+        const PerssonState s = persson.at_pressure(p);
+        return reference_state(p, s.mean_gap, s.area_fraction, s.stiffness_per_area, NAN, mean_summit_height, area);
+      };
+      for (double p : curve_pressures(comparison)) model.curve.push_back(state(p));
+      for (double p : comparison.pressures) model.at_pressures.push_back(state(p));
+      model.served = true;
+      std::ostringstream note;
+      note.precision(3);
+      note << "Persson's theory (2007; Yang-Persson gamma " << yang_persson_gamma << ") from the map's power spectrum ("
+           << spectrum.density.size() << " annuli, q " << spectrum.edges.front() << " to " << spectrum.edges.back()
+           << " 1/m; periodic component, " << 100 * spectrum.variance / spectrum.map_variance
+           << "% of the height variance): no summits";
+      model.note = note.str();
+    } catch (const Error& error) {
+      model.curve.clear();
+      model.at_pressures.clear();
+      model.note = std::string("no curve: ") + error.what();
+    }
+    comparison.models.push_back(std::move(model));
+  }
+  if (options.exact) {
+    ModelContact model;
+    model.label = "exact";
+    model.mean_summit_height = mean_summit_height;
+    try {
+      ExactContactOptions solve;
+      solve.contact_modulus = options.contact_modulus;
+      solve.boundary = options.exact_boundary;
+      solve.kernel = options.exact_kernel;
+      solve.tolerance = options.exact_tolerance;
+      solve.threads = options.threads;
+      ExactContact exact(map, solve);
+      // the curve's pressures and the pressures of interest, solved upwards (each from the last)
+      std::vector<double> pressures = comparison.pressures;
+      const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
+      for (int k = 0; k < options.exact_points; ++k)
+        pressures.push_back(std::exp(lo + (hi - lo) * k / (options.exact_points - 1)));
+      std::sort(pressures.begin(), pressures.end());
+      pressures.erase(std::unique(pressures.begin(), pressures.end()), pressures.end());
+      int iterations = 0, most = 0;
+      double residual = 0;
+      for (std::size_t k = 0; k < pressures.size(); ++k) {
+        const ContactStep step = exact.at_pressure(pressures[k]);
+        iterations += step.iterations;
+        most = std::max(most, step.iterations);
+        residual = std::max(residual, step.residual);
+        // the pressure asked (the step's own is its pressures' mean, equal to rounding)
+        const PhysicalState state = reference_state(pressures[k], step.mean_gap, step.area_fraction, step.stiffness_per_area,
+                                                    static_cast<double>(step.clusters), mean_summit_height, area);
+        model.curve.push_back(state);
+        if (progress) progress(k + 1, pressures.size());
+      }
+      for (double p : comparison.pressures)  // each is in `pressures`, solved
+        model.at_pressures.push_back(
+            model.curve[static_cast<std::size_t>(std::lower_bound(pressures.begin(), pressures.end(), p) - pressures.begin())]);
+      model.served = true;
+      std::ostringstream method;
+      method.precision(3);
+      method << "boundary elements on FFTs (Polonsky-Keer constrained conjugate gradient), " << exact.nx() << " x "
+             << exact.ny() << " points, " << contact_boundary_name(options.exact_boundary) << " boundary, "
+             << contact_kernel_name(options.exact_kernel) << " kernel, tolerance " << options.exact_tolerance << "; "
+             << pressures.size() << " load steps, " << iterations << " iterations (at most " << most
+             << " a step), largest residual " << residual;
+      comparison.exact_method = method.str();
+      model.note = "the exact elastic contact of the map: " + comparison.exact_method + "; summits in contact: the contact "
+                   "clusters";
+    } catch (const Error& error) {
+      model.curve.clear();
+      model.at_pressures.clear();
+      model.note = std::string("no curve: ") + error.what();
+    }
+    comparison.models.push_back(std::move(model));
+  }
+}
 
 std::vector<double> contact_pressures(const ContactOptions& options) {
   std::vector<double> pressures = options.pressures;
@@ -46,6 +228,7 @@ std::vector<double> contact_pressures(const ContactOptions& options) {
 }
 
 void conclude_contact(ContactComparison& comparison) {
+  conclude_against_exact(comparison);
   const ModelContact* measured = comparison.find("measured-summits");
   if (!measured || !measured->served) return;
   for (ModelContact& model : comparison.models) {
@@ -62,7 +245,7 @@ void conclude_contact(ContactComparison& comparison) {
   double best = std::numeric_limits<double>::infinity();
   comparison.closest.clear();
   for (const ModelContact& model : comparison.models) {
-    if (!model.served || model.label.rfind("measured-summits", 0) == 0) continue;
+    if (!model.served || !is_fitted(model.label)) continue;
     double worst = 0;
     for (double ratio : model.stiffness_over_measured) worst = std::max(worst, std::fabs(std::log(ratio)));
     if (worst < best) {
@@ -86,7 +269,10 @@ void conclude_contact(ContactComparison& comparison) {
     text << "; mean separation ";
     for (std::size_t k = 0; k < comparison.pressures.size(); ++k)
       text << (k ? ", " : "") << closest.separation_minus_measured[k] << " m";
-    text << " from the measured summits' (the +- is the measured-summit answer's spread over the surrogate ensemble)";
+    text << " from the measured summits'";
+    if (!comparison.measured_stiffness_spread.empty())
+      text << " (the +- is the measured-summit answer's spread over the surrogate ensemble)";
+    if (best > std::log(1.25)) text << "; no fitted model is within 25% at every pressure";
   }
   comparison.headline = text.str();
 }
@@ -123,9 +309,7 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
     try {
       const SummitContact contact(summits, e_star, area, own_radii);
       model.mean_summit_height = contact.mean_summit_height();
-      const int points = comparison.options.curve_points;
-      const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
-      for (int k = 0; k < points; ++k) model.curve.push_back(contact.at_pressure(std::exp(lo + (hi - lo) * k / (points - 1))));
+      for (double p : curve_pressures(comparison)) model.curve.push_back(contact.at_pressure(p));
       for (double p : comparison.pressures) model.at_pressures.push_back(contact.at_pressure(p));
       model.served = true;
       model.surface.summit_radius = summits.radius;

@@ -127,6 +127,8 @@ const char* colour_of(const std::string& label) {
   if (label == "gaussian-moments") return "#8c8c8c";
   if (label == "gaussian") return "#000000";
   if (label == "weibull-tail") return "#1f77b4";
+  if (label == "persson") return "#ff7f0e";
+  if (label == "exact") return "#7b3294";
   return "#d62728";  // weibull-bounded
 }
 const char* legend_of(const std::string& label) {
@@ -135,6 +137,8 @@ const char* legend_of(const std::string& label) {
   if (label == "gaussian-moments") return "Gaussian from m0, m2, m4 (Nayak-McCool)";
   if (label == "gaussian") return "Gaussian fit";
   if (label == "weibull-tail") return "Weibull, tail up";
+  if (label == "persson") return "Persson's theory (the map's spectrum)";
+  if (label == "exact") return "exact elastic contact (boundary elements)";
   return "Weibull mirrored (bounded)";
 }
 
@@ -243,6 +247,8 @@ std::string contact_svg(const SurfaceAnalysis& a) {
     detail::PlotSeries l, r, k;
     l.label = r.label = k.label = legend_of(m.label);
     l.colour = r.colour = k.colour = colour_of(m.label);
+    l.points = r.points = k.points = m.label == "exact";        // the solved steps
+    l.dashed = r.dashed = k.dashed = m.label == "persson";
     for (const PhysicalState& s : m.curve) {
       l.x.push_back(s.mean_separation * unit.per_metre);
       l.y.push_back(s.pressure);
@@ -373,6 +379,11 @@ std::string analysis_json(const SurfaceAnalysis& a) {
           sj["stiffness_over_measured_summits"] = number(mc.stiffness_over_measured[k]);
           sj["mean_separation_minus_measured_summits_m"] = number(mc.separation_minus_measured[k]);
         }
+        if (k < mc.stiffness_over_exact.size()) {
+          sj["stiffness_over_exact"] = number(mc.stiffness_over_exact[k]);
+          sj["area_over_exact"] = number(mc.area_over_exact[k]);
+          sj["mean_separation_minus_exact_m"] = number(mc.separation_minus_exact[k]);
+        }
         at.push_back(sj);
       }
       mj["at_pressures"] = at;
@@ -395,7 +406,13 @@ std::string analysis_json(const SurfaceAnalysis& a) {
                       {"stiffness_relative", c.measured_stiffness_spread},
                       {"mean_separation_m", c.measured_separation_spread}}},
                     {"closest_fitted_model", c.closest},
-                    {"headline", c.headline}};
+                    {"headline", c.headline},
+                    {"references",
+                     {{"persson", c.options.persson},
+                      {"exact", c.options.exact},
+                      {"exact_method", c.exact_method},
+                      {"closest_to_exact", c.closest_to_exact},
+                      {"exact_headline", c.exact_headline}}}};
     ordered_json sampling_contact = ordered_json::array();
     for (const SamplingContact& r : c.sampling)
       sampling_contact.push_back({{"factor", r.factor}, {"stiffness_over_finest", r.stiffness_over_finest}});
@@ -446,6 +463,7 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
     }
     for (const ModelContact& mc : c.models)
       if (!mc.served) out << "  " << mc.label << ": " << mc.note << "\n";
+    if (!c.exact_headline.empty()) out << "  " << c.exact_headline << "\n";
   }
   return out.str();
 }
@@ -601,6 +619,21 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
     if (!c.measured_stiffness_spread.empty())
       md << "\n± on the measured summits: the relative standard deviation of their stiffness over the surrogate "
             "ensemble (surfaces of the same statistics), the uncertainty of each ratio to them.\n";
+    const ModelContact* exact = c.find("exact");
+    if (exact && exact->served) {
+      md << "\n### Each model against the exact contact of this map\n\nThe exact elastic contact: " << c.exact_method
+         << ". It neglects neither the summits' coalescence nor their elastic interaction: what every model is judged "
+            "against.\n\n**" << c.exact_headline << ".**\n\n| model | nominal pressure [Pa] | mean separation − exact's [m] | "
+            "real area / exact's | stiffness / exact's |\n|---|---:|---:|---:|---:|\n";
+      for (const ModelContact& mc : c.models) {
+        if (!mc.served || mc.label == "exact" || mc.stiffness_over_exact.empty()) continue;
+        for (std::size_t k = 0; k < c.pressures.size(); ++k)
+          md << "| " << mc.label << " | " << g(c.pressures[k]) << " | " << g(mc.separation_minus_exact[k], 3) << " | "
+             << g(mc.area_over_exact[k], 3) << " | " << g(mc.stiffness_over_exact[k], 3) << " |\n";
+      }
+    } else if (exact) {
+      md << "\nThe exact contact: " << exact->note << ".\n";
+    }
     if (outcome.plots) md << "\n![contact](contact.svg)\n";
   }
   }  // not at the noise floor

@@ -27,11 +27,13 @@ namespace topo = asperity::topography;
 constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
-  std::string file, format, pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report;
+  std::string file, format, pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report,
+      exact_boundary, exact_kernel;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given, area = not_given,
          confidence = not_given;
-  long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0;
-  bool json = false, no_level = false, no_height_fit = false;
+  long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
+  double exact_tolerance = not_given;
+  bool json = false, no_level = false, no_height_fit = false, exact = false, no_persson = false;
 };
 
 bool given(double value) { return !std::isnan(value); }
@@ -94,9 +96,12 @@ int run_surface(const Options& o) {
   if (given(o.area) && !(o.area > 0)) usage("--area must be positive");
 
   const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
-  const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area);
+  const bool exact_options = !o.exact_boundary.empty() || !o.exact_kernel.empty() || given(o.exact_tolerance);
+  if (exact_options && !o.exact) usage("--exact-boundary, --exact-kernel and --exact-tolerance go with --exact");
+  const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area) ||
+                       o.exact || o.no_persson;
   if (contact && !given(modulus))
-    usage("the contact curves (--pressure, --load, --area, --table) need the contact modulus: --modulus E* [Pa] "
+    usage("the contact curves (--pressure, --load, --area, --table, --exact) need the contact modulus: --modulus E* [Pa] "
           "or --e1 --nu1 --e2 --nu2");
   std::vector<double> pressures, loads;
   if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
@@ -109,6 +114,18 @@ int run_surface(const Options& o) {
     curves.nominal_area = given(o.area) ? o.area : 0;
     curves.table_path = o.table;
     curves.threads = options.assessment.threads;
+    curves.persson = !o.no_persson;
+    curves.exact = o.exact;
+    curves.exact_points = static_cast<int>(o.exact_points);
+    if (!o.exact_boundary.empty() && !topo::parse_contact_boundary(o.exact_boundary, curves.exact_boundary))
+      usage("--exact-boundary: periodic or padded, not '" + quote_text(o.exact_boundary) + "'");
+    if (!o.exact_kernel.empty() && !topo::parse_contact_kernel(o.exact_kernel, curves.exact_kernel))
+      usage("--exact-kernel: fourier or love, not '" + quote_text(o.exact_kernel) + "'");
+    if (given(o.exact_tolerance)) {
+      if (!(o.exact_tolerance >= topo::min_contact_tolerance && o.exact_tolerance <= topo::max_contact_tolerance))
+        usage("--exact-tolerance must lie in [1e-14, 1e-2]");
+      curves.exact_tolerance = o.exact_tolerance;
+    }
     curves.pressures = pressures;
     // loads over the nominal area: A0 given, or the measured area
     const double a0 = given(o.area) ? o.area : map.width() * map.length();
@@ -129,6 +146,19 @@ int run_surface(const Options& o) {
     last = now;
     const double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
     std::fprintf(stderr, "%sasperity surface: ensemble %zu/%zu surrogate surfaces, about %.0f s left%s",
+                 terminal ? "\r" : "", done, total, left, terminal ? "  " : "\n");
+    printed = true;
+  };
+  const auto exact_start = std::make_shared<std::chrono::steady_clock::time_point>();
+  options.exact_progress = [&, exact_start](std::size_t done, std::size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (done == 1) *exact_start = now;  // the first step includes setting up the solver
+    const double elapsed = std::chrono::duration<double>(now - *exact_start).count();
+    const double since = std::chrono::duration<double>(now - last).count();
+    if (since < (terminal ? 0.2 : 5) && done < total) return;
+    last = now;
+    const double left = done > 1 ? elapsed / static_cast<double>(done - 1) * static_cast<double>(total - done) : 0;
+    std::fprintf(stderr, "%sasperity surface: exact contact, load step %zu/%zu, about %.0f s left%s",
                  terminal ? "\r" : "", done, total, left, terminal ? "  " : "\n");
     printed = true;
   };
@@ -211,6 +241,21 @@ void add_surface_command(CLI::App& app) {
            "a full table for the Weibull curves instead of exact-shape scene tables (default: scene tables made "
            "for the fitted shapes)")
       ->type_name("FILE")->group(contact);
+  command->add_flag("--exact", o.exact,
+                    "also solve the exact elastic contact of the map (boundary elements, docs/exact-contact.md) and "
+                    "compare every model with it: seconds to minutes")
+      ->group(contact);
+  add_text(*command, "--exact-boundary", o.exact_boundary,
+           "padded (default: the map as a patch of a half-space; a measured map is not periodic) or periodic")
+      ->type_name("NAME")->group(contact);
+  add_text(*command, "--exact-kernel", o.exact_kernel, "love (default: pixel-constant pressure) or fourier")
+      ->type_name("NAME")->group(contact);
+  add_whole_number(*command, "--exact-points", o.exact_points, 2, 1000,
+                   "exact solves along the curves' pressure range, besides the pressures of interest (default 13)")
+      ->group(contact);
+  add_number(*command, "--exact-tolerance", o.exact_tolerance, "of each exact solve (default 1e-8)")
+      ->type_name("TOL")->group(contact);
+  command->add_flag("--no-persson", o.no_persson, "leave out Persson's theory of the map's spectrum")->group(contact);
   const char* output = "Output";
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
@@ -223,7 +268,9 @@ void add_surface_command(CLI::App& app) {
       "dependence on the sampling interval), the three fits of the summit heights with Anderson-Darling\n"
       "and Kolmogorov-Smirnov p-values against surrogate surfaces of the map's spectrum, AIC and a verdict,\n"
       "and with a modulus GW on the measured summits beside\n"
-      "the contact curves of each fit and their ratios at the pressures of interest (docs/surfaces.md).\n" +
+      "the contact curves of each fit and their ratios at the pressures of interest, Persson's theory of\n"
+      "the map's spectrum, and with --exact the exact elastic contact of the map, which every curve is\n"
+      "then compared with (docs/surfaces.md, docs/exact-contact.md).\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
   set_action(*command, [options, self] { return run_surface(*options); });

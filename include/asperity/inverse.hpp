@@ -38,6 +38,7 @@ class InverseCurve {
   double newton(double separation, double log_value) const noexcept;
   double solve(double log_value, double lo, double hi) const noexcept;
   double untabulated(double log_value) const noexcept;
+  double at_range_end(double end, double log_value) const noexcept;
 
   Curve curve_;
   int twice_order_ = 3;

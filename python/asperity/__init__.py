@@ -17,6 +17,12 @@ their evidence and the contact curves of each fit -- are in the submodule asperi
     analysis = topography.analyse_surface_file("surface.x3p", contact=topography.ContactOptions(1e11))
     analysis.to_dict()["fits"]["summit_heights"]["verdict"]
 
+Many files -- a production line's parts -- go through asperity.batch on a Dask cluster into one
+table and each surface's JSON, resuming after an interruption (needs python3-distributed):
+
+    from asperity import batch
+    rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)   # results/surfaces.csv
+
 Arrays of any shape go through the library's vectorized batch path (no Python loop; the GIL
 is released for large arrays); numbers give floats. Errors raise asperity.Error with the
 library's message. The names mirror the C++ API (include/asperity/*.hpp).
@@ -76,11 +82,13 @@ from ._asperity import topography  # noqa: F401
 # the extension, so it is registered under its package name.
 _sys.modules[__name__ + ".topography"] = topography
 
+from . import batch  # noqa: E402,F401 (pure Python; imports dask only when it runs)
+
 __all__ = [
     "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
     "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",
-    "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",
+    "batch", "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",
     "gaussian_surface_from_moments", "height_scale_from_rms", "nominal_pressure_from_load", "order_of", "origin_from_standardized",
     "parse_scene", "quantity_twice_order", "read_scene_file", "separation_at_load", "serve_scene",
     "standardized_from_origin", "tabulated_pressure_overclosure_card", "topography", "weibull_log_density", "weibull_mean", "weibull_moment",

@@ -7,6 +7,7 @@ from typing import List, NamedTuple, Optional, Sequence, TypeAlias, Union, overl
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import batch as batch
 from . import topography as topography
 
 __version__: str

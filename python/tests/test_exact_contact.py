@@ -65,6 +65,53 @@ def test_errors():
         solver.at_mean_gap(-1e-9)
 
 
+def test_persson_theory_of_a_map():
+    surface = topography.self_affine_surface(128, 128, 1e-7, 1e-7, hurst=0.8, rms_height=1e-8, seed=5)
+    spectrum = topography.radial_power_spectrum(surface, edges="none")
+    assert spectrum.edges_treatment == "none" and spectrum.edges.size == spectrum.density.size + 1
+    assert spectrum.variance == pytest.approx(spectrum.map_variance, rel=1e-9)
+    # the spectrum against numpy's periodogram: the same power over the annuli
+    h = surface.heights - surface.heights.mean()
+    power = np.abs(np.fft.fft2(h)) ** 2 / h.size ** 2
+    qx = 2 * math.pi * np.fft.fftfreq(128, 1e-7)
+    q = np.hypot(qx[None, :], qx[:, None])
+    inside = (q >= spectrum.edges[0]) & (q < spectrum.edges[-1])
+    area = math.pi * (spectrum.edges[1:] ** 2 - spectrum.edges[:-1] ** 2)
+    assert (spectrum.density * area).sum() == pytest.approx(power[inside].sum(), rel=1e-9)
+    persson = topography.PerssonContact(spectrum, contact_modulus=1e11)
+    assert persson.gamma == 0.42
+    low, high = persson.at_pressure(1e5), persson.at_pressure(1e7)
+    assert 0 < low.area_fraction < high.area_fraction < 1 and low.mean_gap > high.mean_gap > 0
+    assert high.stiffness_per_area > low.stiffness_per_area > 0
+    assert math.isnan(persson.at_pressure(-1).mean_gap)
+    with pytest.raises(ValueError):
+        topography.radial_power_spectrum(surface, edges="blackman")
+    with pytest.raises(asperity.Error):
+        topography.PerssonContact(spectrum, contact_modulus=0)
+
+
+def test_the_exact_contact_in_the_surface_analysis():
+    surface = topography.self_affine_surface(64, 64, 1e-7, 1e-7, hurst=0.8, rms_height=1e-8, seed=2)
+    contact = topography.ContactOptions(1e11, pressures=[1e6, 1e7], curve_points=5, exact=True, exact_points=3,
+                                        exact_boundary="periodic", exact_kernel="fourier")
+    assert contact.exact and contact.exact_boundary == "periodic" and contact.persson
+    analysis = topography.analyse_height_map(surface, assessment=topography.AssessmentOptions(bootstrap=0), contact=contact)
+    comparison = analysis.contact
+    labels = [m.label for m in comparison.models]
+    assert labels[-2:] == ["persson", "exact"]
+    exact = comparison.find("exact")
+    assert exact.served and "boundary elements" in comparison.exact_method
+    assert exact.at_pressures.pressure.tolist() == [1e6, 1e7]
+    for m in comparison.models:
+        if m.served and m.label != "exact":
+            assert m.stiffness_over_exact.size == 2 and m.area_over_exact.size == 2
+            assert np.allclose(m.stiffness_over_exact, m.at_pressures.stiffness / exact.at_pressures.stiffness,
+                               equal_nan=True)
+    assert comparison.closest_to_exact in labels and comparison.exact_headline.startswith("Against the exact")
+    with pytest.raises(ValueError):
+        contact.exact_kernel = "hertz"
+
+
 def test_self_affine_surface():
     surface = topography.self_affine_surface(64, 32, 1e-6, 1e-6, hurst=0.7, rms_height=2e-7, seed=3)
     assert surface.heights.shape == (32, 64)

@@ -445,7 +445,7 @@ def test_analyse_the_real_afm_map(tmp_path):
     comparison = analysis.contact
     assert comparison is not None and math.isclose(comparison.nominal_area, analysis.map.width * analysis.map.length)
     assert [m.label for m in comparison.models] == ["measured-summits", "measured-summits-own-radii", "gaussian-moments",
-                                                   "gaussian", "weibull-tail", "weibull-bounded"]
+                                                   "gaussian", "weibull-tail", "weibull-bounded", "persson"]
     gaussian = comparison.find("gaussian")
     assert gaussian.served and comparison.find("nonsense") is None
     curve = gaussian.curve

@@ -70,12 +70,23 @@ double InverseCurve::newton(double separation, double log_value) const noexcept 
   curve_.log_values(separation, twice_order_ - 2, twice_order_, logs);
   const double slope = -0.5 * twice_order_ * std::exp(logs[0] - logs[2]);
   const double next = separation - (logs[2] - log_value) / slope;
-  return std::isfinite(next) ? next : separation;
+  // a step out of what the curve serves (an ulp past a scene table's range end) is no polish
+  return std::isfinite(next) && curve_.serves(next) ? next : separation;
+}
+
+// A value just past the served range's end by the rounding of ln X there (a caller's
+// ln(value(end))) is that end; further is NaN.
+double InverseCurve::at_range_end(double end, double log_value) const noexcept {
+  const double at_end = curve_.log_value(twice_order_, end);
+  return std::fabs(at_end - log_value) <= 64 * std::numeric_limits<double>::epsilon() * (1 + std::fabs(log_value))
+             ? end
+             : nan;
 }
 
 // Values the table does not hold: deeper than its deep end (grow the bracket toward -inf), or
 // below ln X = -690 (grow it toward +inf on the tail side; up to first contact on the bounded).
-// The brackets stay within the separations the curve serves (a scene table's range).
+// The brackets stay within the separations the curve serves (a scene table's range): NaN for
+// a value the served separations do not reach.
 double InverseCurve::untabulated(double log_value) const noexcept {
   const double range_min = curve_.served_min_separation(), range_max = curve_.served_max_separation();
   double lo, hi;
@@ -84,6 +95,8 @@ double InverseCurve::untabulated(double log_value) const noexcept {
     lo = hi;
     for (int i = 0; i < 1100 && lo > range_min && curve_.log_value(twice_order_, lo) < log_value; ++i)
       lo = std::max(lo * 2 - 1, range_min);
+    if (lo <= range_min && !(curve_.log_value(twice_order_, lo) >= log_value))  // stopped by the range
+      return at_range_end(lo, log_value);
   } else {
     lo = knots_[0];
     hi = curve_.side() == Side::bounded ? -1e-300 : lo + 1;  // the bounded side: up to first contact
@@ -92,6 +105,8 @@ double InverseCurve::untabulated(double log_value) const noexcept {
                     curve_.log_value(twice_order_, hi) > log_value;
          ++i)
       hi = std::min(lo + (hi - lo) * 2, range_max);
+    if (hi >= range_max && !(curve_.log_value(twice_order_, hi) <= log_value))  // stopped by the range
+      return at_range_end(hi, log_value);
   }
   return solve(log_value, lo, hi);
 }
@@ -103,7 +118,9 @@ double InverseCurve::separation_at_log(double log_value) const noexcept {
     return curve_.side() == Side::bounded ? 0.0 : std::numeric_limits<double>::infinity();
   if (!(log_value >= y_lo_ && log_value <= y_hi_)) {
     // beyond what the curve serves (a scene table's range): NaN, as its lookups there
-    const double separation = newton(untabulated(log_value), log_value);
+    const double bracketed = untabulated(log_value);
+    if (std::isnan(bracketed)) return nan;
+    const double separation = newton(bracketed, log_value);
     return curve_.serves(separation) ? separation : nan;
   }
   double position = (log_value - y_lo_) * inv_step_;

@@ -34,6 +34,7 @@ struct AnalysisOptions {
   std::vector<std::size_t> sampling_factors = {1, 2, 4};  // summits at k dx (sampling dependence)
   std::optional<ContactOptions> contact;  // contact curves: needs ContactOptions::contact_modulus
   EnsembleProgress progress;              // the ensemble's progress (surrogates done of total)
+  ExactProgress exact_progress;           // the exact contact's (load steps done of total)
 };
 
 struct SamplingRow {

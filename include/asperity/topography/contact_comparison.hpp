@@ -13,7 +13,13 @@
 //   weibull-tail      the tail-up Weibull fitted to the summit heights (tail side of approach)
 //   weibull-bounded   the mirrored Weibull (bounded side: the flat meets the highest summits)
 // The last three use the measured summit density and radius (summits.hpp) and each fit's own
-// scale. The Gaussian is served from the default table. Each Weibull is served from an
+// scale. Beside them, the references that neglect less than GW (add_reference_contact):
+//   persson           Persson's theory from the map's power spectrum (persson_contact.hpp): no
+//                     summits; every wavelength carries load
+//   exact             the exact elastic contact of the map (exact_contact.hpp, when asked):
+//                     boundary elements, the referee every other curve is compared with
+// The measured summits, Persson and the fits are each set against the exact curve at the
+// pressures of interest (ModelContact::*_over_exact) when it is there. The Gaussian is served from the default table. Each Weibull is served from an
 // exact-shape scene table generated for the fitted shape over the pressures asked
 // (asperity::generator::generate_scene_table, shapes 0.3-50), or from a given full table (the
 // default table: shapes 0.5-20, between grid shapes by interpolation). A fitted shape outside
@@ -22,10 +28,13 @@
 // Separations are reported from the mean summit height of each model (comparable across
 // models); pressures are nominal (load / A0), stiffness per nominal area [N/m^3] as well.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "asperity/contact_model.hpp"
+#include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/height_map.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/summits.hpp"
@@ -44,7 +53,18 @@ struct ContactOptions {
   double scene_tolerance = 1e-8;  // of the scene tables
   std::string table_path;         // a full table instead of scene tables (empty: scene tables)
   int threads = 0;
+  // the references (add_reference_contact)
+  bool persson = true;             // Persson's theory of the map's spectrum (cheap)
+  bool exact = false;              // the exact elastic contact of the map: seconds to minutes
+  // A measured map is not periodic: by default it is solved as a patch of an unloaded half-space
+  // (padded), with Love's pixel-constant coefficients (then exactly non-periodic: no images).
+  ContactBoundary exact_boundary = ContactBoundary::padded;
+  ContactKernel exact_kernel = ContactKernel::love;
+  int exact_points = 13;           // solves along the curves' pressure range, besides the pressures of interest
+  double exact_tolerance = 1e-8;   // ExactContactOptions::tolerance
 };
+
+inline constexpr int min_exact_points = 2, max_exact_points = 1000;
 
 struct ModelContact {
   std::string label;               // measured-summits(-own-radii), gaussian-moments, gaussian, weibull-tail, weibull-bounded
@@ -56,6 +76,9 @@ struct ModelContact {
   std::vector<PhysicalState> at_pressures;  // at ContactComparison::pressures
   // against measured-summits at each pressure: stiffness ratio, mean separation difference [m]
   std::vector<double> stiffness_over_measured, separation_minus_measured;
+  // against the exact contact at each pressure (empty without it): stiffness and real area
+  // ratios, mean separation difference [m]
+  std::vector<double> stiffness_over_exact, area_over_exact, separation_minus_exact;
 };
 
 // The measured-summit answer at a coarser sampling (every k-th point): its stiffness at each
@@ -80,8 +103,24 @@ struct ContactComparison {
   // |ln stiffness ratio| smallest), and the headline in words.
   std::string closest;
   std::string headline;
+  // Against the exact contact (when solved): how it was solved, the curve nearest to it (of all,
+  // the measured summits and Persson included) and the headline in words.
+  std::string exact_method;
+  std::string closest_to_exact;
+  std::string exact_headline;
   const ModelContact* find(const std::string& label) const;
 };
+
+// Progress of the exact solves: `done` of `total` load steps.
+using ExactProgress = std::function<void(std::size_t done, std::size_t total)>;
+
+// Persson's theory (when ContactOptions::persson) and the exact contact (when ::exact) of the
+// map the comparison was made for, appended to its models as "persson" and "exact" over the same
+// pressures; separations from `mean_summit_height` (the measured summits' mean above the mean
+// plane, as every other curve's). A failed reference gets no curve and says why. Throws
+// asperity::Error for exact_points outside [min_exact_points, max_exact_points].
+void add_reference_contact(ContactComparison& comparison, const HeightMap& map, double mean_summit_height,
+                           const ExactProgress& progress = {});
 
 // The pressures of interest (sorted) that compare_contact will use.
 std::vector<double> contact_pressures(const ContactOptions& options);

@@ -14,6 +14,8 @@ package = os.path.realpath(asperity.__file__)
 table_path = os.path.realpath(asperity.Table.default_path())
 print(f"asperity {asperity.__version__} from {package}\ntable {table_path}")
 assert package.startswith(prefix + os.sep), "the package is not the installed one"
+from asperity import batch  # noqa: E402 (pure Python, installed beside the extension)
+assert os.path.realpath(batch.__file__).startswith(prefix + os.sep), "asperity.batch is not the installed one"
 assert table_path.startswith(prefix + os.sep), "the default table is not the installed one"
 curve = asperity.Table.open_default().curve("weibull", "tail", 2.5)
 s = np.linspace(0.0, 3.0, 7)
