@@ -1,6 +1,6 @@
 // The baseline a user has without tables: X_n(s) by adaptive double-exponential quadrature of
 // the defining integrals (docs/model.md, section 2) at tolerance 1e-14, the integrand written
-// once for any shape, in double, with no scaling (not the generator's forms, generator/
+// once for any shape, in double, with no scaling (not the generator's forms, tablegen/
 // quadrature.cpp, which are built never to underflow):
 //   tail      J_n(s) = int_{z > max(s,0)} (z - s)^n phi(z) dz      Boost exp_sinh on the half line
 //   bounded   K_n(s) = int_0^{-s} (-s - z)^n phi(z) dz              Boost tanh_sinh on the interval
