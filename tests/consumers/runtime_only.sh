@@ -6,12 +6,16 @@
 # configured, built and installed (HDF5 and libcrypto; Boost.Math and toml11, header-only, to
 # build it), and a C++ program is built against the installed tree with
 # find_package(asperity COMPONENTS runtime) and run.
-#   usage (as root): tests/consumers/runtime_only.sh TABLE     TABLE: a default table to install
+#   usage: tests/consumers/runtime_only.sh TABLE     TABLE: a default table to install (as root, or
+#   through sudo)
 set -euo pipefail
 source_tree="$(cd "$(dirname "$0")/../.." && pwd)"
 table="$(readlink -f "$1")"
 if [ "${ASPERITY_RUNTIME_ONLY_HIDDEN:-}" != 1 ]; then
-  exec unshare --mount --propagation private env ASPERITY_RUNTIME_ONLY_HIDDEN=1 bash "$0" "$@"
+  # a private mount namespace needs root: sudo when not root, as scripts/install-packages.sh does
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  exec $sudo unshare --mount --propagation private env ASPERITY_RUNTIME_ONLY_HIDDEN=1 bash "$0" "$table"
 fi
 hide() {  # an empty folder over a folder, /dev/null over a file
   for path in "$@"; do
@@ -45,7 +49,7 @@ cmake -S "$source_tree" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DASPERITY_B
 cmake --build "$work/build" -j"$(nproc)" >"$work/build.log" || { tail -50 "$work/build.log"; exit 1; }
 cmake --install "$work/build" --prefix "$work/prefix" >/dev/null
 echo "-- the runtime alone: configured, built and installed in $((SECONDS - start)) s"
-ls "$work/prefix/lib/cmake/asperity" | sed 's/^/   /'
+find "$work/prefix/lib/cmake/asperity" -type f -printf '   %f\n' | sort
 cmake -S "$source_tree/tests/consumers/runtime" -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" \
   -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$work/consumer" >/dev/null
