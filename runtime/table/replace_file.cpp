@@ -14,6 +14,7 @@
 #include <string>
 
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
 
 namespace asperity {
 namespace {
@@ -68,8 +69,9 @@ void remove_stale_temporaries(int directory) {
     if (dash == 0 || dash == std::string::npos || rest.find_first_not_of("0123456789-") != std::string::npos ||
         rest.find('-', dash + 1) != std::string::npos || dash + 1 == rest.size() || dash > 9)
       continue;
-    const long pid = std::stol(rest.substr(0, dash));
-    if (pid <= 0 || pid == static_cast<long>(::getpid())) continue;
+    long long pid = 0;
+    if (!read_whole_number(rest.substr(0, dash), 1, INT_MAX, pid) || pid == static_cast<long long>(::getpid()))
+      continue;
     if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to know
     struct stat status {};
     if (::fstatat(directory, name.c_str(), &status, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(status.st_mode) ||
