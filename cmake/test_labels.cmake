@@ -1,7 +1,8 @@
 # Every test labelled by the component it tests (ctest -L runtime, -L generator, -L topography,
 # -L exact_contact, -L cli, -L python, -L fortran, -L benchmarks, -L structure), by its name; a
 # test that takes more than ~10 s on 2 cores is also `slow` (ctest -LE slow skips them; the
-# README's ctest runs everything). Called at the end of each folder that adds tests.
+# README's ctest runs everything). Called at the end of each folder that adds tests; a label a
+# test was given where it is added (fe_export, contact_law, exact_contact) stays beside these.
 function(asperity_label_tests)
   get_property(tests DIRECTORY PROPERTY TESTS)
   foreach(test IN LISTS tests)

@@ -184,8 +184,14 @@ TEST(PressureOverclosure, TabulatedCurve) {
             "**   from the rough surface's mean summit height to the flat\n"
             "** points: 2 solutions\n"
             "** first point: first contact\n"
-            "** beyond the last point CalculiX keeps the last pressure; node-to-face contact makes a contact\n"
-            "**   spring only within a clearance of 1e-3 sqrt(spring area) (ccx manual, *SURFACE BEHAVIOR)\n"
+            "** CalculiX: use this card with node-to-surface contact (*CONTACT PAIR, TYPE=NODE TO SURFACE),\n"
+            "**   which holds at most 200 points. Face-to-face contact (ccx 2.20) does not work with it: above\n"
+            "**   41 points ccx crashes, and it starts contact only at positive overclosure, so clearances give\n"
+            "**   zero force, silently.\n"
+            "** node-to-surface contact makes a contact spring only where the clearance is below 1e-3 sqrt(A),\n"
+            "**   A the slave node's area (1e-3 L for faces of edge L);\n"
+            "**   this card reaches a clearance of 0.0002 mm: beyond the cut-off its pressures never act\n"
+            "** beyond the last point CalculiX keeps the last pressure\n"
             "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR\n"
             "0,-0.0002\n1,-0.00015\n10,-0.0001\n");
   std::ostringstream csv;

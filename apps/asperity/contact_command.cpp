@@ -20,12 +20,13 @@ namespace {
 constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
-  std::string table, dist, side, moments, sweep, export_format, pressure_range, units;
+  std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum;
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
   double separation = not_given, load = not_given, pressure = not_given, real_area = not_given;
-  double export_tolerance = not_given;
+  double export_tolerance = not_given, face_size = not_given;
+  long long max_points = 0;  // 0: not given
 };
 
 bool given(double value) { return !std::isnan(value); }
@@ -182,23 +183,56 @@ std::string describe(const RoughSurface& surface) {
   return text.str();
 }
 
+// CalculiX's node-to-surface contact makes no spring beyond a clearance of 1e-3 sqrt(A): say
+// what of the card never acts for faces of edge `face_size` (interior nodes: A = face_size^2).
+void check_spring_cutoff(const CLI::App& command, const ContactModel& model, const PressureOverclosureTable& table,
+                         double face_size) {
+  const double clearance = -table.points.front().overclosure;
+  if (!given(face_size)) {
+    if (clearance > 0)
+      note(command, "for CalculiX: the card reaches a clearance of " + approximately(clearance) +
+                        " m; give --face-size L (the slave faces' edge, m) to check it against node-to-surface "
+                        "contact's spring cut-off (1e-3 L)");
+    return;
+  }
+  const double cutoff = calculix_spring_cutoff_per_root_area * face_size;
+  if (!(clearance > cutoff)) return;
+  const double pressure_at_cutoff = law_pressure(model, -cutoff - table.mean_summit_overclosure);
+  warn(command, "the card reaches a clearance of " + approximately(clearance) +
+                    " m, but CalculiX's node-to-surface contact makes a contact spring only within a clearance of "
+                    "1e-3 sqrt(A) (A the slave node's area) = " + approximately(cutoff) + " m for faces of " +
+                    number(face_size) + " m (less at the mesh's edges): below " + approximately(pressure_at_cutoff) +
+                    " Pa the card never acts and contact starts at that pressure in one increment; use "
+                    "--overclosure-datum zero-pressure (and start the model with the surfaces touching), larger "
+                    "faces, or a higher PMIN");
+}
+
 int export_law(const Options& options, const ContactModel& model, const CLI::App& command, CardFormat format,
-               CardUnits units) {
+               CardUnits units, OverclosureDatum datum) {
   const std::vector<std::string> range = split(options.pressure_range, ':');
   if (range.size() != 2) usage("--pressure-range wants PMIN:PMAX (Pa), got '" + quote_text(options.pressure_range) + "'");
   const double low = number_from_text(range[0], "--pressure-range PMIN");
   const double high = number_from_text(range[1], "--pressure-range PMAX");
   if (!(low > 0 && high > low)) usage("--pressure-range needs 0 < PMIN < PMAX");
   const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
-  const PressureOverclosureTable table = tabulate_pressure_overclosure(model, low, high, tolerance);
+  const std::size_t max_points = options.max_points > 0        ? static_cast<std::size_t>(options.max_points)
+                                 : format == CardFormat::calculix ? calculix_points_max
+                                                                  : card_points_max;
+  const PressureOverclosureTable table = tabulate_pressure_overclosure(model, low, high, tolerance, datum, max_points);
   write_pressure_overclosure(std::cout, table, format, units,
                              "asperity " ASPERITY_VERSION_STRING
                              ": the pressure-overclosure law of a rough surface against a flat "
                              "(Greenwood-Williamson)\n" +
                                  describe(model.surface()));
-  note(command, std::to_string(table.points.size()) + " points; linear interpolation within " + number(tolerance) +
-                    " of the law from " + number(low) + " to " + number(high) + " Pa (measured at most " +
-                    approximately(table.max_error) + " at " + std::to_string(table.checked_points) + " points)");
+  if (table.tolerance != tolerance)
+    warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
+                      " points: the card is within " + number(table.tolerance) + " of the law instead (--max-points)");
+  note(command, std::to_string(table.points.size()) + " points; linear interpolation within " +
+                    number(table.tolerance) + " of the law from " + number(low) + " to " + number(high) +
+                    " Pa (measured at most " + approximately(table.max_error) + " at " +
+                    std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
+                    " datum");
+  if (format == CardFormat::calculix) check_spring_cutoff(command, model, table, options.face_size);
   warn_past_gw(command, model.at_pressure(high).area_fraction);
   return exit_success;
 }
@@ -213,14 +247,24 @@ int run_contact(const Options& options, const CLI::App& command) {
                        : "give one query: --separation, --load, --pressure, --real-area, --sweep or --export");
   CardFormat format = CardFormat::csv;
   CardUnits units = CardUnits::si;
+  OverclosureDatum datum = OverclosureDatum::mean_summit;
   if (!options.export_format.empty()) {
     if (!parse_card_format(options.export_format, format))
       usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
     if (!options.units.empty() && !parse_card_units(options.units, units))
       usage("--units: '" + quote_text(options.units) + "' is not si or mm");
+    if (!options.overclosure_datum.empty() && !parse_overclosure_datum(options.overclosure_datum, datum))
+      usage("--overclosure-datum: '" + quote_text(options.overclosure_datum) +
+            "' is not mean-summit, origin or zero-pressure");
+    if (given(options.face_size) && !(options.face_size > 0))
+      usage("--face-size must be a positive length [m], got " + number(options.face_size));
+    if (given(options.face_size) && format != CardFormat::calculix)
+      usage("--face-size checks CalculiX's contact-spring cut-off: it goes with --export calculix");
     if (options.pressure_range.empty()) throw CLI::RequiredError("--pressure-range (with --export)");
-  } else if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance)) {
-    usage("--pressure-range, --units and --export-tolerance go with --export");
+  } else if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance) ||
+             options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size)) {
+    usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
+          "with --export");
   }
   Sweep sweep;
   if (!options.sweep.empty()) sweep = sweep_from(options.sweep);
@@ -228,7 +272,7 @@ int run_contact(const Options& options, const CLI::App& command) {
   const Table table = open_table(options.table);
   const ContactModel model(table, surface);
   if (!given_scale.empty()) note(command, given_scale);
-  if (!options.export_format.empty()) return export_law(options, model, command, format, units);
+  if (!options.export_format.empty()) return export_law(options, model, command, format, units, datum);
 
   std::printf("separation_m,mean_separation_m,count,real_area_m2,area_fraction,load_N,nominal_pressure_Pa,"
               "stiffness_N_per_m,stiffness_over_load_per_m\n");
@@ -301,6 +345,21 @@ void add_contact_command(CLI::App& app) {
       ->type_name("REL")->group("FE export");
   add_text(*command, "--units", o.units, "with --export: si (m, Pa; default) or mm (mm, MPa = N/mm^2)")
       ->type_name("UNITS")->group("FE export");
+  add_whole_number(*command, "--max-points", o.max_points, static_cast<long long>(card_points_min),
+                   static_cast<long long>(card_points_max),
+                   "with --export: at most N rows in the card (default: 200 for calculix, what its node-to-surface "
+                   "contact holds; no cap for abaqus and csv); a tolerance that needs more is loosened to the "
+                   "smallest that fits (a warning says which)")
+      ->group("FE export");
+  add_text(*command, "--overclosure-datum", o.overclosure_datum,
+           "with --export: where overclosure is zero: mean-summit (default; the flat at the mean summit height), "
+           "origin (the separation's origin: the Weibull origin, the Gaussian's mean) or zero-pressure (the card's "
+           "first point: every overclosure >= 0)")
+      ->type_name("DATUM")->group("FE export");
+  add_number(*command, "--face-size", o.face_size,
+             "with --export calculix: the slave faces' edge [m]; warns when the card reaches beyond node-to-surface "
+             "contact's spring cut-off, a clearance of 1e-3 times it")
+      ->type_name("M")->group("FE export");
   command->footer(
       "Output: CSV, one row per query: separation_m (origin convention: from the Weibull origin or the\n"
       "Gaussian's mean), mean_separation_m (from the mean summit height), count, real_area_m2,\n"
@@ -309,8 +368,12 @@ void add_contact_command(CLI::App& app) {
       "real-area fraction exceeds 0.1: GW's asperities are independent Hertz contacts, which holds only\n"
       "while the contacts are sparse (above 1 the answer is impossible).\n"
       "FE export: overclosure is the interpenetration of the surfaces (a clearance is negative),\n"
-      "measured from the rough surface's mean summit height; the card's header states the units, the\n"
-      "range and the measured interpolation error.\n" +
+      "measured from the rough surface's mean summit height (--overclosure-datum); the card's header\n"
+      "states the units, the datum, the range and the measured interpolation error. CalculiX needs\n"
+      "NODE TO SURFACE contact with this card (at most 200 points: the default --max-points; face-to-face,\n"
+      "ccx 2.20: crashes above 41 points and gives zero force at clearances, silently), and makes a\n"
+      "contact spring only within a clearance of 1e-3 sqrt(slave node area): --face-size L warns when\n"
+      "the card reaches beyond 1e-3 L.\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
   set_action(*command, [options, self] { return run_contact(*options, *self); });

@@ -1,0 +1,197 @@
+// FE export options (apps/asperity/pressure_overclosure.hpp): the overclosure datum, the cap on
+// the card's rows and the cards' numbers. Each card, CalculiX's and Abaqus's, is parsed back as
+// the solver reads it (the *SURFACE BEHAVIOR rows) and its rows and chords are checked against
+// the library's law (ContactModel at the separation the overclosure names in its datum).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asperity/contact_model.hpp"
+#include "asperity/error.hpp"
+#include "asperity/pressure_overclosure.hpp"
+
+namespace {
+using namespace asperity;
+
+const Table& table() {
+  static const Table instance = Table::open(ASPERITY_TEST_TABLE);
+  return instance;
+}
+
+PhysicalSurface surface(Distribution distribution, Side side, double shape) {
+  PhysicalSurface s;
+  s.distribution = distribution;
+  s.side = side;
+  s.shape = shape;
+  s.height_scale = 1e-6;
+  s.summit_radius = 1e-4;
+  s.summit_density = 1e10;
+  s.nominal_area = 1e-4;
+  s.contact_modulus = 1.15e11;
+  return s;
+}
+
+struct Row {
+  double pressure, overclosure;
+  std::string text;
+};
+
+// The rows after the keyword; "**" lines are comments in both codes.
+std::vector<Row> rows_of(const std::string& card) {
+  std::vector<Row> rows;
+  bool inside = false;
+  std::istringstream lines(card);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("**", 0) == 0) continue;
+    if (line[0] == '*') {
+      inside = line == "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR";
+      continue;
+    }
+    if (!inside) continue;
+    const std::size_t comma = line.find(',');
+    EXPECT_NE(comma, std::string::npos) << line;
+    EXPECT_LE(comma, 20u) << line;
+    EXPECT_LE(line.size() - comma - 1, 20u) << line;
+    rows.push_back({std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)), line});
+  }
+  return rows;
+}
+
+// The law in the card's datum and units (mm, MPa): the pressure at overclosure h [mm].
+double law_mpa(const ContactModel& model, const PressureOverclosureTable& law, double h_mm) {
+  return law_pressure(model, h_mm * 1e-3 - law.mean_summit_overclosure) / 1e6;
+}
+
+// Rows on the law; chords within the tolerance met at 41 points an interval (never the writer's 7 or 32).
+double check_card(const ContactModel& model, const PressureOverclosureTable& law, const std::vector<Row>& rows) {
+  EXPECT_EQ(rows.size(), law.points.size());
+  EXPECT_EQ(rows.front().pressure, 0.0);
+  double worst = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_GT(rows[i].overclosure, rows[i - 1].overclosure) << rows[i].text;
+    if (i + 1 == rows.size()) break;
+    for (int k = 0; k <= 41; ++k) {
+      const double f = k / 41.0;
+      const double h = rows[i].overclosure + f * (rows[i + 1].overclosure - rows[i].overclosure);
+      const double p = rows[i].pressure + f * (rows[i + 1].pressure - rows[i].pressure);
+      const double exact = law_mpa(model, law, h);
+      worst = std::max(worst, std::fabs(p - exact) / exact);
+    }
+  }
+  EXPECT_LE(worst, law.tolerance);
+  return worst;
+}
+
+TEST(CardOptions, EveryDatumInBothFormatsReadsBackOnTheLaw) {
+  const struct {
+    Distribution distribution;
+    Side side;
+    double shape;
+  } surfaces[] = {{Distribution::weibull, Side::tail, 2}, {Distribution::weibull, Side::bounded, 3},
+                  {Distribution::gaussian, Side::tail, 2}};
+  for (const auto& s : surfaces) {
+    const ContactModel model(table(), surface(s.distribution, s.side, s.shape));
+    const double origin_from_mean = model.at_separation(0).mean_separation;  // the origin seen from the mean summit height
+    for (OverclosureDatum datum :
+         {OverclosureDatum::mean_summit, OverclosureDatum::origin, OverclosureDatum::zero_pressure}) {
+      SCOPED_TRACE(datum_name(datum));
+      const PressureOverclosureTable law = tabulate_pressure_overclosure(model, 1e4, 1e7, 1e-3, datum);
+      if (datum == OverclosureDatum::mean_summit) {
+        EXPECT_EQ(law.mean_summit_overclosure, 0.0);
+      }
+      if (datum == OverclosureDatum::origin) {
+        EXPECT_EQ(law.mean_summit_overclosure, origin_from_mean);
+      }
+      for (CardFormat format : {CardFormat::calculix, CardFormat::abaqus}) {
+        std::ostringstream out;
+        write_pressure_overclosure(out, law, format, CardUnits::mm, "test");
+        SCOPED_TRACE(out.str().substr(0, 2000));
+        const std::vector<Row> rows = rows_of(out.str());
+        check_card(model, law, rows);
+        // the range's ends are the pressures asked, printed clean
+        EXPECT_EQ(rows[1].text.substr(0, rows[1].text.find(',')), "0.01");
+        EXPECT_EQ(rows.back().text.substr(0, rows.back().text.find(',')), "10");
+        EXPECT_NE(out.str().find(std::string("--overclosure-datum ") + datum_name(datum)), std::string::npos);
+        if (datum == OverclosureDatum::zero_pressure) {
+          EXPECT_EQ(rows.front().text, "0,0");
+          for (const Row& row : rows) EXPECT_GE(row.overclosure, 0.0);
+          // the card's first point is where the law's tangent at 0.01 MPa reaches zero
+          const double h = rows[1].overclosure, dh = 1e-9;
+          const double slope = (law_mpa(model, law, h + dh) - law_mpa(model, law, h - dh)) / (2 * dh);
+          EXPECT_NEAR(h, 0.01 / slope, 1e-5 * h);
+        }
+      }
+    }
+  }
+}
+
+TEST(CardOptions, MaxPointsLoosensTheToleranceToTheSmallestThatFits) {
+  const ContactModel model(table(), surface(Distribution::weibull, Side::tail, 2));
+  const PressureOverclosureTable full = tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3);
+  ASSERT_GT(full.points.size(), 41u);
+  EXPECT_EQ(full.tolerance, 1e-3);
+  for (std::size_t cap : {std::size_t{41}, std::size_t{200}, full.points.size()}) {
+    const PressureOverclosureTable law =
+        tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit, cap);
+    EXPECT_LE(law.points.size(), cap);
+    EXPECT_EQ(law.asked_tolerance, 1e-3);
+    EXPECT_EQ(law.max_points, cap);
+    EXPECT_LE(law.max_error, law.tolerance);
+    if (cap >= full.points.size()) {
+      EXPECT_EQ(law.tolerance, 1e-3);
+      continue;
+    }
+    EXPECT_GT(law.tolerance, 1e-3);
+    // stated with two digits, and the smallest such: a tolerance 10 % tighter does not fit
+    EXPECT_EQ(card_number(law.tolerance).size() <= 6, true) << law.tolerance;
+    const PressureOverclosureTable tighter = tabulate_pressure_overclosure(model, 1e3, 1e8, 0.9 * law.tolerance);
+    EXPECT_GT(tighter.points.size(), cap);
+    std::ostringstream out;
+    write_pressure_overclosure(out, law, CardFormat::abaqus, CardUnits::mm, "capped");
+    check_card(model, law, rows_of(out.str()));
+    EXPECT_NE(out.str().find("loosened to fit at most " + std::to_string(cap) + " points"), std::string::npos);
+  }
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit, 2), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit,
+                                                  card_points_max + 1),
+               Error);
+}
+
+TEST(CardOptions, NumbersAreTheShortestThatReadBack) {
+  EXPECT_EQ(card_number(1e6), "1000000");
+  EXPECT_EQ(card_number(1e8 / 1e6), "100");
+  EXPECT_EQ(card_number(999999.99999999994), "1000000");  // within the card's 13 digits of 1e6
+  EXPECT_EQ(card_number(0.1 + 0.2), "0.3");
+  EXPECT_EQ(card_number(-2e-7 * 1e3), "-0.0002");
+  EXPECT_EQ(card_number(1e-7), "1e-07");
+  EXPECT_EQ(card_number(0.0), "0");
+  for (double value : {-1.2345678901234567e-5, 1.2345678901234567e-5, -9.87654321098765e-300, 1.2345678901234567e14,
+                       -1.2345678901234567e15, 0.012345678901234567}) {
+    const std::string text = card_number(value);
+    EXPECT_LE(text.size(), 20u) << text;
+    EXPECT_NEAR(std::stod(text), value, 5e-13 * std::fabs(value)) << text;
+  }
+  // the card's rows: shortest forms (no trailing zeros, no 17-digit tails)
+  const ContactModel model(table(), surface(Distribution::weibull, Side::tail, 2));
+  const PressureOverclosureTable law = tabulate_pressure_overclosure(model, 1e4, 1e8, 1e-3);
+  for (CardUnits units : {CardUnits::si, CardUnits::mm}) {
+    std::ostringstream out;
+    write_pressure_overclosure(out, law, CardFormat::calculix, units, "");
+    for (const Row& row : rows_of(out.str())) {
+      for (const std::string& field : {row.text.substr(0, row.text.find(',')), row.text.substr(row.text.find(',') + 1)}) {
+        const std::string mantissa = field.substr(0, field.find('e'));
+        if (mantissa.find('.') != std::string::npos) {
+          EXPECT_NE(mantissa.back(), '0') << row.text;
+        }
+        std::size_t digits = 0;
+        for (char c : mantissa) digits += c >= '0' && c <= '9';
+        EXPECT_LE(digits, 13u + 5u) << row.text;  // 13 significant digits and at most 5 leading zeros
+      }
+    }
+  }
+}
+
+}  // namespace
