@@ -17,7 +17,7 @@
 //                                    separations (goal: BM_ScalarKind/gaussian_fit_domain <= 0.8x,
 //                                    every Weibull BM_ScalarKind <= 1.0x)
 //   BM_ContactAllFour                contact_at (count, area, load, stiffness, their ratio), Weibull
-//                                    a = 2 tail, from a Surface (its factors on every query, in the kernel)
+//                                    a = 2 tail, from a SurfaceScales (its factors on every query, in the kernel)
 //   BM_ContactAllFourScales          the same from the factors computed once (contact_at_scales)
 //                                    (goal, both rows: <= 1.5x BM_ScalarKind/weibull_tail_a2)
 //   BM_ContactOrders                 Curve::contact_orders, the four orders' logs and values alone
@@ -231,7 +231,7 @@ BENCHMARK(BM_GaussianF52CurveFit);
 
 void BM_ContactAllFour(benchmark::State& state) {
   const KindData& data = kind_data("weibull_tail_a2");
-  const Surface surface{1e4, 1e-4, 1e-6, 1e11};
+  const SurfaceScales surface{1e4, 1e-4, 1e-6, 1e11};
   ContactState out;
   std::size_t i = 0;
   for (auto _ : state) {
@@ -244,7 +244,7 @@ BENCHMARK(BM_ContactAllFour);
 
 void BM_ContactAllFourScales(benchmark::State& state) {
   const KindData& data = kind_data("weibull_tail_a2");
-  const ContactScales scales = contact_scales(Surface{1e4, 1e-4, 1e-6, 1e11});
+  const ContactScales scales = contact_scales(SurfaceScales{1e4, 1e-4, 1e-6, 1e11});
   ContactState out;
   std::size_t i = 0;
   for (auto _ : state) {
@@ -271,7 +271,7 @@ BENCHMARK(BM_ContactOrders);
 // one Newton step, against the same queries (the loads the separations give).
 const ContactModel& physical_model() {
   static const ContactModel model(table(), [] {
-    PhysicalSurface surface;
+    RoughSurface surface;
     surface.shape = 2.0;
     return surface;
   }());

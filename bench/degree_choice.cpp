@@ -3,7 +3,7 @@
 // layout's knots to half the tolerance, the same test tablegen --scene thins by, and the
 // power-basis coefficients that costs in memory (6 per interval for the quintic, 4 for the cubic).
 //   build/bench/degree_choice
-#include "chain_ode.hpp"
+#include "asperity/generator/chain_ode.hpp"
 #include "asperity/layout.hpp"
 #include "asperity/detail/quintic_hermite.hpp"
 #include <cstdio>
@@ -24,7 +24,7 @@ int main() {
                        {Distribution::weibull, Side::tail, 2.7, {0,2,3}, 0.9, 2.6, "ground"}};
   for (auto& c : cs) {
     auto layout = scale_knot_density(default_layout(c.d, c.side), 2);
-    auto data = tablegen::integrate_curve({c.d, c.side, c.a}, layout, {});
+    auto data = generator::integrate_curve({c.d, c.side, c.a}, layout, {});
     auto maps = SegmentMap::resolve(layout, c.d, c.side, c.a);
     int total = 0; for (auto& l : layout) total += l.knots;
     for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {

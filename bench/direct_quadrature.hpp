@@ -14,7 +14,7 @@
 #include <cmath>
 #include <limits>
 
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity::bench {
 

@@ -14,7 +14,7 @@
 #include "asperity/instruction_set.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/scene_curves.hpp"
-#include "scene_table.hpp"
+#include "asperity/generator/scene_table.hpp"
 
 namespace {
 using namespace asperity;
@@ -27,7 +27,7 @@ Scene sweep_scene(double tolerance) {
 }
 
 struct Built {
-  tablegen::SceneResult result;
+  generator::SceneResult result;
   std::vector<SceneCurveView> views;
 };
 
@@ -37,7 +37,7 @@ const Built& built(double tolerance) {
   if (found == cache.end()) {
     Built entry;
     const Scene scene = sweep_scene(tolerance);
-    entry.result = tablegen::generate_scene_table(scene, 2);
+    entry.result = generator::generate_scene_table(scene, 2);
     Table table(entry.result.table);
     entry.views = serve_scene(table, scene);
     found = cache.emplace(tolerance, std::move(entry)).first;
@@ -51,7 +51,7 @@ void BM_SceneGenerate(benchmark::State& state) {
   double kib = 0, worst = 0;
   int knots = 0;
   for (auto _ : state) {
-    const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+    const generator::SceneResult result = generator::generate_scene_table(scene, 2);
     kib = worst = 0;
     knots = 0;
     for (const auto& report : result.curves) {

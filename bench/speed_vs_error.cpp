@@ -26,8 +26,8 @@
 
 #include "random_separations.hpp"
 #include "asperity/curve.hpp"
-#include "chain_ode.hpp"
-#include "quadrature.hpp"
+#include "asperity/generator/chain_ode.hpp"
+#include "asperity/generator/quadrature.hpp"
 #include "reference.hpp"
 
 namespace {
@@ -49,7 +49,7 @@ using bench::uniform;
 
 // A curve's knots for a layout, straight from the generator's integrator.
 std::vector<double> knots_for(const Study& study, const std::vector<SegmentSpec>& layout) {
-  return tablegen::integrate_curve({study.distribution, study.side, study.shape}, layout, tablegen::ChainOptions{});
+  return generator::integrate_curve({study.distribution, study.side, study.shape}, layout, generator::ChainOptions{});
 }
 
 // Boost.Math interpolators on the same knots, one per segment, behind our map s -> u and offset.
@@ -219,9 +219,9 @@ void add_methods(const Study& study) {
                    [](V u, V h, V, V, double) { return bi::makima<V>(std::move(u), std::move(h)); }), 32);
 
   Method quadrature{study.name, "Boost exp_sinh/tanh_sinh quadrature", "quadrature", 0, 0};
-  const tablegen::CurveId id{study.distribution, study.side, study.shape};
-  quadrature.log_value = [id, order](double s) { return tablegen::log_integral(id, order_of(order), s); };
-  quadrature.value = [id, order](double s) { return std::exp(tablegen::log_integral(id, order_of(order), s)); };
+  const generator::CurveId id{study.distribution, study.side, study.shape};
+  quadrature.log_value = [id, order](double s) { return generator::log_integral(id, order_of(order), s); };
+  quadrature.value = [id, order](double s) { return std::exp(generator::log_integral(id, order_of(order), s)); };
   added.push_back(quadrature);
 
   if (study.distribution == Distribution::gaussian && order == 5) {

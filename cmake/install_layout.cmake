@@ -1,8 +1,9 @@
 # The installed tree: where each part goes (GNUInstallDirs), how the installed library and
 # commands find the default table and each other wherever the tree is put.
 #
-#   lib/libasperity.so.0.2.0 (.so.0, .so)      include/asperity/*.h, *.hpp, asperity.f90
-#   lib/cmake/asperity/                        include/asperity.mod (gfortran)
+#   lib/libasperity.so.0.2.0 (.so.0, .so)      include/asperity/*.h, *.hpp (cmake/public_headers.cmake)
+#   lib/libasperity_generator.so.0, _topography include/asperity/generator/, topography/
+#   lib/cmake/asperity/ (one file a component)  include/asperity.mod, asperity.f90 (gfortran)
 #   lib/pkgconfig/asperity.pc                  share/asperity/asperity-default.h5
 #   bin/asperity, bin/tablegen                 lib/pythonX.Y/<site>/asperity/ (the Python package)
 

@@ -18,13 +18,13 @@
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
-#include "table_writer.hpp"
+#include "asperity/table_writer.hpp"
 #include "tiny_table.hpp"
 
 namespace {
 
 const std::vector<unsigned char>& base_file() {
-  static const std::vector<unsigned char> bytes = asperity::tablegen::table_file_bytes(asperity::fuzz::tiny_table());
+  static const std::vector<unsigned char> bytes = asperity::table_file_bytes(asperity::fuzz::tiny_table());
   return bytes;
 }
 

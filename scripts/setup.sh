@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 # python3-pythran: the FFT of the surface analysis (pocketfft, header-only; topography/fft.hpp);
 # librsvg2-bin and imagemagick: the tests render the report's SVG plots with both
-packages="g++ gfortran cmake make libboost-dev libhdf5-dev pkg-config libgtest-dev libbenchmark-dev libtoml11-dev libssl-dev libcli11-dev libzip-dev libpugixml-dev libnlopt-dev libnlopt-cxx-dev nlohmann-json3-dev python3-pythran librsvg2-bin imagemagick libhwy-dev"
+# abigail-tools: abidiff, the ABI check between two builds of the runtime (tests/abi/abi_check.sh)
+packages="g++ gfortran cmake make libboost-dev libhdf5-dev pkg-config libgtest-dev libbenchmark-dev libtoml11-dev libssl-dev libcli11-dev libzip-dev libpugixml-dev libnlopt-dev libnlopt-cxx-dev nlohmann-json3-dev python3-pythran librsvg2-bin imagemagick libhwy-dev abigail-tools"
 # the Python module (pybind11 from Debian, no PyPI), its tests, its example and its benchmark;
 # python3-dask and python3-distributed: asperity.batch, many surfaces on a Dask cluster
 packages="$packages python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib python3-scipy"

@@ -305,7 +305,7 @@ def lookup_section(lookup):
             f"{value:.1f} ns", f"{value / fit:.2f}x", value / fit <= 1.0 if kind.startswith("weibull") else True)
     one = ns("BM_ScalarKind/weibull_tail_a2")
     four = ns("BM_ContactAllFour")
-    row("four quantities (`contact_at`, a `Surface`: its factors on every query) <= 1.5x one order (Weibull a = 2 tail)",
+    row("four quantities (`contact_at`, a `SurfaceScales`: its factors on every query) <= 1.5x one order (Weibull a = 2 tail)",
         f"{four:.1f} ns vs {one:.1f} ns", f"{four / one:.2f}x", four / one <= 1.5)
     if has("BM_ContactAllFourScales"):
         scaled = ns("BM_ContactAllFourScales")

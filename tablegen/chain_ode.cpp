@@ -1,14 +1,15 @@
-#include "chain_ode.hpp"
+#include "asperity/generator/chain_ode.hpp"
 
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
+#include <string>
 
 #include "asperity/asymptotic.hpp"
+#include "asperity/error.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 namespace {
 
 using State = std::array<double, order_count>;
@@ -270,7 +271,7 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
     auto stepper = odeint::make_controlled(options.tolerance, options.tolerance,
                                            odeint::runge_kutta_fehlberg78<State>());
     odeint::integrate_times(stepper, system, state, times.begin(), times.end(), step, observer);
-    if (observed != knots) throw std::runtime_error("odeint did not reach every knot");
+    if (observed != knots) throw Error("odeint did not reach every knot");
     have_state = true;
   }
   if (curve.distribution == Distribution::weibull) fill_order_zero(curve, maps, layout, data.data());
@@ -280,7 +281,7 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
       const std::size_t component = i % 3, knot = (i / 3) % static_cast<std::size_t>(total), order = i / order_stride;
       std::size_t segment = 0;
       while (segment + 1 < layout.size() && knot >= static_cast<std::size_t>(first[segment + 1])) ++segment;
-      throw std::runtime_error("the chain produced a value that is not finite (shape " + std::to_string(shape) +
+      throw Error("the chain produced a value that is not finite (shape " + std::to_string(shape) +
                                ", order " + std::to_string(order_of(static_cast<int>(order))) + ", segment " +
                                std::to_string(segment) + ", knot " + std::to_string(knot - first[segment]) +
                                ", component " + std::to_string(component) + ")");
@@ -288,4 +289,4 @@ std::vector<double> integrate_curve(const CurveId& curve, const std::vector<Segm
   return data;
 }
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

@@ -1,4 +1,4 @@
-#include "generate.hpp"
+#include "asperity/generator/generate.hpp"
 
 #include <atomic>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
 #include "asperity/table_schema.hpp"
-#include "quadrature.hpp"
+#include "asperity/generator/quadrature.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 
 std::string GenerateOptions::describe() const {
   std::ostringstream text;
@@ -189,4 +189,4 @@ TableData generate_table(const GenerateOptions& options, const std::function<voi
   return table;
 }
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

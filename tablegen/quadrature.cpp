@@ -1,12 +1,14 @@
-#include "quadrature.hpp"
+#include "asperity/generator/quadrature.hpp"
 
 #include <boost/math/quadrature/exp_sinh.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <string>
 
-namespace asperity::tablegen {
+#include "asperity/error.hpp"
+
+namespace asperity::generator {
 namespace {
 
 constexpr double tolerance = 1e-14;
@@ -104,7 +106,7 @@ double bounded_far_integral(double shape, double order, double distance) {
 }
 
 void require_finite(double value, const char* what) {
-  if (!std::isfinite(value)) throw std::runtime_error(std::string("quadrature failed: ") + what);
+  if (!std::isfinite(value)) throw Error(std::string("quadrature failed: ") + what);
 }
 
 }  // namespace
@@ -239,4 +241,4 @@ double log_slope_minus_half(const CurveId& curve, double separation) {
   return slope;
 }
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

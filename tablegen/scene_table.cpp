@@ -1,4 +1,4 @@
-#include "scene_table.hpp"
+#include "asperity/generator/scene_table.hpp"
 
 #include "asperity/detail/parallel_for.hpp"
 
@@ -16,10 +16,10 @@
 #include "asperity/curve.hpp"
 #include "asperity/detail/quintic_hermite.hpp"
 #include "asperity/error.hpp"
-#include "chain_ode.hpp"
-#include "quadrature.hpp"
+#include "asperity/generator/chain_ode.hpp"
+#include "asperity/generator/quadrature.hpp"
 
-namespace asperity::tablegen {
+namespace asperity::generator {
 
 double separation_at_load(Distribution distribution, Side side, double shape, double load) {
   const CurveId id{distribution, side, shape};
@@ -468,4 +468,4 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
   return result;
 }
 
-}  // namespace asperity::tablegen
+}  // namespace asperity::generator

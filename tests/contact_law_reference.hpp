@@ -26,7 +26,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 
 #include "asperity/contact_law.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity::test {
 

@@ -12,7 +12,7 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity::test {
 

@@ -225,6 +225,20 @@ int main(void) {
     asperity_model *model;
     CHECK(fabs(modulus - 2.1e11 / 1.82) < 1e-3);
     CHECK(isnan(asperity_contact_modulus(-1.0, 0.3, 1.0, 0.3)));
+    {
+      double given = 0;
+      CHECK(asperity_contact_modulus_given(NAN, 2.1e11, 0.3, 2.1e11, 0.3, &given, err, sizeof err) == ASPERITY_OK);
+      CHECK(given == modulus);
+      CHECK(asperity_contact_modulus_given(NAN, NAN, NAN, NAN, NAN, &given, err, sizeof err) == ASPERITY_OK);
+      CHECK(isnan(given));
+      CHECK(asperity_contact_modulus_given(1e11, 2.1e11, 0.3, 2.1e11, 0.3, &given, err, sizeof err) ==
+            ASPERITY_BAD_PARAMETER);
+      CHECK(strstr(err, "not both") != NULL);
+      CHECK(asperity_contact_modulus_given(NAN, 2.1e11, 0.3, NAN, 0.3, &given, err, sizeof err) ==
+            ASPERITY_BAD_PARAMETER);
+      CHECK(asperity_contact_modulus_given(-1, NAN, NAN, NAN, NAN, &given, err, sizeof err) == ASPERITY_BAD_PARAMETER);
+    }
+
     model = asperity_model_open(table, "weibull", "tail", 2.0, 1e-6, 1e-4, 1e10, 1e-4, modulus, err, sizeof err);
     CHECK(model != NULL);
     if (model) {
@@ -236,6 +250,44 @@ int main(void) {
       CHECK(fabs(inverse.load - forward.load) < 1e-11 * forward.load);
       CHECK(asperity_model_at_real_area(model, forward.real_area, &inverse) == ASPERITY_OK);
       CHECK(fabs(inverse.separation - 3e-6) < 1e-15);
+      /* FE export from C: the size first, then the card, the same text as C++'s (test_pressure_overclosure) */
+      {
+        size_t length = 0, small_length = 0;
+        char small[8];
+        char *card;
+        CHECK(asperity_model_pressure_overclosure_card(model, 1e3, 1e8, 1e-3, "calculix", "si", "from C", NULL, 0,
+                                                       &length, err, sizeof err) == ASPERITY_OK);
+        CHECK(length > 100);
+        CHECK(asperity_model_pressure_overclosure_card(model, 1e3, 1e8, 1e-3, "calculix", "si", "from C", small,
+                                                       sizeof small, &small_length, err, sizeof err) == ASPERITY_NO_MEMORY);
+        CHECK(small_length == length); /* a buffer too small still tells the size */
+        card = (char *)malloc(length + 1);
+        CHECK(card != NULL);
+        if (card) {
+          CHECK(asperity_model_pressure_overclosure_card(model, 1e3, 1e8, 1e-3, "calculix", "si", "from C", card,
+                                                         length + 1, &length, err, sizeof err) == ASPERITY_OK);
+          CHECK(strlen(card) == length);
+          CHECK(strstr(card, "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR\n0,-") != NULL);
+          CHECK(strstr(card, "from C") != NULL);
+          free(card);
+        }
+        CHECK(asperity_model_pressure_overclosure_card(model, 1e3, 1e8, 1e-3, "nastran", "si", NULL, NULL, 0, &length,
+                                                       err, sizeof err) == ASPERITY_BAD_NAME);
+        CHECK(asperity_model_pressure_overclosure_card(model, 1e8, 1e3, 1e-3, "abaqus", "mm", NULL, NULL, 0, &length,
+                                                       err, sizeof err) == ASPERITY_BAD_PARAMETER);
+      }
+      {
+        const double pressures[3] = {0, 1e6, 1e7}, overclosures[3] = {-2e-6, -1e-6, -0.5e-6};
+        char card[1024];
+        size_t length = 0;
+        CHECK(asperity_tabulated_pressure_overclosure_card(pressures, overclosures, 3, "abaqus", "si", "tabulated",
+                                                           NULL, card, sizeof card, &length, err,
+                                                           sizeof err) == ASPERITY_OK);
+        CHECK(strstr(card, "1000000,-1e-06") != NULL);
+        CHECK(asperity_tabulated_pressure_overclosure_card(pressures, overclosures, 1, "abaqus", "si", NULL, NULL,
+                                                           card, sizeof card, &length, err,
+                                                           sizeof err) == ASPERITY_BAD_PARAMETER);
+      }
       CHECK(asperity_model_at_load(model, NAN, &inverse) == ASPERITY_BAD_SEPARATION);
       CHECK(isnan(inverse.separation));
       CHECK(asperity_model_at_load(NULL, 1.0, &inverse) == ASPERITY_BAD_HANDLE);

@@ -11,7 +11,7 @@
 
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
-#include "pressure_overclosure.hpp"
+#include "asperity/pressure_overclosure.hpp"
 
 namespace {
 using namespace asperity;
@@ -61,12 +61,12 @@ std::vector<Row> rows_of(const std::string& card) {
 }
 
 // The law in the card's datum and units (mm, MPa): the pressure at overclosure h [mm].
-double law_mpa(const ContactModel& model, const cli::PressureOverclosureTable& law, double h_mm) {
-  return cli::law_pressure(model, h_mm * 1e-3 - law.mean_summit_overclosure) / 1e6;
+double law_mpa(const ContactModel& model, const PressureOverclosureTable& law, double h_mm) {
+  return law_pressure(model, h_mm * 1e-3 - law.mean_summit_overclosure) / 1e6;
 }
 
 // Rows on the law; chords within the tolerance met at 41 points an interval (never the writer's 7 or 32).
-double check_card(const ContactModel& model, const cli::PressureOverclosureTable& law, const std::vector<Row>& rows) {
+double check_card(const ContactModel& model, const PressureOverclosureTable& law, const std::vector<Row>& rows) {
   EXPECT_EQ(rows.size(), law.points.size());
   EXPECT_EQ(rows.front().pressure, 0.0);
   double worst = 0;
@@ -95,27 +95,27 @@ TEST(CardOptions, EveryDatumInBothFormatsReadsBackOnTheLaw) {
   for (const auto& s : surfaces) {
     const ContactModel model(table(), surface(s.distribution, s.side, s.shape));
     const double origin_from_mean = model.at_separation(0).mean_separation;  // the origin seen from the mean summit height
-    for (cli::OverclosureDatum datum :
-         {cli::OverclosureDatum::mean_summit, cli::OverclosureDatum::origin, cli::OverclosureDatum::zero_pressure}) {
-      SCOPED_TRACE(cli::datum_name(datum));
-      const cli::PressureOverclosureTable law = cli::tabulate_pressure_overclosure(model, 1e4, 1e7, 1e-3, datum);
-      if (datum == cli::OverclosureDatum::mean_summit) {
+    for (OverclosureDatum datum :
+         {OverclosureDatum::mean_summit, OverclosureDatum::origin, OverclosureDatum::zero_pressure}) {
+      SCOPED_TRACE(datum_name(datum));
+      const PressureOverclosureTable law = tabulate_pressure_overclosure(model, 1e4, 1e7, 1e-3, datum);
+      if (datum == OverclosureDatum::mean_summit) {
         EXPECT_EQ(law.mean_summit_overclosure, 0.0);
       }
-      if (datum == cli::OverclosureDatum::origin) {
+      if (datum == OverclosureDatum::origin) {
         EXPECT_EQ(law.mean_summit_overclosure, origin_from_mean);
       }
-      for (cli::CardFormat format : {cli::CardFormat::calculix, cli::CardFormat::abaqus}) {
+      for (CardFormat format : {CardFormat::calculix, CardFormat::abaqus}) {
         std::ostringstream out;
-        cli::write_pressure_overclosure(out, law, format, cli::CardUnits::mm, "test");
+        write_pressure_overclosure(out, law, format, CardUnits::mm, "test");
         SCOPED_TRACE(out.str().substr(0, 2000));
         const std::vector<Row> rows = rows_of(out.str());
         check_card(model, law, rows);
         // the range's ends are the pressures asked, printed clean
         EXPECT_EQ(rows[1].text.substr(0, rows[1].text.find(',')), "0.01");
         EXPECT_EQ(rows.back().text.substr(0, rows.back().text.find(',')), "10");
-        EXPECT_NE(out.str().find(std::string("--overclosure-datum ") + cli::datum_name(datum)), std::string::npos);
-        if (datum == cli::OverclosureDatum::zero_pressure) {
+        EXPECT_NE(out.str().find(std::string("--overclosure-datum ") + datum_name(datum)), std::string::npos);
+        if (datum == OverclosureDatum::zero_pressure) {
           EXPECT_EQ(rows.front().text, "0,0");
           for (const Row& row : rows) EXPECT_GE(row.overclosure, 0.0);
           // the card's first point is where the law's tangent at 0.01 MPa reaches zero
@@ -130,12 +130,12 @@ TEST(CardOptions, EveryDatumInBothFormatsReadsBackOnTheLaw) {
 
 TEST(CardOptions, MaxPointsLoosensTheToleranceToTheSmallestThatFits) {
   const ContactModel model(table(), surface(Distribution::weibull, Side::tail, 2));
-  const cli::PressureOverclosureTable full = cli::tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3);
+  const PressureOverclosureTable full = tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3);
   ASSERT_GT(full.points.size(), 41u);
   EXPECT_EQ(full.tolerance, 1e-3);
   for (std::size_t cap : {std::size_t{41}, std::size_t{200}, full.points.size()}) {
-    const cli::PressureOverclosureTable law =
-        cli::tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, cli::OverclosureDatum::mean_summit, cap);
+    const PressureOverclosureTable law =
+        tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit, cap);
     EXPECT_LE(law.points.size(), cap);
     EXPECT_EQ(law.asked_tolerance, 1e-3);
     EXPECT_EQ(law.max_points, cap);
@@ -146,40 +146,40 @@ TEST(CardOptions, MaxPointsLoosensTheToleranceToTheSmallestThatFits) {
     }
     EXPECT_GT(law.tolerance, 1e-3);
     // stated with two digits, and the smallest such: a tolerance 10 % tighter does not fit
-    EXPECT_EQ(cli::card_number(law.tolerance).size() <= 6, true) << law.tolerance;
-    const cli::PressureOverclosureTable tighter = cli::tabulate_pressure_overclosure(model, 1e3, 1e8, 0.9 * law.tolerance);
+    EXPECT_EQ(card_number(law.tolerance).size() <= 6, true) << law.tolerance;
+    const PressureOverclosureTable tighter = tabulate_pressure_overclosure(model, 1e3, 1e8, 0.9 * law.tolerance);
     EXPECT_GT(tighter.points.size(), cap);
     std::ostringstream out;
-    cli::write_pressure_overclosure(out, law, cli::CardFormat::abaqus, cli::CardUnits::mm, "capped");
+    write_pressure_overclosure(out, law, CardFormat::abaqus, CardUnits::mm, "capped");
     check_card(model, law, rows_of(out.str()));
     EXPECT_NE(out.str().find("loosened to fit at most " + std::to_string(cap) + " points"), std::string::npos);
   }
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, cli::OverclosureDatum::mean_summit, 2), Error);
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, cli::OverclosureDatum::mean_summit,
-                                                  cli::card_points_max + 1),
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit, 2), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit,
+                                                  card_points_max + 1),
                Error);
 }
 
 TEST(CardOptions, NumbersAreTheShortestThatReadBack) {
-  EXPECT_EQ(cli::card_number(1e6), "1000000");
-  EXPECT_EQ(cli::card_number(1e8 / 1e6), "100");
-  EXPECT_EQ(cli::card_number(999999.99999999994), "1000000");  // within the card's 13 digits of 1e6
-  EXPECT_EQ(cli::card_number(0.1 + 0.2), "0.3");
-  EXPECT_EQ(cli::card_number(-2e-7 * 1e3), "-0.0002");
-  EXPECT_EQ(cli::card_number(1e-7), "1e-07");
-  EXPECT_EQ(cli::card_number(0.0), "0");
+  EXPECT_EQ(card_number(1e6), "1000000");
+  EXPECT_EQ(card_number(1e8 / 1e6), "100");
+  EXPECT_EQ(card_number(999999.99999999994), "1000000");  // within the card's 13 digits of 1e6
+  EXPECT_EQ(card_number(0.1 + 0.2), "0.3");
+  EXPECT_EQ(card_number(-2e-7 * 1e3), "-0.0002");
+  EXPECT_EQ(card_number(1e-7), "1e-07");
+  EXPECT_EQ(card_number(0.0), "0");
   for (double value : {-1.2345678901234567e-5, 1.2345678901234567e-5, -9.87654321098765e-300, 1.2345678901234567e14,
                        -1.2345678901234567e15, 0.012345678901234567}) {
-    const std::string text = cli::card_number(value);
+    const std::string text = card_number(value);
     EXPECT_LE(text.size(), 20u) << text;
     EXPECT_NEAR(std::stod(text), value, 5e-13 * std::fabs(value)) << text;
   }
   // the card's rows: shortest forms (no trailing zeros, no 17-digit tails)
   const ContactModel model(table(), surface(Distribution::weibull, Side::tail, 2));
-  const cli::PressureOverclosureTable law = cli::tabulate_pressure_overclosure(model, 1e4, 1e8, 1e-3);
-  for (cli::CardUnits units : {cli::CardUnits::si, cli::CardUnits::mm}) {
+  const PressureOverclosureTable law = tabulate_pressure_overclosure(model, 1e4, 1e8, 1e-3);
+  for (CardUnits units : {CardUnits::si, CardUnits::mm}) {
     std::ostringstream out;
-    cli::write_pressure_overclosure(out, law, cli::CardFormat::calculix, units, "");
+    write_pressure_overclosure(out, law, CardFormat::calculix, units, "");
     for (const Row& row : rows_of(out.str())) {
       for (const std::string& field : {row.text.substr(0, row.text.find(',')), row.text.substr(row.text.find(',') + 1)}) {
         const std::string mantissa = field.substr(0, field.find('e'));

@@ -19,7 +19,7 @@ const Table& table() {
 
 TEST(Contact, QuantitiesFollowTheModelFormulas) {
   const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
-  const Surface surface{1000, 2e-4, 3e-6, 1e11};
+  const SurfaceScales surface{1000, 2e-4, 3e-6, 1e11};
   const double s = 1.3;
   ContactState state;
   ASSERT_TRUE(contact_at(curve, surface, s, state));
@@ -41,7 +41,7 @@ TEST(Contact, ExponentialHeightsHaveUnitStiffnessLoadRatio) {
   const Curve curve = table().curve(Distribution::weibull, Side::tail, 1.0);
   for (double s : {0.0, 1.0, 10.0, 300.0, 2000.0}) {
     ContactState state;
-    ASSERT_TRUE(contact_at(curve, Surface{}, s, state));
+    ASSERT_TRUE(contact_at(curve, SurfaceScales{}, s, state));
     EXPECT_NEAR(state.stiffness_ratio, 1.0, 1e-11) << s;  // finite even where the load underflows
   }
 }
@@ -49,7 +49,7 @@ TEST(Contact, ExponentialHeightsHaveUnitStiffnessLoadRatio) {
 TEST(Contact, BoundedSideOutOfContactIsZero) {
   const Curve curve = table().curve(Distribution::weibull, Side::bounded, 3.0);
   ContactState state;
-  ASSERT_TRUE(contact_at(curve, Surface{}, 0.5, state));
+  ASSERT_TRUE(contact_at(curve, SurfaceScales{}, 0.5, state));
   EXPECT_EQ(state.load, 0.0);
   EXPECT_EQ(state.area, 0.0);
   EXPECT_TRUE(std::isnan(state.stiffness_ratio));
@@ -58,36 +58,36 @@ TEST(Contact, BoundedSideOutOfContactIsZero) {
 TEST(Contact, NonPhysicalInputIsRejectedByValue) {
   const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
   ContactState state;
-  EXPECT_FALSE(contact_at(curve, Surface{-1, 1, 1, 1}, 1.0, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{-1, 1, 1, 1}, 1.0, state));
   EXPECT_TRUE(std::isnan(state.load));
-  EXPECT_FALSE(contact_at(curve, Surface{1, 0, 1, 1}, 1.0, state));
-  EXPECT_FALSE(contact_at(curve, Surface{1, 1, NAN, 1}, 1.0, state));
-  EXPECT_FALSE(contact_at(curve, Surface{1, 1, 1, INFINITY}, 1.0, state));
-  EXPECT_FALSE(contact_at(curve, Surface{}, NAN, state));
-  EXPECT_FALSE(contact_at(curve, Surface{}, -INFINITY, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{1, 0, 1, 1}, 1.0, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{1, 1, NAN, 1}, 1.0, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{1, 1, 1, INFINITY}, 1.0, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{}, NAN, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{}, -INFINITY, state));
   // the checks read the bits: every edge of "finite and > 0", in each field
   const double largest = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
-  double Surface::*const fields[] = {&Surface::summit_count, &Surface::summit_radius, &Surface::height_scale,
-                                     &Surface::contact_modulus};
+  double SurfaceScales::*const fields[] = {&SurfaceScales::summit_count, &SurfaceScales::summit_radius, &SurfaceScales::height_scale,
+                                     &SurfaceScales::contact_modulus};
   for (int field = 0; field < 4; ++field) {
     for (double bad : {0.0, -0.0, -tiny, -largest, inf, -inf, nan, -nan}) {
-      Surface surface;
+      SurfaceScales surface;
       surface.*fields[field] = bad;
       EXPECT_FALSE(contact_at(curve, surface, 1.0, state)) << "field " << field << " = " << bad;
       EXPECT_TRUE(std::isnan(state.count) && std::isnan(state.stiffness_ratio));
     }
     for (double good : {tiny, std::numeric_limits<double>::min(), 1.0, largest}) {
-      Surface surface;
+      SurfaceScales surface;
       surface.*fields[field] = good;
       EXPECT_TRUE(contact_at(curve, surface, 1.0, state)) << "field " << field << " = " << good;
     }
   }
-  EXPECT_FALSE(contact_at(curve, Surface{}, inf, state));
-  EXPECT_FALSE(contact_at(curve, Surface{}, -nan, state));
-  EXPECT_TRUE(contact_at(curve, Surface{}, -largest, state));
-  EXPECT_TRUE(contact_at(curve, Surface{}, largest, state));
-  EXPECT_TRUE(contact_at(curve, Surface{}, -0.0, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{}, inf, state));
+  EXPECT_FALSE(contact_at(curve, SurfaceScales{}, -nan, state));
+  EXPECT_TRUE(contact_at(curve, SurfaceScales{}, -largest, state));
+  EXPECT_TRUE(contact_at(curve, SurfaceScales{}, largest, state));
+  EXPECT_TRUE(contact_at(curve, SurfaceScales{}, -0.0, state));
 }
 
 // contact_at's kernel (the products where the exps are, Curve::contact_products) against
@@ -107,7 +107,7 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
                         // shapes between the grid's nodes (blended curves; 0.5 and 20 are its ends)
                         {Distribution::weibull, Side::tail, 1.73},   {Distribution::weibull, Side::bounded, 0.77},
                         {Distribution::weibull, Side::tail, 13.3},   {Distribution::weibull, Side::bounded, 19.1}};
-  const Surface surfaces[] = {{1e4, 1e-4, 1e-6, 1e11}, {1, 1, 1, 1}, {1e-300, 1e-5, 1e-5, 1e-3}};
+  const SurfaceScales surfaces[] = {{1e4, 1e-4, 1e-6, 1e11}, {1, 1, 1, 1}, {1e-300, 1e-5, 1e-5, 1e-3}};
   const double denorm = std::numeric_limits<double>::denorm_min();
   long checked = 0;
   for (const Kind& kind : kinds) {
@@ -139,7 +139,7 @@ TEST(Contact, KernelAgreesWithTheLogsEverywhere) {
         }
         for (int i = -300; i <= 300; ++i) separations.push_back(a + i * 1e-4);
       }
-    for (const Surface& surface : surfaces) {
+    for (const SurfaceScales& surface : surfaces) {
       const ContactScales scales = contact_scales(surface);
       const double factors[4] = {scales.count, scales.stiffness, scales.area, scales.load};  // order 0, 1/2, 1, 3/2
       for (double s : separations) {
@@ -198,7 +198,7 @@ TEST(Contact, WithoutContactRecordsTheSameQuantities) {
   options.contact_records = false;
   const Curve plain = table().curve(Distribution::weibull, Side::tail, 2.0, Curve::all_orders, options);
   const Curve with_records = table().curve(Distribution::weibull, Side::tail, 2.0);
-  const Surface surface{1e4, 1e-4, 1e-6, 1e11};
+  const SurfaceScales surface{1e4, 1e-4, 1e-6, 1e11};
   for (int i = 0; i <= 2000; ++i) {
     const double s = -3.5 + 31.5 * i / 2000;
     ContactState a, b;
@@ -239,26 +239,26 @@ TEST(Contact, ScalesOutsideTheirRangeAreRejectedByValue) {
   for (int field = 0; field < 4; ++field) {
     for (double bad : {0.0, -0.0, -tiny, -1.0, -largest, inf, -inf, nan, -nan})
       for (double s : {-1.0, 1.0, 40.0}) {  // on the grid, and beyond it
-        ContactScales scales = contact_scales(Surface{});
+        ContactScales scales = contact_scales(SurfaceScales{});
         scales.*fields[field] = bad;
         EXPECT_FALSE(contact_at_scales(curve, scales, s, state)) << "field " << field << " = " << bad;
         EXPECT_TRUE(std::isnan(state.count) && std::isnan(state.load) && std::isnan(state.stiffness_ratio));
       }
     for (double good : {tiny, std::numeric_limits<double>::min(), 1.0, largest}) {
-      ContactScales scales = contact_scales(Surface{});
+      ContactScales scales = contact_scales(SurfaceScales{});
       scales.*fields[field] = good;
       EXPECT_TRUE(contact_at_scales(curve, scales, 1.0, state)) << "field " << field << " = " << good;
     }
   }
-  const ContactScales unit = contact_scales(Surface{});
+  const ContactScales unit = contact_scales(SurfaceScales{});
   EXPECT_FALSE(contact_at_scales(curve, unit, nan, state));
   EXPECT_FALSE(contact_at_scales(curve, unit, -inf, state));
   EXPECT_TRUE(contact_at_scales(curve, unit, largest, state));
   // a physical surface whose factors overflow is answered (inf), as before the kernel
-  EXPECT_TRUE(contact_at(curve, Surface{largest, 1, 1, largest}, 1.0, state));
+  EXPECT_TRUE(contact_at(curve, SurfaceScales{largest, 1, 1, largest}, 1.0, state));
   EXPECT_TRUE(std::isinf(state.load));
   // a default Curve holds no order: NaN quantities
-  EXPECT_TRUE(contact_at(Curve{}, Surface{}, 1.0, state));
+  EXPECT_TRUE(contact_at(Curve{}, SurfaceScales{}, 1.0, state));
   EXPECT_TRUE(std::isnan(state.count) && std::isnan(state.stiffness_ratio));
 }
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "eval_csv.hpp"
-#include "number_text.hpp"
+#include "asperity/number_text.hpp"
 
 namespace {
 using namespace asperity;
@@ -58,8 +58,8 @@ TEST(EvalCsv, WritesTheContractHeaderAndValues) {
   for (const std::string& row : rows)
     for (const std::string& field : fields(row)) {
       double value;
-      if (!cli::read_double(field, value) || !std::isfinite(value)) continue;
-      EXPECT_EQ(cli::format_double(value), field) << "not the shortest form: " << field;
+      if (!read_double(field, value) || !std::isfinite(value)) continue;
+      EXPECT_EQ(format_double(value), field) << "not the shortest form: " << field;
     }
 }
 
@@ -188,27 +188,27 @@ TEST(EvalCsv, RefusesAnOverlongLineAndGoesOn) {
 
 TEST(NumberText, ReadsAllOfTheTextAndRoundsOnce) {
   double value = -1;
-  EXPECT_TRUE(cli::read_double("1.6", value));
+  EXPECT_TRUE(read_double("1.6", value));
   EXPECT_EQ(value, 1.6);
-  EXPECT_TRUE(cli::read_double("+2.5e-3", value));
+  EXPECT_TRUE(read_double("+2.5e-3", value));
   EXPECT_EQ(value, 2.5e-3);
-  EXPECT_TRUE(cli::read_double("1e400", value));
+  EXPECT_TRUE(read_double("1e400", value));
   EXPECT_EQ(value, INFINITY);  // beyond DBL_MAX: rounds to inf (callers refuse it)
-  EXPECT_TRUE(cli::read_double("-1e-400", value));
+  EXPECT_TRUE(read_double("-1e-400", value));
   EXPECT_EQ(value, 0.0);
   EXPECT_TRUE(std::signbit(value));
   for (const char* bad : {"", " 1", "1 ", "1e", "0x1p3", "++1", "+-1", "1,5", "--1"})
-    EXPECT_FALSE(cli::read_double(bad, value)) << bad;
-  EXPECT_FALSE(cli::read_double(std::string_view("0.5\0junk", 8), value));
+    EXPECT_FALSE(read_double(bad, value)) << bad;
+  EXPECT_FALSE(read_double(std::string_view("0.5\0junk", 8), value));
   long long whole = 0;
-  EXPECT_TRUE(cli::read_whole_number("42", 1, 100, whole));
+  EXPECT_TRUE(read_whole_number("42", 1, 100, whole));
   EXPECT_EQ(whole, 42);
   for (const char* bad : {"1e300", "1e3", "0", "101", "4.0", "010x", ""})
-    EXPECT_FALSE(cli::read_whole_number(bad, 1, 100, whole)) << bad;
-  EXPECT_EQ(cli::format_double(1.6), "1.6");
-  EXPECT_EQ(cli::format_double(0.1 + 0.2), "0.30000000000000004");
-  EXPECT_EQ(cli::format_double(-INFINITY), "-inf");
-  EXPECT_EQ(cli::quote_text(std::string_view("a\0b\n", 4)), "a\\x00b\\x0A");
+    EXPECT_FALSE(read_whole_number(bad, 1, 100, whole)) << bad;
+  EXPECT_EQ(format_double(1.6), "1.6");
+  EXPECT_EQ(format_double(0.1 + 0.2), "0.30000000000000004");
+  EXPECT_EQ(format_double(-INFINITY), "-inf");
+  EXPECT_EQ(quote_text(std::string_view("a\0b\n", 4)), "a\\x00b\\x0A");
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ TEST(HotPath, QueriesDoNotAllocate) {
   for (double s : inputs) {
     for (int k = -1; k <= order_count; ++k) sum += curve.log_value(k, s) + gaussian.value(k, s);
     curve.log_values(s, logs);
-    contact_at(curve, Surface{10, 1e-4, 1e-6, 1e9}, s, state);
+    contact_at(curve, SurfaceScales{10, 1e-4, 1e-6, 1e9}, s, state);
     sum += logs[3] + state.load + asperity_eval(c_curve, 3, s) + asperity_eval_log(c_curve, 1, s);
   }
   asperity_eval_batch(c_curve, 2, inputs.data(), out.data(), inputs.size());

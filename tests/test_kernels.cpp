@@ -17,7 +17,7 @@
 #include <random>
 #include <vector>
 
-#include "../runtime/core/kernel/kernels.hpp"
+#include "kernels.hpp"
 
 namespace {
 using namespace asperity;

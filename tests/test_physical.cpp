@@ -21,7 +21,7 @@ const Table& table() {
   return instance;
 }
 
-std::string error_of(const PhysicalSurface& surface) {
+std::string error_of(const RoughSurface& surface) {
   try {
     surface.validate();
   } catch (const Error& error) {
@@ -30,33 +30,33 @@ std::string error_of(const PhysicalSurface& surface) {
   return "";
 }
 
-TEST(Surface, ValidationNamesTheParameter) {
-  PhysicalSurface surface;
+TEST(RoughSurface, ValidationNamesTheParameter) {
+  RoughSurface surface;
   EXPECT_EQ(error_of(surface), "");
   surface.height_scale = -1e-6;
   EXPECT_NE(error_of(surface).find("height scale"), std::string::npos);
-  surface = PhysicalSurface{};
+  surface = RoughSurface{};
   surface.summit_radius = 0;
   EXPECT_NE(error_of(surface).find("summit radius"), std::string::npos);
-  surface = PhysicalSurface{};
+  surface = RoughSurface{};
   surface.summit_density = NAN;
   EXPECT_NE(error_of(surface).find("summit density"), std::string::npos);
-  surface = PhysicalSurface{};
+  surface = RoughSurface{};
   surface.nominal_area = -2;
   EXPECT_NE(error_of(surface).find("nominal area"), std::string::npos);
-  surface = PhysicalSurface{};
+  surface = RoughSurface{};
   surface.contact_modulus = INFINITY;
   EXPECT_NE(error_of(surface).find("contact modulus"), std::string::npos);
-  surface = PhysicalSurface{};
+  surface = RoughSurface{};
   surface.shape = 0.2;
   EXPECT_NE(error_of(surface).find("shape"), std::string::npos);
-  surface = PhysicalSurface{};
+  surface = RoughSurface{};
   surface.distribution = Distribution::gaussian;
   surface.side = Side::bounded;
   EXPECT_NE(error_of(surface).find("no bounded side"), std::string::npos);
 }
 
-TEST(Surface, ContactModulusAndMoments) {
+TEST(RoughSurface, ContactModulusAndMoments) {
   // steel on steel: E / (2 (1 - nu^2))
   EXPECT_NEAR(contact_modulus_from(210e9, 0.3, 210e9, 0.3), 210e9 / (2 * 0.91), 1e-3);
   EXPECT_NEAR(contact_modulus_from(1e9, 0.5, 1e15, 0.0), 1e9 / 0.75, 1e-3 * 1e9);  // rubber on a rigid flat
@@ -66,7 +66,7 @@ TEST(Surface, ContactModulusAndMoments) {
   const double m0 = 1e-12, m2 = 1e-4, m4 = 1e4, pi = 3.14159265358979323846;
   const double alpha = bandwidth_alpha(m0, m2, m4);
   EXPECT_DOUBLE_EQ(alpha, 1.0);
-  const PhysicalSurface surface = gaussian_surface_from_moments(m0, m2, m4, 1e-4, 1e11);
+  const RoughSurface surface = gaussian_surface_from_moments(m0, m2, m4, 1e-4, 1e11);
   EXPECT_NEAR(surface.summit_density, m4 / (6 * pi * std::sqrt(3.0) * m2), 1e-9 * surface.summit_density);
   EXPECT_NEAR(1 / surface.summit_radius, (8.0 / 3.0) * std::sqrt(m4 / pi), 1e-9 / surface.summit_radius);
   EXPECT_NEAR(surface.height_scale, std::sqrt(m0 * (1 - 0.8968 / alpha)), 1e-15);
@@ -78,8 +78,8 @@ TEST(Surface, ContactModulusAndMoments) {
   EXPECT_THROW(gaussian_surface_from_moments(0, 1, 1, 1, 1), Error);
 }
 
-PhysicalSurface weibull_surface(Side side, double shape) {
-  PhysicalSurface surface;
+RoughSurface weibull_surface(Side side, double shape) {
+  RoughSurface surface;
   surface.side = side;
   surface.shape = shape;
   surface.height_scale = 2e-6;
@@ -91,13 +91,13 @@ PhysicalSurface weibull_surface(Side side, double shape) {
 }
 
 TEST(ContactModel, ForwardIsTheScaledIntegrals) {
-  const PhysicalSurface surface = weibull_surface(Side::tail, 2.0);
+  const RoughSurface surface = weibull_surface(Side::tail, 2.0);
   const ContactModel model(table(), surface);
   const Curve curve = table().curve(Distribution::weibull, Side::tail, 2.0);
   for (double s : {-1.0, 0.0, 0.3, 1.2, 2.5}) {
     const PhysicalState state = model.at_separation(s * surface.height_scale);
     ContactState reference;
-    contact_at(curve, Surface{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus},
+    contact_at(curve, SurfaceScales{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus},
                s, reference);
     EXPECT_NEAR(state.count, reference.count, 1e-13 * reference.count);
     EXPECT_NEAR(state.real_area, reference.area, 1e-13 * reference.area);
@@ -113,10 +113,10 @@ TEST(ContactModel, ForwardIsTheScaledIntegrals) {
 
 TEST(ContactModel, InversesRoundTripAcrossTheRange) {
   struct Case {
-    PhysicalSurface surface;
+    RoughSurface surface;
     const char* label;
   };
-  PhysicalSurface gaussian = gaussian_surface_from_moments(1e-12, 1e-4, 3e4, 1e-4, 1e11);
+  RoughSurface gaussian = gaussian_surface_from_moments(1e-12, 1e-4, 3e4, 1e-4, 1e11);
   const Case cases[] = {{weibull_surface(Side::tail, 2.0), "tail a=2"},
                         {weibull_surface(Side::tail, 0.5), "tail a=0.5"},
                         {weibull_surface(Side::bounded, 1.73), "bounded a=1.73"},
@@ -191,26 +191,26 @@ TEST(ContactModel, NoContactAndInfiniteContactAreStates) {
   }
 }
 
-TEST(Surface, RmsAndScaleAndTheFactorsOfTheModel) {
+TEST(RoughSurface, RmsAndScaleAndTheFactorsOfTheModel) {
   // GW users measure the rms summit height: for a = 1.6 it is 0.574 of the Weibull scale
   EXPECT_NEAR(1e-6 / height_scale_from_rms(Distribution::weibull, 1.6, 1e-6), weibull_rms(1.6), 1e-15);
   EXPECT_NEAR(weibull_rms(1.6), 0.574, 5e-4);
   EXPECT_EQ(height_scale_from_rms(Distribution::gaussian, 0, 2e-6), 2e-6);
   EXPECT_THROW(height_scale_from_rms(Distribution::weibull, 1.6, -1), Error);
   // parameters whose products underflow or overflow are refused, naming the factor
-  PhysicalSurface tiny;
+  RoughSurface tiny;
   tiny.height_scale = 1e-300;
   EXPECT_NE(error_of(tiny).find("factor"), std::string::npos) << error_of(tiny);
-  PhysicalSurface stiff;
+  RoughSurface stiff;
   stiff.contact_modulus = 1e308;
   EXPECT_NE(error_of(stiff).find("factor"), std::string::npos) << error_of(stiff);
 }
 
 TEST(ContactModel, AgreesWithContactAtThroughOneComputation) {
-  const PhysicalSurface surface = weibull_surface(Side::bounded, 1.73);
+  const RoughSurface surface = weibull_surface(Side::bounded, 1.73);
   const ContactModel model(table(), surface);
   const Curve curve = table().curve(Distribution::weibull, Side::bounded, 1.73);
-  const Surface plain{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus};
+  const SurfaceScales plain{surface.summit_count(), surface.summit_radius, surface.height_scale, surface.contact_modulus};
   // on the grid, and off it (|s| < 2^-70, past the table's end): both paths of each
   for (double s : {-1e-30, -1e-12, -1e-5, -0.01, -0.3, -1.0, -4.0, -1e3}) {
     ContactState state;

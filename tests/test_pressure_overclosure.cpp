@@ -1,4 +1,4 @@
-// FE export (apps/asperity/pressure_overclosure.hpp): the card is read back as CalculiX and
+// FE export (asperity/pressure_overclosure.hpp): the card is read back as CalculiX and
 // Abaqus read it, and linear interpolation between its points is checked against the library's
 // law (ContactModel at the separation the overclosure names) at points the writer never used.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
-#include "pressure_overclosure.hpp"
+#include "asperity/pressure_overclosure.hpp"
 
 namespace {
 using namespace asperity;
@@ -20,8 +20,8 @@ const Table& table() {
   return instance;
 }
 
-PhysicalSurface surface(Distribution distribution, Side side, double shape, double sigma) {
-  PhysicalSurface s;
+RoughSurface surface(Distribution distribution, Side side, double shape, double sigma) {
+  RoughSurface s;
   s.distribution = distribution;
   s.side = side;
   s.shape = shape;
@@ -93,7 +93,7 @@ double check_against_law(const ContactModel& model, const Card& card, double len
       const double fraction = k / 37.0;
       const double h = card.overclosure[i] + fraction * (card.overclosure[i + 1] - card.overclosure[i]);
       const double p = card.pressure[i] + fraction * (card.pressure[i + 1] - card.pressure[i]);
-      const double law = cli::law_pressure(model, h / length) / pressure_unit;
+      const double law = law_pressure(model, h / length) / pressure_unit;
       worst = std::max(worst, std::fabs(p - law) / law);
     }
   }
@@ -101,7 +101,7 @@ double check_against_law(const ContactModel& model, const Card& card, double len
   // Below the lowest pressure the card follows the law's tangent to zero: the law lies above it.
   const double h_low = card.overclosure[1], h_zero = card.overclosure[0];
   EXPECT_LT(h_zero, h_low);
-  const double law_middle = cli::law_pressure(model, 0.5 * (h_zero + h_low) / length) / pressure_unit;
+  const double law_middle = law_pressure(model, 0.5 * (h_zero + h_low) / length) / pressure_unit;
   EXPECT_GE(law_middle, 0.5 * card.pressure[1]);
   return worst;
 }
@@ -121,25 +121,25 @@ TEST(PressureOverclosure, CardsReadBackAgreeWithTheLibrary) {
   };
   for (const Case& c : cases) {
     const ContactModel model(table(), surface(c.distribution, c.side, c.shape, c.sigma));
-    const cli::PressureOverclosureTable law =
-        cli::tabulate_pressure_overclosure(model, c.pressure_min, c.pressure_max, c.tolerance);
+    const PressureOverclosureTable law =
+        tabulate_pressure_overclosure(model, c.pressure_min, c.pressure_max, c.tolerance);
     EXPECT_LE(law.max_error, c.tolerance);
     EXPECT_GT(law.checked_points, 0);
-    for (cli::CardFormat format : {cli::CardFormat::calculix, cli::CardFormat::abaqus})
-      for (cli::CardUnits units : {cli::CardUnits::si, cli::CardUnits::mm}) {
+    for (CardFormat format : {CardFormat::calculix, CardFormat::abaqus})
+      for (CardUnits units : {CardUnits::si, CardUnits::mm}) {
         std::ostringstream out;
-        cli::write_pressure_overclosure(out, law, format, units, "test card\nsecond line");
+        write_pressure_overclosure(out, law, format, units, "test card\nsecond line");
         SCOPED_TRACE(out.str().substr(0, 1200));
         const Card card = parse_card(out.str());
         EXPECT_EQ(card.pressure.size(), law.points.size());
-        const double length = units == cli::CardUnits::mm ? 1e3 : 1, pressure_unit = units == cli::CardUnits::mm ? 1e6 : 1;
+        const double length = units == CardUnits::mm ? 1e3 : 1, pressure_unit = units == CardUnits::mm ? 1e6 : 1;
         check_against_law(model, card, length, pressure_unit, c.pressure_min, c.pressure_max, c.tolerance);
-        EXPECT_NE(out.str().find(units == cli::CardUnits::mm ? "overclosure in mm, pressure in MPa"
+        EXPECT_NE(out.str().find(units == CardUnits::mm ? "overclosure in mm, pressure in MPa"
                                                              : "overclosure in m, pressure in Pa"),
                   std::string::npos);
       }
     std::ostringstream csv;
-    cli::write_pressure_overclosure(csv, law, cli::CardFormat::csv, cli::CardUnits::si, "");
+    write_pressure_overclosure(csv, law, CardFormat::csv, CardUnits::si, "");
     check_against_law(model, parse_csv(csv.str(), "pressure_Pa,overclosure_m"), 1, 1, c.pressure_min, c.pressure_max,
                       c.tolerance);
   }
@@ -149,33 +149,33 @@ TEST(PressureOverclosure, OverclosureIsMeasuredFromTheMeanSummitHeight) {
   const ContactModel model(table(), surface(Distribution::weibull, Side::tail, 2, 1e-6));
   for (double pressure : {1e3, 1e5, 1e7}) {
     const PhysicalState state = model.at_pressure(pressure);
-    EXPECT_NEAR(cli::law_overclosure(model, pressure), -state.mean_separation, 1e-12 * 1e-6);
-    EXPECT_NEAR(cli::law_pressure(model, -state.mean_separation), pressure, 1e-9 * pressure);
+    EXPECT_NEAR(law_overclosure(model, pressure), -state.mean_separation, 1e-12 * 1e-6);
+    EXPECT_NEAR(law_pressure(model, -state.mean_separation), pressure, 1e-9 * pressure);
   }
 }
 
 TEST(PressureOverclosure, RefusesWhatItCannotDo) {
   const ContactModel model(table(), surface(Distribution::weibull, Side::tail, 2, 1e-6));
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 0, 1e6, 1e-3), Error);
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 1e6, 1e3, 1e-3), Error);
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 1e3, INFINITY, 1e-3), Error);
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 1e3, 1e6, 1e-9), Error);
-  EXPECT_THROW(cli::tabulate_pressure_overclosure(model, 1e3, 1e6, 0.5), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 0, 1e6, 1e-3), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e6, 1e3, 1e-3), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, INFINITY, 1e-3), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e6, 1e-9), Error);
+  EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e6, 0.5), Error);
   // Points 1e-10 m apart or closer are moved by CalculiX: refused in m, written in mm.
   const ContactModel fine(table(), surface(Distribution::weibull, Side::tail, 2, 1e-9));
-  const cli::PressureOverclosureTable law = cli::tabulate_pressure_overclosure(fine, 1e3, 1e8, 1e-6);
+  const PressureOverclosureTable law = tabulate_pressure_overclosure(fine, 1e3, 1e8, 1e-6);
   std::ostringstream out;
-  EXPECT_THROW(cli::write_pressure_overclosure(out, law, cli::CardFormat::calculix, cli::CardUnits::si, ""), Error);
-  EXPECT_NO_THROW(cli::write_pressure_overclosure(out, law, cli::CardFormat::calculix, cli::CardUnits::mm, ""));
-  EXPECT_NO_THROW(cli::write_pressure_overclosure(out, law, cli::CardFormat::abaqus, cli::CardUnits::si, ""));
+  EXPECT_THROW(write_pressure_overclosure(out, law, CardFormat::calculix, CardUnits::si, ""), Error);
+  EXPECT_NO_THROW(write_pressure_overclosure(out, law, CardFormat::calculix, CardUnits::mm, ""));
+  EXPECT_NO_THROW(write_pressure_overclosure(out, law, CardFormat::abaqus, CardUnits::si, ""));
 }
 
 // A tabulated curve (asperity exact-contact): its points as given, rounded to the card's digits,
 // in the law's card with its own notes; points out of order refused.
 TEST(PressureOverclosure, TabulatedCurve) {
-  const std::vector<cli::PressureOverclosurePoint> points{{0, -2e-7}, {1e6, -1.5e-7}, {1e7, -1.0000000000001234e-7}};
+  const std::vector<PressureOverclosurePoint> points{{0, -2e-7}, {1e6, -1.5e-7}, {1e7, -1.0000000000001234e-7}};
   std::ostringstream out;
-  cli::write_tabulated_pressure_overclosure(out, points, cli::CardFormat::calculix, cli::CardUnits::mm, "a curve",
+  write_tabulated_pressure_overclosure(out, points, CardFormat::calculix, CardUnits::mm, "a curve",
                                             "points: 2 solutions\nfirst point: first contact");
   EXPECT_EQ(out.str(),
             "** a curve\n"
@@ -195,11 +195,11 @@ TEST(PressureOverclosure, TabulatedCurve) {
             "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR\n"
             "0,-0.0002\n1,-0.00015\n10,-0.0001\n");
   std::ostringstream csv;
-  cli::write_tabulated_pressure_overclosure(csv, points, cli::CardFormat::csv, cli::CardUnits::si, "", "");
+  write_tabulated_pressure_overclosure(csv, points, CardFormat::csv, CardUnits::si, "", "");
   EXPECT_EQ(csv.str(), "pressure_Pa,overclosure_m\n0,-2e-07\n1000000,-1.5e-07\n10000000,-1e-07\n");
   std::ostringstream refused;
-  const auto write = [&](const std::vector<cli::PressureOverclosurePoint>& p) {
-    cli::write_tabulated_pressure_overclosure(refused, p, cli::CardFormat::abaqus, cli::CardUnits::si, "", "");
+  const auto write = [&](const std::vector<PressureOverclosurePoint>& p) {
+    write_tabulated_pressure_overclosure(refused, p, CardFormat::abaqus, CardUnits::si, "", "");
   };
   EXPECT_THROW(write({{0, -2e-7}}), Error);                            // one point
   EXPECT_THROW(write({{0, -1e-7}, {1e6, -2e-7}}), Error);              // overclosure falling

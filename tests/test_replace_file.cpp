@@ -29,7 +29,7 @@
 
 namespace {
 using asperity::Error;
-using asperity::tablegen::replace_file;
+using asperity::replace_file;
 
 // A fresh directory of its own for each test.
 std::string test_directory(const std::string& name) {
@@ -215,7 +215,7 @@ TEST(ReplaceFile, KillNineLeavesTheOldFileOrTheNewOne) {
 
 TEST(ReplaceFile, OnlyTheTemporariesOfDeadWritersAreRemoved) {
   const std::string directory = test_directory("stale");
-  const std::string host = host_tag(), prefix = directory + "/" + asperity::tablegen::temporary_prefix;
+  const std::string host = host_tag(), prefix = directory + "/" + asperity::temporary_prefix;
   const std::string dead = std::to_string(dead_pid());
   const std::string stale = prefix + host + "-" + dead + "-1.tmp";                  // removed
   const std::string recent = prefix + host + "-" + dead + "-2.tmp";                 // too recent: kept

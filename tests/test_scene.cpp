@@ -26,8 +26,8 @@
 #include "asperity/table.hpp"
 #include "accuracy_harness.hpp"
 #include "reference.hpp"
-#include "scene_table.hpp"
-#include "table_writer.hpp"
+#include "asperity/generator/scene_table.hpp"
+#include "asperity/table_writer.hpp"
 
 namespace {
 using namespace asperity;
@@ -126,9 +126,9 @@ TEST(SceneTable, MeetsItsToleranceAgainstIndependentReferencesFrom1e4To1e12) {
   std::map<std::tuple<int, int, double>, double> references;
   for (double tolerance : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
     const Scene scene = sweep_scene(tolerance);
-    const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+    const generator::SceneResult result = generator::generate_scene_table(scene, 2);
     const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/scene.h5";
-    tablegen::write_table_file(result.table, path);
+    write_table_file(result.table, path);
     const Table table = Table::open(path);
     EXPECT_TRUE(table.data().exact_shapes);
     const std::vector<SceneCurveView> views = serve_scene(table, scene);
@@ -217,10 +217,10 @@ void check_first_contact_scenes(const std::vector<double>& tolerances, const std
   for (double tolerance : tolerances) {
     const Scene scene = parse_scene(first_contact_scene(tolerance, shapes), "first-contact.toml");
     const auto start = std::chrono::steady_clock::now();
-    const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 0);
+    const generator::SceneResult result = generator::generate_scene_table(scene, 0);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/first-contact-scene.h5";
-    tablegen::write_table_file(result.table, path);
+    write_table_file(result.table, path);
     const Table table = Table::open(path);
     const std::vector<SceneCurveView> views = serve_scene(table, scene);
     ASSERT_EQ(views.size(), result.curves.size());
@@ -260,9 +260,9 @@ TEST(SceneTableSlow, ExactShapesMeetTheirToleranceNextToFirstContactFrom1e6To1e1
 
 TEST(SceneTable, ServesOnlyItsOwnShapesAndOpensFromC) {
   const Scene scene = sweep_scene(1e-8);
-  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+  const generator::SceneResult result = generator::generate_scene_table(scene, 2);
   const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/scene-exact.h5";
-  tablegen::write_table_file(result.table, path);
+  write_table_file(result.table, path);
   const Table table = Table::open(path);
   EXPECT_NO_THROW(table.curve(Distribution::weibull, Side::bounded, 1.73));
   // a shape a hair off its own (issue #28: 1e-12 off was served as the node) is not its own
@@ -301,14 +301,14 @@ separation = [0.5, 1.1]
 )",
                             "limits");
   try {
-    tablegen::generate_scene_table(scene, 2);
+    generator::generate_scene_table(scene, 2);
     ADD_FAILURE() << "a 1 KiB budget was not enforced";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("over the budget"), std::string::npos) << error.what();
   }
   scene.memory_budget_bytes = 0;
-  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
-  for (const tablegen::SceneCurveReport& report : result.curves) EXPECT_LE(report.achieved_error, 1e-8);
+  const generator::SceneResult result = generator::generate_scene_table(scene, 2);
+  for (const generator::SceneCurveReport& report : result.curves) EXPECT_LE(report.achieved_error, 1e-8);
   const Curve curve(Distribution::weibull, Side::tail, 50, result.table.sets[0].layout,
                     &result.table.sets[0].knots[result.table.sets[0].curve_stride()], 1u << 3);
   const double reference = static_cast<double>(test::reference_log(Distribution::weibull, Side::tail, 50, 1.5, 1.0));
@@ -354,7 +354,7 @@ TEST(SceneTable, InverseAnswersAcrossTheServedRange) {
   spec.range_max = 3e7 / load_unit * 2;
   spec.max_rel_error = 1e-8;
   scene.curves.push_back(spec);
-  const Table table(tablegen::generate_scene_table(scene, 2).table);
+  const Table table(generator::generate_scene_table(scene, 2).table);
   const Curve curve = table.curve(Distribution::weibull, Side::bounded, spec.shape);
   const InverseCurve inverse(curve, orders::load);
   const double lo = std::log(curve.value(orders::load, curve.served_max_separation()));
@@ -369,9 +369,9 @@ TEST(SceneTable, InverseAnswersAcrossTheServedRange) {
 
 TEST(SceneTable, ServesOnlyWhatItsSceneModelled) {
   const Scene scene = audit_scene(1e-6);
-  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+  const generator::SceneResult result = generator::generate_scene_table(scene, 2);
   const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/audit-scene.h5";
-  tablegen::write_table_file(result.table, path);
+  write_table_file(result.table, path);
   const Table table = Table::open(path);
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   struct Expected { Side side; double shape, lo, hi; std::vector<double> outside; };
@@ -402,9 +402,9 @@ TEST(SceneTable, ServesOnlyWhatItsSceneModelled) {
       curve.contact_orders(s, logs, values);
       for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isnan(values[k])) << name << " s " << s;
       ContactState state;
-      EXPECT_FALSE(contact_at(curve, Surface{}, s, state)) << name << " s " << s;
+      EXPECT_FALSE(contact_at(curve, SurfaceScales{}, s, state)) << name << " s " << s;
       EXPECT_TRUE(std::isnan(state.load));
-      EXPECT_FALSE(contact_at_scales(curve, contact_scales(Surface{}), s, state)) << name << " s " << s;
+      EXPECT_FALSE(contact_at_scales(curve, contact_scales(SurfaceScales{}), s, state)) << name << " s " << s;
     }
     // inside, to the ends themselves: finite everywhere
     for (double s : {e.lo, e.hi, 0.5 * (e.lo + e.hi), std::nextafter(e.lo, 0.0), std::nextafter(e.hi, e.lo)})
@@ -444,7 +444,7 @@ TEST(SceneTable, ServesOnlyWhatItsSceneModelled) {
   }
   EXPECT_TRUE(std::isnan(load_inverse.separation_at_log(tail.log_value(orders::load, -1) + 0.1)));
   EXPECT_TRUE(std::isnan(load_inverse.separation_at_log(tail.log_value(orders::load, 1.46) - 0.1)));
-  PhysicalSurface surface;
+  RoughSurface surface;
   surface.shape = 17.3;
   surface.height_scale = 1e-6;
   surface.summit_radius = 1e-4;
@@ -538,7 +538,7 @@ std::vector<double> dense_points(const CurveSet& set, std::size_t shape_index, d
 // above the stored bound, which is within the tolerance asked.
 void check_stored_bounds(double tolerance) {
   const Scene scene = audit_scene(tolerance);
-  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+  const generator::SceneResult result = generator::generate_scene_table(scene, 2);
   const Table table(result.table);
   struct Point { std::size_t set, shape; int twice_order; double separation, reference; bool known; };
   std::vector<Point> points;
@@ -632,7 +632,7 @@ orders = [2.5]
 separation = [20, 38]
 )",
                                   "deep.toml");
-  const tablegen::SceneResult result = tablegen::generate_scene_table(scene, 2);
+  const generator::SceneResult result = generator::generate_scene_table(scene, 2);
   const Table table(result.table);
   const CurveSet& set = *table.find(Distribution::weibull, Side::tail);
   const Curve curve = table.curve(Distribution::weibull, Side::tail, 3.0);

@@ -19,8 +19,8 @@
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
-#include "generate.hpp"
-#include "table_writer.hpp"
+#include "asperity/generator/generate.hpp"
+#include "asperity/table_writer.hpp"
 
 namespace {
 using namespace asperity;
@@ -38,12 +38,12 @@ void write_bytes(const std::string& path, const std::string& bytes) {
 // A small table: two shapes of each Weibull side and the Gaussian, generated in the test.
 const TableData& small_table() {
   static const TableData data = [] {
-    tablegen::GenerateOptions options;
+    generator::GenerateOptions options;
     options.shape_min = 1.5;
     options.shape_max = 1.6;
     options.shape_log_step = 1.0;
     options.check_stride = 8;
-    return tablegen::generate_table(options);
+    return generator::generate_table(options);
   }();
   return data;
 }
@@ -108,7 +108,7 @@ void reseal(const std::string& path) {
 std::string crafted(const std::string& name, const std::function<void(hid_t file)>& edit,
                     const TableData& data = tiny_table()) {
   const std::string path = temp_path(name);
-  tablegen::write_table_file(data, path);
+  write_table_file(data, path);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   EXPECT_GE(file, 0);
   edit(file);
@@ -169,7 +169,7 @@ std::vector<hsize_t> knot_dims(const CurveSet& set) {
 
 TEST(TableIo, RoundTripKeepsEveryNumber) {
   const std::string path = temp_path("roundtrip.h5");
-  tablegen::write_table_file(small_table(), path);
+  write_table_file(small_table(), path);
   const TableData read = read_table_file(path);
   ASSERT_EQ(read.sets.size(), small_table().sets.size());
   for (std::size_t i = 0; i < read.sets.size(); ++i) {
@@ -185,23 +185,23 @@ TEST(TableIo, RoundTripKeepsEveryNumber) {
 }
 
 TEST(TableIo, SameDataSameBytes) {
-  tablegen::write_table_file(small_table(), temp_path("first.h5"));
-  tablegen::write_table_file(small_table(), temp_path("second.h5"));
+  write_table_file(small_table(), temp_path("first.h5"));
+  write_table_file(small_table(), temp_path("second.h5"));
   EXPECT_EQ(read_bytes(temp_path("first.h5")), read_bytes(temp_path("second.h5")));
   // and generation itself is deterministic, whatever the thread count
-  tablegen::GenerateOptions options;
+  generator::GenerateOptions options;
   options.shape_min = options.shape_max = 2.5;
   options.check_stride = 8;
   options.threads = 1;
-  const TableData one = tablegen::generate_table(options);
+  const TableData one = generator::generate_table(options);
   options.threads = 3;
-  const TableData three = tablegen::generate_table(options);
+  const TableData three = generator::generate_table(options);
   for (std::size_t i = 0; i < one.sets.size(); ++i) EXPECT_EQ(one.sets[i].knots, three.sets[i].knots);
 }
 
 TEST(TableIo, TheHeaderIsTheFormatOfTableSchema) {
   const std::string path = temp_path("header.h5");
-  tablegen::write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path);
   const std::string bytes = read_bytes(path);
   ASSERT_GT(bytes.size(), schema::header_bytes);
   EXPECT_EQ(std::memcmp(bytes.data(), schema::header_magic, sizeof schema::header_magic), 0);
@@ -220,23 +220,23 @@ TEST(TableIo, TheHeaderIsTheFormatOfTableSchema) {
 
 TEST(TableIo, FailedWriteLeavesTheTargetAlone) {
   const std::string path = temp_path("keep.h5");
-  tablegen::write_table_file(small_table(), path);
+  write_table_file(small_table(), path);
   const std::string before = read_bytes(path);
   TableData broken = small_table();
   broken.sets[0].knots.pop_back();  // inconsistent: the writer refuses it
-  EXPECT_THROW(tablegen::write_table_file(broken, path), Error);
+  EXPECT_THROW(write_table_file(broken, path), Error);
   EXPECT_EQ(read_bytes(path), before);
-  EXPECT_THROW(tablegen::write_table_file(small_table(), "/nonexistent-dir/table.h5"), Error);
+  EXPECT_THROW(write_table_file(small_table(), "/nonexistent-dir/table.h5"), Error);
 }
 
 TEST(TableIo, TheWriterRefusesWhatTheReaderWould) {
   TableData data = tiny_table();
   data.sets[0].knots[3] = 1e7;  // beyond schema::max_knot_value
-  EXPECT_THROW(tablegen::table_file_bytes(data), Error);
+  EXPECT_THROW(table_file_bytes(data), Error);
   data = tiny_table();
   data.generator_options.assign(70000, 'x');  // a scene name over 64 KiB
   try {
-    tablegen::table_file_bytes(data);
+    table_file_bytes(data);
     ADD_FAILURE() << "no error";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("'generator_options' would hold 70000 bytes"), std::string::npos)
@@ -270,7 +270,7 @@ TEST(TableIo, DirectoriesFifosAndDevicesAreRefusedWithoutWaiting) {
 
 TEST(TableIo, TruncatedFile) {
   const std::string path = temp_path("whole.h5"), cut = temp_path("truncated.h5");
-  tablegen::write_table_file(small_table(), path);
+  write_table_file(small_table(), path);
   const std::string bytes = read_bytes(path);
   for (double fraction : {0.9, 0.5, 0.01, 0.0001}) {
     write_bytes(cut, bytes.substr(0, static_cast<std::size_t>(bytes.size() * fraction)));
@@ -283,7 +283,7 @@ TEST(TableIo, TruncatedFile) {
 // One changed byte anywhere is found before HDF5 reads anything (HDF5 1.10.8 crashed on such files).
 TEST(TableIo, EveryChangedByteIsFound) {
   const std::string path = temp_path("pristine.h5"), changed = temp_path("changed.h5");
-  tablegen::write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path);
   const std::string bytes = read_bytes(path);
   int checked = 0;
   for (std::size_t position = 0; position < bytes.size(); position += position < 600 ? 1 : 97) {
@@ -303,7 +303,7 @@ TEST(TableIo, EveryChangedByteIsFound) {
 TEST(TableIo, OldTablesWithoutTheHeaderAskToBeRegenerated) {
   // A version-1 table: the same HDF5 file without the integrity header in its user block.
   const std::string path = temp_path("version1.h5");
-  tablegen::write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path);
   std::string bytes = read_bytes(path);
   write_bytes(path, bytes.substr(schema::header_bytes));  // no user block, as version 1 wrote them
   EXPECT_REFUSED(path, TableFileStatus::other_version, "format version 1");
@@ -312,7 +312,7 @@ TEST(TableIo, OldTablesWithoutTheHeaderAskToBeRegenerated) {
   write_bytes(path, bytes);
   EXPECT_REFUSED(path, TableFileStatus::damaged, "integrity header is missing or damaged");
   // a future format version
-  tablegen::write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path);
   bytes = read_bytes(path);
   bytes[schema::header_version_offset] = static_cast<char>(schema::version + 1);
   write_bytes(path, bytes);

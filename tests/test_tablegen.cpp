@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "asperity/table.hpp"
-#include "chain_ode.hpp"
-#include "generate.hpp"
+#include "asperity/generator/chain_ode.hpp"
+#include "asperity/generator/generate.hpp"
 
 namespace {
 using namespace asperity;
@@ -22,8 +22,8 @@ TEST(Tablegen, RegeneratedCurvesMatchTheShippedTable) {
       if (set.shapes[i] == set.shape_min || set.shapes[i] == set.shape_max) picks.push_back(i);
     picks.push_back(set.shapes.size() / 2);
     for (std::size_t index : picks) {
-      const tablegen::CurveId id{set.distribution, set.side, set.shapes[index]};
-      const std::vector<double> knots = tablegen::integrate_curve(id, set.layout, tablegen::ChainOptions{});
+      const generator::CurveId id{set.distribution, set.side, set.shapes[index]};
+      const std::vector<double> knots = generator::integrate_curve(id, set.layout, generator::ChainOptions{});
       const double* stored = &set.knots[index * set.curve_stride()];
       double worst = 0;
       for (std::size_t k = 0; k < knots.size(); ++k)
@@ -37,8 +37,8 @@ TEST(Tablegen, RegeneratedCurvesMatchTheShippedTable) {
 }
 
 TEST(Tablegen, ShapeGridHasTheAnchorsAndACentredMargin) {
-  tablegen::GenerateOptions options;
-  const std::vector<double> shapes = tablegen::shape_grid(options);
+  generator::GenerateOptions options;
+  const std::vector<double> shapes = generator::shape_grid(options);
   for (double anchor : {0.5, 1.0, 2.0, 3.0, 5.0, 20.0})
     EXPECT_NE(std::find(shapes.begin(), shapes.end(), anchor), shapes.end()) << anchor;
   EXPECT_TRUE(std::is_sorted(shapes.begin(), shapes.end()));
@@ -47,13 +47,13 @@ TEST(Tablegen, ShapeGridHasTheAnchorsAndACentredMargin) {
   for (std::size_t i = 1; i < shapes.size(); ++i)
     EXPECT_LE(shape_grid_variable(shapes[i]) - shape_grid_variable(shapes[i - 1]), options.shape_log_step + 1e-12);
   // the bounded side's grid: the same anchors and margin, 2/3 of the spacing (issue #28)
-  const std::vector<double> bounded = tablegen::shape_grid(options, Side::bounded);
+  const std::vector<double> bounded = generator::shape_grid(options, Side::bounded);
   for (double anchor : {0.5, 1.0, 2.0, 3.0, 5.0, 20.0})
     EXPECT_NE(std::find(bounded.begin(), bounded.end(), anchor), bounded.end()) << anchor;
   EXPECT_EQ(std::count_if(bounded.begin(), bounded.end(), [](double a) { return a > 20; }), shape_stencil / 2);
   for (std::size_t i = 1; i < bounded.size(); ++i)
     EXPECT_LE(shape_grid_variable(bounded[i]) - shape_grid_variable(bounded[i - 1]),
-              options.shape_log_step * tablegen::GenerateOptions::bounded_step_factor + 1e-12);
+              options.shape_log_step * generator::GenerateOptions::bounded_step_factor + 1e-12);
   EXPECT_GT(bounded.size(), shapes.size() * 5 / 4);
 }
 
@@ -64,14 +64,14 @@ namespace {
 // checked by the generator; its error, measured here against 50-digit references elsewhere
 // (docs/speed-vs-error.md), grows as the density falls.
 TEST(Tablegen, KnotDensityScalesTheLayout) {
-  tablegen::GenerateOptions options;
+  generator::GenerateOptions options;
   options.shape_min = 1.9;
   options.shape_max = 2.1;
   options.bounded = false;
   options.gaussian = false;
   options.knot_density = 0.25;
   options.check_stride = 8;
-  const TableData table = tablegen::generate_table(options);
+  const TableData table = generator::generate_table(options);
   ASSERT_EQ(table.sets.size(), 1u);
   const std::vector<SegmentSpec> base = default_layout(Distribution::weibull, Side::tail);
   const std::vector<SegmentSpec>& layout = table.sets[0].layout;

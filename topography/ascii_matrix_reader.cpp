@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "asperity/number_text.hpp"
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/units.hpp"
 #include "input_file.hpp"
@@ -20,15 +21,18 @@ constexpr std::size_t max_line_bytes = std::size_t{64} << 20;
 
 // "10.00 µm" -> metres, and the relative precision of its printed digits
 double header_length(const std::string& path, const std::string& key, const std::string& value, double& precision) {
+  double metres = 0;
   try {
-    const double metres = parse_length(value);
-    const std::size_t end = value.find_first_not_of("+-0123456789.eE");
-    const double number = std::fabs(std::stod(value.substr(0, end)));
-    precision = number > 0 ? 0.5 * detail::last_digit_value(value.substr(0, end)) / number : 1;
-    return metres;
+    metres = parse_length(value);
   } catch (const std::exception& error) {
     fail(path, "header '" + key + ": " + printable(value) + "': " + printable(error.what(), 200));
   }
+  double number = 0;
+  const std::size_t end = read_double_prefix(value, number);  // parse_length read it: a number leads
+  if (end == 0) fail(path, "header '" + key + ": " + printable(value) + "': no number before the unit");
+  number = std::fabs(number);
+  precision = number > 0 ? 0.5 * detail::last_digit_value(value.substr(0, end)) / number : 1;
+  return metres;
 }
 }  // namespace
 

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "asperity/error.hpp"
+#include "asperity/generator/scene_table.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
 #include "asperity/topography/persson_contact.hpp"
 #include "asperity/topography/summit_contact.hpp"
-#include "scene_table.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -346,7 +346,7 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
     ModelContact model;
     model.label = to_string(height_model);
     model.mean_summit_height = fit.mean();
-    PhysicalSurface& surface = model.surface;
+    RoughSurface& surface = model.surface;
     surface.distribution = height_model == HeightModel::gaussian ? Distribution::gaussian : Distribution::weibull;
     surface.side = height_model == HeightModel::weibull_bounded ? Side::bounded : Side::tail;
     surface.shape = height_model == HeightModel::gaussian ? 2 : fit.shape;
@@ -382,7 +382,7 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
         curve.range_max = comparison.pressure_max / load_unit * 2;
         curve.max_rel_error = options.scene_tolerance;
         scene.curves.push_back(curve);
-        tablegen::SceneResult generated = tablegen::generate_scene_table(scene, options.threads);
+        generator::SceneResult generated = generator::generate_scene_table(scene, options.threads);
         const double achieved = generated.curves.front().achieved_error;
         const Table scene_table(std::move(generated.table));
         const ContactModel contact(scene_table, surface);

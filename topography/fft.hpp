@@ -1,7 +1,7 @@
 // Fast Fourier transforms of real data in double precision (internal): the one place that
 // names the FFT library. pocketfft (BSD-3-Clause, header-only; numpy's and scipy's FFT), from
 // Debian's python3-pythran, which python3-scipy already brings; chosen over kissfft (BSD,
-// 5-7x slower here) and FFTW (GPL, no faster): scripts/fft-candidates.sh measures them.
+// slower) and FFTW (GPL, no faster): scripts/fft-candidates.sh measures them (docs/surfaces.md).
 // Any length: pocketfft factors it (Bluestein for large primes), O(n log n) for every n.
 #pragma once
 #include <complex>

@@ -4,24 +4,62 @@
 #include <limits>
 
 #include "asperity/topography/height_map_io.hpp"
+#include "asperity/topography/surface_formats.hpp"
 #include "input_file.hpp"
 #include "reader_support.hpp"
 
 namespace asperity::topography {
 
+const std::vector<SurfaceFormat>& surface_formats() {
+  static const std::vector<SurfaceFormat> formats = {
+      {HeightMapFormat::x3p, "x3p", "x3p", {}, "PK\x03\x04", {"x3p"},
+       "ISO 25178-72 XML 3D surface profile (a zip archive)", &read_x3p},
+      {HeightMapFormat::gsf, "gsf", "gsf", {}, "Gwyddion Simple Field", {"gsf"}, "Gwyddion Simple Field",
+       &read_gsf},
+      {HeightMapFormat::ascii_matrix, "ascii-matrix", "ascii_matrix", {"matrix"}, nullptr, {"txt", "asc", "dat"},
+       "a matrix of heights as text (Gwyddion's ASCII export, AFM text dumps)", &read_ascii_matrix},
+      {HeightMapFormat::xyz, "xyz", "xyz", {"csv"}, nullptr, {"xyz", "csv"}, "x y z points on a grid, as text",
+       &read_xyz},
+  };
+  return formats;
+}
+
+const SurfaceFormat* surface_format(HeightMapFormat format) {
+  for (const SurfaceFormat& entry : surface_formats())
+    if (entry.format == format) return &entry;
+  return nullptr;
+}
+
+std::string surface_format_names() {
+  std::string names = "auto";
+  for (const SurfaceFormat& entry : surface_formats()) {
+    std::string shortest = entry.name;
+    for (const char* alias : entry.aliases)
+      if (std::strlen(alias) < shortest.size()) shortest = alias;
+    names += ", " + shortest;
+  }
+  return names;
+}
+
 bool parse_height_map_format(const std::string& name, HeightMapFormat& out) {
-  if (name == "auto") out = HeightMapFormat::automatic;
-  else if (name == "x3p") out = HeightMapFormat::x3p;
-  else if (name == "gsf") out = HeightMapFormat::gsf;
-  else if (name == "ascii-matrix" || name == "matrix") out = HeightMapFormat::ascii_matrix;
-  else if (name == "xyz" || name == "csv") out = HeightMapFormat::xyz;
-  else return false;
-  return true;
+  if (name == "auto") {
+    out = HeightMapFormat::automatic;
+    return true;
+  }
+  for (const SurfaceFormat& entry : surface_formats()) {
+    bool match = name == entry.name;
+    for (const char* alias : entry.aliases) match = match || name == alias;
+    if (match) {
+      out = entry.format;
+      return true;
+    }
+  }
+  return false;
 }
 
 HeightMap read_height_map(const std::string& path, const ReadOptions& options) {
-  HeightMapFormat format = options.format;
-  if (format == HeightMapFormat::automatic) {
+  const SurfaceFormat* chosen = surface_format(options.format);
+  if (!chosen) {  // automatic: by the first bytes, then by the extension
     std::vector<unsigned char> head;
     {
       detail::InputFile file(path, std::numeric_limits<std::uint64_t>::max());
@@ -36,23 +74,25 @@ HeightMap read_height_map(const std::string& path, const ReadOptions& options) {
       extension = path.substr(dot + 1);
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (starts("PK\x03\x04")) format = HeightMapFormat::x3p;
-    else if (starts("Gwyddion Simple Field")) format = HeightMapFormat::gsf;
-    else if (extension == "xyz" || extension == "csv") format = HeightMapFormat::xyz;
-    else if (extension == "txt" || extension == "asc" || extension == "dat") format = HeightMapFormat::ascii_matrix;
-    else
+    for (const SurfaceFormat& entry : surface_formats())
+      if (!chosen && entry.magic && starts(entry.magic)) chosen = &entry;
+    for (const SurfaceFormat& entry : surface_formats())
+      if (!chosen && !entry.magic)
+        for (const char* known : entry.extensions)
+          if (extension == known) chosen = &entry;
+    if (!chosen) {
+      std::string text_extensions;
+      for (const SurfaceFormat& entry : surface_formats())
+        if (!entry.magic) {
+          std::string list;
+          for (const char* known : entry.extensions) list += (list.empty() ? "." : "/.") + std::string(known);
+          text_extensions += (text_extensions.empty() ? "" : " or ") + list + " (" + entry.name + ")";
+        }
       detail::fail(path, "unknown format (not X3P or GSF by its first bytes, and the extension '" +
-                             detail::printable(extension) +
-                             "' is not .txt/.asc/.dat (matrix) or .xyz/.csv): give --format");
+                             detail::printable(extension) + "' is not " + text_extensions + "): give --format");
+    }
   }
-  switch (format) {
-    case HeightMapFormat::x3p: return read_x3p(path, options);
-    case HeightMapFormat::gsf: return read_gsf(path, options);
-    case HeightMapFormat::ascii_matrix: return read_ascii_matrix(path, options);
-    case HeightMapFormat::xyz: return read_xyz(path, options);
-    case HeightMapFormat::automatic: break;
-  }
-  detail::fail(path, "unknown format");
+  return chosen->read(path, options);
 }
 
 }  // namespace asperity::topography

@@ -1,11 +1,13 @@
 #include "reader_support.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <sstream>
 
+#include "asperity/number_text.hpp"
 #include "asperity/topography/units.hpp"
 
 namespace asperity::topography::detail {
@@ -72,12 +74,8 @@ std::string_view trim(std::string_view text) {
 }
 
 bool parse_double(std::string_view token, double& out) {
-  token = trim(token);
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty() || token.front() == '+') return false;
   double value = 0;
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (result.ec != std::errc() || result.ptr != token.data() + token.size() || !std::isfinite(value)) return false;
+  if (!read_double(trim(token), value) || !std::isfinite(value)) return false;
   out = value;
   return true;
 }
@@ -91,13 +89,10 @@ bool is_nan_token(std::string_view token) {
 }
 
 bool parse_size(std::string_view token, std::uint64_t limit, std::uint64_t& out) {
-  token = trim(token);
-  if (token.empty()) return false;
-  std::uint64_t value = 0;
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (result.ec != std::errc() || result.ptr != token.data() + token.size() || value == 0 || value > limit)
-    return false;
-  out = value;
+  constexpr std::uint64_t largest = static_cast<std::uint64_t>(std::numeric_limits<long long>::max());
+  long long value = 0;
+  if (!read_whole_number(trim(token), 1, static_cast<long long>(std::min(limit, largest)), value)) return false;
+  out = static_cast<std::uint64_t>(value);
   return true;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
 #include "reader_support.hpp"
 
 namespace asperity::topography {
@@ -34,13 +35,11 @@ double length_unit_in_metres(std::string_view unit) {
 }
 
 double parse_length(std::string_view text, std::string_view default_unit) {
-  std::string_view t = trimmed(text);
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  const std::string_view t = trimmed(text);
   double value = 0;
-  const auto result = std::from_chars(t.data(), t.data() + t.size(), value);
-  if (result.ec != std::errc() || t.empty() || !std::isfinite(value))
-    throw Error("not a length: '" + detail::printable(text) + "'");
-  const std::string_view unit = trimmed(std::string_view(result.ptr, static_cast<std::size_t>(t.data() + t.size() - result.ptr)));
+  const std::size_t used = read_double_prefix(t, value);
+  if (used == 0 || !std::isfinite(value)) throw Error("not a length: '" + detail::printable(text) + "'");
+  const std::string_view unit = trimmed(t.substr(used));
   if (unit.empty()) {
     if (default_unit.empty()) throw Error("a length needs its unit: '" + detail::printable(text) + "' (e.g. 1.5um)");
     return value * length_unit_in_metres(default_unit);

@@ -11,8 +11,8 @@
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "command_line.hpp"
-#include "number_text.hpp"
-#include "pressure_overclosure.hpp"
+#include "asperity/number_text.hpp"
+#include "asperity/pressure_overclosure.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -51,8 +51,8 @@ std::string approximately(double value) {
 [[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
 // The surface from the options; `given_scale` says which height scale was given and the other.
-PhysicalSurface surface_from(const Options& options, std::string& given_scale) {
-  PhysicalSurface surface;
+RoughSurface surface_from(const Options& options, std::string& given_scale) {
+  RoughSurface surface;
   if (options.dist.empty()) throw CLI::RequiredError("--dist");
   if (!parse_distribution(options.dist, surface.distribution))
     usage("--dist: '" + quote_text(options.dist) + "' is not weibull or gaussian");
@@ -65,12 +65,8 @@ PhysicalSurface surface_from(const Options& options, std::string& given_scale) {
 
   if (!given(options.area)) throw CLI::RequiredError("--area");
   surface.nominal_area = options.area;
-  const bool four_moduli = given(options.e1) || given(options.nu1) || given(options.e2) || given(options.nu2);
-  if (given(options.modulus) == four_moduli) usage("give the contact modulus: --modulus, or --e1 --nu1 --e2 --nu2");
-  if (four_moduli && !(given(options.e1) && given(options.nu1) && given(options.e2) && given(options.nu2)))
-    usage("--e1 --nu1 --e2 --nu2 go together");
-  surface.contact_modulus =
-      four_moduli ? contact_modulus_from(options.e1, options.nu1, options.e2, options.nu2) : options.modulus;
+  surface.contact_modulus = contact_modulus_option(options.modulus, options.e1, options.nu1, options.e2, options.nu2);
+  if (!given(surface.contact_modulus)) usage("give the contact modulus: --modulus, or --e1 --nu1 --e2 --nu2");
 
   if (!options.moments.empty()) {
     if (weibull) usage("--moments describe a Gaussian surface (--dist gaussian)");
@@ -79,7 +75,7 @@ PhysicalSurface surface_from(const Options& options, std::string& given_scale) {
       usage("--moments set sigma, the radius and the density: give none of --sigma --rms --radius --density --count");
     const std::vector<std::string> parts = split(options.moments, ',');
     if (parts.size() != 3) usage("--moments wants M0,M2,M4, got '" + quote_text(options.moments) + "'");
-    const PhysicalSurface from = gaussian_surface_from_moments(
+    const RoughSurface from = gaussian_surface_from_moments(
         number_from_text(parts[0], "--moments M0"), number_from_text(parts[1], "--moments M2"),
         number_from_text(parts[2], "--moments M4"), surface.nominal_area, surface.contact_modulus);
     surface.height_scale = from.height_scale;
@@ -173,7 +169,7 @@ void warn_past_gw(const CLI::App& command, double area_fraction) {
                     (area_fraction > 1 ? "; above 1 the answer is impossible" : ""));
 }
 
-std::string describe(const PhysicalSurface& surface) {
+std::string describe(const RoughSurface& surface) {
   std::ostringstream text;
   text << to_string(surface.distribution) << " " << to_string(surface.side) << " summit heights";
   if (surface.distribution == Distribution::weibull)
@@ -243,7 +239,7 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
 
 int run_contact(const Options& options, const CLI::App& command) {
   std::string given_scale;
-  const PhysicalSurface surface = surface_from(options, given_scale);
+  const RoughSurface surface = surface_from(options, given_scale);
   const int queries = given(options.separation) + given(options.load) + given(options.pressure) +
                       given(options.real_area) + !options.sweep.empty() + !options.export_format.empty();
   if (queries != 1)

@@ -12,7 +12,7 @@
 #include "asperity/error.hpp"
 #include "command_line.hpp"
 #include "eval_csv.hpp"
-#include "number_text.hpp"
+#include "asperity/number_text.hpp"
 
 namespace asperity::cli {
 

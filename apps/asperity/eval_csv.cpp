@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
-#include "number_text.hpp"
+#include "asperity/number_text.hpp"
 
 namespace asperity::cli {
 namespace {

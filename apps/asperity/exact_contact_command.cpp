@@ -19,8 +19,8 @@
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
-#include "number_text.hpp"
-#include "pressure_overclosure.hpp"
+#include "asperity/number_text.hpp"
+#include "asperity/pressure_overclosure.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -180,13 +180,8 @@ nlohmann::json step_json(const topo::ContactStep& s) {
 }
 
 int run_exact_contact(const Options& o, const CLI::App& command) {
-  const bool four_moduli = given(o.e1) || given(o.nu1) || given(o.e2) || given(o.nu2);
-  if (four_moduli && given(o.modulus)) usage("give --modulus or --e1 --nu1 --e2 --nu2, not both");
-  if (four_moduli && !(given(o.e1) && given(o.nu1) && given(o.e2) && given(o.nu2)))
-    usage("--e1 --nu1 --e2 --nu2 go together");
-  if (!four_moduli && !given(o.modulus)) usage("the contact modulus is required: --modulus E* [Pa] or --e1 --nu1 --e2 --nu2");
-  const double modulus = four_moduli ? contact_modulus_from(o.e1, o.nu1, o.e2, o.nu2) : o.modulus;
-  if (!(modulus > 0)) usage("--modulus must be positive");
+  const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
+  if (!given(modulus)) usage("the contact modulus is required: --modulus E* [Pa] or --e1 --nu1 --e2 --nu2");
   topo::ExactContactOptions options;
   options.contact_modulus = modulus;
   if (!o.boundary.empty() && !topo::parse_contact_boundary(o.boundary, options.boundary))

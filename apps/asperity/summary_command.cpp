@@ -12,7 +12,7 @@ namespace asperity::cli {
 namespace {
 
 int summary(const Table& table) {
-  const Surface unit;  // N = R = sigma_s = E* = 1: the values are the dimensionless X_n scaled
+  const SurfaceScales unit;  // N = R = sigma_s = E* = 1: the values are the dimensionless X_n scaled
   std::printf("Unit surface (N = R = sigma_s = E* = 1). sep: origin convention; xi: (s - mean)/rms.\n");
   std::printf("%-9s %-8s %6s %9s %9s %12s %12s %12s %12s %10s\n", "dist", "side", "shape", "sep", "xi", "count",
               "area", "load", "stiffness", "K/P");

@@ -13,11 +13,12 @@
 
 #include "asperity/error.hpp"
 #include "asperity/surface.hpp"
+#include "asperity/topography/surface_formats.hpp"
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
-#include "number_text.hpp"
+#include "asperity/number_text.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -62,7 +63,7 @@ std::vector<double> positive_numbers(const std::string& text, const std::string&
 topo::ReadOptions read_options(const Options& o) {
   topo::ReadOptions read;
   if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
-    usage("--format: unknown format '" + quote_text(o.format) + "' (auto, x3p, gsf, matrix, xyz)");
+    usage("--format: unknown format '" + quote_text(o.format) + "' (" + topo::surface_format_names() + ")");
   read.lateral_unit = o.unit;
   read.height_unit = o.height_unit;
   if (!o.pixel_size.empty()) {
@@ -94,11 +95,7 @@ int run_surface(const Options& o) {
   options.fit_heights = !o.no_height_fit;
   if (given(o.area) && !(o.area > 0)) usage("--area must be positive");
 
-  const bool four_moduli = given(o.e1) || given(o.nu1) || given(o.e2) || given(o.nu2);
-  if (four_moduli && given(o.modulus)) usage("give --modulus or --e1 --nu1 --e2 --nu2, not both");
-  if (four_moduli && !(given(o.e1) && given(o.nu1) && given(o.e2) && given(o.nu2)))
-    usage("--e1 --nu1 --e2 --nu2 go together");
-  const double modulus = four_moduli ? contact_modulus_from(o.e1, o.nu1, o.e2, o.nu2) : o.modulus;
+  const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
   const bool exact_options = !o.exact_boundary.empty() || !o.exact_kernel.empty() || given(o.exact_tolerance);
   if (exact_options && !o.exact) usage("--exact-boundary, --exact-kernel and --exact-tolerance go with --exact");
   const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area) ||
@@ -106,7 +103,6 @@ int run_surface(const Options& o) {
   if (contact && !given(modulus))
     usage("the contact curves (--pressure, --load, --area, --table, --exact) need the contact modulus: --modulus E* [Pa] "
           "or --e1 --nu1 --e2 --nu2");
-  if (contact && !(modulus > 0)) usage("--modulus must be positive");
   std::vector<double> pressures, loads;
   if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
   if (!o.loads.empty()) loads = positive_numbers(o.loads, "--load");
@@ -133,7 +129,7 @@ int run_surface(const Options& o) {
     curves.pressures = pressures;
     // loads over the nominal area: A0 given, or the measured area
     const double a0 = given(o.area) ? o.area : map.width() * map.length();
-    for (double load : loads) curves.pressures.push_back(load / a0);
+    for (double load : loads) curves.pressures.push_back(nominal_pressure_from_load(load, a0));
     options.contact = curves;
   }
   // progress on standard error for an ensemble that takes more than a second: a line that
@@ -192,7 +188,8 @@ void add_surface_command(CLI::App& app) {
       ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
                              ""));
   const char* reading = "Reading";
-  add_text(*command, "--format", o.format, "auto (default: by content, then extension), x3p, gsf, matrix, xyz")
+  add_text(*command, "--format", o.format,
+           topo::surface_format_names() + " (default auto: by content, then extension)")
       ->type_name("NAME")->group(reading);
   add_text(*command, "--pixel-size", o.pixel_size,
            "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "

@@ -89,6 +89,8 @@ module asperity
   public :: asperity_version, asperity_status_string, asperity_contact_modulus, asperity_height_scale_from_rms
   public :: asperity_model_open, asperity_model_close, asperity_model_at_separation, asperity_model_at_load
   public :: asperity_model_at_pressure, asperity_model_at_real_area
+  public :: asperity_contact_modulus_given
+  public :: asperity_model_pressure_overclosure_card, asperity_tabulated_pressure_overclosure_card
 
   interface
     ! Loads a table: path c_null_ptr for the default table ($ASPERITY_TABLE if set). Returns
@@ -269,6 +271,47 @@ module asperity
       real(c_double), value :: shape, height_scale, summit_radius, summit_density, nominal_area, contact_modulus
       integer(c_size_t), value :: err_size
       type(c_ptr) :: asperity_model_open
+    end function
+
+    ! E* from what a user gave: the contact modulus itself or the four E1, nu1, E2, nu2 together
+    ! (ieee_value(x, ieee_quiet_nan): not given). out is NaN where none is given;
+    ! ASPERITY_BAD_PARAMETER and a message in err for both, the four incomplete, or a bad value.
+    function asperity_contact_modulus_given(contact_modulus, young1, poisson1, young2, poisson2, out, err, err_size) &
+        bind(c, name="asperity_contact_modulus_given")
+      import :: c_char, c_double, c_int, c_size_t
+      real(c_double), value :: contact_modulus, young1, poisson1, young2, poisson2
+      real(c_double), intent(out) :: out
+      character(kind=c_char), dimension(*) :: err
+      integer(c_size_t), value :: err_size
+      integer(c_int) :: asperity_contact_modulus_given
+    end function
+
+    ! FE export: the model's pressure-overclosure card (format "calculix", "abaqus" or "csv"; units
+    ! "si" or "mm"; description c_null_ptr or c_loc of a NUL-terminated text) into buffer if it fits
+    ! in buffer_size bytes; length receives its length (buffer_size 0 with c_null_ptr asks for it).
+    function asperity_model_pressure_overclosure_card(model, pressure_min, pressure_max, tolerance, format, units, &
+                                                      description, buffer, buffer_size, length, err, err_size) &
+        bind(c, name="asperity_model_pressure_overclosure_card")
+      import :: c_ptr, c_char, c_double, c_int, c_size_t
+      type(c_ptr), value :: model, description, buffer
+      real(c_double), value :: pressure_min, pressure_max, tolerance
+      character(kind=c_char), dimension(*) :: format, units, err
+      integer(c_size_t), value :: buffer_size, err_size
+      integer(c_size_t), intent(out) :: length
+      integer(c_int) :: asperity_model_pressure_overclosure_card
+    end function
+
+    ! The same card for a curve given by count points (ascending in overclosure [m], pressures [Pa]).
+    function asperity_tabulated_pressure_overclosure_card(pressures, overclosures, count, format, units, description, &
+                                                          notes, buffer, buffer_size, length, err, err_size) &
+        bind(c, name="asperity_tabulated_pressure_overclosure_card")
+      import :: c_ptr, c_char, c_double, c_int, c_size_t
+      real(c_double), dimension(*), intent(in) :: pressures, overclosures
+      integer(c_size_t), value :: count, buffer_size, err_size
+      character(kind=c_char), dimension(*) :: format, units, err
+      type(c_ptr), value :: description, notes, buffer
+      integer(c_size_t), intent(out) :: length
+      integer(c_int) :: asperity_tabulated_pressure_overclosure_card
     end function
 
     subroutine asperity_model_close(model) bind(c, name="asperity_model_close")

@@ -161,6 +161,37 @@ double asperity_contact_modulus(double young1, double poisson1, double young2, d
  * rms = 0.574 sigma_s); for "gaussian" the rms itself (shape ignored). NaN for a NULL or unknown
  * dist, or an rms or Weibull shape that is not a positive finite number. */
 double asperity_height_scale_from_rms(const char *dist, double shape, double rms);
+/* The input check every interface shares: E* from what a user gave, the contact modulus itself
+ * or the four E1, nu1, E2, nu2 together, NaN marking a value not given. *out is NaN where none
+ * is given. ASPERITY_BAD_PARAMETER (with a message in err) for both given, the four incomplete,
+ * E* not positive, or a bad E or nu. */
+int asperity_contact_modulus_given(double contact_modulus, double young1, double poisson1, double young2,
+                                   double poisson2, double *out, char *err, size_t err_size);
+
+/* FE export (asperity/pressure_overclosure.hpp): a model's contact-pressure law as the tabular
+ * pressure-overclosure card of CalculiX or Abaqus (*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR),
+ * or as CSV. Overclosure is measured from the mean summit height (positive where the surfaces
+ * overlap); points are placed until linear interpolation is within `tolerance` (relative, in
+ * pressure, 1e-6..0.1) of the law from pressure_min to pressure_max [Pa]. format "calculix",
+ * "abaqus" or "csv"; units "si" (m, Pa) or "mm" (mm, MPa); description: the card's comment
+ * header (may be NULL). The text is written into buffer with its NUL if it fits in buffer_size
+ * bytes (else nothing is written there); *length (if not NULL) receives its length without the
+ * NUL, so a call with buffer NULL and buffer_size 0 tells the size needed. Returns ASPERITY_OK,
+ * ASPERITY_BAD_HANDLE, ASPERITY_BAD_NAME (format or units), ASPERITY_BAD_PARAMETER (range,
+ * tolerance, a card too fine for CalculiX), ASPERITY_NO_MEMORY (buffer too small, *length set)
+ * or ASPERITY_FAILURE, with a message in err. */
+int asperity_model_pressure_overclosure_card(const asperity_model *model, double pressure_min, double pressure_max,
+                                             double tolerance, const char *format, const char *units,
+                                             const char *description, char *buffer, size_t buffer_size,
+                                             size_t *length, char *err, size_t err_size);
+/* The same card for a curve given by its points (a tabulated law, e.g. the exact contact of a
+ * measured map): count >= 2 points, ascending in overclosure [m], pressures [Pa] never falling;
+ * notes (may be NULL): more header lines. */
+int asperity_tabulated_pressure_overclosure_card(const double *pressures, const double *overclosures, size_t count,
+                                                 const char *format, const char *units, const char *description,
+                                                 const char *notes, char *buffer, size_t buffer_size, size_t *length,
+                                                 char *err, size_t err_size);
+
 /* A message for a status code (static storage). */
 const char *asperity_status_string(int status);
 

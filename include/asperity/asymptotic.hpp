@@ -12,7 +12,7 @@
 #pragma once
 #include <array>
 
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity {
 

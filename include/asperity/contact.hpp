@@ -10,13 +10,18 @@
 
 namespace asperity {
 
-// N summits of radius R, scale sigma_s (Gaussian: rms summit height sigma), modulus E*.
-struct Surface {
+// The four scales a curve's quantities need: N summits of radius R, height scale sigma_s
+// (Gaussian: rms summit height sigma), modulus E*. A RoughSurface (surface.hpp) is the surface
+// in SI units they come from.
+struct SurfaceScales {
   double summit_count = 1;    // N
   double summit_radius = 1;   // R
   double height_scale = 1;    // sigma_s
   double contact_modulus = 1; // E* (plane strain)
 };
+
+// The former name, kept for existing code (deprecated: to be removed; use SurfaceScales).
+using Surface = SurfaceScales;
 
 struct ContactState {
   double count;            // N X_0
@@ -28,8 +33,8 @@ struct ContactState {
                            // contact, X_3/2 = 0)
 };
 
-// The factors of MODEL.md section 3, quantity = factor * X_n (ContactScales: contact_scales.hpp)
-ContactScales contact_scales(const Surface& surface) noexcept;
+// The factors of docs/model.md section 3, quantity = factor * X_n (ContactScales: contact_scales.hpp)
+ContactScales contact_scales(const SurfaceScales& surface) noexcept;
 
 // The state from ln X and X of orders 0, 1/2, 1, 3/2 (Curve::contact_orders).
 ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept;
@@ -39,21 +44,21 @@ ContactState contact_state_from_logs(const ContactScales& scales, const double l
 // table's range). Never throws or allocates. Inline (below): one call to the kernel
 // built for this CPU, which computes the factors too (Curve::contact_products_of_surface); the
 // rare rest out of line.
-bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept;
+bool contact_at(const Curve& curve, const SurfaceScales& surface, double separation, ContactState& out) noexcept;
 // The same with the factors computed once (contact_scales(surface)): a surface queried at many
 // separations saves their square root and products on every query (bench_lookup
 // BM_ContactAllFour against BM_ContactAllFourScales). False (and NaNs) where a factor is not in
 // (0, DBL_MAX] or the separation is NaN, infinite or not served.
-// (A name of its own: braces, contact_at(curve, {N, R, sigma_s, E*}, s, out), stay a Surface.)
+// (A name of its own: braces, contact_at(curve, {N, R, sigma_s, E*}, s, out), stay a SurfaceScales.)
 bool contact_at_scales(const Curve& curve, const ContactScales& scales, double separation, ContactState& out) noexcept;
 
 namespace detail {
-inline ContactScales contact_scales_of(const Surface& surface) noexcept {
+inline ContactScales contact_scales_of(const SurfaceScales& surface) noexcept {
   return contact_scales_of(surface.summit_count, surface.summit_radius, surface.height_scale, surface.contact_modulus);
 }
 // contact_at off its fast path: the surface (or the factors) and the separation checked, then
 // contact_orders and contact_state_from_logs
-bool contact_at_checked(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept;
+bool contact_at_checked(const Curve& curve, const SurfaceScales& surface, double separation, ContactState& out) noexcept;
 bool contact_at_checked(const Curve& curve, const ContactScales& scales, double separation,
                         ContactState& out) noexcept;
 }  // namespace detail
@@ -61,7 +66,7 @@ bool contact_at_checked(const Curve& curve, const ContactScales& scales, double 
 // The kernel tests the factors: all four in (0, DBL_MAX] holds only where N, R, sigma_s and E*
 // are all > 0 and finite (count = N, area ~ N R sigma_s, stiffness ~ N E* (R sigma_s)^(1/2),
 // load ~ stiffness sigma_s); where it fails, contact_at_checked tests the surface itself.
-inline bool contact_at(const Curve& curve, const Surface& surface, double separation, ContactState& out) noexcept {
+inline bool contact_at(const Curve& curve, const SurfaceScales& surface, double separation, ContactState& out) noexcept {
   static_assert(sizeof(ContactState) == 5 * sizeof(double), "Curve::contact_products writes the state as five doubles");
   if (__builtin_expect(curve.contact_products_of_surface(separation, surface.summit_count, surface.summit_radius,
                                                          surface.height_scale, surface.contact_modulus, &out.count),

@@ -33,8 +33,8 @@ struct PhysicalState {
 class ContactModel {
  public:
   ContactModel() = default;  // no surface: every query answers NaN
-  // Throws asperity::Error for a bad surface (PhysicalSurface::validate) or a table without its curve.
-  ContactModel(const Table& table, const PhysicalSurface& surface);
+  // Throws asperity::Error for a bad surface (RoughSurface::validate) or a table without its curve.
+  ContactModel(const Table& table, const RoughSurface& surface);
 
   // NaN everywhere for a NaN input. No contact (a load, pressure or area <= 0, or a separation
   // past the last summit: +inf on the tail side, >= 0 on the bounded side) gives count, area,
@@ -47,7 +47,7 @@ class ContactModel {
   PhysicalState at_pressure(double pressure) const noexcept;
   PhysicalState at_real_area(double real_area) const noexcept;
 
-  const PhysicalSurface& surface() const noexcept { return surface_; }
+  const RoughSurface& surface() const noexcept { return surface_; }
   const Curve& curve() const noexcept { return curve_; }
   // the dimensionless separation s of a physical one, and back
   double dimensionless(double separation) const noexcept { return separation / surface_.height_scale; }
@@ -57,7 +57,7 @@ class ContactModel {
   PhysicalState no_contact() const noexcept;
   PhysicalState infinite_contact() const noexcept;
 
-  PhysicalSurface surface_;
+  RoughSurface surface_;
   Curve curve_;
   InverseCurve load_inverse_, area_inverse_;
   ContactScales scales_;

@@ -1,4 +1,4 @@
-// The factors of MODEL.md section 3 (quantity = factor * X_n), defined once: contact_scales
+// The factors of docs/model.md section 3 (quantity = factor * X_n), defined once: contact_scales
 // (contact.hpp) and the contact kernels (runtime/core/kernel/), whose x86 build computes them
 // in vector registers in the same order of operations (the same bits: test_kernels,
 // test_contact).

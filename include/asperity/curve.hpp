@@ -1,7 +1,7 @@
 // One resolved curve (distribution, side, shape): the hot handle. A Curve is a small handle
 // over immutable shared data (a shared pointer, and the lookup's pointers into that data held
-// by value: 176 bytes on x86-64): copies share the data, and any number of threads may query
-// one at once.
+// by value, in storage whose layout is the library's own): copies share the data, and any
+// number of threads may query one at once.
 //
 // Complexity: a query is O(1): the bits of s pick a binade and an interval of the lookup grid
 // (detail/fast_grid.hpp), then one quintic (six coefficients) and one exp; no log, no search,
@@ -17,15 +17,39 @@
 #include <memory>
 #include <vector>
 
-#include "asperity/detail/curve_data.hpp"
 #include "asperity/instruction_set.hpp"
 #include "asperity/layout.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity {
 namespace detail {
+class CompactCurve;
 struct GridReference;
-}
+struct CurveData;
+struct CurveLookup;
+
+// The storage of a Curve's lookup (the lookup grid's sides and directory, the orders'
+// coefficients, the contact records), laid out by the library for the kernels it chose for
+// this CPU: opaque here. What a caller's inlined code reads of it is fixed: the three entry
+// points in front, each given the storage itself, and the mask of the orders held. A change of the kernels, of the grid or of
+// what the storage holds changes none of this (the ABI: docs/architecture.md).
+struct CurveLookupStorage;
+using CurveValueEntry = double (*)(const CurveLookupStorage& lookup, int twice_order, double separation) noexcept;
+using CurveContactEntry = bool (*)(const CurveLookupStorage& lookup, double separation, double first, double second,
+                                   double third, double fourth, double* state) noexcept;
+inline constexpr std::size_t curve_lookup_bytes = 256;
+struct CurveLookupStorage {
+  CurveValueEntry value;                              // Curve::value
+  CurveContactEntry contact_products;                 // Curve::contact_products
+  CurveContactEntry contact_products_of_surface;      // Curve::contact_products_of_surface
+  unsigned order_mask;                                // the orders held (Curve::order_mask)
+  alignas(8) unsigned char opaque[curve_lookup_bytes - 4 * sizeof(void*)];
+};
+// What a Curve that holds no order answers: NaN, and false (no contact products here).
+double no_curve_value(const CurveLookupStorage& lookup, int twice_order, double separation) noexcept;
+bool no_contact_products(const CurveLookupStorage& lookup, double separation, double first, double second,
+                         double third, double fourth, double* state) noexcept;
+}  // namespace detail
 
 struct CurveOptions {
   // The largest error the lookup grid may add to the table's own, in ln X (so relative in X)
@@ -157,52 +181,46 @@ class Curve {
   void batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,
              bool log_output) const noexcept;
 
+  const detail::CurveLookup& lookup() const noexcept;  // in the storage (runtime/include/asperity/detail/curve_data.hpp)
+  static detail::CurveLookupStorage empty_lookup() noexcept {
+    return {&detail::no_curve_value, &detail::no_contact_products, &detail::no_contact_products, 0, {}};
+  }
+
   // The lookup's hot part, held here and not behind data_ (one dependent load fewer a query);
-  // its pointers are into *data_. Its order mask is 0 in a default Curve, which so answers
-  // NaN without touching data_.
-  detail::CurveLookup lookup_;
+  // its pointers are into *data_. A default Curve's holds no order, and so answers NaN without
+  // touching data_.
+  detail::CurveLookupStorage lookup_ = empty_lookup();
   std::shared_ptr<const detail::CurveData> data_;
 };
 
 inline Curve::Curve(Curve&& other) noexcept : lookup_(other.lookup_), data_(std::move(other.data_)) {
-  other.lookup_ = {};
+  other.lookup_ = empty_lookup();
 }
 inline Curve& Curve::operator=(Curve&& other) noexcept {
   if (this != &other) {
     lookup_ = other.lookup_;
     data_ = std::move(other.data_);
-    other.lookup_ = {};
+    other.lookup_ = empty_lookup();
   }
   return *this;
 }
 
-// The hot path: one position on the grid (a few integer operations, two loads), one quintic,
-// one exp (fast_math.hpp's: the library's takes a slow path below e^-512, and both would pay
-// ~100 ns for a subnormal made by floating-point arithmetic, where the tails reach); value()
-// through the kernel built for this CPU where there is one; the rare rest out of line.
-inline double Curve::log_value(int twice_order, double separation) const noexcept {
-  if (!has_order(twice_order)) return __builtin_nan("");  // also a default Curve: it holds no order
-  detail::FastPosition at;
-  if (__builtin_expect(detail::fast_position(lookup_.grid, separation, at), 1))
-    return detail::fast_quintic(lookup_.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
-  return log_value_outside(twice_order, separation);
-}
-
+// The hot path: the entry point the library chose for this CPU, called with the lookup's
+// storage (one load and one call from the caller's loop); what it does is the library's.
 inline double Curve::value(int twice_order, double separation) const noexcept {
   return lookup_.value(lookup_, twice_order, separation);
 }
 
 inline bool Curve::contact_products(double separation, double count_factor, double area_factor, double load_factor,
                                     double stiffness_factor, double state[5]) const noexcept {
-  return lookup_.contact_products(lookup_.grid, lookup_.contact_records, separation, count_factor, area_factor,
-                                 load_factor, stiffness_factor, state);
+  return lookup_.contact_products(lookup_, separation, count_factor, area_factor, load_factor, stiffness_factor, state);
 }
 
 inline bool Curve::contact_products_of_surface(double separation, double summit_count, double summit_radius,
                                                double height_scale, double contact_modulus,
                                                double state[5]) const noexcept {
-  return lookup_.contact_products_of_surface(lookup_.grid, lookup_.contact_records, separation, summit_count,
-                                             summit_radius, height_scale, contact_modulus, state);
+  return lookup_.contact_products_of_surface(lookup_, separation, summit_count, summit_radius, height_scale,
+                                             contact_modulus, state);
 }
 
 }  // namespace asperity

@@ -9,7 +9,7 @@
 #include <array>
 #include <vector>
 
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 #include "asperity/segment_kind.hpp"
 
 namespace asperity {

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity {
 

@@ -1,13 +1,13 @@
-// A physical rough surface (docs/model.md sections 1, 3 and 6), in SI units: what the contact of a
+// A rough surface (docs/model.md sections 1, 3 and 6), in SI units: what the contact of a
 // flat against it depends on. Either Weibull summit heights of shape a and scale sigma_s, or
 // Gaussian summit heights (rms sigma), possibly from the profile's spectral moments through
 // Nayak and McCool.
 #pragma once
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity {
 
-struct PhysicalSurface {
+struct RoughSurface {
   Distribution distribution = Distribution::weibull;
   Side side = Side::tail;
   double shape = 2;              // Weibull a (the Gaussian: unused)
@@ -19,14 +19,16 @@ struct PhysicalSurface {
 
   double summit_count() const noexcept { return summit_density * nominal_area; }
   // Throws asperity::Error naming the first bad parameter (not finite, or <= 0; a Weibull shape
-  // outside 0.3..50; a bounded side for the Gaussian), or the first factor of MODEL.md section 3
+  // outside 0.3..50; a bounded side for the Gaussian), or the first factor of docs/model.md section 3
   // (N, pi N R sigma_s, (4/3) N E* R^1/2 sigma_s^3/2, 2 N E* R^1/2 sigma_s^1/2) that falls outside
   // [1e-250, 1e250], where its products would underflow or overflow.
   void validate() const;
 };
+// The former name, kept for existing code (deprecated: to be removed; use RoughSurface).
+using PhysicalSurface = RoughSurface;
 
 // The Weibull scale sigma_s that gives an rms summit height `rms` (about the mean):
-// sigma_s = rms / c_a, c_a = sqrt(Gamma(1 + 2/a) - Gamma(1 + 1/a)^2) (MODEL.md section 1); GW
+// sigma_s = rms / c_a, c_a = sqrt(Gamma(1 + 2/a) - Gamma(1 + 1/a)^2) (docs/model.md section 1); GW
 // users measure the rms (for a = 1.6, rms = 0.574 sigma_s). The Gaussian's sigma is the rms.
 // Throws for rms or shape <= 0.
 double height_scale_from_rms(Distribution distribution, double shape, double rms);
@@ -35,6 +37,17 @@ double height_scale_from_rms(Distribution distribution, double shape, double rms
 // (-1, 0.5].
 double contact_modulus_from(double young1, double poisson1, double young2, double poisson2);
 
+// The input checks every interface shares (the commands, C, Python): the contact modulus from
+// what a user gave, E* itself or the four E1, nu1, E2, nu2 together, a value not given being
+// NaN. Returns NaN where none is given (the caller says whether it needs one). Throws
+// asperity::Error for both given, the four incomplete, an E* not positive and finite, or as
+// contact_modulus_from.
+double contact_modulus_given(double contact_modulus, double young1, double poisson1, double young2, double poisson2);
+
+// A total load [N] as the nominal pressure [Pa] over the nominal area A0 [m^2]; throws for a load
+// or an area not positive and finite.
+double nominal_pressure_from_load(double load, double nominal_area);
+
 // A Gaussian surface from the spectral moments of its profile (Nayak's bandwidth alpha =
 // m0 m4 / m2^2, McCool's summit statistics):
 //   summit density D = m4 / (6 pi sqrt(3) m2), summit radius 1/R = (8/3) sqrt(m4 / pi),
@@ -42,7 +55,7 @@ double contact_modulus_from(double young1, double poisson1, double young2, doubl
 // The paper prints sigma = sqrt(m0)(1 - 0.9/alpha), which is not what its own product
 // R sigma D = (1/48) sqrt((3/pi)(alpha - 0.9)) needs (that product follows from the square root
 // form). Throws for moments <= 0 or alpha <= 0.9 (McCool's formulas need a broad band).
-PhysicalSurface gaussian_surface_from_moments(double m0, double m2, double m4, double nominal_area,
+RoughSurface gaussian_surface_from_moments(double m0, double m2, double m4, double nominal_area,
                                               double contact_modulus);
 double bandwidth_alpha(double m0, double m2, double m4);
 

@@ -15,7 +15,7 @@
 
 #include "asperity/curve.hpp"
 #include "asperity/layout.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 #include "asperity/table_data.hpp"
 
 namespace asperity {

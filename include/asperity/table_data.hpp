@@ -7,7 +7,7 @@
 
 #include "asperity/curve.hpp"
 #include "asperity/layout.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 
 namespace asperity {
 

@@ -89,7 +89,7 @@ inline constexpr const char* set_grid_tolerance = "grid_tolerance";
 inline constexpr const char* set_grid_separations = "grid_separations";
 
 inline constexpr const char* conventions =
-    "Greenwood-Williamson asperity integrals, see MODEL.md of the asperity project.\n"
+    "Greenwood-Williamson asperity integrals, see docs/model.md of the asperity project.\n"
     "Weibull summit heights phi_a(z) = a z^(a-1) exp(-z^a), z >= 0 (unit scale sigma_s);\n"
     "Gaussian phi(z) = exp(-z^2/2)/sqrt(2 pi) (unit rms summit height sigma).\n"
     "tail side:    J_n(s) = integral_{z > max(s,0)} (z - s)^n phi(z) dz, every real s.\n"

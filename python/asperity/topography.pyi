@@ -7,7 +7,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, overload
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import PhysicalState, PhysicalSurface
+from . import PhysicalState, RoughSurface
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -469,7 +469,7 @@ class ModelContact:
     @property
     def note(self) -> str: ...
     @property
-    def surface(self) -> PhysicalSurface: ...
+    def surface(self) -> RoughSurface: ...
     @property
     def mean_summit_height(self) -> float: ...
     @property

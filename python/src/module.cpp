@@ -10,6 +10,7 @@
 #include <exception>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,9 @@
 #include "asperity/error.hpp"
 #include "asperity/instruction_set.hpp"
 #include "asperity/inverse.hpp"
-#include "asperity/model.hpp"
+#include "asperity/integrals.hpp"
 #include "asperity/persson.hpp"
+#include "asperity/pressure_overclosure.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/scene_curves.hpp"
 #include "asperity/surface.hpp"
@@ -111,6 +113,16 @@ std::string describe(const Curve& curve) {
   return text + ">";
 }
 
+CardFormat card_format(const std::string& name) {
+  CardFormat format;
+  if (!parse_card_format(name, format)) throw Error("unknown card format '" + name + "' (calculix, abaqus or csv)");
+  return format;
+}
+CardUnits card_units(const std::string& name) {
+  CardUnits units;
+  if (!parse_card_units(name, units)) throw Error("unknown card units '" + name + "' (si or mm)");
+  return units;
+}
 }  // namespace
 
 void bind(py::module_& m) {
@@ -337,24 +349,24 @@ void bind(py::module_& m) {
       });
 
   // ---- the physical quantities (asperity/contact.hpp) ----
-  py::class_<Surface>(m, "Surface", "N summits of radius R, height scale sigma_s (Gaussian: rms sigma), modulus E*.")
+  py::class_<SurfaceScales>(m, "SurfaceScales", "N summits of radius R, height scale sigma_s (Gaussian: rms sigma), modulus E*.")
       .def(py::init([](double summit_count, double summit_radius, double height_scale, double contact_modulus) {
-             return Surface{summit_count, summit_radius, height_scale, contact_modulus};
+             return SurfaceScales{summit_count, summit_radius, height_scale, contact_modulus};
            }),
            "summit_count"_a = 1.0, "summit_radius"_a = 1.0, "height_scale"_a = 1.0, "contact_modulus"_a = 1.0)
-      .def_readwrite("summit_count", &Surface::summit_count)
-      .def_readwrite("summit_radius", &Surface::summit_radius)
-      .def_readwrite("height_scale", &Surface::height_scale)
-      .def_readwrite("contact_modulus", &Surface::contact_modulus)
-      .def("__repr__", [](const Surface& s) {
-        return py::str("Surface(summit_count={!r}, summit_radius={!r}, height_scale={!r}, contact_modulus={!r})")
+      .def_readwrite("summit_count", &SurfaceScales::summit_count)
+      .def_readwrite("summit_radius", &SurfaceScales::summit_radius)
+      .def_readwrite("height_scale", &SurfaceScales::height_scale)
+      .def_readwrite("contact_modulus", &SurfaceScales::contact_modulus)
+      .def("__repr__", [](const SurfaceScales& s) {
+        return py::str("SurfaceScales(summit_count={!r}, summit_radius={!r}, height_scale={!r}, contact_modulus={!r})")
             .format(s.summit_count, s.summit_radius, s.height_scale, s.contact_modulus);
       });
 
   m.def(
       "contact_at",
       // the surface by value: a copy, read without the GIL while another thread may set its fields
-      [](const Curve& curve, Surface surface, const ArrayLike& separation) -> ContactStateRecord {
+      [](const Curve& curve, SurfaceScales surface, const ArrayLike& separation) -> ContactStateRecord {
         return {make_record(contact_state_type,
                            map_records<5>(separation.object, "separation", [&](double s, double** out, std::size_t i) {
                              ContactState state{nan, nan, nan, nan, nan};
@@ -384,13 +396,13 @@ void bind(py::module_& m) {
       "curve"_a, "standardized"_a, "The inverse of standardized_from_origin.");
 
   // ---- physical surfaces and the contact model (surface.hpp, contact_model.hpp, inverse.hpp) ----
-  py::class_<PhysicalSurface>(m, "PhysicalSurface",
+  py::class_<RoughSurface>(m, "RoughSurface",
                               "A physical rough surface in SI units: Weibull summit heights of shape a and scale "
                               "sigma_s, or Gaussian (rms sigma).")
       .def(py::init([](const DistributionName& distribution, const SideName& side, double shape,
                        std::optional<double> height_scale, double summit_radius, double summit_density,
                        double nominal_area, double contact_modulus, std::optional<double> rms) {
-             PhysicalSurface s;
+             RoughSurface s;
              s.distribution = to_distribution(distribution.object);
              s.side = to_side(side.object);
              s.shape = shape;
@@ -410,29 +422,29 @@ void bind(py::module_& m) {
            "height_scale_from_rms (for a = 1.6, rms = 0.574 sigma_s). summit_radius R [m], summit_density [1/m^2],\n"
            "nominal_area A0 [m^2], contact_modulus E* [Pa] (plane strain).")
       .def_property(
-          "distribution", [](const PhysicalSurface& s) { return s.distribution; },
-          [](PhysicalSurface& s, const DistributionName& value) { s.distribution = to_distribution(value.object); })
+          "distribution", [](const RoughSurface& s) { return s.distribution; },
+          [](RoughSurface& s, const DistributionName& value) { s.distribution = to_distribution(value.object); })
       .def_property(
-          "side", [](const PhysicalSurface& s) { return s.side; },
-          [](PhysicalSurface& s, const SideName& value) { s.side = to_side(value.object); })
-      .def_readwrite("shape", &PhysicalSurface::shape)
-      .def_readwrite("height_scale", &PhysicalSurface::height_scale)
-      .def_readwrite("summit_radius", &PhysicalSurface::summit_radius)
-      .def_readwrite("summit_density", &PhysicalSurface::summit_density)
-      .def_readwrite("nominal_area", &PhysicalSurface::nominal_area)
-      .def_readwrite("contact_modulus", &PhysicalSurface::contact_modulus)
+          "side", [](const RoughSurface& s) { return s.side; },
+          [](RoughSurface& s, const SideName& value) { s.side = to_side(value.object); })
+      .def_readwrite("shape", &RoughSurface::shape)
+      .def_readwrite("height_scale", &RoughSurface::height_scale)
+      .def_readwrite("summit_radius", &RoughSurface::summit_radius)
+      .def_readwrite("summit_density", &RoughSurface::summit_density)
+      .def_readwrite("nominal_area", &RoughSurface::nominal_area)
+      .def_readwrite("contact_modulus", &RoughSurface::contact_modulus)
       .def_property(
           "rms",
-          [](const PhysicalSurface& s) {
+          [](const RoughSurface& s) {
             return s.distribution == Distribution::gaussian ? s.height_scale : s.height_scale * weibull_rms(s.shape);
           },
-          [](PhysicalSurface& s, double rms) { s.height_scale = height_scale_from_rms(s.distribution, s.shape, rms); },
+          [](RoughSurface& s, double rms) { s.height_scale = height_scale_from_rms(s.distribution, s.shape, rms); },
           "The rms summit height [m] (about the mean): height_scale * weibull_rms(shape) for the Weibull, height_scale\n"
           "for the Gaussian. Setting it sets height_scale for the current distribution and shape.")
-      .def_property_readonly("summit_count", &PhysicalSurface::summit_count, "summit_density * nominal_area")
-      .def("validate", &PhysicalSurface::validate, "Raises asperity.Error naming the first bad parameter.")
-      .def("__repr__", [](const PhysicalSurface& s) {
-        return py::str("PhysicalSurface(distribution='{}', side='{}', shape={!r}, height_scale={!r}, summit_radius={!r}, "
+      .def_property_readonly("summit_count", &RoughSurface::summit_count, "summit_density * nominal_area")
+      .def("validate", &RoughSurface::validate, "Raises asperity.Error naming the first bad parameter.")
+      .def("__repr__", [](const RoughSurface& s) {
+        return py::str("RoughSurface(distribution='{}', side='{}', shape={!r}, height_scale={!r}, summit_radius={!r}, "
                        "summit_density={!r}, nominal_area={!r}, contact_modulus={!r})")
             .format(to_string(s.distribution), to_string(s.side), s.shape, s.height_scale, s.summit_radius,
                     s.summit_density, s.nominal_area, s.contact_modulus);
@@ -440,6 +452,44 @@ void bind(py::module_& m) {
   m.def("contact_modulus_from", py::vectorize(&contact_modulus_from), "young1"_a, "poisson1"_a, "young2"_a, "poisson2"_a,
         "E* from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (broadcasts); raises asperity.Error for E <= 0 or nu\n"
         "outside (-1, 0.5].");
+  m.def(
+      "contact_modulus_given",
+      [](std::optional<double> contact_modulus, std::optional<double> young1, std::optional<double> poisson1,
+         std::optional<double> young2, std::optional<double> poisson2) -> std::optional<double> {
+        const double not_given = std::numeric_limits<double>::quiet_NaN();
+        const double modulus =
+            contact_modulus_given(contact_modulus.value_or(not_given), young1.value_or(not_given),
+                                  poisson1.value_or(not_given), young2.value_or(not_given), poisson2.value_or(not_given));
+        if (std::isnan(modulus)) return std::nullopt;
+        return modulus;
+      },
+      "contact_modulus"_a = py::none(), "young1"_a = py::none(), "poisson1"_a = py::none(), "young2"_a = py::none(),
+      "poisson2"_a = py::none(),
+      "E* [Pa] from what a user gave: contact_modulus itself, or young1, poisson1, young2, poisson2 together\n"
+      "(the commands' check); None where none is given. Raises asperity.Error for both, the four\n"
+      "incomplete, E* not positive, or a bad E or nu.");
+  m.def("nominal_pressure_from_load", &nominal_pressure_from_load, "load"_a, "nominal_area"_a,
+        "A total load [N] as the nominal pressure [Pa] over the nominal area [m^2]; asperity.Error for a\n"
+        "load or area that is not a positive number.");
+  m.def(
+      "tabulated_pressure_overclosure_card",
+      [](const std::vector<double>& pressures, const std::vector<double>& overclosures, const std::string& format,
+         const std::string& units, const std::string& description, const std::string& notes) {
+        if (pressures.size() != overclosures.size())
+          throw Error("tabulated_pressure_overclosure_card: as many pressures as overclosures");
+        std::vector<PressureOverclosurePoint> points(pressures.size());
+        for (std::size_t i = 0; i < points.size(); ++i) points[i] = {pressures[i], overclosures[i]};
+        std::ostringstream out;
+        write_tabulated_pressure_overclosure(out, points, card_format(format), card_units(units), description, notes);
+        return out.str();
+      },
+      "pressures"_a, "overclosures"_a, "format"_a = "calculix", "units"_a = "si", "description"_a = "",
+      "notes"_a = "",
+      "FE export of a curve given by its points (a tabulated law: the exact contact of a measured map): the\n"
+      "pressure-overclosure card of CalculiX or Abaqus (format 'calculix', 'abaqus' or 'csv'; units 'si' for\n"
+      "m and Pa, 'mm' for mm and MPa) as text. Points ascending in overclosure [m] (positive where the\n"
+      "surfaces overlap), pressures [Pa] never falling. Raises asperity.Error for fewer than two points or\n"
+      "points out of order.");
   m.def(
       "height_scale_from_rms",
       [](const DistributionName& distribution, const ArrayLike& shape, const ArrayLike& rms) -> py::object {
@@ -453,7 +503,7 @@ void bind(py::module_& m) {
       "(shape ignored). Broadcasts over shape and rms. Raises asperity.Error for rms or a Weibull shape <= 0.");
   m.def("gaussian_surface_from_moments", &gaussian_surface_from_moments, "m0"_a, "m2"_a, "m4"_a, "nominal_area"_a,
         "contact_modulus"_a,
-        "A Gaussian PhysicalSurface from its profile's spectral moments (Nayak's bandwidth, McCool's summit\n"
+        "A Gaussian RoughSurface from its profile's spectral moments (Nayak's bandwidth, McCool's summit\n"
         "statistics; docs/model.md section 6).");
   m.def("bandwidth_alpha", &bandwidth_alpha, "m0"_a, "m2"_a, "m4"_a, "Nayak's bandwidth alpha = m0 m4 / m2^2.");
 
@@ -483,9 +533,9 @@ void bind(py::module_& m) {
       .def("__deepcopy__", [](const InverseCurve& inverse, py::dict) { return inverse; }, "memo"_a);
 
   py::class_<ContactModel>(m, "ContactModel",
-                           "Contact of a flat with a PhysicalSurface, forward and inverse, SI units. Separations "
+                           "Contact of a flat with a RoughSurface, forward and inverse, SI units. Separations "
                            "are lengths [m] in the origin convention (docs/model.md).")
-      .def(py::init<const Table&, const PhysicalSurface&>(), "table"_a, "surface"_a,
+      .def(py::init<const Table&, const RoughSurface&>(), "table"_a, "surface"_a,
            "Raises asperity.Error for a bad surface or a table without its curve. The model holds its curve and\n"
            "inverses (shared handles): it may outlive the Table, and copies (copy.copy) are cheap.")
       .def(
@@ -516,6 +566,23 @@ void bind(py::module_& m) {
                              "A copy of the surface (changing it does not change the model).")
       .def_property_readonly("curve", &ContactModel::curve, py::return_value_policy::copy,
                              "The model's curve (a handle sharing its data).")
+      .def(
+          "pressure_overclosure_card",
+          [](const ContactModel& model, double pressure_min, double pressure_max, double tolerance,
+             const std::string& format, const std::string& units, const std::string& description) {
+            const PressureOverclosureTable table =
+                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance);
+            std::ostringstream out;
+            write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
+            return out.str();
+          },
+          "pressure_min"_a, "pressure_max"_a, "tolerance"_a = 1e-3, "format"_a = "calculix", "units"_a = "si",
+          "description"_a = "",
+          "FE export: the contact-pressure law as the tabular pressure-overclosure card of CalculiX or Abaqus\n"
+          "(format 'calculix', 'abaqus' or 'csv'; units 'si' for m and Pa, 'mm' for mm and MPa) as text, the\n"
+          "overclosure from the mean summit height, linear interpolation within `tolerance` (relative, in\n"
+          "pressure) of the law from pressure_min to pressure_max [Pa]. Raises asperity.Error for a bad range\n"
+          "or tolerance.")
       .def("__copy__", [](const ContactModel& model) { return model; })
       .def("__deepcopy__", [](const ContactModel& model, py::dict) { return model; }, "memo"_a)
       .def(
@@ -581,6 +648,10 @@ void bind(py::module_& m) {
       "curve"_a, "load"_a, "The separation where X_3/2 = load (NaN if not reached).");
   m.def("quantity_twice_order", &quantity_twice_order, "quantity"_a,
         "twice_order of a quantity's integral: count 0, stiffness 1, area 2, load 3, F2 4, F5/2 5; -1 otherwise.");
+
+  // the former names (deprecated, kept for existing code): Surface, PhysicalSurface
+  m.attr("Surface") = m.attr("SurfaceScales");
+  m.attr("PhysicalSurface") = m.attr("RoughSurface");
 
   // ---- measured surfaces (asperity/topography/*.hpp): the submodule asperity.topography ----
   bind_topography(m, physical_state_type);

@@ -32,6 +32,7 @@
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/self_affine.hpp"
 #include "asperity/topography/summits.hpp"
+#include "asperity/topography/surface_formats.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/synthetic.hpp"
 #include "asperity/topography/units.hpp"
@@ -76,7 +77,7 @@ topo::HeightMapFormat to_format(const py::handle& value) {
     topo::HeightMapFormat format;
     const std::string name = value.cast<std::string>();
     if (topo::parse_height_map_format(name, format)) return format;
-    throw py::value_error("unknown height map format '" + name + "': expected 'auto', 'x3p', 'gsf', 'matrix' or 'xyz'");
+    throw py::value_error("unknown height map format '" + name + "': expected one of " + topo::surface_format_names());
   }
   throw py::type_error("format must be a str or an asperity.topography.HeightMapFormat");
 }
@@ -248,13 +249,18 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
             .format(map.nx, map.ny, map.dx, map.dy, map.format, path_text(map.source));
       });
 
-  py::enum_<topo::HeightMapFormat>(m, "HeightMapFormat", "A height map file's format (automatic: by content, then extension).")
-      .value("automatic", topo::HeightMapFormat::automatic)
-      .value("x3p", topo::HeightMapFormat::x3p)
-      .value("gsf", topo::HeightMapFormat::gsf)
-      .value("ascii_matrix", topo::HeightMapFormat::ascii_matrix)
-      .value("xyz", topo::HeightMapFormat::xyz);
+  // the members from the formats' table (asperity/topography/surface_formats.hpp)
+  py::enum_<topo::HeightMapFormat> formats(m, "HeightMapFormat",
+                                           "A height map file's format (automatic: by content, then extension).");
+  formats.value("automatic", topo::HeightMapFormat::automatic);
+  for (const topo::SurfaceFormat& format : topo::surface_formats()) formats.value(format.python_name, format.format);
 
+  static const std::string read_options_doc =
+      "format: " + topo::surface_format_names() + " (auto: by content, then extension), or a HeightMapFormat.\n"
+      "pixel_size_x, pixel_size_y [m]: sampling intervals for formats without them, or overriding the\n"
+      "file's (0: the file's; pixel_size_y 0: pixel_size_x). lateral_unit, height_unit: 'um', 'nm', ...\n"
+      "for formats without units (xyz), overriding the file's for the others. max_points: a header is\n"
+      "never trusted to allocate more.";
   py::class_<topo::ReadOptions>(m, "ReadOptions", "How to read a height map file.")
       .def(py::init([](const py::object& format, double pixel_size_x, double pixel_size_y, std::string lateral_unit,
                        std::string height_unit, std::size_t max_points) {
@@ -269,11 +275,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
            }),
            "format"_a = "auto", "pixel_size_x"_a = 0.0, "pixel_size_y"_a = 0.0, "lateral_unit"_a = "",
            "height_unit"_a = "", "max_points"_a = topo::ReadOptions{}.max_points,
-           "format: 'auto' (by content, then extension), 'x3p', 'gsf', 'matrix' or 'xyz' (or a HeightMapFormat).\n"
-           "pixel_size_x, pixel_size_y [m]: sampling intervals for formats without them, or overriding the\n"
-           "file's (0: the file's; pixel_size_y 0: pixel_size_x). lateral_unit, height_unit: 'um', 'nm', ...\n"
-           "for formats without units (xyz), overriding the file's for the others. max_points: a header is\n"
-           "never trusted to allocate more.")
+           read_options_doc.c_str())
       .def_property(
           "format", [](const topo::ReadOptions& o) { return o.format; },
           [](topo::ReadOptions& o, const py::object& value) { o.format = to_format(value); })

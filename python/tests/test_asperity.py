@@ -532,3 +532,38 @@ def test_stubs_name_what_the_module_holds():
                 bound = {m for m in dir(cls) if not m.startswith("_")}
             assert {m for m in members if not m.startswith("_")} == bound, name
             assert all(hasattr(cls, m) for m in members), name  # __copy__, __deepcopy__ too
+
+
+def test_fe_export_card_from_python(table):
+    # the card the command writes (asperity contact --export), from the library: each point on the law
+    model = asperity.ContactModel(table, asperity.PhysicalSurface(shape=2.0, height_scale=1e-6, contact_modulus=1.15e11))
+    card = model.pressure_overclosure_card(1e3, 1e8, 1e-3, "calculix", "si", "from Python")
+    lines = card.splitlines()
+    start = lines.index("*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR")
+    points = [tuple(map(float, line.split(","))) for line in lines[start + 1:] if line and line[0] in "-0123456789"]
+    assert points[0][0] == 0 and len(points) > 5
+    origin_to_mean = -model.at_separation(0.0).mean_separation
+    for pressure, overclosure in points[1:]:
+        state = model.at_separation(origin_to_mean - overclosure)
+        assert abs(state.pressure - pressure) <= 1e-9 * pressure
+    assert "from Python" in card
+    with pytest.raises(asperity.Error, match="card format"):
+        model.pressure_overclosure_card(1e3, 1e8, format="nastran")
+    tabulated = asperity.tabulated_pressure_overclosure_card([0.0, 1e6, 1e7], [-2e-6, -1e-6, -5e-7], "abaqus")
+    assert "1000000,-1e-06" in tabulated
+    with pytest.raises(asperity.Error):
+        asperity.tabulated_pressure_overclosure_card([1e6], [-1e-6])
+
+
+def test_input_checks_from_python():
+    assert asperity.contact_modulus_given() is None
+    assert asperity.contact_modulus_given(1e11) == 1e11
+    assert asperity.contact_modulus_given(young1=2.1e11, poisson1=0.3, young2=2.1e11, poisson2=0.3) == \
+        asperity.contact_modulus_from(2.1e11, 0.3, 2.1e11, 0.3)
+    with pytest.raises(asperity.Error, match="not both"):
+        asperity.contact_modulus_given(1e11, 2.1e11, 0.3, 2.1e11, 0.3)
+    with pytest.raises(asperity.Error, match="go together"):
+        asperity.contact_modulus_given(young1=2.1e11)
+    assert asperity.nominal_pressure_from_load(10.0, 1e-4) == 1e5
+    with pytest.raises(asperity.Error):
+        asperity.nominal_pressure_from_load(-1.0, 1e-4)

@@ -5,7 +5,7 @@ its tcp address on loopback (the scheduler-address path); each row checked again
 own JSON and that JSON against the analysis run here directly; resuming (what is finished is not
 submitted again), an interrupted run (killed mid-way; a truncated JSON, a missing marker, a
 temporary file left behind), a changed input, the options' fingerprint, the lock. Kept short
-(small maps, 49 surrogates). Run by ctest (python_tests)."""
+(small maps, 49 surrogates). Run by ctest (python_batch)."""
 import ast
 import csv
 import inspect

@@ -8,10 +8,15 @@
 #include <cstring>
 #include <limits>
 #include <new>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
+#include "asperity/error.hpp"
+#include "asperity/pressure_overclosure.hpp"
+#include "asperity/surface.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
 
@@ -131,6 +136,49 @@ asperity_status guarded_status(char* err, size_t err_size, const char* where, as
 }
 }  // namespace
 
+namespace {
+// The card `write` makes, into the caller's buffer (asperity.h: the NUL too if it fits; *length
+// always); its exceptions as status codes
+template <class Write>
+int card_out(Write write, char* buffer, size_t buffer_size, size_t* length, char* err, size_t err_size) {
+  std::string text;
+  try {
+    std::ostringstream out;
+    write(out);
+    text = out.str();
+  } catch (const asperity::Error& error) {
+    write_error(err, err_size, error.what());
+    return ASPERITY_BAD_PARAMETER;
+  } catch (const std::bad_alloc&) {
+    return ASPERITY_NO_MEMORY;
+  } catch (const std::exception& error) {
+    write_error(err, err_size, error.what());
+    return ASPERITY_FAILURE;
+  }
+  if (length) *length = text.size();
+  if (buffer_size == 0 && !buffer) return ASPERITY_OK;  // asking for the size
+  if (!buffer || buffer_size < text.size() + 1) {
+    write_error(err, err_size, "the card does not fit in the buffer: *length tells its size");
+    return ASPERITY_NO_MEMORY;
+  }
+  std::memcpy(buffer, text.c_str(), text.size() + 1);
+  return ASPERITY_OK;
+}
+
+bool card_names(const char* format, const char* units, asperity::CardFormat& card_format,
+                asperity::CardUnits& card_units, char* err, size_t err_size) {
+  if (!format || !asperity::parse_card_format(format, card_format)) {
+    write_error(err, err_size, "unknown card format (calculix, abaqus or csv)");
+    return false;
+  }
+  if (!units || !asperity::parse_card_units(units, card_units)) {
+    write_error(err, err_size, "unknown card units (si or mm)");
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
 extern "C" {
 
 asperity_status asperity_table_load(const char* path, asperity_table** table, char* err, size_t err_size) {
@@ -200,7 +248,7 @@ asperity_model* asperity_model_open(const asperity_table* table, const char* dis
     write_error(err, err_size, "asperity_model_open: NULL table, dist or side");
     return nullptr;
   }
-  asperity::PhysicalSurface surface;
+  asperity::RoughSurface surface;
   if (!asperity::parse_distribution(dist, surface.distribution)) {
     write_error(err, err_size, (std::string("unknown dist '") + dist + "' (weibull or gaussian)").c_str());
     return nullptr;
@@ -311,6 +359,54 @@ double asperity_standardized_from_origin(const asperity_curve* curve, double sep
 
 double asperity_origin_from_standardized(const asperity_curve* curve, double standardized) {
   return curve ? asperity::origin_from_standardized(curve->curve, standardized) : not_a_number;
+}
+
+int asperity_contact_modulus_given(double contact_modulus, double young1, double poisson1, double young2,
+                                   double poisson2, double* out, char* err, size_t err_size) {
+  if (!out) return ASPERITY_BAD_HANDLE;
+  try {
+    *out = asperity::contact_modulus_given(contact_modulus, young1, poisson1, young2, poisson2);
+    return ASPERITY_OK;
+  } catch (const std::exception& error) {
+    *out = not_a_number;
+    write_error(err, err_size, error.what());
+    return ASPERITY_BAD_PARAMETER;
+  }
+}
+
+int asperity_model_pressure_overclosure_card(const asperity_model* model, double pressure_min, double pressure_max,
+                                             double tolerance, const char* format, const char* units,
+                                             const char* description, char* buffer, size_t buffer_size,
+                                             size_t* length, char* err, size_t err_size) {
+  if (!model) return ASPERITY_BAD_HANDLE;
+  asperity::CardFormat card_format;
+  asperity::CardUnits card_units;
+  if (!card_names(format, units, card_format, card_units, err, err_size)) return ASPERITY_BAD_NAME;
+  return card_out(
+      [&](std::ostream& out) {
+        const asperity::PressureOverclosureTable table =
+            asperity::tabulate_pressure_overclosure(model->model, pressure_min, pressure_max, tolerance);
+        asperity::write_pressure_overclosure(out, table, card_format, card_units, description ? description : "");
+      },
+      buffer, buffer_size, length, err, err_size);
+}
+
+int asperity_tabulated_pressure_overclosure_card(const double* pressures, const double* overclosures, size_t count,
+                                                 const char* format, const char* units, const char* description,
+                                                 const char* notes, char* buffer, size_t buffer_size, size_t* length,
+                                                 char* err, size_t err_size) {
+  if (count > 0 && (!pressures || !overclosures)) return ASPERITY_BAD_HANDLE;
+  asperity::CardFormat card_format;
+  asperity::CardUnits card_units;
+  if (!card_names(format, units, card_format, card_units, err, err_size)) return ASPERITY_BAD_NAME;
+  return card_out(
+      [&](std::ostream& out) {
+        std::vector<asperity::PressureOverclosurePoint> points(count);
+        for (size_t i = 0; i < count; ++i) points[i] = {pressures[i], overclosures[i]};
+        asperity::write_tabulated_pressure_overclosure(out, points, card_format, card_units,
+                                                       description ? description : "", notes ? notes : "");
+      },
+      buffer, buffer_size, length, err, err_size);
 }
 
 const char* asperity_version(void) { return ASPERITY_VERSION_STRING; }

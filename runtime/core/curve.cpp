@@ -22,6 +22,24 @@ double value_outside(const detail::CurveData& data, int twice_order, double sepa
 }
 }  // namespace
 
+namespace detail {
+double no_curve_value(const CurveLookupStorage&, int, double) noexcept { return not_a_number; }
+bool no_contact_products(const CurveLookupStorage&, double, double, double, double, double, double*) noexcept {
+  return false;
+}
+}  // namespace detail
+
+// On the grid: one position (a few integer operations, two loads), one quintic; off it, the
+// table's own layout, the series, the values at 0 (out of line: rare).
+double Curve::log_value(int twice_order, double separation) const noexcept {
+  if (!has_order(twice_order)) return not_a_number;  // also a default Curve: it holds no order
+  const detail::CurveLookup& lookup = this->lookup();
+  detail::FastPosition at;
+  if (__builtin_expect(detail::fast_position(lookup.grid, separation, at), 1))
+    return detail::fast_quintic(lookup.order_coefficients[twice_order], at.interval * detail::fast_stride, at.y);
+  return log_value_outside(twice_order, separation);
+}
+
 Curve::Curve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
              const double* knot_data, unsigned order_mask, const CurveOptions& options) {
   detail::CompactCurve compact(distribution, side, shape, layout, knot_data, order_mask);
@@ -90,7 +108,8 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
         build.order_offset[order] < 0 ? nullptr : data->coefficients.data() + build.order_offset[order];
   data->outside = std::move(compact);
   data->kernels = &detail::kernels_for(InstructionSet::automatic);
-  lookup.value = data->kernels->value;
+  detail::CurveLookupStorage storage = empty_lookup();
+  storage.value = data->kernels->value;
   lookup.value_outside = value_outside;
   lookup.data = data.get();
   bool all_contact_orders = options.contact_records;
@@ -108,13 +127,14 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
       detail::write_contact_record(ln_orders, records + i * detail::contact_record_size);
     }
     lookup.contact_records = records;
-    lookup.contact_products = data->kernels->contact_products;
-    lookup.contact_products_of_surface = data->kernels->contact_products_of_surface;
+    storage.contact_products = data->kernels->contact_entry;
+    storage.contact_products_of_surface = data->kernels->contact_entry_of_surface;
   }
   data->grid_error = build.achieved;
-  lookup.order_mask = data->outside.order_mask();
+  storage.order_mask = data->outside.order_mask();
+  new (storage.opaque) detail::CurveLookup(lookup);
   data_ = std::move(data);
-  lookup_ = lookup;
+  lookup_ = storage;
 }
 
 Distribution Curve::distribution() const noexcept { return data_ ? data_->outside.distribution() : Distribution::weibull; }
@@ -132,7 +152,7 @@ bool Curve::serves(double separation) const noexcept {
 }
 double Curve::table_min_separation() const noexcept { return data_ ? data_->outside.table_min() : not_a_number; }
 double Curve::table_max_separation() const noexcept { return data_ ? data_->outside.table_max() : not_a_number; }
-std::size_t Curve::grid_intervals() const noexcept { return data_ ? static_cast<std::size_t>(lookup_.grid.intervals) : 0; }
+std::size_t Curve::grid_intervals() const noexcept { return data_ ? static_cast<std::size_t>(lookup().grid.intervals) : 0; }
 double Curve::grid_error() const noexcept { return data_ ? data_->grid_error : not_a_number; }
 
 std::size_t Curve::memory_bytes() const noexcept {
@@ -160,12 +180,12 @@ void Curve::log_values(double separation, int first, int last, double* out) cons
     return;
   }
   detail::FastPosition at;
-  if (!detail::fast_position(lookup_.grid, separation, at)) {
+  if (!detail::fast_position(lookup().grid, separation, at)) {
     data_->outside.log_values(separation, first, last, out);
     return;
   }
   for (int k = first; k <= last; ++k) {
-    const double* c = lookup_.order_coefficients[k];
+    const double* c = lookup().order_coefficients[k];
     out[k - first] = c ? detail::fast_quintic(c, at.interval * detail::fast_stride, at.y) : not_a_number;
   }
 }
@@ -178,9 +198,9 @@ void Curve::contact_orders(double separation, double log_out[4], double value_ou
     return;
   }
   detail::FastPosition at;
-  if (lookup_.contact_records && __builtin_expect(detail::fast_position(lookup_.grid, separation, at), 1)) {
+  if (lookup().contact_records && __builtin_expect(detail::fast_position(lookup().grid, separation, at), 1)) {
     double log2s[4];
-    data_->kernels->contact4(lookup_.contact_records + at.interval * detail::contact_record_size, at.y, log2s,
+    data_->kernels->contact4(lookup().contact_records + at.interval * detail::contact_record_size, at.y, log2s,
                              value_out);
     detail::contact_logs_of(log2s, log_out);
     return;
@@ -207,12 +227,12 @@ void Curve::batch(int twice_order, const double* separations, double* out, std::
   }
   const detail::CurveData& data = *data_;
   const detail::Kernels& kernels = isa == InstructionSet::automatic ? *data.kernels : detail::kernels_for(isa);
-  const double* coefficients = lookup_.order_coefficients[twice_order];
+  const double* coefficients = lookup().order_coefficients[twice_order];
   int rest[detail::batch_block];
   double block_separations[detail::batch_block];  // a copy, so that out may be separations
   // a grid that covers nothing (CurveOptions' separations beside the table) has no directory
   // and no record for the kernels' off-grid lanes to read: every query is answered outside it
-  const bool empty_grid = lookup_.grid.intervals == 0;
+  const bool empty_grid = lookup().grid.intervals == 0;
   for (std::size_t start = 0; start < count; start += detail::batch_block) {
     const int block = static_cast<int>(count - start < detail::batch_block ? count - start : detail::batch_block);
     for (int j = 0; j < block; ++j) block_separations[j] = separations[start + j];
@@ -220,7 +240,7 @@ void Curve::batch(int twice_order, const double* separations, double* out, std::
     if (empty_grid)
       for (int j = 0; j < block; ++j) rest[j] = j;
     else
-      rest_count = kernels.block(lookup_.grid, coefficients, block_separations, out + start, block, log_output, rest);
+      rest_count = kernels.block(lookup().grid, coefficients, block_separations, out + start, block, log_output, rest);
     for (int r = 0; r < rest_count; ++r) {
       const double log_value = data.outside.log_value(twice_order, block_separations[rest[r]]);
       out[start + rest[r]] = log_output ? log_value : std::exp(log_value);

@@ -33,7 +33,7 @@ ASPERITY_ALWAYS_INLINE void state_of(const ContactScales& scales, const double l
 }
 }  // namespace
 
-ContactScales contact_scales(const Surface& surface) noexcept { return detail::contact_scales_of(surface); }
+ContactScales contact_scales(const SurfaceScales& surface) noexcept { return detail::contact_scales_of(surface); }
 
 ContactState contact_state_from_logs(const ContactScales& scales, const double logs[4], const double values[4]) noexcept {
   ContactState state;
@@ -58,7 +58,7 @@ bool answer(bool usable, const Curve& curve, const ContactScales& scales, double
 }  // namespace
 
 // A physical surface's factors may overflow to inf: the surface is what is checked
-bool detail::contact_at_checked(const Curve& curve, const Surface& surface, double separation,
+bool detail::contact_at_checked(const Curve& curve, const SurfaceScales& surface, double separation,
                                 ContactState& out) noexcept {
   const bool usable = positive_finite(surface.summit_count) & positive_finite(surface.summit_radius) &
                       positive_finite(surface.height_scale) & positive_finite(surface.contact_modulus) &

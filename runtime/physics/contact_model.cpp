@@ -10,7 +10,7 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
-ContactModel::ContactModel(const Table& table, const PhysicalSurface& surface) : surface_(surface) {
+ContactModel::ContactModel(const Table& table, const RoughSurface& surface) : surface_(surface) {
   surface_.validate();
   curve_ = table.curve(surface_.distribution, surface_.side, surface_.shape, contact_order_mask);
   load_inverse_ = InverseCurve(curve_, orders::load);

@@ -17,7 +17,7 @@ void require_positive(double value, const char* name) {
 }
 }  // namespace
 
-void PhysicalSurface::validate() const {
+void RoughSurface::validate() const {
   if (distribution == Distribution::weibull) {
     require_positive(shape, "shape");
     if (!(shape >= 0.3 && shape <= 50)) {
@@ -33,7 +33,7 @@ void PhysicalSurface::validate() const {
   require_positive(summit_density, "summit density");
   require_positive(nominal_area, "nominal area A0");
   require_positive(contact_modulus, "contact modulus E*");
-  // The factors of MODEL.md section 3 must be ordinary numbers: sigma_s = 1e-300 or E* = 1e308
+  // The factors of docs/model.md section 3 must be ordinary numbers: sigma_s = 1e-300 or E* = 1e308
   // would give a load of 0 or inf at every separation.
   const double n = summit_count();
   const double factors[] = {n, M_PI * n * summit_radius * height_scale,
@@ -70,6 +70,25 @@ double contact_modulus_from(double young1, double poisson1, double young2, doubl
   return 1 / ((1 - poisson1 * poisson1) / young1 + (1 - poisson2 * poisson2) / young2);
 }
 
+double contact_modulus_given(double contact_modulus, double young1, double poisson1, double young2, double poisson2) {
+  const auto given = [](double value) { return !std::isnan(value); };
+  const bool four = given(young1) || given(poisson1) || given(young2) || given(poisson2);
+  if (four && given(contact_modulus))
+    throw Error("surface: give the contact modulus E* or the four E1, nu1, E2, nu2, not both");
+  if (four && !(given(young1) && given(poisson1) && given(young2) && given(poisson2)))
+    throw Error("surface: E1, nu1, E2, nu2 go together");
+  if (four) return contact_modulus_from(young1, poisson1, young2, poisson2);
+  if (given(contact_modulus) && !(contact_modulus > 0 && std::isfinite(contact_modulus)))
+    throw Error("surface: the contact modulus E* must be a positive number");
+  return contact_modulus;
+}
+
+double nominal_pressure_from_load(double load, double nominal_area) {
+  require_positive(load, "load");
+  require_positive(nominal_area, "nominal area");
+  return load / nominal_area;
+}
+
 double bandwidth_alpha(double m0, double m2, double m4) {
   require_positive(m0, "m0");
   require_positive(m2, "m2");
@@ -77,7 +96,7 @@ double bandwidth_alpha(double m0, double m2, double m4) {
   return m0 * m4 / (m2 * m2);
 }
 
-PhysicalSurface gaussian_surface_from_moments(double m0, double m2, double m4, double nominal_area,
+RoughSurface gaussian_surface_from_moments(double m0, double m2, double m4, double nominal_area,
                                               double contact_modulus) {
   const double alpha = bandwidth_alpha(m0, m2, m4);
   if (!(alpha > 0.9)) {
@@ -87,7 +106,7 @@ PhysicalSurface gaussian_surface_from_moments(double m0, double m2, double m4, d
     throw Error(message.str());
   }
   const double pi = 3.14159265358979323846;
-  PhysicalSurface surface;
+  RoughSurface surface;
   surface.distribution = Distribution::gaussian;
   surface.side = Side::tail;
   surface.shape = 2;

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <toml.hpp>
 
-#include "../table/regular_file.hpp"
+#include "asperity/detail/regular_file.hpp"
 #include "asperity/error.hpp"
 
 namespace asperity {

@@ -16,7 +16,7 @@
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
 #include "hdf5_handle.hpp"
-#include "regular_file.hpp"
+#include "asperity/detail/regular_file.hpp"
 
 namespace asperity {
 namespace {

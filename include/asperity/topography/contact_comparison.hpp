@@ -21,7 +21,7 @@
 // The measured summits, Persson and the fits are each set against the exact curve at the
 // pressures of interest (ModelContact::*_over_exact) when it is there. The Gaussian is served from the default table. Each Weibull is served from an
 // exact-shape scene table generated for the fitted shape over the pressures asked
-// (asperity::tablegen::generate_scene_table, shapes 0.3-50), or from a given full table (the
+// (asperity::generator::generate_scene_table, shapes 0.3-50), or from a given full table (the
 // default table: shapes 0.5-20, between grid shapes by interpolation). A fitted shape outside
 // what the table serves gets no curve; the reason is stated (ModelContact::note).
 //
@@ -70,7 +70,7 @@ struct ModelContact {
   std::string label;               // measured-summits(-own-radii), gaussian-moments, gaussian, weibull-tail, weibull-bounded
   bool served = false;
   std::string note;                // the table that served it, or why there is no curve
-  PhysicalSurface surface;
+  RoughSurface surface;
   double mean_summit_height = 0;   // [m], in the map's height frame (leveled)
   std::vector<PhysicalState> curve;         // over [pressure_min, pressure_max]
   std::vector<PhysicalState> at_pressures;  // at ContactComparison::pressures

@@ -4,7 +4,7 @@
 //   weibull_tail     x = location + scale W, W ~ phi_a            (GW's side: the tail up)
 //   weibull_bounded  x = location - scale W                       (mirrored: bounded above,
 //                                                                  worn and polished surfaces)
-// with phi_a(w) = a w^(a-1) exp(-w^a) the unit Weibull density of MODEL.md (shape a).
+// with phi_a(w) = a w^(a-1) exp(-w^a) the unit Weibull density of docs/model.md (shape a).
 //
 // Estimator for the three-parameter Weibull: maximum product of spacings (MPS; Cheng & Amin
 // 1983, Ranneby 1984). Maximum likelihood is ill-posed here: for a shape below 1 the likelihood

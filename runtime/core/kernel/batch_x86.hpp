@@ -25,8 +25,8 @@ ASPERITY_ALWAYS_INLINE __m256d quintic_rows4(const double* coefficients, const s
   const double *r2 = coefficients + at[2] * fast_stride, *r3 = coefficients + at[3] * fast_stride;
   // each pair of coefficients of rows 0 and 2 (1 and 3) in one register, two 128-bit loads,
   // then one unpack per coefficient: six shuffles and six inserts where a 4 x 4 transpose of
-  // row loads took eight shuffles for c0..c3 and four more for c4, c5 (no slower on Zen 4:
-  // bench_lookup BM_Batch/avx512 8040 -> 7912 ns a block of 4096, medians of 24)
+  // row loads took eight shuffles for c0..c3 and four more for c4, c5 (no slower: bench_lookup
+  // BM_Batch/avx512)
   const auto pairs = [](const double* lower, const double* upper) {
     return _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(lower)), _mm_loadu_pd(upper), 1);
   };
@@ -67,8 +67,8 @@ struct X86Passes {
   // ScalarPasses::positions (kernels.hpp), four queries a step; the last few one at a time.
   // at[j] is the interval, not times fast_stride: quintic_rows4 multiplies on the integer
   // registers, which this pass leaves idle (three vector operations fewer per four queries;
-  // bench_lookup BM_Batch/avx512 2.22 -> 2.15 ns. The baseline build keeps the product here:
-  // 3% slower in its quintics).
+  // faster in bench_lookup BM_Batch/avx512. The baseline build keeps the product here: its
+  // quintics were slower the other way).
   static std::uint64_t positions(const FastGrid& grid, const double* separations, std::uint64_t* at, double* y,
                                  int count) noexcept {
     // the range of s itself on each side (s < 0: [-upper, -lower]): no magnitude to make

@@ -52,8 +52,7 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
 // operations (the same bits, test_kernels): (1, pi, 4/3, 2) N times (1, R sigma, sigma E*
 // sqrt(R sigma), E* sqrt(R sigma)): a square root, three scalar products and two vector ones
 // besides the vector's assembly, where the caller made eleven scalar operations and std::sqrt's
-// errno test (bench_lookup BM_ContactAllFour 10.1 -> 9.3 ns with this alone, Zen 5, alternated
-// builds; BM_ContactAllFourScales unchanged)
+// errno test (faster in bench_lookup's BM_ContactAllFour; BM_ContactAllFourScales unchanged)
 ASPERITY_ALWAYS_INLINE __m256d surface_factors_x86(double n, double radius, double scale, double modulus) noexcept {
   const double product = radius * scale;
   const double modulus_root = modulus * std::sqrt(product);  // one vsqrtsd: the kernels build with -fno-math-errno
@@ -98,10 +97,9 @@ __attribute__((noinline)) void contact_products_lanes_x86(const ContactLanes& in
 // factor outside (0, DBL_MAX] or off the grid.
 // ContactInputs::surface: the four doubles are N, R, sigma_s, E* (contact_products_of_surface),
 // the factors computed here.
-// Measured and not kept (bench_lookup, Zen 5, alternated builds): the exps' values times the
-// factors, one branch for every X surely normal, the rest out of line (the tails: ~3% of random
-// queries, a mispredicted branch, a second exp and products with subnormal operands):
-// contact_at 8.96 ns and contact_at_scales 8.28, against 8.36 and 7.95 here (one order: 5.64).
+// Measured and not kept (bench_lookup BM_ContactAllFour, BM_ContactAllFourScales): the exps'
+// values times the factors, one branch for every X surely normal, the rest out of line (the
+// tails: a mispredicted branch, a second exp and products with subnormal operands): slower.
 template <ContactInputs inputs>
 bool contact_products_x86(const FastGrid& grid, const double* __restrict contact_records, double separation,
                           double first, double second, double third, double fourth,

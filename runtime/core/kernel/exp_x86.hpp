@@ -6,18 +6,16 @@
 //   contact kernels, whose records hold log2 X). Where every lane is surely normal (fast_math.hpp's
 //   NaturalExp / BinaryExp ranges), the result is 2^k + 2^k (e^r - 1) in one fused multiply-add,
 //   2^k made in the exponent field. Where a lane is below that range but every lane is in
-//   [-760, 709] (the tails' X < 1e-308: 3% of bench_lookup's random queries), subnormal results
-//   are made from normal doubles (no assist; BM_BatchTail/avx2/subnormal_results 12.2 -> 10.6 us
-//   a block of 4096 against fast_exp_lanes' masks); otherwise exp4_any: fast_exp_lanes' masks
+//   [-760, 709] (the tails' X < 1e-308), subnormal results are made from normal doubles (no
+//   assist; faster than fast_exp_lanes' masks in BM_BatchTail/avx2/subnormal_results);
+//   otherwise exp4_any: fast_exp_lanes' masks
 //   (0 below -746, inf above 710, NaN kept), or in the AVX-512 build vscalefpd where k is exact.
 // - exp8 (AVX-512, eight lanes): x = (m + j/16) ln2 + r, |r| <= ln2 / 32, 2^(j/16) from a
 //   16-entry table held in four registers (vpermt2pd), e^r by a minimax polynomial of degree 6
 //   (error 1.2e-17), 2^m applied by vscalefpd, which rounds subnormal results once and gives 0
 //   and inf beyond the range: one path for every lane, no branch (x clamped to [-760, 710]
-//   first, NaN kept). On AMD Zen 4 a subnormal result costs nothing extra (bench_lookup
-//   BM_BatchTail/avx512: subnormal_results 7951 ns a block of 4096, normal_results 8029); a CPU
-//   that takes a microcode assist for a subnormal result (Intel's, without flush-to-zero) would
-//   show it in those rows (not measured here).
+//   first, NaN kept). Whether a subnormal result costs extra depends on the CPU: bench_lookup's
+//   BM_BatchTail/avx512 rows, subnormal_results against normal_results, show it.
 // The coefficients: scripts/exp_minimax.py (Remez in 50 digits, the errors with the
 // coefficients rounded to double); each polynomial is one or two operations shorter than the
 // Taylor one of the same accuracy, on a path bound by its vector operations.
@@ -131,8 +129,8 @@ ASPERITY_ALWAYS_INLINE __m256d exp4_normal(__m256d expm1, __m256i shifted_bits) 
 // Base::exact_k_max), vscalefpd applies 2^k: it rounds a subnormal result once and gives 0 and
 // inf beyond the range, the same bits as the masks (with the default MXCSR: under
 // flush-to-zero it gives 0 for a subnormal result, as exp8 does), in two operations for ~25
-// (contact_orders' every lane on AVX-512; measured when the contact kernels' deep tails took
-// this path: bench_lookup BM_ContactAllFour 9.3 -> 9.0 ns, Zen 5, alternated builds)
+// (contact_orders' every lane on AVX-512; faster in bench_lookup BM_ContactAllFour when the
+// contact kernels' deep tails took this path)
 template <class Base = NaturalExp>
 ASPERITY_ALWAYS_INLINE __m256d exp4_any(__m256d x, __m256d expm1, __m256i shifted_bits) noexcept {
   const __m256d scale = _mm256_add_pd(_mm256_set1_pd(1.0), expm1);

@@ -26,8 +26,8 @@ inline constexpr int batch_block = 256;
 // stiffness/load ratio is within the upper half), from a 64-byte boundary (three cache lines).
 // In base 2 the exp's reduction is an addition, two exact subtractions and a product by ln 2,
 // instead of a multiply-add, a subtraction and two multiply-adds for ln 2 in two parts: 3
-// cycles off the lookup's chain (bench_lookup, Zen 5, alternated builds, this alone:
-// BM_ContactAllFourScales 8.60 -> 8.37 ns, BM_ContactAllFour 9.34 -> 9.14), and 2^t = m 2^k
+// cycles off the lookup's chain (faster in bench_lookup BM_ContactAllFourScales and
+// BM_ContactAllFour, this alone), and 2^t = m 2^k
 // with k an integer: the kernels multiply the factors into m and scale once (contact4_x86.hpp).
 // Each coefficient is the grid's ln X one times log2 e, rounded once from long double: ~1e-16
 // |ln X| more rounding than the grid's own quintic in double (against its exact value,
@@ -51,8 +51,8 @@ static ASPERITY_ALWAYS_INLINE void contact_logs_of(const double log2s[4], double
 }
 
 struct Kernels {
-  // Curve::value (curve_data.hpp's ScalarValue), with fused multiply-adds where the set has them
-  ScalarValue value;
+  // Curve::value (curve.hpp's CurveValueEntry), with fused multiply-adds where the set has them
+  CurveValueEntry value;
   // The four contact orders (count, stiffness, area, load: twice_order 0..3) at position y of
   // one interval's contact record: log2s[k] = log2 X and values[k] = 2^log2s[k] (fast_exp2 in
   // the baseline build; on x86 one 4-lane vector, contact4_x86.hpp).
@@ -63,6 +63,10 @@ struct Kernels {
   // or from the surface (contact_products_of_surface, ContactInputs::surface).
   ContactProducts contact_products;
   ContactProducts contact_products_of_surface;
+  // the same as Curve's entry points (curve.hpp's CurveContactEntry): the lookup's grid and
+  // records read from its storage
+  CurveContactEntry contact_entry;
+  CurveContactEntry contact_entry_of_surface;
   // out[j] = ln X or X for every query on the grid (count <= batch_block); returns how many
   // were not (|s| < 2^-70, past the grid, NaN, infinite) and their indices in `rest`.
   int (*block)(const FastGrid& grid, const double* order_coefficients, const double* separations, double* out,
@@ -133,11 +137,20 @@ bool contact_products(const FastGrid& grid, const double* __restrict contact_rec
   return true;
 }
 
+// A ContactProducts kernel as a Curve's entry point
+template <ContactProducts products>
+bool contact_entry(const CurveLookupStorage& storage, double separation, double first, double second, double third,
+                   double fourth, double* state) noexcept {
+  const CurveLookup& lookup = lookup_in(storage);
+  return products(lookup.grid, lookup.contact_records, separation, first, second, third, fourth, state);
+}
+
 template <class Math>
-double scalar_value(const CurveLookup& lookup, int twice_order, double separation) noexcept {
+double scalar_value(const CurveLookupStorage& storage, int twice_order, double separation) noexcept {
   if (__builtin_expect(!(static_cast<unsigned>(twice_order) < static_cast<unsigned>(order_count) &&
-                         (lookup.order_mask >> twice_order & 1u)), 0))
+                         (storage.order_mask >> twice_order & 1u)), 0))
     return __builtin_nan("");
+  const CurveLookup& lookup = lookup_in(storage);
   FastPosition at;
   if (__builtin_expect(!fast_position(lookup.grid, separation, at), 0))
     return lookup.value_outside(*lookup.data, twice_order, separation);

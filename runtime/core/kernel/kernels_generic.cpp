@@ -10,6 +10,8 @@ const Kernels generic_kernels{
     contact4<ScalarMath>,
     contact_products<ScalarMath, ContactInputs::factors>,
     contact_products<ScalarMath, ContactInputs::surface>,
+    contact_entry<contact_products<ScalarMath, ContactInputs::factors>>,
+    contact_entry<contact_products<ScalarMath, ContactInputs::surface>>,
     block<ScalarPasses>,
     ScalarPasses::exps};
 }

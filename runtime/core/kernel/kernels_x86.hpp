@@ -10,6 +10,8 @@ constexpr Kernels x86_kernels{scalar_value<ScalarMath>,
                               contact4_x86,
                               contact_products_x86<ContactInputs::factors>,
                               contact_products_x86<ContactInputs::surface>,
+                              contact_entry<contact_products_x86<ContactInputs::factors>>,
+                              contact_entry<contact_products_x86<ContactInputs::surface>>,
                               block<X86Passes>,
                               X86Passes::exps};
 }  // namespace

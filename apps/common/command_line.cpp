@@ -1,0 +1,211 @@
+#include "command_line.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <vector>
+
+#include "asperity/error.hpp"
+#include "asperity/surface.hpp"
+#include "asperity/table_schema.hpp"
+#include "asperity/number_text.hpp"
+
+namespace asperity::cli {
+namespace {
+
+// Carries an action's nonzero exit status out of CLI11's parse().
+struct ActionExit {
+  int status;
+};
+
+std::string selected_name(const CLI::App& app) {
+  const auto selected = app.get_subcommands();
+  return selected.empty() ? command_name(app) : command_name(*selected.front());
+}
+
+// CLI11 messages start with a capital ("The following argument..."); ours do not.
+std::string sentence_case(std::string message) {
+  if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
+      (std::islower(static_cast<unsigned char>(message[1])) || message[1] == ' '))
+    message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
+  return message;
+}
+
+// Adds an option taking one value per use; `store` gets the value if it was given exactly once.
+CLI::Option* add_once(CLI::App& command, const std::string& name, const std::string& description,
+                      std::function<void(const std::string&)> store) {
+  return command
+      .add_option_function<std::vector<std::string>>(
+          name,
+          [name, store](const std::vector<std::string>& values) {
+            if (values.size() != 1)
+              throw CLI::ValidationError(name + " is given " + std::to_string(values.size()) + " times; give it once");
+            store(values.front());
+          },
+          description)
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+}  // namespace
+
+std::string command_name(const CLI::App& command) {
+  std::string name = command.get_name();
+  for (const CLI::App* parent = command.get_parent(); parent; parent = parent->get_parent())
+    name = parent->get_name() + " " + name;
+  return name;
+}
+
+void set_action(CLI::App& command, std::function<int()> action) {
+  command.callback([action] {
+    const int status = action();
+    if (status != exit_success) throw ActionExit{status};
+  });
+}
+
+void add_version_flag(CLI::App& app, std::function<int()> print, const std::string& description) {
+  app.add_flag_callback("--version", [print] { throw ActionExit{print()}; }, description);
+}
+
+int run(CLI::App& app, int argc, const char* const* argv) {
+  int status = exit_success;
+  try {
+    app.parse(argc, argv);
+  } catch (const ActionExit& exit) {
+    status = exit.status;
+  } catch (const CLI::Success& success) {  // --help
+    status = app.exit(success);
+  } catch (const CLI::ParseError& error) {
+    const std::string name = selected_name(app);
+    std::string message = sentence_case(error.what());
+    if (app.get_subcommands().empty() &&
+        dynamic_cast<const CLI::RequiredError*>(&error) && message == "a subcommand is required") {
+      std::string names;
+      for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+        names += (names.empty() ? "" : ", ") + command->get_name();
+      if (argc > 1 && argv[1][0] != '-') {
+        message = "unknown command '" + quote_text(argv[1]) + "' (" + names + ")";
+      } else {
+        std::fputs(app.help().c_str(), stderr);
+        message = "a command is required (" + names + ")";
+      }
+    }
+    std::fprintf(stderr, "%s: %s\nRun '%s --help' for the usage.\n", name.c_str(), terminal_text(message).c_str(),
+                 name.c_str());
+    status = exit_failure;
+  } catch (const std::exception& error) {
+    // messages quote files' bytes: nothing of them may reach the terminal as a control sequence
+    std::fprintf(stderr, "%s: %s\n", selected_name(app).c_str(), terminal_text(error.what()).c_str());
+    status = exit_failure;
+  }
+  // Output that could not be written is a failure, whatever the command did.
+  // (std::cout writes through stdout's buffer: sync_with_stdio is left on.)
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int flush_errno = flushed ? 0 : errno;
+  std::cout.flush();
+  if (!flushed || std::ferror(stdout) || !std::cout) {
+    std::fprintf(stderr, "%s: writing the output failed%s%s\n", selected_name(app).c_str(),
+                 flush_errno ? ": " : "", flush_errno ? std::strerror(flush_errno) : "");
+    status = exit_failure;
+  }
+  return status;
+}
+
+CLI::Option* add_text(CLI::App& command, const std::string& name, std::string& value, const std::string& description) {
+  return add_once(command, name, description, [name, &value](const std::string& text) {
+    if (text.empty()) throw CLI::ValidationError(name + ": an empty value");
+    value = text;
+  });
+}
+
+CLI::Option* add_number(CLI::App& command, const std::string& name, double& value, const std::string& description) {
+  return add_once(command, name, description,
+                  [name, &value](const std::string& text) { value = number_from_text(text, name); })
+      ->type_name("X");
+}
+
+CLI::Option* add_whole_number(CLI::App& command, const std::string& name, long long& value, long long lo,
+                              long long hi, const std::string& description) {
+  return add_once(command, name, description,
+                  [name, &value, lo, hi](const std::string& text) {
+                    if (!read_whole_number(text, lo, hi, value))
+                      throw CLI::ValidationError(name + ": '" + quote_text(text) + "' is not a whole number from " +
+                                                 std::to_string(lo) + " to " + std::to_string(hi));
+                  })
+      ->type_name("N");
+}
+
+double contact_modulus_option(double modulus, double e1, double nu1, double e2, double nu2) {
+  try {
+    return contact_modulus_given(modulus, e1, nu1, e2, nu2);
+  } catch (const Error& error) {
+    throw CLI::ValidationError(error.what());
+  }
+}
+
+double number_from_text(const std::string& text, const std::string& what) {
+  double value = 0;
+  if (!read_double(text, value)) throw CLI::ValidationError(what + ": '" + quote_text(text) + "' is not a number");
+  if (!std::isfinite(value)) throw CLI::ValidationError(what + ": '" + quote_text(text) + "' is not a finite number");
+  return value;
+}
+
+CLI::Option* add_table_option(CLI::App& command, std::string& path) {
+  return add_text(command, "--table", path,
+                  "table file (default: $ASPERITY_TABLE if set, else the default table; "
+                  "`asperity --version` shows which)")
+      ->type_name("FILE");
+}
+
+Table open_table(const std::string& path) { return path.empty() ? Table::open_default() : Table::open(path); }
+
+void warn(const CLI::App& command, const std::string& message) {
+  std::fprintf(stderr, "%s: warning: %s\n", command_name(command).c_str(), terminal_text(message).c_str());
+}
+
+void note(const CLI::App& command, const std::string& message) {
+  std::fprintf(stderr, "%s: %s\n", command_name(command).c_str(), terminal_text(message).c_str());
+}
+
+int print_version() {
+  std::printf("asperity %s\n", ASPERITY_VERSION_STRING);
+  std::string path;
+  try {
+    path = Table::default_path();
+  } catch (const std::exception& error) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "asperity: no table found: %s\n", error.what());
+    return exit_failure;
+  }
+  const char* from_environment = std::getenv("ASPERITY_TABLE");
+  std::printf("table: %s%s\n", path.c_str(),
+              from_environment && *from_environment ? " (from $ASPERITY_TABLE)" : " (the default table)");
+  try {
+    const Table table = Table::open(path);
+    // Opening checked the file's schema and schema_version attributes against these.
+    std::printf("schema: %s, version %d\n", schema::name, schema::version);
+    std::printf("generator: %s\n", table.data().generator.c_str());
+    std::printf("generator options: %s\n", table.data().generator_options.c_str());
+    for (const CurveSet& set : table.data().sets) {
+      if (set.distribution == Distribution::gaussian)
+        std::printf("curves: %s %s\n", to_string(set.distribution), to_string(set.side));
+      else
+        std::printf("curves: %s %s, shapes %s to %s%s\n", to_string(set.distribution), to_string(set.side),
+                    format_double(set.shape_min).c_str(), format_double(set.shape_max).c_str(),
+                    table.data().exact_shapes ? " (a scene table: its own shapes only)" : "");
+    }
+  } catch (const std::exception& error) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "asperity: the table cannot be used: %s\n", error.what());
+    return exit_failure;
+  }
+  return exit_success;
+}
+
+}  // namespace asperity::cli

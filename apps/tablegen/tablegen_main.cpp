@@ -1,0 +1,267 @@
+// tablegen: generate an asperity table file (the generator: asperity/generator/; the command
+// line on CLI11: apps/common/command_line.hpp).
+//   tablegen --out FILE [--shapes LO:HI:STEP] [--sides tail,bounded] [--gaussian|--no-gaussian]
+//            [--tolerance REL] [--density F] [--threads N] [--quiet]
+//   tablegen --scene SCENE.toml --out FILE [--threads N] [--quiet]
+// Everything that can be checked before the generator runs is checked here, with what is allowed.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asperity/error.hpp"
+#include "asperity/scene.hpp"
+#include "asperity/table_schema.hpp"
+#include "command_line.hpp"
+#include "asperity/generator/generate.hpp"
+#include "asperity/number_text.hpp"
+#include "asperity/generator/scene_table.hpp"
+#include "asperity/table_writer.hpp"
+
+namespace {
+
+using namespace asperity;
+
+// A derived number in a message: four significant digits are enough to act on.
+std::string approximately(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+// The generator's reach (checked here so that a request beyond it is refused with what is
+// allowed, not answered by a quadrature error): Weibull shapes, including the interpolation
+// nodes past each end of a grid, within the scene limits; at most this many grid shapes; on a
+// Weibull tail, s^a (the exponent of exp(-s^a)) at most 1e100, where the quadrature that checks
+// every curve still works (measured: it fails from about 1e130 at a = 50).
+constexpr int max_grid_shapes = 1000;
+constexpr double max_tail_exponent_log = 100 * 2.302585092994046;  // ln(1e100)
+
+struct Options {
+  generator::GenerateOptions generate;
+  std::string out, scene, shapes, sides;
+  double tolerance = NAN, density = NAN;
+  long long threads = 0;
+  bool gaussian = false, no_gaussian = false, quiet = false;
+};
+
+[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
+
+// Parses and checks --shapes LO:HI:STEP against the generator's reach before it runs.
+void apply_shapes(const std::string& spec, generator::GenerateOptions& options) {
+  std::vector<std::string> parts;
+  std::stringstream stream(spec);
+  for (std::string part; std::getline(stream, part, ':');) parts.push_back(part);
+  if (parts.size() != 3 || spec.back() == ':') usage("--shapes wants LO:HI:STEP, got '" + quote_text(spec) + "'");
+  const double lo = cli::number_from_text(parts[0], "--shapes LO"), hi = cli::number_from_text(parts[1], "--shapes HI");
+  const double step = cli::number_from_text(parts[2], "--shapes STEP");
+  const std::string limits = "[" + format_double(scene_shape_min) + ", " + format_double(scene_shape_max) + "]";
+  if (!(lo >= scene_shape_min && hi <= scene_shape_max && lo <= hi))
+    usage("--shapes needs " + format_double(scene_shape_min) + " <= LO <= HI <= " + format_double(scene_shape_max) +
+          ", got LO " + format_double(lo) + ", HI " + format_double(hi));
+  if (!(step > 0)) usage("--shapes needs STEP > 0");
+  // The grid's spacing in q = ln a - 1/a is at most STEP (2/3 of it on the bounded side): bound
+  // the node count before making it.
+  const double factor = generator::GenerateOptions::bounded_step_factor;
+  const double intervals = (shape_grid_variable(hi) - shape_grid_variable(lo)) / (step * factor);
+  if (!(intervals <= max_grid_shapes)) {
+    usage("--shapes " + quote_text(spec) + " asks for about " + format_double(std::ceil(intervals)) +
+          " grid shapes on the bounded side; at most " + std::to_string(max_grid_shapes) + " (STEP >= " +
+          approximately(1.001 * (shape_grid_variable(hi) - shape_grid_variable(lo)) / (max_grid_shapes * factor)) +
+          " for this range)");
+  }
+  options.shape_min = lo;
+  options.shape_max = hi;
+  options.shape_log_step = step;
+  const std::vector<double> grid = generator::shape_grid(options);
+  if (grid.front() < scene_shape_min || grid.back() > scene_shape_max) {
+    usage("--shapes " + quote_text(spec) + ": the grid runs " + std::to_string(shape_stencil / 2) +
+          " nodes past each end (for the interpolation between shapes), here from " + approximately(grid.front()) +
+          " to " + approximately(grid.back()) + "; every node must be within " + limits +
+          ": bring LO and HI inside or make STEP smaller");
+  }
+}
+
+void apply_sides(const std::string& sides, generator::GenerateOptions& options) {
+  options.tail = options.bounded = false;
+  std::stringstream stream(sides);
+  for (std::string side; std::getline(stream, side, ',');) {
+    if (side == "tail") options.tail = true;
+    else if (side == "bounded") options.bounded = true;
+    else if (side == "both") options.tail = options.bounded = true;
+    else if (side != "none") usage("--sides: unknown side '" + quote_text(side) + "' (tail, bounded, both, none)");
+  }
+}
+
+// A scene's requests checked against the generator's reach before it runs.
+void check_scene(const Scene& scene) {
+  for (const SceneCurve& curve : scene.curves) {
+    if (curve.by_load || curve.distribution != Distribution::weibull || curve.side != Side::tail) continue;
+    if (!(curve.range_max > 0) || curve.shape * std::log(curve.range_max) <= max_tail_exponent_log) continue;
+    const double reach = std::exp(max_tail_exponent_log / curve.shape);
+    throw Error(scene.source + ":" + std::to_string(curve.line) + ": " +
+                (curve.name.empty() ? std::string("a curve") : "curve '" + curve.name + "'") +
+                ": separations up to " + format_double(curve.range_max) + " at shape " + format_double(curve.shape) +
+                " reach s^a = 1e" + format_double(std::floor(curve.shape * std::log10(curve.range_max))) +
+                "; the generator's quadrature reaches s^a = 1e100, here s <= " + approximately(reach) +
+                " (the series of asymptotic.hpp serve beyond)");
+  }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int generate_scene(const Options& options, int threads) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scene scene = read_scene_file(options.scene);
+  check_scene(scene);
+  if (!options.quiet)
+    std::fprintf(stderr, "tablegen: scene %s: %zu curves\n", quote_text(options.scene, 200).c_str(), scene.curves.size());
+  const generator::SceneResult result = generator::generate_scene_table(scene, threads);
+  if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
+  write_table_file(result.table, options.out);
+  std::printf("%-16s %-8s %-8s %7s %-14s %-24s %9s %9s %6s %8s\n", "curve", "dist", "side", "shape", "orders",
+              "separations", "asked", "achieved", "knots", "memory");
+  std::size_t bytes = 0;
+  for (const generator::SceneCurveReport& report : result.curves) {
+    std::string orders;
+    for (int twice_order : report.curve.twice_orders)
+      orders += (orders.empty() ? "" : ",") + std::string(twice_order % 2 ? std::to_string(twice_order) + "/2"
+                                                                          : std::to_string(twice_order / 2));
+    char range[64];
+    std::snprintf(range, sizeof range, "[%.4g, %.4g]", report.separation_min, report.separation_max);
+    std::printf("%-16s %-8s %-8s %7.4g %-14s %-24s %9.2g %9.2g %6d %5.1f KiB\n",
+                report.curve.name.empty() ? "-" : report.curve.name.c_str(), to_string(report.curve.distribution),
+                to_string(report.curve.side), report.curve.shape, orders.c_str(), range, report.curve.max_rel_error,
+                report.achieved_error, report.knots, report.memory_bytes / 1024.0);
+    bytes += report.memory_bytes;
+  }
+  std::printf("wrote %s: %zu curves, %.1f KiB in memory, %.2f s\n", options.out.c_str(), result.curves.size(),
+              bytes / 1024.0, seconds_since(start));
+  return cli::exit_success;
+}
+
+int generate(Options options) {
+  generator::GenerateOptions& generate = options.generate;
+  if (!options.shapes.empty()) apply_shapes(options.shapes, generate);
+  if (!options.sides.empty()) apply_sides(options.sides, generate);
+  if (options.gaussian && options.no_gaussian) usage("give --gaussian or --no-gaussian, not both");
+  if (options.no_gaussian) generate.gaussian = false;
+  if (!std::isnan(options.tolerance)) {
+    if (!(options.tolerance >= 1e-15 && options.tolerance <= 1e-3)) usage("--tolerance must be between 1e-15 and 1e-3");
+    generate.tolerance = options.tolerance;
+  }
+  if (!std::isnan(options.density)) {
+    if (!(options.density >= 0.05 && options.density <= 8)) usage("--density must be between 0.05 and 8");
+    generate.knot_density = options.density;
+  }
+  generate.threads = static_cast<int>(options.threads);
+  if (!options.scene.empty()) {
+    if (!options.shapes.empty() || !options.sides.empty() || options.gaussian || options.no_gaussian ||
+        !std::isnan(options.tolerance) || !std::isnan(options.density))
+      usage("--shapes, --sides, --gaussian, --tolerance and --density do not apply to --scene (its file says what to make)");
+    // Writing the table over its own scene file would lose the scene.
+    std::error_code code;
+    if (std::filesystem::equivalent(options.out, options.scene, code))
+      usage("--out names the scene file itself ('" + quote_text(options.out, 200) + "'): give another file");
+    return generate_scene(options, generate.threads);
+  }
+  if (!generate.tail && !generate.bounded && !generate.gaussian)
+    usage("nothing to generate: choose at least one of --sides tail/bounded or --gaussian");
+
+  const auto start = std::chrono::steady_clock::now();
+  const bool terminal = isatty(STDERR_FILENO);
+  const bool quiet = options.quiet;
+  int reported = 0;
+  // A bar on a terminal; otherwise a line per tenth of the curves, so a log shows it is alive.
+  auto progress = [&](int done, int total) {
+    if (quiet) return;
+    if (terminal) {
+      const int width = 40, filled = width * done / total;
+      std::fprintf(stderr, "\r[%s%s] %d/%d curves", std::string(filled, '#').c_str(),
+                   std::string(width - filled, ' ').c_str(), done, total);
+      if (done == total) std::fprintf(stderr, "\n");
+    } else if (done == total || done * 10 / total > reported) {
+      reported = done * 10 / total;
+      std::fprintf(stderr, "tablegen: %d/%d curves integrated and checked, %.1f s\n", done, total, seconds_since(start));
+    }
+  };
+  if (!quiet)
+    std::fprintf(stderr, "tablegen: Weibull %s%s%s on %zu%s grid shapes (%s to %s served)%s\n",
+                 generate.tail ? "tail" : "", generate.tail && generate.bounded ? " and " : "",
+                 generate.bounded ? "bounded side" : (generate.tail ? " side" : "no side"),
+                 generator::shape_grid(generate, generate.tail ? Side::tail : Side::bounded).size(),
+                 generate.tail && generate.bounded
+                     ? (" and " + std::to_string(generator::shape_grid(generate, Side::bounded).size())).c_str()
+                     : "",
+                 format_double(generate.shape_min).c_str(), format_double(generate.shape_max).c_str(),
+                 generate.gaussian ? ", and the Gaussian" : "");
+  const TableData table = generator::generate_table(generate, progress);
+  if (!quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
+  write_table_file(table, options.out);
+  double worst = 0;
+  std::size_t curves = 0;
+  for (const CurveSet& set : table.sets) {
+    curves += set.shapes.size();
+    for (std::size_t i = 0; i < set.shapes.size(); ++i)
+      if (set.shapes[i] >= set.shape_min && set.shapes[i] <= set.shape_max)
+        for (int k = 0; k < order_count; ++k) worst = std::max(worst, set.max_rel_error[i * order_count + k]);
+  }
+  std::printf("wrote %s: %zu curve sets, %zu curves of 6 orders, max relative error against quadrature "
+              "(served shapes) %.3g, %.1f s\n",
+              options.out.c_str(), table.sets.size(), curves, worst, seconds_since(start));
+  return cli::exit_success;
+}
+
+int print_version() {
+  std::printf("tablegen %s (writes schema %s, version %d)\n", ASPERITY_VERSION_STRING, schema::name, schema::version);
+  return cli::exit_success;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("tablegen: generate an asperity table file (the integrals on a grid of shapes, or one scene's curves)",
+               "tablegen");
+  app.get_formatter()->column_width(30);
+  auto options = std::make_shared<Options>();
+  Options& o = *options;
+  cli::add_version_flag(app, print_version, "print the version and the table schema it writes, then exit");
+  cli::add_text(app, "--out", o.out, "the table file to write (atomically: a temporary file renamed into place)")
+      ->type_name("FILE")
+      ->required();
+  cli::add_text(app, "--scene", o.scene,
+                "a table for one scene's curves only (docs/scenes.md): exact shapes, knots where the scene "
+                "needs them, each curve's error measured and stored")
+      ->type_name("SCENE.toml");
+  cli::add_text(app, "--shapes", o.shapes,
+                "Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5, uniform in q = ln(a) - 1/a "
+                "between them with spacing at most STEP (2/3 of it on the bounded side), six nodes more past each "
+                "end; every node within [0.3, 50], at most 1000 (default 0.5:20:0.075)")
+      ->type_name("LO:HI:STEP");
+  cli::add_text(app, "--sides", o.sides, "Weibull sides to tabulate: tail, bounded, both (default) or none")
+      ->type_name("LIST");
+  app.add_flag("--gaussian", o.gaussian, "include the Gaussian tail side (the default)");
+  app.add_flag("--no-gaussian", o.no_gaussian, "leave the Gaussian out");
+  cli::add_number(app, "--tolerance", o.tolerance, "odeint error tolerance on ln X, 1e-15 to 1e-3 (default 1e-14)")
+      ->type_name("REL");
+  cli::add_number(app, "--density", o.density,
+                  "knots per segment relative to the default layout, 0.05 to 8 (default 1): 0.25 gives ~1e-8 "
+                  "worst-case error at a quarter of the memory, 2 gives ~1e-13 (docs/speed-vs-error.md)")
+      ->type_name("F");
+  cli::add_whole_number(app, "--threads", o.threads, 1, 4096, "worker threads (default: all cores)");
+  app.add_flag("--quiet", o.quiet, "no progress on standard error (errors are still reported)");
+  app.footer(
+      "Progress goes to standard error: a bar on a terminal, else a line per tenth of the curves.\n"
+      "Exit status: 0 written; 2 bad usage, a bad scene file, a generation that fails its checks, or a\n"
+      "file that could not be written.");
+  cli::set_action(app, [options] { return generate(*options); });
+  return cli::run(app, argc, argv);
+}

@@ -1,0 +1,19 @@
+// Writing a table file (format in asperity/table_schema.hpp): the HDF5 file is built in memory
+// with a 512-byte user block, the integrity header (SHA-256 of the rest) put in that block, and
+// the bytes written with replace_file (replace_file.hpp): a crash never leaves a half-written
+// table at the target. Deterministic: the same data give the same bytes (no timestamps).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "asperity/table.hpp"
+
+namespace asperity {
+
+// The whole table file's bytes. Throws asperity::Error for data that CurveSet::validate refuses
+// or text too long for an attribute.
+std::vector<unsigned char> table_file_bytes(const TableData& table);
+
+void write_table_file(const TableData& table, const std::string& path);
+
+}  // namespace asperity

@@ -1,0 +1,391 @@
+#include "asperity/pressure_overclosure.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ostream>
+#include <sstream>
+
+#include "asperity/error.hpp"
+
+namespace asperity {
+namespace {
+
+// The cards carry 13 significant digits: CalculiX reads each field as 20 characters (f20.0),
+// and "-1.234567890123e-05" is 19.
+constexpr int card_digits = 13;
+
+double round_to_card(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*e", card_digits - 1, value);
+  return std::strtod(text, nullptr);
+}
+
+std::string short_number(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+// The separation (origin convention) of an overclosure measured from the mean summit height.
+double separation_of(const ContactModel& model, double overclosure) {
+  const double origin_to_mean = -model.at_separation(0).mean_separation;
+  return origin_to_mean - overclosure;
+}
+
+struct Node {
+  double overclosure, pressure;
+};
+
+// The law in the card's datum: overclosure h in the datum is h - shift from the mean summit height.
+struct DatumLaw {
+  const ContactModel& model;
+  double shift;
+  double pressure(double overclosure) const { return law_pressure(model, overclosure - shift); }
+};
+
+Node node_at(const DatumLaw& law, double overclosure) {
+  const double h = round_to_card(overclosure);
+  return {h, round_to_card(law.pressure(h))};
+}
+
+// The largest relative error of the chord from a to b against the law, at `count` interior points.
+double chord_error(const DatumLaw& law, const Node& a, const Node& b, int count) {
+  double worst = 0;
+  for (int i = 1; i <= count; ++i) {
+    const double fraction = static_cast<double>(i) / (count + 1);
+    const double h = a.overclosure + fraction * (b.overclosure - a.overclosure);
+    const double chord = a.pressure + fraction * (b.pressure - a.pressure);
+    const double exact = law.pressure(h);
+    const double error = std::fabs(chord - exact) / exact;
+    if (!(error <= worst)) worst = std::isnan(error) ? INFINITY : error;
+  }
+  return worst;
+}
+
+// Splits [a, b] at its middle (as the card rounds it); false if the card's digits cannot.
+bool middle(const DatumLaw& law, const Node& a, const Node& b, Node& mid) {
+  mid = node_at(law, 0.5 * (a.overclosure + b.overclosure));
+  return mid.overclosure > a.overclosure && mid.overclosure < b.overclosure;
+}
+
+struct Tabulation {
+  std::vector<Node> placed;
+  double worst = 0;
+  long checked = 0;
+};
+
+// Places points from low to high for `tolerance` and verifies them; false as soon as more than
+// `limit` points would be needed.
+bool tabulate_once(const DatumLaw& law, const Node& low, const Node& high, double tolerance, std::size_t limit,
+                   Tabulation& result) {
+  // Place: bisect until the chord is within half the tolerance at 7 interior points.
+  std::vector<Node> placed{low}, pending{high};  // pending: right ends still to reach, nearest last
+  while (!pending.empty()) {
+    const Node& a = placed.back();
+    const Node b = pending.back();
+    Node mid;
+    if (chord_error(law, a, b, 7) <= 0.5 * tolerance || !middle(law, a, b, mid)) {
+      placed.push_back(b);
+      pending.pop_back();
+    } else {
+      pending.push_back(mid);
+    }
+    if (placed.size() + pending.size() > limit) return false;
+  }
+  // Verify every interval at 32 interior points; split and check again where it fails.
+  double worst = 0;
+  long checked = 0;
+  for (bool again = true; again;) {
+    again = false;
+    worst = 0;
+    checked = 0;
+    std::vector<Node> verified{placed.front()};
+    for (std::size_t i = 1; i < placed.size(); ++i) {
+      const Node& a = verified.back();
+      const double error = chord_error(law, a, placed[i], 32);
+      checked += 32;
+      Node mid;
+      if (error > 0.9 * tolerance && middle(law, a, placed[i], mid)) {
+        verified.push_back(mid);
+        again = true;
+      }
+      worst = std::max(worst, error);
+      verified.push_back(placed[i]);
+    }
+    placed.swap(verified);
+    if (placed.size() > limit) return false;
+  }
+  result.placed = std::move(placed);
+  result.worst = worst;
+  result.checked = checked;
+  return true;
+}
+
+// x rounded up to two significant digits (0.00231 -> 0.0024): a loosened tolerance to state.
+double round_up_two_digits(double x) {
+  const double scale = std::pow(10.0, std::floor(std::log10(x)) - 1);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", std::ceil(x / scale * (1 - 1e-12)) * scale);
+  return std::strtod(text, nullptr);  // 0.0012, not 0.0012000000000000001
+}
+
+[[noreturn]] void too_many_points(double tolerance) {
+  std::ostringstream message;
+  message << "the law needs more than " << card_points_max << " points for a tolerance of " << tolerance
+          << ": give a larger tolerance or a narrower pressure range";
+  throw Error(message.str());
+}
+
+}  // namespace
+
+double law_pressure(const ContactModel& model, double overclosure) {
+  return model.at_separation(separation_of(model, overclosure)).pressure;
+}
+
+double law_overclosure(const ContactModel& model, double pressure) {
+  return -model.at_pressure(pressure).mean_separation;
+}
+
+PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model, double pressure_min,
+                                                       double pressure_max, double tolerance, OverclosureDatum datum,
+                                                       std::size_t max_points) {
+  if (!(std::isfinite(pressure_min) && std::isfinite(pressure_max) && pressure_min > 0 && pressure_max > pressure_min))
+    throw Error("the pressure range needs 0 < PMIN < PMAX, finite");
+  if (!(tolerance >= card_tolerance_min && tolerance <= card_tolerance_max)) {
+    std::ostringstream message;
+    message << "the tolerance must be between " << card_tolerance_min << " and " << card_tolerance_max << ", got "
+            << tolerance;
+    throw Error(message.str());
+  }
+  if (!(max_points >= card_points_min && max_points <= card_points_max)) {
+    std::ostringstream message;
+    message << "the cap on the card's points must be from " << card_points_min << " to " << card_points_max
+            << ", got " << max_points;
+    throw Error(message.str());
+  }
+  const double low_mean = law_overclosure(model, pressure_min), high_mean = law_overclosure(model, pressure_max);
+  if (!(std::isfinite(low_mean) && std::isfinite(high_mean) && high_mean > low_mean))
+    throw Error("the model gives no finite overclosure over this pressure range");
+  // Below pressure_min the card follows the law's tangent there down to zero pressure.
+  const auto tangent_zero = [&](double overclosure_mean, double pressure) {
+    const PhysicalState state = model.at_separation(separation_of(model, overclosure_mean));
+    const double slope = state.stiffness / model.surface().nominal_area;  // dp/dh
+    return overclosure_mean - pressure / slope;
+  };
+  double shift = 0;  // overclosure in the datum minus overclosure from the mean summit height
+  if (datum == OverclosureDatum::origin) shift = model.at_separation(0).mean_separation;
+  if (datum == OverclosureDatum::zero_pressure) shift = -tangent_zero(low_mean, pressure_min);
+  if (!std::isfinite(shift)) throw Error("the model gives no finite datum for the overclosure");
+  const DatumLaw law{model, shift};
+  // The range's ends: the pressures asked, at the law's overclosures.
+  const Node low{round_to_card(low_mean + shift), round_to_card(pressure_min)};
+  const Node high{round_to_card(high_mean + shift), round_to_card(pressure_max)};
+  if (!(std::isfinite(low.overclosure) && std::isfinite(high.overclosure) && high.overclosure > low.overclosure))
+    throw Error("the model gives no finite overclosure over this pressure range");
+
+  const std::size_t limit = max_points - 1;  // the zero-pressure point is a row too
+  Tabulation result;
+  double met = tolerance;
+  if (!tabulate_once(law, low, high, tolerance, limit, result)) {
+    if (max_points == card_points_max) too_many_points(tolerance);
+    if (!tabulate_once(law, low, high, card_tolerance_max, limit, result)) {
+      std::ostringstream message;
+      message << "the law needs more than " << max_points << " points even for a tolerance of " << card_tolerance_max
+              << ": allow more points or give a narrower pressure range";
+      throw Error(message.str());
+    }
+    // The smallest tolerance that fits, by bisection in its logarithm; stated with two digits.
+    double fails = tolerance, fits = card_tolerance_max;
+    Tabulation trial;
+    while (fits / fails > 1.01) {
+      const double mid = std::sqrt(fails * fits);
+      if (tabulate_once(law, low, high, mid, limit, trial)) fits = mid;
+      else fails = mid;
+    }
+    met = std::min(round_up_two_digits(fits), card_tolerance_max);
+    if (!tabulate_once(law, low, high, met, limit, result)) {
+      met = fits;
+      tabulate_once(law, low, high, met, limit, result);
+    }
+  }
+  if (!(result.worst <= met)) {
+    std::ostringstream message;
+    message << "linear interpolation reaches a relative error of " << result.worst << " (asked " << met
+            << ") where 13 digits cannot place points closer";
+    throw Error(message.str());
+  }
+  const double zero = datum == OverclosureDatum::zero_pressure
+                          ? 0.0
+                          : round_to_card(tangent_zero(low.overclosure - shift, low.pressure) + shift);
+  if (!(std::isfinite(zero) && zero < low.overclosure))
+    throw Error("the law's tangent at the lowest pressure does not reach zero pressure");
+  PressureOverclosureTable table;
+  table.points.push_back({0.0, zero});
+  for (const Node& node : result.placed) table.points.push_back({node.pressure, node.overclosure});
+  table.pressure_min = low.pressure;
+  table.pressure_max = high.pressure;
+  table.tolerance = met;
+  table.asked_tolerance = tolerance;
+  table.max_points = max_points;
+  table.max_error = result.worst;
+  table.checked_points = result.checked;
+  table.datum = datum;
+  table.mean_summit_overclosure = shift;
+  return table;
+}
+
+std::string card_number(double value) {
+  const double rounded = round_to_card(value);
+  // Fixed ("1000000", "0.0002") where that takes at most 20 characters with 13 digits, else
+  // scientific ("1e-07"); either way the fewest digits that read back to `rounded`.
+  const double magnitude = std::fabs(rounded);
+  const bool fixed = rounded == 0 || (magnitude >= 1e-5 && magnitude < 1e15);
+  char text[64];
+  const std::to_chars_result result = std::to_chars(
+      text, text + sizeof text, rounded, fixed ? std::chars_format::fixed : std::chars_format::scientific);
+  return std::string(text, result.ptr);
+}
+
+namespace {
+
+// The card (or CSV) of `points` (SI); `datum` (lines without the "** ") says where overclosure
+// is measured from; `notes` go after it, where each kind of table states where its points come
+// from.
+void write_card(std::ostream& out, const std::vector<PressureOverclosurePoint>& points, CardFormat format,
+                CardUnits units, const std::string& description, const std::string& datum, const std::string& notes) {
+  const double length = units == CardUnits::mm ? 1e3 : 1.0;     // m -> mm
+  const double pressure = units == CardUnits::mm ? 1e6 : 1.0;   // Pa -> MPa = N/mm^2 (divided: 1e8 Pa is 100 MPa)
+  const char* length_unit = units == CardUnits::mm ? "mm" : "m";
+  const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
+  if (format == CardFormat::calculix)
+    for (std::size_t i = 1; i < points.size(); ++i)
+      if ((points[i].overclosure - points[i - 1].overclosure) * length < 1e-10)
+        throw Error(std::string("two overclosures are closer than 1e-10 ") + length_unit +
+                    ", which CalculiX moves apart: write the card in mm (--units mm) or give a larger tolerance");
+  const auto row = [&](const PressureOverclosurePoint& point) {
+    out << card_number(point.pressure / pressure) << "," << card_number(point.overclosure * length) << "\n";
+  };
+  if (format == CardFormat::csv) {
+    out << "pressure_" << pressure_unit << ",overclosure_" << length_unit << "\n";
+    for (const PressureOverclosurePoint& point : points) row(point);
+    return;
+  }
+  const auto comment = [&](const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) out << "** " << line << "\n";
+  };
+  comment(description);
+  out << "** units: overclosure in " << length_unit << ", pressure in " << pressure_unit << "\n"
+      << "** overclosure: interpenetration of the contact surfaces (a clearance is negative), measured\n";
+  comment(datum);
+  comment(notes);
+  if (format == CardFormat::calculix) {
+    const double clearance = points.empty() ? 0.0 : -points.front().overclosure * length;
+    out << "** CalculiX: use this card with node-to-surface contact (*CONTACT PAIR, TYPE=NODE TO SURFACE),\n"
+        << "**   which holds at most 200 points. Face-to-face contact (ccx 2.20) does not work with it: above\n"
+        << "**   41 points ccx crashes, and it starts contact only at positive overclosure, so clearances give\n"
+        << "**   zero force, silently.\n"
+        << "** node-to-surface contact makes a contact spring only where the clearance is below 1e-3 sqrt(A),\n"
+        << "**   A the slave node's area (1e-3 L for faces of edge L);\n";
+    if (clearance > 0)
+      out << "**   this card reaches a clearance of " << card_number(clearance) << " " << length_unit
+          << ": beyond the cut-off its pressures never act\n";
+    else
+      out << "**   this card has no clearance (every overclosure >= 0): the cut-off never matters\n";
+    out << "** beyond the last point CalculiX keeps the last pressure\n";
+  } else {
+    out << "** beyond the last point Abaqus continues the last slope\n";
+  }
+  out << "*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR\n";
+  for (const PressureOverclosurePoint& point : points) row(point);
+}
+
+const char* mean_summit_datum = "  from the rough surface's mean summit height to the flat";
+
+}  // namespace
+
+void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
+                                CardUnits units, const std::string& description) {
+  const double pressure = units == CardUnits::mm ? 1e6 : 1.0;
+  const double length = units == CardUnits::mm ? 1e3 : 1.0;
+  const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
+  const char* length_unit = units == CardUnits::mm ? "mm" : "m";
+  std::ostringstream datum;
+  const std::string mean_at =
+      "  (the flat at the mean summit height is at overclosure " + card_number(table.mean_summit_overclosure * length) +
+      " " + length_unit + ")";
+  if (table.datum == OverclosureDatum::mean_summit)
+    datum << mean_summit_datum << " (--overclosure-datum mean-summit, the default)";
+  else if (table.datum == OverclosureDatum::origin)
+    datum << "  from the origin of the separation (the Weibull origin: its lowest summit on the tail side, its\n"
+          << "  highest on the bounded side; the Gaussian's mean) to the flat (--overclosure-datum origin)\n"
+          << mean_at;
+  else
+    datum << "  from where the card's pressure reaches zero, its first point (--overclosure-datum zero-pressure):\n"
+          << "  start the FE model with the surfaces touching\n"
+          << mean_at;
+  std::ostringstream notes;
+  notes << "from " << short_number(table.pressure_min / pressure) << " to " << short_number(table.pressure_max / pressure)
+        << " " << pressure_unit << " linear interpolation between the points is within " << table.tolerance << "\n"
+        << "  (relative, in pressure) of the law: measured " << table.max_error << " at most, at "
+        << table.checked_points << " points\n";
+  if (table.tolerance != table.asked_tolerance)
+    notes << "  (tolerance " << table.asked_tolerance << " asked, loosened to fit at most " << table.max_points
+          << " points)\n";
+  notes << "first point: zero pressure where the law's tangent at the lowest pressure reaches zero\n";
+  write_card(out, table.points, format, units, description, datum.str(), notes.str());
+}
+
+void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<PressureOverclosurePoint>& points,
+                                          CardFormat format, CardUnits units, const std::string& description,
+                                          const std::string& notes) {
+  if (points.size() < 2) throw Error("a tabulated pressure-overclosure curve needs at least two points");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const PressureOverclosurePoint& point = points[i];
+    if (!(std::isfinite(point.pressure) && std::isfinite(point.overclosure) && point.pressure >= 0))
+      throw Error("a point of the pressure-overclosure curve is not finite, or its pressure is negative");
+    if (i > 0 && !(point.overclosure > points[i - 1].overclosure && point.pressure >= points[i - 1].pressure))
+      throw Error("the pressure-overclosure curve must rise in overclosure, its pressure never falling");
+  }
+  std::vector<PressureOverclosurePoint> rounded;
+  for (const PressureOverclosurePoint& point : points)
+    rounded.push_back({round_to_card(point.pressure), round_to_card(point.overclosure)});
+  write_card(out, rounded, format, units, description, mean_summit_datum, notes);
+}
+
+bool parse_overclosure_datum(const std::string& name, OverclosureDatum& datum) {
+  if (name == "mean-summit") datum = OverclosureDatum::mean_summit;
+  else if (name == "origin") datum = OverclosureDatum::origin;
+  else if (name == "zero-pressure") datum = OverclosureDatum::zero_pressure;
+  else return false;
+  return true;
+}
+
+const char* datum_name(OverclosureDatum datum) {
+  switch (datum) {
+    case OverclosureDatum::origin: return "origin";
+    case OverclosureDatum::zero_pressure: return "zero-pressure";
+    case OverclosureDatum::mean_summit: break;
+  }
+  return "mean-summit";
+}
+
+bool parse_card_format(const std::string& name, CardFormat& format) {
+  if (name == "calculix") format = CardFormat::calculix;
+  else if (name == "abaqus") format = CardFormat::abaqus;
+  else if (name == "csv") format = CardFormat::csv;
+  else return false;
+  return true;
+}
+
+bool parse_card_units(const std::string& name, CardUnits& units) {
+  if (name == "si") units = CardUnits::si;
+  else if (name == "mm") units = CardUnits::mm;
+  else return false;
+  return true;
+}
+
+}  // namespace asperity
