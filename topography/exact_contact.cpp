@@ -816,6 +816,10 @@ ContactStep ExactContact::at_pressure(double pressure) {
   }
   const Solve solve = constrained(true, pressure);
   ContactStep step = describe(solve);
+  // the pressures' mean is the target by construction (each iteration rescales them to it); the
+  // sum in describe() differs from it by rounding, in the order of the threads' blocks
+  step.pressure = pressure;
+  step.load = pressure * nominal_area_;
   step.coarse_iterations = coarse_iterations;
   if (options_.stiffness) stiffness_of(step);
   return step;
