@@ -322,12 +322,13 @@ def speed():
         if kind == "periodic_fourier" and base is None:
             base = per
         rows.append([kind, f"{n}^2", f"{b['s_per_step']:.3f}", f"{b['cpu_s_per_step']:.3f}", f"{b['iterations_per_step']:.0f} + "
-                     f"{b['stiffness_iterations_per_step']:.0f}", f"{1e3 * b['s_per_convolution']:.2f}",
+                     f"{b['stiffness_iterations_per_step']:.0f}", f"{b.get('coarse_iterations_per_step', 0):.0f}",
+                     f"{1e3 * b['s_per_convolution']:.2f}",
                      f"{b['convolution_over_fft_pair']:.2f}", f"{per / base:.2f}", f"{b['s_setup']:.3f}"])
     sections["speed"] = (f"Machine: {runs['context'].get('num_cpus')} CPUs at {runs['context'].get('mhz_per_cpu')} MHz, "
                          f"load average {runs['context'].get('load_avg')} when it ran.\n\n") + table(
         ["solve", "map", "s per load step", "CPU s per step (all threads)", "iterations per step (constrained + stiffness)",
-         "ms per convolution", "convolution / FFT pair", "per convolution / (N log N), relative", "setup [s]"], rows)
+         "coarse start's iterations per step (all levels)", "ms per convolution", "convolution / FFT pair", "per convolution / (N log N), relative", "setup [s]"], rows)
 
 
 def main():

@@ -1,7 +1,9 @@
 #include "asperity/topography/exact_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -45,6 +47,36 @@ void in_parallel(int threads, std::size_t total, Function&& f) {
   });
 }
 
+// The passes over the map's points run over fixed blocks of rows, on `threads` threads; each
+// block's sums are kept apart (`partial`: sums_per_block a block) and added in the blocks' order,
+// so that the sums, and the solution, do not depend on the number of threads. pass(first, end,
+// sums) covers rows [first, end) and writes sums[0..4] (added) and sums[5] (the largest).
+constexpr std::size_t rows_per_block = 8, sums_per_block = 6;
+
+std::size_t row_blocks(std::size_t rows) { return (rows + rows_per_block - 1) / rows_per_block; }
+
+template <class Pass>
+std::array<double, sums_per_block> over_rows(std::size_t rows, int threads, std::vector<double>& partial, Pass&& pass) {
+  const std::size_t blocks = row_blocks(rows);
+  auto run = [&](std::size_t block) {
+    double* sums = &partial[block * sums_per_block];
+    std::fill(sums, sums + sums_per_block, 0.0);
+    pass(block * rows_per_block, std::min(rows, (block + 1) * rows_per_block), sums);
+  };
+  if (threads <= 1 || blocks == 1) {
+    for (std::size_t block = 0; block < blocks; ++block) run(block);
+  } else {
+    asperity::detail::parallel_for(blocks, threads, run);
+  }
+  std::array<double, sums_per_block> total{};
+  for (std::size_t block = 0; block < blocks; ++block) {
+    const double* sums = &partial[block * sums_per_block];
+    for (std::size_t k = 0; k + 1 < sums_per_block; ++k) total[k] += sums[k];
+    total[sums_per_block - 1] = std::max(total[sums_per_block - 1], sums[sums_per_block - 1]);
+  }
+  return total;
+}
+
 double sinc(double x) { return x == 0 ? 1.0 : std::sin(x) / x; }
 
 // X asinh(Y / |X|) + Y asinh(X / |Y|) = X ln(Y + r) + Y ln(X + r) - X ln|X| - Y ln|Y|: an
@@ -84,6 +116,17 @@ const char* contact_boundary_name(ContactBoundary boundary) {
 }
 
 const char* contact_kernel_name(ContactKernel kernel) { return kernel == ContactKernel::fourier ? "fourier" : "love"; }
+
+bool parse_contact_solver(const std::string& name, ContactSolver& solver) {
+  if (name == "preconditioned") solver = ContactSolver::preconditioned;
+  else if (name == "polonsky-keer") solver = ContactSolver::polonsky_keer;
+  else return false;
+  return true;
+}
+
+const char* contact_solver_name(ContactSolver solver) {
+  return solver == ContactSolver::preconditioned ? "preconditioned" : "polonsky-keer";
+}
 
 ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& options) : options_(options) {
   map.validate();
@@ -152,6 +195,12 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   work_.assign(points, 0.0);
   increment_.assign(points, 0.0);
   stiffness_x_.assign(points, 0.0);
+  preconditioned_.assign(points, 0.0);
+  zero_row_.assign(sx_, 0.0);
+  partial_sums_.assign(row_blocks(ny_) * sums_per_block, 0.0);
+  // the passes over the points share the threads from 256^2 points (below, starting the
+  // threads would cost more than the pass)
+  loop_threads_ = nx_ * ny_ >= (std::size_t{1} << 16) ? threads_ : 1;
   spectrum_.assign(sy_ * half, {0.0, 0.0});
   kernel_.assign(sy_ * half, 0.0);
 
@@ -241,25 +290,144 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
       }
     self_compliance_ = total / static_cast<double>(points);
   }
+
+  // The preconditioner's stencil: the inverse Green's function K = 1/G (the elastic stiffness,
+  // E* |q| / 2 for the Fourier kernel) in real space at the offsets (0, 0), (1, 0), (0, 1),
+  // (1, 1), from its spectrum (even in q; the mean, which G leaves unmoved when periodic, taken
+  // as 0).
+  {
+    std::vector<double> cos_x(half), cos_y(sy_);
+    for (std::size_t kx = 0; kx < half; ++kx) cos_x[kx] = std::cos(2 * pi * static_cast<double>(kx) / static_cast<double>(sx_));
+    for (std::size_t ky = 0; ky < sy_; ++ky) cos_y[ky] = std::cos(2 * pi * static_cast<double>(ky) / static_cast<double>(sy_));
+    double centre = 0, along_x = 0, along_y = 0, diagonal = 0;
+    for (std::size_t ky = 0; ky < sy_; ++ky)
+      for (std::size_t kx = 0; kx < half; ++kx) {
+        const double g = kernel_[ky * half + kx];
+        if (!(g > 0)) continue;
+        const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
+        const double k = (single ? 1.0 : 2.0) / g;
+        centre += k;
+        along_x += k * cos_x[kx];
+        along_y += k * cos_y[ky];
+        diagonal += k * cos_x[kx] * cos_y[ky];
+      }
+    stencil_centre_ = centre / static_cast<double>(points);
+    stencil_x_ = along_x / static_cast<double>(points);
+    stencil_y_ = along_y / static_cast<double>(points);
+    stencil_diagonal_ = diagonal / static_cast<double>(points);
+    // positive definite on every contact set if its symbol is positive, which (multilinear in
+    // cos qx dx and cos qy dy) it is if at the four corners of the Brillouin zone
+    stencil_ = std::isfinite(stencil_centre_) && std::isfinite(stencil_x_) && std::isfinite(stencil_y_) &&
+               std::isfinite(stencil_diagonal_);
+    for (double a : {-1.0, 1.0})
+      for (double b : {-1.0, 1.0})
+        if (!(stencil_centre_ + 2 * a * stencil_x_ + 2 * b * stencil_y_ + 4 * a * b * stencil_diagonal_ > 0)) stencil_ = false;
+  }
+
+  // The coarse start: the map coarsened 2 x 2 (each coarse point the mean of the valid points of
+  // its block; an odd last row or column a block of its own), solved with the same options less
+  // the stiffness and to a looser tolerance, itself started from a coarser map.
+  if (options_.coarse_start && nx_ >= 2 * coarse_start_points && ny_ >= 2 * coarse_start_points) {
+    HeightMap coarse;
+    coarse.nx = (nx_ + 1) / 2;
+    coarse.ny = (ny_ + 1) / 2;
+    coarse.dx = 2 * dx_;
+    coarse.dy = 2 * dy_;
+    coarse.source = map.source;
+    coarse.format = map.format;
+    coarse.heights.assign(coarse.nx * coarse.ny, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t j = 0; j < coarse.ny; ++j)
+      for (std::size_t i = 0; i < coarse.nx; ++i) {
+        double block_sum = 0;
+        int count = 0;
+        for (std::size_t b = 2 * j; b < std::min(2 * j + 2, ny_); ++b)
+          for (std::size_t a = 2 * i; a < std::min(2 * i + 2, nx_); ++a) {
+            const double h = map.heights[b * nx_ + a];
+            if (std::isnan(h)) continue;
+            block_sum += h;
+            ++count;
+          }
+        if (count > 0) coarse.heights[j * coarse.nx + i] = block_sum / count;
+      }
+    ExactContactOptions coarse_options = options;
+    coarse_options.tolerance = std::max(options.tolerance, coarse_start_tolerance);
+    coarse_options.stiffness = false;
+    if (options.progress)
+      coarse_options.progress = [progress = options.progress](const ContactProgress& reported) {
+        ContactProgress relabelled = reported;
+        if (std::strcmp(reported.stage, "pressure") == 0) relabelled.stage = "coarse pressure";
+        else if (std::strcmp(reported.stage, "gap") == 0) relabelled.stage = "coarse gap";
+        progress(relabelled);
+      };
+    try {
+      coarse_ = std::make_unique<ExactContact>(coarse, coarse_options);
+    } catch (const Error&) {
+      // a coarse map the solver refuses (its heights all equal, its pixels too large): no coarse start
+    }
+  }
 }
 
 // The 2-D transform in three parts that the threads share: rows to spectra, then each block of
-// columns forward, times the kernel and back, then rows back.
+// columns forward, times the kernel and back, then rows back. On a padded grid the rows beyond
+// the map's are zero on the way in and not wanted on the way out: their row transforms are
+// skipped.
 void ExactContact::apply(const std::vector<double>& in, std::vector<double>& out) {
   const std::size_t half = sx_ / 2 + 1;
   detail::Complex* spectrum = spectrum_.data();
-  in_parallel(threads_, sy_, [&](std::size_t first, std::size_t count) {
+  in_parallel(threads_, ny_, [&](std::size_t first, std::size_t count) {
     detail::forward_rows(in.data() + first * sx_, spectrum + first * half, count, sx_);
   });
+  std::fill(spectrum + ny_ * half, spectrum + sy_ * half, detail::Complex{0.0, 0.0});
   in_parallel(threads_, half, [&](std::size_t first, std::size_t count) {
     detail::transform_columns(spectrum, sy_, half, first, count, true);
     for (std::size_t r = 0; r < sy_; ++r)
       for (std::size_t c = first; c < first + count; ++c) spectrum[r * half + c] *= kernel_[r * half + c];
     detail::transform_columns(spectrum, sy_, half, first, count, false);
   });
-  in_parallel(threads_, sy_, [&](std::size_t first, std::size_t count) {
+  in_parallel(threads_, ny_, [&](std::size_t first, std::size_t count) {
     detail::inverse_rows(spectrum + first * half, out.data() + first * sx_, count, sx_);
   });
+}
+
+ExactContact::Sums3 ExactContact::precondition(const std::vector<double>& in, std::vector<double>& out,
+                                               const std::vector<double>& other) {
+  const std::vector<double>& p = pressure_;
+  const std::size_t nx = nx_, ny = ny_, sx = sx_, sy = sy_;
+  const double centre = stencil_centre_, along_x = stencil_x_, along_y = stencil_y_, diagonal = stencil_diagonal_;
+  const auto sums = over_rows(ny, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double sum = 0, product = 0, other_sum = 0;
+    for (std::size_t j = first; j < end; ++j) {
+      // the neighbouring rows and columns, wrapped across the solve grid: on a padded grid
+      // the wrapped neighbours of the map's edges are the padding's zeros
+      const std::size_t above = (j + sy - 1) % sy, below = (j + 1) % sy;
+      const double* middle = &in[j * sx];
+      const double* up = above < ny ? &in[above * sx] : zero_row_.data();
+      const double* down = below < ny ? &in[below * sx] : zero_row_.data();
+      auto at = [nx](const double* row, std::size_t i) { return i < nx ? row[i] : 0.0; };
+      for (std::size_t i = 0, k = j * sx; i < nx; ++i, ++k) {
+        if (!(p[k] > 0)) {
+          out[k] = 0;
+          continue;
+        }
+        const std::size_t left = i == 0 ? sx - 1 : i - 1, right = i + 1 == sx ? 0 : i + 1;
+        const double value = centre * middle[i] + along_x * (at(middle, left) + at(middle, right)) +
+                             along_y * (up[i] + down[i]) +
+                             diagonal * (at(up, left) + at(up, right) + at(down, left) + at(down, right));
+        out[k] = value;
+        sum += value;
+        product += value * other[k];
+        other_sum += other[k];
+      }
+    }
+    s[0] = sum;
+    s[1] = product;
+    s[2] = other_sum;
+  });
+  Sums3 result;
+  result.out = sums[0];
+  result.out_other = sums[1];
+  result.other = sums[2];
+  return result;
 }
 
 void ExactContact::report(const char* stage, int iteration, double residual, std::size_t contact) const {
@@ -274,16 +442,30 @@ void ExactContact::report(const char* stage, int iteration, double residual, std
 
 // Polonsky and Keer (1999): conjugate gradients on the contact set, projected on p >= 0, with
 // the points that penetrate the flat outside it added back (and the conjugation restarted when
-// the set changes). By pressure, the flat's position is the one that makes the mean gap over
-// the contact set zero, and the pressures are rescaled to the load after each step; by approach
-// the flat's position is given.
+// the set grows). By pressure, the flat's position is the one that makes the mean gap over the
+// contact set zero, and the pressures are rescaled to the load after each step; by approach the
+// flat's position is given.
+//
+// Preconditioned (ContactSolver::preconditioned): the direction is built from M g instead of
+// the gap g, M the 3 x 3 stencil of the inverse Green's function on the contact set (symmetric
+// positive definite there; by pressure projected on the directions that keep the load), so
+// that the CG on the contact set converges like that of M G, whose eigenvalues no longer spread
+// with the pixel count as G's do (G ~ 1/|q|); the points added back get the pressure -step M g
+// of an isolated point. Polonsky and Keer restart the conjugation whenever the contact set
+// grows, which in a rough contact is nearly every iteration (a steepest descent, whose
+// iterations grow like G's condition number); here it is kept while the set grows by at most
+// max_growth of its points. A solve whose residual has not halved in stall_iterations goes on as
+// Polonsky and Keer's, whose convergence is proven.
 ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
+  constexpr double max_growth = 0.01;
+  constexpr int stall_iterations = 200;
   const std::size_t points = sx_ * sy_;
   std::vector<double>& p = pressure_;
   std::vector<double>& u = displacement_;
   std::vector<double>& t = direction_;
   std::vector<double>& g = work_;
   std::vector<double>& w = increment_;
+  std::vector<double>& z = preconditioned_;
   const double map_points = static_cast<double>(nx_ * ny_);
   const double total = by_pressure ? target * map_points : 0.0;
   const double tolerance = options_.tolerance;
@@ -308,39 +490,57 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   };
   seed();
   std::fill(t.begin(), t.end(), 0.0);
+  bool preconditioned = options_.solver == ContactSolver::preconditioned && stencil_;
+  double growth_allowed = options_.solver == ContactSolver::preconditioned ? max_growth : 0.0;
   bool conjugate = false;
-  double previous = 1, scale = 1;  // scale: the load's rescaling of p, applied with the next convolution
+  double previous = 0, scale = 1;  // scale: the load's rescaling of p, applied with the next convolution
+  double reference = INFINITY;     // the residual to halve, and when it was reached
+  int reference_iteration = 0;
   Solve solve;
-  // Every loop runs over the map's points only (a padded grid's other three quarters never
+  // Every pass runs over the map's points only (a padded grid's other three quarters never
   // carry pressure); k = j * sx + i.
-  const std::size_t nx = nx_, ny = ny_, sx = sx_;
+  const std::size_t nx = nx_, sx = sx_;
   for (int iteration = 0;; ++iteration) {
     apply(p, u);
-    double approach = target, sum = 0;
-    std::size_t contact = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
-        p[k] *= scale;
-        u[k] *= scale;
-        const bool in = active_[k] && p[k] > 0;
-        sum += in ? u[k] - heights_[k] : 0.0;
-        contact += in;
-      }
-    scale = 1;
-    if (by_pressure) approach = contact > 0 ? -sum / static_cast<double>(contact) : 0.0;
-    double weighted = 0, load = 0, penetration = 0, squares = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
-        const double gap = active_[k] ? u[k] - heights_[k] + approach : 0.0;
-        g[k] = gap;
-        if (p[k] > 0) {
-          weighted += p[k] * std::fabs(gap);
-          load += p[k];
-          squares += gap * gap;
-        } else if (active_[k]) {
-          penetration = std::max(penetration, -gap);
+    const auto placed = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double sum = 0, contact = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+          p[q] *= scale;
+          u[q] *= scale;
+          const bool in = active_[q] && p[q] > 0;
+          sum += in ? u[q] - heights_[q] : 0.0;
+          contact += in;
         }
-      }
+      s[0] = sum;
+      s[1] = contact;
+    });
+    scale = 1;
+    const std::size_t contact = static_cast<std::size_t>(placed[1]);
+    double approach = target;
+    if (by_pressure) approach = contact > 0 ? -placed[0] / static_cast<double>(contact) : 0.0;
+    // the gaps, and the residual; preconditioned, w takes the gap on the contact set (0 off it)
+    const auto gaps = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double weighted = 0, load = 0, squares = 0, penetration = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+          const double gap = active_[q] ? u[q] - heights_[q] + approach : 0.0;
+          g[q] = gap;
+          if (p[q] > 0) {
+            weighted += p[q] * std::fabs(gap);
+            load += p[q];
+            squares += gap * gap;
+          } else if (active_[q]) {
+            penetration = std::max(penetration, -gap);
+          }
+          if (preconditioned) w[q] = p[q] > 0 ? gap : 0.0;
+        }
+      s[0] = weighted;
+      s[1] = load;
+      s[2] = squares;
+      s[5] = penetration;
+    });
+    const double weighted = gaps[0], load = gaps[1], squares = gaps[2], penetration = gaps[5];
     const double residual =
         std::max(load > 0 ? weighted / (load * rms_) : (contact == 0 ? 0.0 : INFINITY), penetration / rms_);
     report(by_pressure ? "pressure" : "gap", iteration, residual, contact);
@@ -361,24 +561,52 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
       conjugate = false;
       continue;
     }
-    const double beta = conjugate ? squares / previous : 0.0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) t[k] = p[k] > 0 ? g[k] + beta * t[k] : 0.0;
-    previous = squares;
+    if (residual <= 0.5 * reference) {
+      reference = residual;
+      reference_iteration = iteration;
+    } else if (growth_allowed > 0 && iteration - reference_iteration >= stall_iterations) {
+      preconditioned = false;  // stalled: Polonsky and Keer from here
+      growth_allowed = 0;
+      conjugate = false;
+    }
+    // the direction's source: g, or M g (less its mean over the set, by pressure)
+    double source_product = squares, source_mean = 0;
+    if (preconditioned) {
+      const Sums3 m = precondition(w, z, g);
+      source_mean = by_pressure ? m.out / static_cast<double>(contact) : 0.0;
+      source_product = m.out_other - source_mean * m.other;
+    }
+    if (!(previous > 0 && source_product > 0)) conjugate = false;
+    const double beta = conjugate ? source_product / previous : 0.0;
+    previous = source_product;
+    const std::vector<double>& source = preconditioned ? z : g;
+    over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+          const double value = source[q] - source_mean;
+          t[q] = p[q] > 0 ? (conjugate ? value + beta * t[q] : value) : 0.0;
+        }
+    });
     apply(t, w);
     // step = sum g t / sum (w - mean w) t over the contact set (by pressure the mean of w is the
     // flat's move); sum t is near zero, so w's mean enters through a small product
-    double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
-        if (p[k] > 0) {
-          sum_w += w[k];
-          sum_t += t[k];
-          sum_wt += w[k] * t[k];
-          numerator += g[k] * t[k];
-        }
-    const double mean_w = by_pressure ? sum_w / static_cast<double>(contact) : 0.0;
-    const double denominator = sum_wt - mean_w * sum_t;
+    const auto products = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+          if (p[q] > 0) {
+            sum_w += w[q];
+            sum_t += t[q];
+            sum_wt += w[q] * t[q];
+            numerator += g[q] * t[q];
+          }
+      s[0] = sum_w;
+      s[1] = sum_t;
+      s[2] = sum_wt;
+      s[3] = numerator;
+    });
+    const double mean_w = by_pressure ? products[0] / static_cast<double>(contact) : 0.0;
+    const double denominator = products[2] - mean_w * products[1], numerator = products[3];
     double step;
     if (denominator > 0 && std::isfinite(numerator)) {
       step = numerator / denominator;
@@ -390,20 +618,27 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
       // set, and the penetrating points get the pressure that would lift an isolated pixel
       step = 0;
     }
-    std::size_t overlaps = 0;
-    const double overlap_step = step > 0 ? step : 1 / self_compliance_;
-    double total_now = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
-        double value = p[k] > 0 ? std::max(p[k] - step * t[k], 0.0) : 0.0;
-        if (value == 0 && active_[k] && g[k] < 0) {
-          value = -overlap_step * g[k];
-          ++overlaps;
+    // a point added back gets -step g times what the direction's operator (M, or Polonsky and
+    // Keer's identity) gives a point amid a patch of uniform gap: the stencil's sum
+    const double stencil_sum = stencil_centre_ + 2 * stencil_x_ + 2 * stencil_y_ + 4 * stencil_diagonal_;
+    const double overlap_step = step > 0 ? (preconditioned ? step * stencil_sum : step) : 1 / self_compliance_;
+    const auto moved = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double total_now = 0, overlaps = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+          double value = p[q] > 0 ? std::max(p[q] - step * t[q], 0.0) : 0.0;
+          if (value == 0 && active_[q] && g[q] < 0) {
+            value = -overlap_step * g[q];
+            ++overlaps;
+          }
+          p[q] = value;
+          total_now += value;
         }
-        p[k] = value;
-        total_now += value;
-      }
-    conjugate = overlaps == 0;
+      s[0] = total_now;
+      s[1] = overlaps;
+    });
+    const double total_now = moved[0];
+    conjugate = moved[1] <= growth_allowed * static_cast<double>(contact);
     if (by_pressure) {
       if (!(total_now > 0)) {
         seed();
@@ -416,10 +651,11 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
 }
 
 // The incremental problem: the flat moves by a unit approach with the contact set held; the
-// pressure increment x on the contact set C solves G_CC x = 1 (conjugate gradients). The
-// stiffness of a held contact set is the tangent of the load-approach curve (Barber 2003: the
-// contact set grows by a set of zero pressure), so this is dP/d(approach) without the noise of
-// a finite difference; the mean gap moves by 1 - <G x> over the map.
+// pressure increment x on the contact set C solves G_CC x = 1 (conjugate gradients,
+// preconditioned as the constrained solve is). The stiffness of a held contact set is the
+// tangent of the load-approach curve (Barber 2003: the contact set grows by a set of zero
+// pressure), so this is dP/d(approach) without the noise of a finite difference; the mean gap
+// moves by 1 - <G x> over the map.
 void ExactContact::stiffness_of(ContactStep& step) {
   if (step.contact_points == 0) return;
   if (step.contact_points == sx_ * sy_) {  // periodic, full contact: no approach moves the flat
@@ -430,20 +666,33 @@ void ExactContact::stiffness_of(ContactStep& step) {
   std::vector<double>& w = increment_;
   std::vector<double>& r = work_;
   std::vector<double>& d = direction_;
-  const std::size_t nx = nx_, ny = ny_, sx = sx_;
+  std::vector<double>& z = preconditioned_;
+  const bool preconditioned = options_.solver == ContactSolver::preconditioned && stencil_;
+  const std::size_t nx = nx_, sx = sx_;
   const std::vector<double>& p = pressure_;
   // from an isolated pixel's increment (the last step's increments, tried, took more iterations)
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) x[k] = p[k] > 0 ? 1 / self_compliance_ : 0.0;
+  over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) x[q] = p[q] > 0 ? 1 / self_compliance_ : 0.0;
+  });
   apply(x, w);
-  double squares = 0;
+  // r: the residual, 0 off the contact set (as precondition() wants it)
+  double squares = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double sum = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        r[q] = p[q] > 0 ? 1 - w[q] : 0.0;
+        sum += r[q] * r[q];
+      }
+    s[0] = sum;
+  })[0];
+  double product = preconditioned ? precondition(r, z, r).out_other : squares;  // r . z
+  const std::vector<double>& source = preconditioned ? z : r;
+  over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) d[q] = source[q];
+  });
   const double norm = std::sqrt(static_cast<double>(step.contact_points));
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
-      r[k] = p[k] > 0 ? 1 - w[k] : 0.0;
-      d[k] = r[k];
-      squares += r[k] * r[k];
-    }
   int iteration = 0;
   for (;; ++iteration) {
     const double residual = std::sqrt(squares) / norm;
@@ -457,33 +706,46 @@ void ExactContact::stiffness_of(ContactStep& step) {
                   " iterations reached a residual of " + number(residual) + " (tolerance " +
                   number(options_.tolerance) + ")");
     apply(d, w);
-    double curvature = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) curvature += d[k] * w[k];  // d is 0 off contact
+    const double curvature = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double sum = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) sum += d[q] * w[q];  // d is 0 off contact
+      s[0] = sum;
+    })[0];
     if (!(curvature > 0)) throw Error("the stiffness solve broke down (a search direction of no curvature)");
-    const double alpha = squares / curvature;
-    double next = 0;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
-        if (p[k] > 0) {
-          x[k] += alpha * d[k];
-          r[k] -= alpha * w[k];
-          next += r[k] * r[k];
-        }
-    const double beta = next / squares;
-    squares = next;
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t k = j * sx, end = k + nx; k < end; ++k) d[k] = p[k] > 0 ? r[k] + beta * d[k] : 0.0;
+    const double alpha = product / curvature;
+    squares = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double sum = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+          if (p[q] > 0) {
+            x[q] += alpha * d[q];
+            r[q] -= alpha * w[q];
+            sum += r[q] * r[q];
+          }
+      s[0] = sum;
+    })[0];
+    const double next = preconditioned ? precondition(r, z, r).out_other : squares;
+    const double beta = next / product;
+    product = next;
+    over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) d[q] = p[q] > 0 ? source[q] + beta * d[q] : 0.0;
+    });
   }
   apply(x, w);
-  double increment = 0, moved = 0;
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t k = j * sx, end = k + nx; k < end; ++k) {
-      increment += x[k];
-      moved += active_[k] ? w[k] : 0.0;
-    }
-  const double mean_pressure = increment / static_cast<double>(nx_ * ny_);
-  const double gap_change = 1 - moved / static_cast<double>(valid_points_);
+  const auto sums = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double increment = 0, moved = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        increment += x[q];
+        moved += active_[q] ? w[q] : 0.0;
+      }
+    s[0] = increment;
+    s[1] = moved;
+  });
+  const double mean_pressure = sums[0] / static_cast<double>(nx_ * ny_);
+  const double gap_change = 1 - sums[1] / static_cast<double>(valid_points_);
   step.stiffness_iterations = iteration;
   step.stiffness_per_area = mean_pressure / gap_change;
   step.stiffness = step.stiffness_per_area * nominal_area_;
@@ -523,6 +785,15 @@ ContactStep ExactContact::describe(const Solve& solve) {
   return step;
 }
 
+void ExactContact::start_from_coarse() {
+  const std::size_t coarse_sx = coarse_->sx_;
+  for (std::size_t j = 0; j < ny_; ++j)
+    for (std::size_t i = 0; i < nx_; ++i) {
+      const std::size_t k = j * sx_ + i;
+      pressure_[k] = active_[k] ? coarse_->pressure_[(j / 2) * coarse_sx + i / 2] : 0.0;
+    }
+}
+
 ContactStep ExactContact::at_pressure(double pressure) {
   if (!(std::isfinite(pressure) && pressure >= 0))
     throw Error("the mean pressure must be finite and non-negative, got " + number(pressure));
@@ -533,8 +804,23 @@ ContactStep ExactContact::at_pressure(double pressure) {
     none.approach = approach_ = max_height_;
     return describe(none);
   }
+  int coarse_iterations = 0;
+  if (coarse_) {
+    try {
+      const ContactStep coarse = coarse_->at_pressure(pressure);
+      coarse_iterations = coarse.iterations + coarse.coarse_iterations;
+      start_from_coarse();
+    } catch (const Error&) {
+      coarse_.reset();  // the coarse start did not converge: the last solution is the start, now and after
+    }
+  }
   const Solve solve = constrained(true, pressure);
   ContactStep step = describe(solve);
+  // the pressures' mean is the target by construction (each iteration rescales them to it); the
+  // sum in describe() differs from it by rounding, in the order of the threads' blocks
+  step.pressure = pressure;
+  step.load = pressure * nominal_area_;
+  step.coarse_iterations = coarse_iterations;
   if (options_.stiffness) stiffness_of(step);
   return step;
 }
@@ -557,7 +843,21 @@ ContactStep ExactContact::at_mean_gap(double mean_gap) {
   for (std::size_t k = 0; k < pressure_.size(); ++k)
     if (pressure_[k] > 0) had_contact = true;
   double offset = 0;
-  if (had_contact) {
+  int coarse_iterations = 0;
+  bool coarse_started = false;
+  if (coarse_) {
+    try {
+      // the coarse map's offset between approach and mean gap, a good first guess
+      const ContactStep coarse = coarse_->at_mean_gap(mean_gap);
+      coarse_iterations = coarse.iterations + coarse.coarse_iterations;
+      start_from_coarse();
+      offset = coarse.approach - coarse.mean_gap;
+      coarse_started = true;
+    } catch (const Error&) {
+      coarse_.reset();
+    }
+  }
+  if (had_contact && !coarse_started) {
     // the offset between approach and mean gap of the last solution, a good first guess
     Solve last;
     last.approach = approach_;
@@ -597,6 +897,7 @@ ContactStep ExactContact::at_mean_gap(double mean_gap) {
   }
   step.iterations = iterations;
   step.solves = solves;
+  step.coarse_iterations = coarse_iterations;
   if (options_.stiffness) stiffness_of(step);
   return step;
 }

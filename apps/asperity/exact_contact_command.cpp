@@ -30,12 +30,12 @@ constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 constexpr long max_steps = 10000;
 
 struct Options {
-  std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, fields, card,
-      card_format, units;
+  std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, method, fields,
+      card, card_format, units;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
          tolerance = not_given;
   long long max_iterations = 20000;
-  bool json = false, no_level = false, no_stiffness = false, quiet = false;
+  bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false;
 };
 
 bool given(double value) { return !std::isnan(value); }
@@ -188,6 +188,9 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
     usage("--boundary: '" + quote_text(o.boundary) + "' is not periodic or padded");
   if (!o.kernel.empty() && !topo::parse_contact_kernel(o.kernel, options.kernel))
     usage("--kernel: '" + quote_text(o.kernel) + "' is not fourier or love");
+  if (!o.method.empty() && !topo::parse_contact_solver(o.method, options.solver))
+    usage("--solver: '" + quote_text(o.method) + "' is not preconditioned or polonsky-keer");
+  options.coarse_start = !o.no_coarse_start;
   if (given(o.tolerance)) {
     if (!(o.tolerance >= topo::min_contact_tolerance && o.tolerance <= topo::max_contact_tolerance))
       usage("--tolerance must be from 1e-14 to 0.01");
@@ -290,6 +293,8 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
          {{"contact_modulus_Pa", modulus},
           {"boundary", boundary},
           {"kernel", kernel},
+          {"algorithm", topo::contact_solver_name(options.solver)},
+          {"coarse_start", options.coarse_start},
           {"tolerance", options.tolerance},
           {"driven_by", steps.by_pressure ? "pressure" : "mean_gap"}}},
         {"steps", steps_json}};
@@ -357,6 +362,13 @@ void add_exact_contact_command(CLI::App& app) {
   add_text(*command, "--kernel", o.kernel,
            "fourier (default: the point-force Fourier kernel) or love (pixel-constant pressure, Love's coefficients)")
       ->type_name("NAME")->group(solver);
+  add_text(*command, "--solver", o.method,
+           "preconditioned (default: the constrained conjugate gradient preconditioned by the inverse Green's "
+           "function's 3 x 3 stencil) or polonsky-keer (as published)")
+      ->type_name("NAME")->group(solver);
+  command->add_flag("--no-coarse-start", o.no_coarse_start,
+                    "start each step from the last solution, not from the solution on the map coarsened 2 x 2")
+      ->group(solver);
   add_number(*command, "--tolerance", o.tolerance,
              "relative residual: pressure-weighted mean |gap| in contact and largest penetration, in rms heights "
              "(default 1e-8)")

@@ -374,6 +374,7 @@ class ContactStep:
     iterations: int
     solves: int
     residual: float
+    coarse_iterations: int
     stiffness_iterations: int
     stiffness_residual: float
 
@@ -381,7 +382,7 @@ class ExactContact:
     """The exact elastic contact of a height map with a flat (boundary elements on FFTs)."""
     def __init__(self, map: HeightMap, *, contact_modulus: float, boundary: str = "periodic", kernel: str = "fourier",
                  tolerance: float = 1e-8, max_iterations: int = 20000, love_aliases: int = 16, stiffness: bool = True,
-                 threads: int = 0) -> None: ...
+                 threads: int = 0, solver: str = "preconditioned", coarse_start: bool = True) -> None: ...
     def at_pressure(self, pressure: float) -> ContactStep: ...
     def at_mean_gap(self, mean_gap: float) -> ContactStep: ...
     def pressure_field(self) -> FloatArray: ...

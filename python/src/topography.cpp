@@ -750,6 +750,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("iterations", &topo::ContactStep::iterations)
       .def_readonly("solves", &topo::ContactStep::solves)
       .def_readonly("residual", &topo::ContactStep::residual)
+      .def_readonly("coarse_iterations", &topo::ContactStep::coarse_iterations)
       .def_readonly("stiffness_iterations", &topo::ContactStep::stiffness_iterations)
       .def_readonly("stiffness_residual", &topo::ContactStep::stiffness_residual)
       .def("__repr__", [](const topo::ContactStep& s) {
@@ -759,20 +760,24 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       });
   py::class_<ExactContactHandle>(
       m, "ExactContact",
-      "The exact elastic contact of a height map with a flat (boundary elements on FFTs, Polonsky-Keer's\n"
-      "constrained conjugate gradient; docs/exact-contact.md). boundary: 'periodic' or 'padded' (non-periodic,\n"
-      "zero padding); kernel: 'fourier' (point force) or 'love' (pixel-constant pressure). Each step starts\n"
-      "from the last solution. A solve that does not converge raises asperity.Error. Calls on one solver run\n"
+      "The exact elastic contact of a height map with a flat (boundary elements on FFTs, a constrained conjugate\n"
+      "gradient; docs/exact-contact.md). boundary: 'periodic' or 'padded' (non-periodic, zero padding); kernel:\n"
+      "'fourier' (point force) or 'love' (pixel-constant pressure); solver: 'preconditioned' (by the inverse\n"
+      "Green's function's 3 x 3 stencil) or 'polonsky-keer' (as published). Each step starts from the solution\n"
+      "on the map coarsened 2 x 2 (coarse_start) or else from the last solution. A solve that does not converge raises asperity.Error. Calls on one solver run\n"
       "one at a time (a lock), without the GIL.")
       .def(py::init([](const topo::HeightMap& map, double contact_modulus, const std::string& boundary,
                        const std::string& kernel, double tolerance, int max_iterations, int love_aliases,
-                       bool stiffness, int threads) {
+                       bool stiffness, int threads, const std::string& solver, bool coarse_start) {
              topo::ExactContactOptions options;
              options.contact_modulus = contact_modulus;
              if (!topo::parse_contact_boundary(boundary, options.boundary))
                throw py::value_error("boundary must be 'periodic' or 'padded', not '" + boundary + "'");
              if (!topo::parse_contact_kernel(kernel, options.kernel))
                throw py::value_error("kernel must be 'fourier' or 'love', not '" + kernel + "'");
+             if (!topo::parse_contact_solver(solver, options.solver))
+               throw py::value_error("solver must be 'preconditioned' or 'polonsky-keer', not '" + solver + "'");
+             options.coarse_start = coarse_start;
              options.tolerance = tolerance;
              options.max_iterations = max_iterations;
              options.love_aliases = love_aliases;
@@ -782,7 +787,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
            }),
            "map"_a, py::kw_only(), "contact_modulus"_a, "boundary"_a = "periodic", "kernel"_a = "fourier",
            "tolerance"_a = 1e-8, "max_iterations"_a = 20000, "love_aliases"_a = 16, "stiffness"_a = true,
-           "threads"_a = 0)
+           "threads"_a = 0, "solver"_a = "preconditioned", "coarse_start"_a = true)
       .def(
           "at_pressure",
           [](ExactContactHandle& h, double pressure) {

@@ -50,6 +50,19 @@ def test_a_real_map_by_pressure_and_by_gap():
     assert by_gap.pressure == pytest.approx(step.pressure, rel=1e-5) and by_gap.solves > 1
 
 
+def test_the_solvers_agree_on_a_real_map():
+    surface = topography.read_height_map(AFM)
+    topography.subtract_plane(surface, topography.fit_plane(surface))
+    reference = topography.ExactContact(surface, contact_modulus=1e11, solver="polonsky-keer", coarse_start=False)
+    fast = topography.ExactContact(surface, contact_modulus=1e11)
+    r, f = reference.at_pressure(1e7), fast.at_pressure(1e7)
+    assert r.coarse_iterations == 0 and f.coarse_iterations > 0
+    assert f.iterations < r.iterations and f.stiffness_iterations < r.stiffness_iterations
+    assert f.contact_points == r.contact_points
+    assert f.mean_gap == pytest.approx(r.mean_gap, rel=1e-7)
+    assert f.stiffness == pytest.approx(r.stiffness, rel=1e-6)
+
+
 def test_errors():
     surface = wavy(32)
     with pytest.raises(asperity.Error):
@@ -58,6 +71,8 @@ def test_errors():
         topography.ExactContact(surface, contact_modulus=1e11, boundary="open")
     with pytest.raises(ValueError):
         topography.ExactContact(surface, contact_modulus=1e11, kernel="hertz")
+    with pytest.raises(ValueError):
+        topography.ExactContact(surface, contact_modulus=1e11, solver="multigrid")
     solver = topography.ExactContact(surface, contact_modulus=1e11, max_iterations=1)
     with pytest.raises(asperity.Error, match="did not converge"):
         solver.at_pressure(1e8)

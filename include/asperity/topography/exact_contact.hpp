@@ -1,9 +1,10 @@
 // The exact elastic contact of a height map (docs/exact-contact.md): the frictionless normal
 // contact of a linear-elastic half-space (contact modulus E*) with a rigid flat, the map being
 // the gap between them before loading, by the boundary-element method on FFTs (Stanley and Kato
-// 1997) solved by the constrained conjugate gradient of Polonsky and Keer (1999). It neglects
-// nothing a Greenwood-Williamson model neglects (coalescence, interaction, the bulk): it is the
-// reference the asperity models of the same map are judged against.
+// 1997) solved by the constrained conjugate gradient of Polonsky and Keer (1999), preconditioned
+// and started from the solution on a coarsened map unless asked otherwise (ContactSolver). It
+// neglects nothing a Greenwood-Williamson model neglects (coalescence, interaction, the bulk): it
+// is the reference the asperity models of the same map are judged against.
 //
 // Assumptions: small slopes (half-space theory), frictionless, linear elastic, no adhesion; the
 // map is sampled on its grid, the pressure constant over each pixel (love) or band-limited
@@ -29,11 +30,13 @@
 // at most `tolerance` times the rms height and no point outside the contact penetrates the flat
 // by more than that; it never returns an unconverged answer: after max_iterations it throws
 // asperity::Error naming the iterations and the residual reached. Memory: a few arrays the size
-// of the solve grid (O(N)); each iteration costs two convolutions (O(N log N)).
+// of the solve grid (O(N)), and a third more for the coarsened maps of the coarse start; each
+// iteration costs two convolutions (O(N log N)) and a few passes over the points (O(N)).
 #pragma once
 #include <complex>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,15 +46,23 @@ namespace asperity::topography {
 
 enum class ContactBoundary { periodic, padded };
 enum class ContactKernel { fourier, love };
+// `preconditioned`: the conjugate gradient on the contact set preconditioned by the 3 x 3 stencil
+// of the inverse Green's function (the elastic stiffness of a pixel and its neighbours), its
+// conjugation kept while the contact set grows by at most 1% an iteration; a solve that stops
+// improving continues as `polonsky_keer`. `polonsky_keer`: the algorithm as published, no
+// preconditioner, steepest descent again whenever the contact set grows.
+enum class ContactSolver { preconditioned, polonsky_keer };
 
 bool parse_contact_boundary(const std::string& name, ContactBoundary& boundary);
 bool parse_contact_kernel(const std::string& name, ContactKernel& kernel);
+bool parse_contact_solver(const std::string& name, ContactSolver& solver);
 const char* contact_boundary_name(ContactBoundary boundary);
 const char* contact_kernel_name(ContactKernel kernel);
+const char* contact_solver_name(ContactSolver solver);
 
 // What a long solve reports now and then (every iteration; the caller throttles).
 struct ContactProgress {
-  const char* stage = "";       // "pressure", "gap", "stiffness"
+  const char* stage = "";       // "pressure", "gap", "stiffness"; "coarse pressure", "coarse gap"
   int iteration = 0;
   double residual = 0;          // the stopping residual (relative; see above)
   std::size_t contact_points = 0;
@@ -61,6 +72,9 @@ struct ContactProgress {
 // padded) of at most max_contact_points points.
 inline constexpr std::size_t max_contact_points = std::size_t{1} << 26;
 inline constexpr double min_contact_tolerance = 1e-14, max_contact_tolerance = 1e-2;
+// The coarse start: the smallest coarsened map (points each way), and the coarser solves' tolerance.
+inline constexpr std::size_t coarse_start_points = 64;
+inline constexpr double coarse_start_tolerance = 1e-4;
 
 struct ExactContactOptions {
   double contact_modulus = 0;  // E* [Pa]; required
@@ -69,6 +83,11 @@ struct ExactContactOptions {
   double tolerance = 1e-8;     // relative residual (see above)
   int max_iterations = 20000;  // per solve (each constrained CG and each stiffness CG)
   int love_aliases = 16;       // periodic Love kernel: aliases summed each way (|m|, |n| <= this)
+  ContactSolver solver = ContactSolver::preconditioned;
+  // Start each step from the solution on the map coarsened 2 x 2 (itself started so, down to
+  // coarse_start_points points each way), the coarser solves to coarse_start_tolerance (or the
+  // tolerance, if larger); otherwise (or when a map is too small) from the last step's solution.
+  bool coarse_start = true;
   bool stiffness = true;       // solve the incremental problem at every step
   int threads = 0;             // that share each FFT (0: every core; 1 to 1024)
   std::function<void(const ContactProgress&)> progress;  // may be empty
@@ -91,6 +110,7 @@ struct ContactStep {
   std::size_t contact_points = 0;
   std::size_t clusters = 0;               // connected contact patches (4-neighbour; wrapped when periodic)
   int iterations = 0;                     // constrained CG iterations (all solves of a gap-driven step)
+  int coarse_iterations = 0;              // those of the coarse start, all coarser levels summed
   int solves = 0;                         // constrained solves (1 when driven by pressure)
   double residual = 0;                    // reached (<= tolerance)
   int stiffness_iterations = 0;           // CG iterations of the incremental problem
@@ -128,7 +148,15 @@ class ExactContact {
   std::vector<double> gap_field() const;
 
  private:
-  void apply(const std::vector<double>& in, std::vector<double>& out);  // out = G in, on the solve grid
+  // out = G in on the solve grid; `in` is zero outside the map (a padded grid's other three
+  // quarters), and `out` is written on the map's rows only.
+  void apply(const std::vector<double>& in, std::vector<double>& out);
+  // out = M in on the contact set (0 elsewhere), M the preconditioner's stencil; `in` is zero
+  // off the contact set. Returns the sums over the contact set of out, out * other and other.
+  struct Sums3 {
+    double out = 0, out_other = 0, other = 0;
+  };
+  Sums3 precondition(const std::vector<double>& in, std::vector<double>& out, const std::vector<double>& other);
   struct Solve {
     int iterations = 0;
     double residual = 0, approach = 0;
@@ -137,18 +165,26 @@ class ExactContact {
   void stiffness_of(ContactStep& step);
   ContactStep describe(const Solve& solve);
   void report(const char* stage, int iteration, double residual, std::size_t contact) const;
+  void start_from_coarse();  // the pressure prolonged from coarse_'s last solution
 
   ExactContactOptions options_;
   std::size_t nx_ = 0, ny_ = 0, sx_ = 0, sy_ = 0;  // map grid; solve grid
   double dx_ = 0, dy_ = 0, rms_ = 0, max_height_ = 0, mean_summit_ = 0, nominal_area_ = 0, self_compliance_ = 0;
   std::size_t summits_ = 0, valid_points_ = 0;
-  int threads_ = 1;
+  int threads_ = 1, loop_threads_ = 1;  // the FFTs'; the passes over the points'
   std::vector<double> kernel_;       // the real spectrum of G on the solve grid (sy x (sx/2 + 1))
   std::vector<unsigned char> active_;  // on the solve grid: may carry pressure (a valid map point)
   std::vector<double> heights_;      // on the solve grid, about the mean plane (0 where inactive)
-  std::vector<double> pressure_, displacement_, direction_, work_, increment_, stiffness_x_;  // solve grid
+  std::vector<double> pressure_, displacement_, direction_, work_, increment_, stiffness_x_, preconditioned_;  // solve grid
   std::vector<std::complex<double>> spectrum_;  // sy x (sx/2 + 1)
+  std::vector<double> partial_sums_;  // per block of rows, for the passes' sums
+  std::vector<double> zero_row_;      // sx zeros: the padding's rows, for the preconditioner
+  // The preconditioner: the inverse Green's function's real-space coefficients at offsets
+  // (0, 0), (1, 0), (0, 1), (1, 1) pixels; none (the identity) when they are not positive definite.
+  double stencil_centre_ = 0, stencil_x_ = 0, stencil_y_ = 0, stencil_diagonal_ = 0;
+  bool stencil_ = false;
   double approach_ = 0;              // the last solution's rigid-body position
+  std::unique_ptr<ExactContact> coarse_;  // the map coarsened 2 x 2, for the coarse start
 };
 
 // Connected contact patches of a contact mask (nx x ny, x fastest; nonzero: in contact), by
