@@ -180,7 +180,8 @@ TEST(TopographySurface, PlantedWeibullSummitsRecovered) {
       EXPECT_EQ(analysis.summit_heights.verdict.best, truth.model) << analysis.summit_heights.verdict.text;
       t::AssessmentOptions independent;
       independent.bootstrap = 99;
-      const t::ModelAssessment& iid = t::assess_sample("summit heights", heights, independent).model(truth.model);
+      const t::SampleAssessment assessed = t::assess_sample("summit heights", heights, independent);
+      const t::ModelAssessment& iid = assessed.model(truth.model);  // a reference into `assessed`, kept alive
       EXPECT_LE(iid.shape.lo, shape) << (bounded ? "bounded" : "tail") << " a = " << shape << " fit " << iid.fit.distribution.shape;
       EXPECT_GE(iid.shape.hi, shape) << (bounded ? "bounded" : "tail") << " a = " << shape << " fit " << iid.fit.distribution.shape;
     }
