@@ -113,20 +113,34 @@ void ContactModel::at_separations(ContactQuantity quantity, const double* separa
     for (std::size_t i = 0; i < count; ++i) out[i] = nan;
     return;
   }
-  const double area = surface_.nominal_area;
+  const double area = surface_.nominal_area, sigma = surface_.height_scale, offset = datum_offset_;
   constexpr std::size_t block = 256;
-  double s[block];  // the block's dimensionless separations (a copy: out may be separations)
+  double s[block];              // the block's dimensionless separations (a copy: out may be separations)
+  unsigned char special[block]; // not a normal product: the scalar path answers
+  // Branch-free passes that the compiler vectorizes (dimensionless's and state_at_dimensionless's
+  // arithmetic, the same operations in the same order), then the rare elements one by one.
   for (std::size_t start = 0; start < count; start += block) {
     const std::size_t size = count - start < block ? count - start : block;
-    for (std::size_t j = 0; j < size; ++j) s[j] = dimensionless(separations[start + j]);
+    const double* in = separations + start;
     double* x = out + start;
+    if (offset == 0)
+      for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma;
+    else
+      for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma + offset;
     curve_.value_batch(twice_order, s, x, size);
+    unsigned any = 0;
     for (std::size_t j = 0; j < size; ++j) {
       const double product = x[j] * factor;
-      if (__builtin_expect(x[j] >= DBL_MIN && product <= DBL_MAX, 1)) {
-        x[j] = per_area ? product / area : product;
-        continue;
-      }
+      const unsigned rare = !(x[j] >= DBL_MIN) | !(product <= DBL_MAX);  // NaN, 0, subnormal, inf
+      special[j] = static_cast<unsigned char>(rare);
+      any |= rare;
+      x[j] = product;
+    }
+    if (per_area)
+      for (std::size_t j = 0; j < size; ++j) x[j] /= area;
+    if (__builtin_expect(any == 0, 1)) continue;
+    for (std::size_t j = 0; j < size; ++j) {
+      if (!special[j]) continue;
       // NaN, no contact, all in contact, or X_n beyond the doubles: the scalar path's answer
       const PhysicalState state = state_at_dimensionless(s[j]);
       switch (quantity) {
