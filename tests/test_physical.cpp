@@ -14,6 +14,7 @@
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/persson.hpp"
 #include "asperity/surface.hpp"
 
@@ -143,7 +144,7 @@ TEST(ContactModel, InversesRoundTripAcrossTheRange) {
       const PhysicalState by_pressure = model.at_pressure(load / c.surface.nominal_area);
       EXPECT_NEAR(by_pressure.separation, state.separation, 1e-12 * (std::fabs(state.separation) + 1e-12));
     }
-    RecordProperty(std::string(c.label) + "_load_round_trip", std::to_string(worst));
+    RecordProperty(std::string(c.label) + "_load_round_trip", format_double(worst));
     EXPECT_LT(worst, 1e-11) << c.label;  // the table's own error level
     EXPECT_LT(worst_area, 1e-11) << c.label;
     EXPECT_TRUE(std::isnan(model.at_load(NAN).separation));
@@ -281,7 +282,7 @@ TEST(ContactModel, BatchIsTheScalarAnswerForEveryElement) {
     std::vector<double> none;
     model.at_separations(ContactQuantity::load, none.data(), none.data(), 0);  // empty: nothing touched
   }
-  RecordProperty("batch_vs_scalar_worst_relative_per_1_plus_abs_ln_x", std::to_string(worst));
+  RecordProperty("batch_vs_scalar_worst_relative_per_1_plus_abs_ln_x", format_double(worst));
   RecordProperty("elements_same_bits", std::to_string(exact));
   RecordProperty("elements_to_rounding", std::to_string(rounded));
   EXPECT_GT(exact, 100);

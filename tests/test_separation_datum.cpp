@@ -11,6 +11,7 @@
 
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/separation_datum.hpp"
 
 namespace {
@@ -137,7 +138,7 @@ TEST(SeparationDatum, EveryQueryIsTheOriginModelsShifted) {
     }
   }
   // the origin model's own load round trip, in units of sigma_s (a = 0.5 near s = 0 is the worst)
-  RecordProperty("origin_load_round_trip_separation_per_sigma", std::to_string(worst_trip));
+  RecordProperty("origin_load_round_trip_separation_per_sigma", format_double(worst_trip));
 }
 
 TEST(SeparationDatum, TheOriginDatumKeepsTheFormerBits) {
