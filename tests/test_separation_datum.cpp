@@ -12,6 +12,7 @@
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "asperity/number_text.hpp"
+#include "asperity/pressure_overclosure.hpp"
 #include "asperity/separation_datum.hpp"
 
 namespace {
@@ -164,6 +165,42 @@ TEST(SeparationDatum, TheMeanPlaneIsTheUsersOrRefused) {
   EXPECT_NE(error_of(s, SeparationDatum::origin, 1e-6).find("goes with the mean-plane datum"), std::string::npos);
   EXPECT_NE(error_of(s, SeparationDatum::mean_summit, 1e-6).find("goes with the mean-plane datum"), std::string::npos);
   EXPECT_EQ(error_of(s, SeparationDatum::mean_plane, 0.0), "");  // the mean summit on the mean plane: allowed
+}
+
+// The FE export measures overclosure from its own datum, whatever the model's: the same card from
+// a model of each datum; the mean-plane card is the mean-summit card shifted by the height given.
+TEST(SeparationDatum, TheCardDoesNotDependOnTheModelsDatum) {
+  const RoughSurface s = surface_of(Distribution::weibull, Side::tail, 1.6);
+  const ContactModel origin(table(), s), summit(table(), s, SeparationDatum::mean_summit),
+      plane(table(), s, SeparationDatum::mean_plane, 4e-7);
+  for (OverclosureDatum datum : {OverclosureDatum::mean_summit, OverclosureDatum::origin, OverclosureDatum::zero_pressure}) {
+    const PressureOverclosureTable a = tabulate_pressure_overclosure(origin, 1e3, 1e8, 1e-3, datum);
+    for (const ContactModel* other : {&summit, &plane}) {
+      const PressureOverclosureTable b = tabulate_pressure_overclosure(*other, 1e3, 1e8, 1e-3, datum);
+      ASSERT_EQ(a.points.size(), b.points.size());
+      for (std::size_t i = 0; i < a.points.size(); ++i) {
+        EXPECT_NEAR(b.points[i].overclosure, a.points[i].overclosure, 1e-12 * std::fabs(a.points[i].overclosure));
+        EXPECT_NEAR(b.points[i].pressure, a.points[i].pressure, 1e-12 * a.points[i].pressure);
+      }
+    }
+  }
+  EXPECT_THROW(tabulate_pressure_overclosure(summit, 1e3, 1e8, 1e-3, OverclosureDatum::mean_plane), Error);
+  const PressureOverclosureTable mean = tabulate_pressure_overclosure(plane, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit);
+  const PressureOverclosureTable from_plane =
+      tabulate_pressure_overclosure(plane, 1e3, 1e8, 1e-3, OverclosureDatum::mean_plane);
+  EXPECT_EQ(from_plane.mean_summit_overclosure, -4e-7);  // the flat at the mean summit: 0.4 um clear of the plane
+  // the law (overclosure from the mean summit) is the model's, whatever its datum
+  EXPECT_EQ(law_pressure(plane, 1e-7), law_pressure(summit, 1e-7));
+  EXPECT_NEAR(law_overclosure(plane, 1e6), law_overclosure(summit, 1e6), 1e-20);
+  // a pressure's overclosure from the mean plane is its overclosure from the mean summit less 0.4 um
+  EXPECT_NEAR(from_plane.points[1].overclosure, mean.points[1].overclosure - 4e-7, 1e-18);
+  EXPECT_EQ(from_plane.points[1].pressure, mean.points[1].pressure);
+  SeparationDatum unused;
+  OverclosureDatum parsed;
+  ASSERT_TRUE(parse_overclosure_datum("mean-plane", parsed));
+  EXPECT_EQ(parsed, OverclosureDatum::mean_plane);
+  EXPECT_STREQ(datum_name(OverclosureDatum::origin), separation_datum_name(SeparationDatum::origin));
+  EXPECT_FALSE(parse_separation_datum("zero-pressure", unused));
 }
 
 }  // namespace
