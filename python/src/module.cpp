@@ -648,18 +648,25 @@ void bind(py::module_& m) {
       .def(
           "pressure_overclosure_card",
           [](const ContactModel& model, double pressure_min, double pressure_max, double tolerance,
-             const std::string& format, const std::string& units, const std::string& description) {
+             const std::string& format, const std::string& units, const std::string& description,
+             const std::string& overclosure_datum) {
+            OverclosureDatum datum;
+            if (!parse_overclosure_datum(overclosure_datum, datum))
+              throw py::value_error("unknown overclosure_datum '" + overclosure_datum +
+                                    "': expected 'mean-summit', 'origin', 'zero-pressure' or 'mean-plane'");
             const PressureOverclosureTable table =
-                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance);
+                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance, datum);
             std::ostringstream out;
             write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
             return out.str();
           },
           "pressure_min"_a, "pressure_max"_a, "tolerance"_a = 1e-3, "format"_a = "calculix", "units"_a = "si",
-          "description"_a = "",
+          "description"_a = "", "overclosure_datum"_a = "mean-summit",
           "FE export: the contact-pressure law as the tabular pressure-overclosure card of CalculiX or Abaqus\n"
           "(format 'calculix', 'abaqus' or 'csv'; units 'si' for m and Pa, 'mm' for mm and MPa) as text, the\n"
-          "overclosure from the mean summit height, linear interpolation within `tolerance` (relative, in\n"
+          "overclosure from overclosure_datum ('mean-summit', the default: the mean summit height; 'origin';\n"
+          "'zero-pressure': the card's first point; 'mean-plane': a model made with datum='mean-plane'),\n"
+          "whatever the model's separation datum; linear interpolation within `tolerance` (relative, in\n"
           "pressure) of the law from pressure_min to pressure_max [Pa]. Raises asperity.Error for a bad range\n"
           "or tolerance.")
       .def("__copy__", [](const ContactModel& model) { return model; })

@@ -103,3 +103,16 @@ def test_at_separations_is_at_separation_element_by_element(table, datum):
     assert model.at_separations("load", grid).shape == (12, 83)
     with pytest.raises(ValueError, match="unknown quantity 'area'"):
         model.at_separations("area", d)
+
+
+def test_the_card_takes_the_datum_names(table):
+    plane = asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=3e-7)
+    default = plane.pressure_overclosure_card(1e3, 1e8, format="abaqus")
+    assert "--overclosure-datum mean-summit, the default" in default
+    assert default == asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, format="abaqus")
+    card = plane.pressure_overclosure_card(1e3, 1e8, format="abaqus", overclosure_datum="mean-plane")
+    assert "from the mean plane of the surface heights" in card and "summit height is 3e-07 m above it" in card
+    with pytest.raises(asperity.Error, match="mean-plane separation datum"):
+        asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, overclosure_datum="mean-plane")
+    with pytest.raises(ValueError, match="unknown overclosure_datum"):
+        plane.pressure_overclosure_card(1e3, 1e8, overclosure_datum="plane")
