@@ -15,7 +15,7 @@ cmake_minimum_required(VERSION 3.18)
 set(layer_core integrals model layout curve asymptotic instruction_set error segment_kind contact_scales number_text
     contact_law)
 set(layer_table table table_schema table_data table_file table_writer)
-set(layer_physics contact contact_model inverse surface persson)
+set(layer_physics contact contact_model inverse surface persson separation_datum plausibility)
 set(layer_scene scene scene_curves)
 set(layer_fe_export pressure_overclosure)
 set(layer_c_api asperity)

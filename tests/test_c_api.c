@@ -175,6 +175,86 @@ static void rms_height_scale(const asperity_table *table) {
   asperity_model_close(model);
 }
 
+/* The separation datum, units caught and the batch: asperity_model_open_datum, asperity_model_datum,
+ * asperity_model_warnings, asperity_model_at_separation_batch. */
+static void model_datum_warnings_batch(const asperity_table *table) {
+  char err[512], text[512];
+  const double sigma = 1e-6, mean = tgamma(1.5) * 1e-6; /* a = 2: the mean summit Gamma(3/2) sigma_s from the origin */
+  asperity_physical_state a, b, c;
+  double sep[7], out[7], in_place[7];
+  size_t i;
+  int q;
+  asperity_model *origin = asperity_model_open(table, "weibull", "tail", 2.0, sigma, 1e-4, 1e10, 1e-4, 1e11, err, sizeof err);
+  asperity_model *summit = asperity_model_open_datum(table, "weibull", "tail", 2.0, sigma, 1e-4, 1e10, 1e-4, 1e11,
+                                                     "mean-summit", NAN, err, sizeof err);
+  asperity_model *plane = asperity_model_open_datum(table, "weibull", "tail", 2.0, sigma, 1e-4, 1e10, 1e-4, 1e11,
+                                                    "mean-plane", 2e-7, err, sizeof err);
+  asperity_model *slip;
+  CHECK(origin != NULL && summit != NULL && plane != NULL);
+  if (!origin || !summit || !plane) return;
+  CHECK(strcmp(asperity_model_datum(origin), "origin") == 0);
+  CHECK(strcmp(asperity_model_datum(summit), "mean-summit") == 0);
+  CHECK(strcmp(asperity_model_datum(plane), "mean-plane") == 0);
+  CHECK(asperity_model_datum(NULL) == NULL);
+  /* the same load, each datum's separation: the origin's less the mean summit (less 2e-7 for the plane) */
+  CHECK(asperity_model_at_load(origin, 1.0, &a) == ASPERITY_OK);
+  CHECK(asperity_model_at_load(summit, 1.0, &b) == ASPERITY_OK);
+  CHECK(asperity_model_at_load(plane, 1.0, &c) == ASPERITY_OK);
+  CHECK(fabs(b.separation - (a.separation - mean)) < 1e-15 * sigma);
+  CHECK(fabs(c.separation - (a.separation - mean + 2e-7)) < 1e-15 * sigma);
+  CHECK(fabs(b.separation - b.mean_separation) < 1e-15 * sigma);
+  CHECK(asperity_model_at_separation(summit, b.separation, &c) == ASPERITY_OK && fabs(c.load - 1.0) < 1e-9);
+  /* refused: an unknown datum, the mean plane without its height, a height with another datum */
+  CHECK(asperity_model_open_datum(table, "weibull", "tail", 2.0, sigma, 1e-4, 1e10, 1e-4, 1e11, "mean", NAN, err,
+                                  sizeof err) == NULL && strstr(err, "unknown datum 'mean'") != NULL);
+  CHECK(asperity_model_open_datum(table, "weibull", "tail", 2.0, sigma, 1e-4, 1e10, 1e-4, 1e11, "mean-plane", NAN, err,
+                                  sizeof err) == NULL && strstr(err, "mean summit height above the mean plane") != NULL);
+  CHECK(asperity_model_open_datum(table, "weibull", "tail", 2.0, sigma, 1e-4, 1e10, 1e-4, 1e11, "origin", 1e-6, err,
+                                  sizeof err) == NULL && strstr(err, "goes with the mean-plane datum") != NULL);
+  /* units caught: a plausible surface has no warning; 10 (um) as R and 210 (GPa) as E* have one each */
+  CHECK(asperity_model_warnings(origin, text, sizeof text) == 0 && text[0] == '\0');
+  slip = asperity_model_open(table, "weibull", "tail", 2.0, sigma, 10.0, 1e10, 1e-4, 210.0, err, sizeof err);
+  CHECK(slip != NULL);
+  if (slip) {
+    CHECK(asperity_model_warnings(slip, text, sizeof text) == 2);
+    CHECK(strstr(text, "summit radius 10 m is implausible (above 0.001 m): did you mean 10 \xC2\xB5m (1e-05 m)?\n") != NULL);
+    CHECK(strstr(text, "contact modulus E* 210 Pa is implausible") != NULL);
+    CHECK(asperity_model_warnings(slip, NULL, 0) == 2);
+    CHECK(asperity_model_warnings(slip, text, 8) == 2 && strlen(text) == 7); /* cut, NUL-terminated */
+    asperity_model_close(slip);
+  }
+  CHECK(asperity_model_warnings(NULL, text, sizeof text) == 0);
+  /* the batch: each element the scalar answer (to the batch lookup's rounding), NaN exactly, in place */
+  sep[0] = -1e-6, sep[1] = 0, sep[2] = 1e-6, sep[3] = 2.5e-6, sep[4] = INFINITY, sep[5] = -INFINITY, sep[6] = 4e-6;
+  for (q = ASPERITY_QUANTITY_COUNT; q <= ASPERITY_QUANTITY_STIFFNESS; ++q) {
+    CHECK(asperity_model_at_separation_batch(summit, q, sep, out, 7) == ASPERITY_OK);
+    memcpy(in_place, sep, sizeof sep);
+    CHECK(asperity_model_at_separation_batch(summit, q, in_place, in_place, 7) == ASPERITY_OK);
+    for (i = 0; i < 7; ++i) {
+      double scalar;
+      asperity_model_at_separation(summit, sep[i], &c);
+      scalar = q == ASPERITY_QUANTITY_COUNT ? c.count
+               : q == ASPERITY_QUANTITY_REAL_AREA ? c.real_area
+               : q == ASPERITY_QUANTITY_AREA_FRACTION ? c.area_fraction
+               : q == ASPERITY_QUANTITY_LOAD ? c.load
+               : q == ASPERITY_QUANTITY_PRESSURE ? c.pressure
+                                                  : c.stiffness;
+      CHECK(in_place[i] == out[i]);
+      if (scalar == 0 || isinf(scalar)) CHECK(out[i] == scalar);
+      else CHECK(fabs(out[i] - scalar) <= 1e-13 * scalar);
+    }
+  }
+  sep[2] = NAN;
+  CHECK(asperity_model_at_separation_batch(summit, ASPERITY_QUANTITY_LOAD, sep, out, 7) == ASPERITY_BAD_SEPARATION);
+  CHECK(isnan(out[2]) && !isnan(out[0]));
+  CHECK(asperity_model_at_separation_batch(summit, 6, sep, out, 7) == ASPERITY_BAD_PARAMETER && isnan(out[0]));
+  CHECK(asperity_model_at_separation_batch(NULL, ASPERITY_QUANTITY_LOAD, sep, out, 7) == ASPERITY_BAD_HANDLE);
+  CHECK(asperity_model_at_separation_batch(summit, ASPERITY_QUANTITY_LOAD, NULL, NULL, 0) == ASPERITY_OK);
+  asperity_model_close(origin);
+  asperity_model_close(summit);
+  asperity_model_close(plane);
+}
+
 int main(void) {
   char err[512];
   asperity_table *table = asperity_table_open(NULL, err, sizeof err);
@@ -301,6 +381,7 @@ int main(void) {
   table_statuses();
   curve_statuses(table);
   rms_height_scale(table);
+  model_datum_warnings_batch(table);
   curve_range(table);
   overlapping_batches(curve);
 

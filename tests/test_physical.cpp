@@ -3,13 +3,18 @@
 // a pressure, a real area) round-tripped across the whole range; Persson's law.
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/persson.hpp"
 #include "asperity/surface.hpp"
 
@@ -139,7 +144,7 @@ TEST(ContactModel, InversesRoundTripAcrossTheRange) {
       const PhysicalState by_pressure = model.at_pressure(load / c.surface.nominal_area);
       EXPECT_NEAR(by_pressure.separation, state.separation, 1e-12 * (std::fabs(state.separation) + 1e-12));
     }
-    RecordProperty(std::string(c.label) + "_load_round_trip", std::to_string(worst));
+    RecordProperty(std::string(c.label) + "_load_round_trip", format_double(worst));
     EXPECT_LT(worst, 1e-11) << c.label;  // the table's own error level
     EXPECT_LT(worst_area, 1e-11) << c.label;
     EXPECT_TRUE(std::isnan(model.at_load(NAN).separation));
@@ -189,6 +194,112 @@ TEST(ContactModel, NoContactAndInfiniteContactAreStates) {
     }
     EXPECT_TRUE(std::isnan(model.at_separation(NAN).load));
   }
+}
+
+// ContactModel::at_separations against at_separation, element by element: the batch lookup's
+// rounding where the answer is a normal positive number, and the same bits where it is not.
+double field(const PhysicalState& state, ContactQuantity quantity) {
+  switch (quantity) {
+    case ContactQuantity::count: return state.count;
+    case ContactQuantity::real_area: return state.real_area;
+    case ContactQuantity::area_fraction: return state.area_fraction;
+    case ContactQuantity::load: return state.load;
+    case ContactQuantity::pressure: return state.pressure;
+    case ContactQuantity::stiffness: return state.stiffness;
+  }
+  return NAN;
+}
+int order_of_quantity(ContactQuantity quantity) {
+  switch (quantity) {
+    case ContactQuantity::count: return orders::count;
+    case ContactQuantity::real_area:
+    case ContactQuantity::area_fraction: return orders::area;
+    case ContactQuantity::stiffness: return orders::stiffness;
+    default: return orders::load;
+  }
+}
+bool same_bits(double a, double b) {
+  if (std::isnan(a) && std::isnan(b)) return true;
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(ContactModel, BatchIsTheScalarAnswerForEveryElement) {
+  RoughSurface gaussian = gaussian_surface_from_moments(1e-12, 1e-4, 3e4, 1e-4, 1e11);
+  struct Case {
+    RoughSurface surface;
+    SeparationDatum datum;
+    double height;
+  };
+  const Case cases[] = {{weibull_surface(Side::tail, 2.0), SeparationDatum::origin, NAN},
+                        {weibull_surface(Side::tail, 0.5), SeparationDatum::mean_summit, NAN},
+                        {weibull_surface(Side::tail, 20.0), SeparationDatum::origin, NAN},
+                        {weibull_surface(Side::bounded, 1.3), SeparationDatum::mean_plane, 1e-6},
+                        {weibull_surface(Side::bounded, 0.5), SeparationDatum::origin, NAN},
+                        {gaussian, SeparationDatum::origin, NAN}};
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  double worst = 0;
+  long exact = 0, rounded = 0;
+  for (const Case& c : cases) {
+    const ContactModel model(table(), c.surface, c.datum, c.height);
+    const double sigma = c.surface.height_scale;
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::vector<double> d;
+    for (int i = 0; i < 1203; ++i) {  // not a multiple of the block
+      switch (i % 3) {
+        case 0: d.push_back(6 * unit(rng) * sigma); break;               // across contact
+        case 1: d.push_back(std::sinh(7 * unit(rng)) * sigma); break;    // all touching to beyond the table
+        default: d.push_back(0.05 * unit(rng) * sigma); break;           // near the origin
+      }
+    }
+    // NaN, the infinities, zeros, far beyond the table (X underflows to 0 or is subnormal), huge
+    for (double special : {nan, inf, -inf, 0.0, -0.0, 30 * sigma, 60 * sigma, 1e4 * sigma, 1e300, -1e300,
+                           model.datum_position() == 0 ? 1e-300 : -model.datum_position()})
+      d.insert(d.begin() + static_cast<long>(d.size() / 2), special);
+    for (int k = 0; k < contact_quantity_count; ++k) {
+      const ContactQuantity quantity = static_cast<ContactQuantity>(k);
+      std::vector<double> out(d.size()), in_place = d;
+      model.at_separations(quantity, d.data(), out.data(), d.size());
+      model.at_separations(quantity, in_place.data(), in_place.data(), in_place.size());  // out = separations
+      for (std::size_t i = 0; i < d.size(); ++i) {
+        const double scalar = field(model.at_separation(d[i]), quantity);
+        EXPECT_TRUE(same_bits(in_place[i], out[i])) << i;
+        const double x = model.curve().value(order_of_quantity(quantity), model.dimensionless(d[i]));
+        if (!(std::isnormal(scalar) && scalar > 0 && std::isnormal(x))) {  // (count at -inf: N, X_0 not looked up)
+          EXPECT_TRUE(same_bits(out[i], scalar))
+              << contact_quantity_name(quantity) << " at " << d[i] << ": " << out[i] << " against " << scalar;
+          ++exact;
+          continue;
+        }
+        // the bound of the batch lookup against the scalar one (test_batch): ulp of ln X
+        const double error = std::fabs(out[i] - scalar) / scalar;
+        const double bound = 2e-14 * (1 + std::fabs(std::log(x)));
+        EXPECT_LE(error, bound) << contact_quantity_name(quantity) << " at " << d[i];
+        worst = std::max(worst, error / (1 + std::fabs(std::log(x))));
+        ++rounded;
+      }
+    }
+    std::vector<double> none;
+    model.at_separations(ContactQuantity::load, none.data(), none.data(), 0);  // empty: nothing touched
+  }
+  RecordProperty("batch_vs_scalar_worst_relative_per_1_plus_abs_ln_x", format_double(worst));
+  RecordProperty("elements_same_bits", std::to_string(exact));
+  RecordProperty("elements_to_rounding", std::to_string(rounded));
+  EXPECT_GT(exact, 100);
+  // a model without a surface answers NaN, as its scalar queries do
+  double x = 1e-6, y = 0;
+  ContactModel().at_separations(ContactQuantity::load, &x, &y, 1);
+  EXPECT_TRUE(std::isnan(y));
+}
+
+TEST(ContactModel, QuantityNamesRoundTrip) {
+  for (int k = 0; k < contact_quantity_count; ++k) {
+    ContactQuantity parsed;
+    ASSERT_TRUE(parse_contact_quantity(contact_quantity_name(static_cast<ContactQuantity>(k)), parsed));
+    EXPECT_EQ(static_cast<int>(parsed), k);
+  }
+  ContactQuantity parsed;
+  EXPECT_FALSE(parse_contact_quantity("area", parsed));  // real-area or area-fraction
 }
 
 TEST(RoughSurface, RmsAndScaleAndTheFactorsOfTheModel) {

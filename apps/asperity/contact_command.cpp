@@ -12,7 +12,9 @@
 #include "asperity/error.hpp"
 #include "command_line.hpp"
 #include "asperity/number_text.hpp"
+#include "asperity/plausibility.hpp"
 #include "asperity/pressure_overclosure.hpp"
+#include "asperity/separation_datum.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -20,12 +22,12 @@ namespace {
 constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
-  std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum;
+  std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum, datum;
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
   double separation = not_given, load = not_given, pressure = not_given, real_area = not_given;
-  double export_tolerance = not_given, face_size = not_given;
+  double export_tolerance = not_given, face_size = not_given, mean_summit_height = not_given;
   long long max_points = 0;  // 0: not given
 };
 
@@ -248,6 +250,11 @@ int run_contact(const Options& options, const CLI::App& command) {
   CardFormat format = CardFormat::csv;
   CardUnits units = CardUnits::si;
   OverclosureDatum datum = OverclosureDatum::mean_summit;
+  SeparationDatum separation_datum = default_separation_datum;
+  if (!options.datum.empty() && !parse_separation_datum(options.datum, separation_datum))
+    usage("--datum: '" + quote_text(options.datum) + "' is not origin, mean-summit or mean-plane");
+  if (!options.datum.empty() && !options.export_format.empty())
+    usage("--datum is the queries' separation datum: the card's is --overclosure-datum");
   if (!options.export_format.empty()) {
     if (!parse_card_format(options.export_format, format))
       usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
@@ -255,7 +262,7 @@ int run_contact(const Options& options, const CLI::App& command) {
       usage("--units: '" + quote_text(options.units) + "' is not si or mm");
     if (!options.overclosure_datum.empty() && !parse_overclosure_datum(options.overclosure_datum, datum))
       usage("--overclosure-datum: '" + quote_text(options.overclosure_datum) +
-            "' is not mean-summit, origin or zero-pressure");
+            "' is not mean-summit, origin, zero-pressure or mean-plane");
     if (given(options.face_size) && !(options.face_size > 0))
       usage("--face-size must be a positive length [m], got " + number(options.face_size));
     if (given(options.face_size) && format != CardFormat::calculix)
@@ -266,14 +273,27 @@ int run_contact(const Options& options, const CLI::App& command) {
     usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
           "with --export");
   }
+  // the mean plane is where the user says it is: the summit heights do not fix it
+  const bool mean_plane = separation_datum == SeparationDatum::mean_plane ||
+                          (!options.export_format.empty() && datum == OverclosureDatum::mean_plane);
+  if (mean_plane && !given(options.mean_summit_height))
+    usage("the mean-plane datum needs --mean-summit-height M: the mean summit height above the mean plane (`asperity "
+          "surface` reports it for a measured map); the summit heights alone do not fix the mean plane");
+  if (!mean_plane && given(options.mean_summit_height))
+    usage("--mean-summit-height goes with --datum mean-plane (or --overclosure-datum mean-plane)");
+  if (mean_plane) separation_datum = SeparationDatum::mean_plane;
   Sweep sweep;
   if (!options.sweep.empty()) sweep = sweep_from(options.sweep);
 
   const Table table = open_table(options.table);
-  const ContactModel model(table, surface);
+  const ContactModel model(table, surface, separation_datum, options.mean_summit_height);
+  for (const std::string& line : implausible_values(surface)) warn(command, line);
   if (!given_scale.empty()) note(command, given_scale);
   if (!options.export_format.empty()) return export_law(options, model, command, format, units, datum);
 
+  note(command, "separation_m (and --separation, --sweep separation): " +
+                    describe_separation_datum(separation_datum, options.mean_summit_height) +
+                    "; mean_separation_m: from the mean summit height");
   std::printf("separation_m,mean_separation_m,count,real_area_m2,area_fraction,load_N,nominal_pressure_Pa,"
               "stiffness_N_per_m,stiffness_over_load_per_m\n");
   double largest_fraction = 0;
@@ -327,13 +347,22 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--moments", o.moments,
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
-  add_number(*command, "--separation", o.separation, "at a separation [m] (origin convention)")->type_name("M")->group("Query (one)");
+  add_number(*command, "--separation", o.separation, "at a separation [m] from the datum (--datum)")->type_name("M")->group("Query (one)");
   add_number(*command, "--load", o.load, "at a load [N]")->type_name("N")->group("Query (one)");
   add_number(*command, "--pressure", o.pressure, "at a nominal pressure [Pa]")->type_name("PA")->group("Query (one)");
   add_number(*command, "--real-area", o.real_area, "at a real contact area [m^2]")->type_name("M2")->group("Query (one)");
   add_text(*command, "--sweep", o.sweep,
            "COUNT queries from FROM to TO: KIND separation (linear), load, pressure or real-area (logarithmic)")
       ->type_name("KIND:FROM:TO:COUNT")->group("Query (one)");
+  add_text(*command, "--datum", o.datum,
+           "where separations (--separation, --sweep separation, separation_m) are measured from: origin (default, "
+           "kept for existing scripts: the Weibull origin, the Gaussian's mean), mean-summit (the mean summit height, "
+           "GW's datum) or mean-plane (the mean plane of the heights: give --mean-summit-height)")
+      ->type_name("DATUM")->group("Query (one)");
+  add_number(*command, "--mean-summit-height", o.mean_summit_height,
+             "the mean summit height above the mean plane [m] (asperity surface reports it), for --datum mean-plane "
+             "or --overclosure-datum mean-plane")
+      ->type_name("M")->group("Query (one)");
   add_text(*command, "--export", o.export_format,
            "the pressure-overclosure law as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card "
            "(calculix, abaqus) or CSV, on standard output")
@@ -353,19 +382,21 @@ void add_contact_command(CLI::App& app) {
       ->group("FE export");
   add_text(*command, "--overclosure-datum", o.overclosure_datum,
            "with --export: where overclosure is zero: mean-summit (default; the flat at the mean summit height), "
-           "origin (the separation's origin: the Weibull origin, the Gaussian's mean) or zero-pressure (the card's "
-           "first point: every overclosure >= 0)")
+           "origin (the separation's origin: the Weibull origin, the Gaussian's mean), zero-pressure (the card's "
+           "first point: every overclosure >= 0) or mean-plane (give --mean-summit-height)")
       ->type_name("DATUM")->group("FE export");
   add_number(*command, "--face-size", o.face_size,
              "with --export calculix: the slave faces' edge [m]; warns when the card reaches beyond node-to-surface "
              "contact's spring cut-off, a clearance of 1e-3 times it")
       ->type_name("M")->group("FE export");
   command->footer(
-      "Output: CSV, one row per query: separation_m (origin convention: from the Weibull origin or the\n"
-      "Gaussian's mean), mean_separation_m (from the mean summit height), count, real_area_m2,\n"
-      "area_fraction, load_N, nominal_pressure_Pa, stiffness_N_per_m, stiffness_over_load_per_m.\n"
-      "Standard error says which height scale was given and the other's value, and warns when the\n"
-      "real-area fraction exceeds 0.1: GW's asperities are independent Hertz contacts, which holds only\n"
+      "Output: CSV, one row per query: separation_m (from the datum, --datum: by default the origin\n"
+      "convention, from the Weibull origin or the Gaussian's mean; standard error names the datum),\n"
+      "mean_separation_m (from the mean summit height), count, real_area_m2, area_fraction, load_N,\n"
+      "nominal_pressure_Pa, stiffness_N_per_m, stiffness_over_load_per_m.\n"
+      "Standard error says which height scale was given and the other's value, names the datum, warns\n"
+      "of implausible values (a unit slip: a summit radius over 1 mm, E* under 1 MPa, ...), and warns when\n"
+      "the real-area fraction exceeds 0.1: GW's asperities are independent Hertz contacts, which holds only\n"
       "while the contacts are sparse (above 1 the answer is impossible).\n"
       "FE export: overclosure is the interpenetration of the surfaces (a clearance is negative),\n"
       "measured from the rough surface's mean summit height (--overclosure-datum); the card's header\n"

@@ -68,9 +68,17 @@ module asperity
     real(c_double) :: count, area, load, stiffness, stiffness_ratio
   end type
 
+  ! asperity_model_at_separation_batch: which quantity (asperity_quantity)
+  integer(c_int), parameter, public :: ASPERITY_QUANTITY_COUNT = 0_c_int          ! summits in contact
+  integer(c_int), parameter, public :: ASPERITY_QUANTITY_REAL_AREA = 1_c_int      ! m^2
+  integer(c_int), parameter, public :: ASPERITY_QUANTITY_AREA_FRACTION = 2_c_int  ! A / A0
+  integer(c_int), parameter, public :: ASPERITY_QUANTITY_LOAD = 3_c_int           ! N
+  integer(c_int), parameter, public :: ASPERITY_QUANTITY_PRESSURE = 4_c_int       ! Pa
+  integer(c_int), parameter, public :: ASPERITY_QUANTITY_STIFFNESS = 5_c_int      ! N/m
+
   ! asperity_model_at_*: a physical surface against a flat, SI units
   type, bind(c), public :: asperity_physical_state
-    real(c_double) :: separation           ! m, origin convention
+    real(c_double) :: separation           ! m, from the model's datum (asperity_model_open: the origin)
     real(c_double) :: mean_separation      ! m, from the mean summit height
     real(c_double) :: count                ! summits in contact
     real(c_double) :: real_area            ! m^2
@@ -91,6 +99,8 @@ module asperity
   public :: asperity_model_at_pressure, asperity_model_at_real_area
   public :: asperity_contact_modulus_given
   public :: asperity_model_pressure_overclosure_card, asperity_tabulated_pressure_overclosure_card
+  public :: asperity_model_open_datum, asperity_model_datum, asperity_model_warnings
+  public :: asperity_model_at_separation_batch
 
   interface
     ! Loads a table: path c_null_ptr for the default table ($ASPERITY_TABLE if set). Returns
@@ -312,6 +322,49 @@ module asperity
       type(c_ptr), value :: description, notes, buffer
       integer(c_size_t), intent(out) :: length
       integer(c_int) :: asperity_tabulated_pressure_overclosure_card
+    end function
+
+    ! asperity_model_open with the separation datum (NUL-terminated): "origin" (asperity_model_open's),
+    ! "mean-summit" or "mean-plane" (then mean_summit_height [m], the mean summit height above the
+    ! mean plane; NaN for the others).
+    function asperity_model_open_datum(table, dist, side, shape, height_scale, summit_radius, summit_density, &
+                                       nominal_area, contact_modulus, datum, mean_summit_height, err, err_size) &
+        bind(c, name="asperity_model_open_datum")
+      import :: c_ptr, c_char, c_double, c_size_t
+      type(c_ptr), value :: table
+      character(kind=c_char), dimension(*) :: dist, side, datum, err
+      real(c_double), value :: shape, height_scale, summit_radius, summit_density, nominal_area, contact_modulus
+      real(c_double), value :: mean_summit_height
+      integer(c_size_t), value :: err_size
+      type(c_ptr) :: asperity_model_open_datum
+    end function
+
+    ! The model's datum's name (a C string in static storage; c_null_ptr for c_null_ptr).
+    function asperity_model_datum(model) bind(c, name="asperity_model_datum")
+      import :: c_ptr
+      type(c_ptr), value :: model
+      type(c_ptr) :: asperity_model_datum
+    end function
+
+    ! Units caught: how many implausible values the surface has; their lines into buffer.
+    function asperity_model_warnings(model, buffer, buffer_size) bind(c, name="asperity_model_warnings")
+      import :: c_ptr, c_char, c_size_t
+      type(c_ptr), value :: model
+      character(kind=c_char), dimension(*) :: buffer
+      integer(c_size_t), value :: buffer_size
+      integer(c_size_t) :: asperity_model_warnings
+    end function
+
+    ! out(i) = the quantity (ASPERITY_QUANTITY_*) at separation(i), i = 1..n: the batch lookup.
+    function asperity_model_at_separation_batch(model, quantity, separation, out, n) &
+        bind(c, name="asperity_model_at_separation_batch")
+      import :: c_ptr, c_int, c_double, c_size_t
+      type(c_ptr), value :: model
+      integer(c_int), value :: quantity
+      real(c_double), dimension(*), intent(in) :: separation
+      real(c_double), dimension(*), intent(out) :: out
+      integer(c_size_t), value :: n
+      integer(c_int) :: asperity_model_at_separation_batch
     end function
 
     subroutine asperity_model_close(model) bind(c, name="asperity_model_close")

@@ -128,10 +128,19 @@ const char *asperity_version(void);
 /* A physical surface and its contact with a flat, forward and inverse (asperity/contact_model.hpp),
  * SI units. dist "weibull" (shape 0.3..50, side "tail" or "bounded") or "gaussian" (side "tail").
  * Returns NULL and writes a message into err for a bad parameter or a missing curve. The model
- * is immutable: one handle may serve many threads. */
+ * is immutable: one handle may serve many threads.
+ *
+ * Separations (asperity_model_at_separation's input, separation in every answer) are measured
+ * from the model's datum (asperity/separation_datum.hpp, docs/model.md section 2):
+ *   "origin"       the Weibull origin (lowest summit on the tail side, highest on the bounded
+ *                  side) or the Gaussian's mean: asperity_model_open's, and the default (NULL);
+ *   "mean-summit"  the mean summit height (GW's and McCool's datum);
+ *   "mean-plane"   the mean plane of the surface heights, mean_summit_height [m] below the mean
+ *                  summit height (the summit heights do not fix it: the caller gives it).
+ * mean_separation is always from the mean summit height. */
 typedef struct asperity_model asperity_model;
 typedef struct asperity_physical_state {
-  double separation;          /* m, origin convention (from the Weibull origin / Gaussian mean) */
+  double separation;          /* m, from the model's datum (asperity_model_open: the origin) */
   double mean_separation;     /* m, from the mean summit height */
   double count;               /* summits in contact */
   double real_area;           /* m^2 */
@@ -144,6 +153,22 @@ typedef struct asperity_physical_state {
 asperity_model *asperity_model_open(const asperity_table *table, const char *dist, const char *side, double shape,
                                     double height_scale, double summit_radius, double summit_density,
                                     double nominal_area, double contact_modulus, char *err, size_t err_size);
+/* asperity_model_open with a datum ("origin", "mean-summit", "mean-plane"; NULL: "origin") and, for
+ * "mean-plane" only, the mean summit height above the mean plane [m] (NaN otherwise). NULL and a
+ * message for an unknown datum, "mean-plane" without a finite height, or a height with another datum. */
+asperity_model *asperity_model_open_datum(const asperity_table *table, const char *dist, const char *side,
+                                          double shape, double height_scale, double summit_radius,
+                                          double summit_density, double nominal_area, double contact_modulus,
+                                          const char *datum, double mean_summit_height, char *err, size_t err_size);
+/* The model's datum ("origin", "mean-summit" or "mean-plane"; static storage); NULL for NULL. */
+const char *asperity_model_datum(const asperity_model *model);
+/* Units caught (asperity/plausibility.hpp): the surface's implausible values, most likely a unit
+ * slip (a summit radius over 1 mm, E* under 1 MPa or over 10 TPa, sigma_s over 1 mm, a summit
+ * density outside 1e4..1e18 per m^2, ...), found when the model was opened. Returns how many;
+ * writes them into buffer one a line ("summit radius 10 m is implausible (above 0.001 m): did you
+ * mean 10 µm (1e-05 m)?\n", UTF-8), NUL-terminated, cut to buffer_size - 1 bytes (nothing written for
+ * a NULL buffer or buffer_size 0). 0 for a plausible surface or a NULL model. */
+size_t asperity_model_warnings(const asperity_model *model, char *buffer, size_t buffer_size);
 void asperity_model_close(asperity_model *model);
 /* Each returns a status code (ASPERITY_BAD_HANDLE for NULL, ASPERITY_BAD_SEPARATION for a NaN
  * input, ASPERITY_OUTSIDE_RANGE for a separation, or a load, pressure or area whose separation,
@@ -153,6 +178,23 @@ int asperity_model_at_separation(const asperity_model *model, double separation,
 int asperity_model_at_load(const asperity_model *model, double load, asperity_physical_state *out);
 int asperity_model_at_pressure(const asperity_model *model, double pressure, asperity_physical_state *out);
 int asperity_model_at_real_area(const asperity_model *model, double real_area, asperity_physical_state *out);
+/* The batch: out[i] = the quantity of asperity_model_at_separation(model, separation[i]) for i < n,
+ * through the vectorized lookup (asperity_eval_batch) and the quantity's factor: the same answer to
+ * the batch lookup's rounding (a few ulp of ln X), and exactly the scalar one where it is NaN, 0 or
+ * infinite. out may be separation (not a partial overlap). No allocation. Returns ASPERITY_OK,
+ * ASPERITY_BAD_HANDLE (NULL model, or NULL arrays with n > 0), ASPERITY_BAD_PARAMETER (quantity not an
+ * asperity_quantity: every out NaN), ASPERITY_BAD_SEPARATION (some separations NaN: their out NaN) or
+ * ASPERITY_OUTSIDE_RANGE (some outside a scene table's range: their out NaN). */
+typedef enum asperity_quantity {
+  ASPERITY_QUANTITY_COUNT = 0,         /* summits in contact */
+  ASPERITY_QUANTITY_REAL_AREA = 1,     /* m^2 */
+  ASPERITY_QUANTITY_AREA_FRACTION = 2, /* A / A0 */
+  ASPERITY_QUANTITY_LOAD = 3,          /* N */
+  ASPERITY_QUANTITY_PRESSURE = 4,      /* Pa, load / A0 */
+  ASPERITY_QUANTITY_STIFFNESS = 5      /* N/m */
+} asperity_quantity;
+int asperity_model_at_separation_batch(const asperity_model *model, int quantity, const double *separation,
+                                       double *out, size_t n);
 /* 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2; NaN for E <= 0 or nu outside (-1, 0.5]. */
 double asperity_contact_modulus(double young1, double poisson1, double young2, double poisson2);
 /* The height scale asperity_model_open takes, from the rms summit height GW users measure (about

@@ -3,21 +3,28 @@
 // that carries a load, a pressure or a real area. The inverses are tabulated once, when the
 // model is made (asperity/inverse.hpp): a query is a table step and one Newton step.
 //
-// Separations are physical lengths [m] in the origin convention of docs/model.md: d = sigma_s * s,
-// from the Weibull origin (the lowest summit on the tail side, the highest on the bounded
-// side) or the Gaussian's mean summit height. `mean_separation` gives the same point measured
-// from the mean summit height, the convention of GW and McCool.
+// Separations are physical lengths [m] from the model's datum (asperity/separation_datum.hpp):
+// by default the origin convention of docs/model.md, d = sigma_s * s, from the Weibull origin
+// (the lowest summit on the tail side, the highest on the bounded side) or the Gaussian's mean
+// summit height; or from the mean summit height (GW's and McCool's datum) or the mean plane.
+// Every separation in and out (at_separation's argument, PhysicalState::separation, the
+// inverses' answers) is in that datum; `mean_separation` is always from the mean summit height.
 #pragma once
+#include <cstddef>
+#include <limits>
+#include <string>
+
 #include "asperity/contact.hpp"
 #include "asperity/curve.hpp"
 #include "asperity/inverse.hpp"
+#include "asperity/separation_datum.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
 
 namespace asperity {
 
 struct PhysicalState {
-  double separation;           // d [m], origin convention
+  double separation;           // d [m], from the model's datum (default: origin convention)
   double mean_separation;      // [m], from the mean summit height
   double count;                // summits in contact
   double real_area;            // A [m^2]
@@ -28,13 +35,24 @@ struct PhysicalState {
   double stiffness_over_load;  // K / P [1/m]
 };
 
+// One field of PhysicalState, for the batch (ContactModel::at_separations); the names
+// ("count", "real-area", "area-fraction", "load", "pressure", "stiffness") are the command's and Python's.
+enum class ContactQuantity { count, real_area, area_fraction, load, pressure, stiffness };
+inline constexpr int contact_quantity_count = 6;
+const char* contact_quantity_name(ContactQuantity quantity) noexcept;
+bool parse_contact_quantity(const std::string& name, ContactQuantity& quantity) noexcept;
+
 // A model holds its curve and inverses by shared handles: copies are cheap and independent of
 // the Table it was made from.
 class ContactModel {
  public:
   ContactModel() = default;  // no surface: every query answers NaN
-  // Throws asperity::Error for a bad surface (RoughSurface::validate) or a table without its curve.
-  ContactModel(const Table& table, const RoughSurface& surface);
+  // Throws asperity::Error for a bad surface (RoughSurface::validate), a table without its curve,
+  // or a bad datum (separation_datum_position: mean_plane needs mean_summit_height [m], the mean
+  // summit height above the mean plane; the other datums take none, NaN). An implausible surface
+  // (a unit slip) is not an error: implausible_values (asperity/plausibility.hpp) says.
+  ContactModel(const Table& table, const RoughSurface& surface, SeparationDatum datum = default_separation_datum,
+               double mean_summit_height = std::numeric_limits<double>::quiet_NaN());
 
   // NaN everywhere for a NaN input. No contact (a load, pressure or area <= 0, or a separation
   // past the last summit: +inf on the tail side, >= 0 on the bounded side) gives count, area,
@@ -47,10 +65,26 @@ class ContactModel {
   PhysicalState at_pressure(double pressure) const noexcept;
   PhysicalState at_real_area(double real_area) const noexcept;
 
+  // The batch: out[i] = at_separation(separations[i]).<quantity> for i < count, through the
+  // curve's batch lookup (Curve::value_batch) and the factor: the same answer as at_separation
+  // to the batch lookup's rounding (a few ulp of ln X: within 2e-14 (1 + |ln X|) relative,
+  // tests/test_physical.cpp), and exactly at_separation's where it is not a normal positive
+  // number: NaN (NaN input; outside a scene table's range), no contact (0), every summit in
+  // contact (-inf), and products whose X_n under- or overflows (answered by at_separation
+  // itself). No allocation, no throw; out may be separations (not a partial overlap).
+  void at_separations(ContactQuantity quantity, const double* separations, double* out,
+                      std::size_t count) const noexcept;
+
   const RoughSurface& surface() const noexcept { return surface_; }
   const Curve& curve() const noexcept { return curve_; }
-  // the dimensionless separation s of a physical one, and back
-  double dimensionless(double separation) const noexcept { return separation / surface_.height_scale; }
+  SeparationDatum datum() const noexcept { return datum_; }
+  double mean_summit_height() const noexcept { return mean_summit_height_; }  // above the mean plane; NaN unless mean_plane
+  // Where the datum is, as an origin-convention separation [m] (separation_datum_position).
+  double datum_position() const noexcept { return datum_offset_ * surface_.height_scale; }
+  // The dimensionless separation s (origin convention) of a physical one in the model's datum.
+  double dimensionless(double separation) const noexcept {
+    return datum_offset_ == 0 ? separation / surface_.height_scale : separation / surface_.height_scale + datum_offset_;
+  }
 
  private:
   PhysicalState state_at_dimensionless(double s) const noexcept;
@@ -61,7 +95,13 @@ class ContactModel {
   Curve curve_;
   InverseCurve load_inverse_, area_inverse_;
   ContactScales scales_;
-  double mean_offset_ = 0;
+  double mean_offset_ = 0;   // the mean summit, origin convention, units of sigma_s
+  SeparationDatum datum_ = default_separation_datum;
+  double mean_summit_height_ = std::numeric_limits<double>::quiet_NaN();
+  double datum_offset_ = 0;  // the datum, origin convention, units of sigma_s
+  double physical(double s) const noexcept {
+    return datum_offset_ == 0 ? s * surface_.height_scale : (s - datum_offset_) * surface_.height_scale;
+  }
 };
 
 }  // namespace asperity

@@ -28,8 +28,10 @@ namespace asperity {
 enum class CardFormat { calculix, abaqus, csv };
 enum class CardUnits { si, mm };  // overclosure in m and pressure in Pa, or mm and MPa (N/mm^2)
 // Where zero overclosure is: the flat at the mean summit height (default), at the separation's
-// origin (the Weibull origin, the Gaussian's mean), or where the card's pressure reaches zero.
-enum class OverclosureDatum { mean_summit, origin, zero_pressure };
+// origin (the Weibull origin, the Gaussian's mean), where the card's pressure reaches zero, or at
+// the mean plane (a model made with SeparationDatum::mean_plane: it knows the mean summit height
+// above the plane). The first, second and last are asperity/separation_datum.hpp's datums.
+enum class OverclosureDatum { mean_summit, origin, zero_pressure, mean_plane };
 
 struct PressureOverclosurePoint {
   double pressure;     // Pa
@@ -98,7 +100,7 @@ void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<P
 bool parse_card_format(const std::string& name, CardFormat& format);
 bool parse_card_units(const std::string& name, CardUnits& units);
 bool parse_overclosure_datum(const std::string& name, OverclosureDatum& datum);
-const char* datum_name(OverclosureDatum datum);  // "mean-summit", "origin", "zero-pressure"
+const char* datum_name(OverclosureDatum datum);  // "mean-summit", "origin", "zero-pressure", "mean-plane"
 
 // A card's number: rounded to the card's 13 significant digits, then the shortest text that
 // reads back to that double ("1000000", "0.0002", "-1.5e-07"; never "999999.9999996" for the 1e6

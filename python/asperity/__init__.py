@@ -39,6 +39,7 @@ from ._asperity import (  # noqa: F401
     CurveSet,
     Distribution,
     Error,
+    ImplausibleValueWarning,
     InstructionSet,
     InverseCurve,
     PerssonLaw,
@@ -61,6 +62,7 @@ from ._asperity import (  # noqa: F401
     gaussian_log_density,
     gaussian_surface_from_moments,
     height_scale_from_rms,
+    implausible_values,
     nominal_pressure_from_load,
     order_of,
     origin_from_standardized,
@@ -85,6 +87,7 @@ _sys.modules[__name__ + ".topography"] = topography
 from . import batch  # noqa: E402,F401 (pure Python; imports dask only when it runs)
 
 __all__ = [
+    "ImplausibleValueWarning", "implausible_values",
     "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
     "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",

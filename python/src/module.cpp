@@ -24,9 +24,11 @@
 #include "asperity/inverse.hpp"
 #include "asperity/integrals.hpp"
 #include "asperity/persson.hpp"
+#include "asperity/plausibility.hpp"
 #include "asperity/pressure_overclosure.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/scene_curves.hpp"
+#include "asperity/separation_datum.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
 
@@ -164,8 +166,9 @@ void bind(py::module_& m) {
                      "stiffness", "stiffness_over_load"),
       "module"_a = "asperity");
   physical_state.attr("__doc__") =
-      "ContactModel's answer (floats, or arrays shaped like the input), SI units: separation [m] (origin "
-      "convention), mean_separation [m] (from the mean summit height), count, real_area [m^2], area_fraction "
+      "ContactModel's answer (floats, or arrays shaped like the input), SI units: separation [m] (from the model's "
+      "datum, ContactModel.datum: 'origin' by default, the Weibull origin or the Gaussian's mean; or 'mean-summit', "
+      "'mean-plane'), mean_separation [m] (from the mean summit height), count, real_area [m^2], area_fraction "
       "(A/A0), load [N], pressure [Pa] (load/A0), stiffness [N/m], stiffness_over_load [1/m].";
   m.attr("PhysicalState") = physical_state;
   physical_state_type = physical_state.release();
@@ -532,18 +535,94 @@ void bind(py::module_& m) {
       .def("__copy__", [](const InverseCurve& inverse) { return inverse; })
       .def("__deepcopy__", [](const InverseCurve& inverse, py::dict) { return inverse; }, "memo"_a);
 
+  // Units caught (asperity/plausibility.hpp): a UserWarning subclass, raised where a model is made
+  static PyObject* const implausible_warning =
+      PyErr_NewExceptionWithDoc("asperity.ImplausibleValueWarning",
+                                "A physically implausible surface parameter, most likely a unit slip (a summit radius "
+                                "over 1 mm, E* under 1 MPa, ...): the message names the value and the likely slip.",
+                                PyExc_UserWarning, nullptr);
+  m.attr("ImplausibleValueWarning") = py::reinterpret_borrow<py::object>(implausible_warning);
+  m.def("implausible_values", &implausible_values, "surface"_a,
+        "Units caught: one line per implausible parameter of the surface (a summit radius outside 1 nm..1 mm,\n"
+        "sigma_s outside 0.1 nm..1 mm, a summit density outside 1e4..1e18 per m^2, E* outside 1 MPa..10 TPa, A0\n"
+        "over 100 m^2, fewer than one summit, sigma_s >= R), each naming the value and the likely slip;\n"
+        "empty for a plausible surface. ContactModel warns them (asperity.ImplausibleValueWarning).");
   py::class_<ContactModel>(m, "ContactModel",
                            "Contact of a flat with a RoughSurface, forward and inverse, SI units. Separations "
-                           "are lengths [m] in the origin convention (docs/model.md).")
-      .def(py::init<const Table&, const RoughSurface&>(), "table"_a, "surface"_a,
-           "Raises asperity.Error for a bad surface or a table without its curve. The model holds its curve and\n"
-           "inverses (shared handles): it may outlive the Table, and copies (copy.copy) are cheap.")
+                           "are lengths [m] from the model's datum (docs/model.md section 2): 'origin' by default "
+                           "(the Weibull origin, the Gaussian's mean), 'mean-summit' or 'mean-plane'.")
+      .def(py::init([](const Table& table, const RoughSurface& surface, const std::string& datum,
+                       std::optional<double> mean_summit_height) {
+             SeparationDatum separation_datum;
+             if (!parse_separation_datum(datum, separation_datum))
+               throw py::value_error("unknown datum '" + datum + "': expected 'origin', 'mean-summit' or 'mean-plane'");
+             ContactModel model(table, surface, separation_datum,
+                                mean_summit_height.value_or(std::numeric_limits<double>::quiet_NaN()));
+             for (const std::string& line : implausible_values(surface))
+               if (PyErr_WarnEx(implausible_warning, line.c_str(), 1) != 0) throw py::error_already_set();
+             return model;
+           }),
+           "table"_a, "surface"_a, "datum"_a = separation_datum_name(default_separation_datum),
+           "mean_summit_height"_a = py::none(),
+           "datum: where separations (at_separation's argument, PhysicalState.separation, the inverses'\n"
+           "answers) are measured from: 'origin' (the default, kept for existing code: the Weibull origin, the\n"
+           "Gaussian's mean), 'mean-summit' (the mean summit height, GW's datum) or 'mean-plane' (the mean plane\n"
+           "of the heights: give mean_summit_height [m], the mean summit height above it). Raises asperity.Error\n"
+           "for a bad surface, a table without its curve or a bad datum; warns asperity.ImplausibleValueWarning\n"
+           "for an implausible parameter (a unit slip). The model holds its curve and inverses (shared\n"
+           "handles): it may outlive the Table, and copies (copy.copy) are cheap.")
+      .def_property_readonly("datum", [](const ContactModel& model) { return separation_datum_name(model.datum()); },
+                             "Where separations are measured from: 'origin', 'mean-summit' or 'mean-plane'.")
+      .def_property_readonly(
+          "mean_summit_height",
+          [](const ContactModel& model) -> std::optional<double> {
+            if (std::isnan(model.mean_summit_height())) return std::nullopt;
+            return model.mean_summit_height();
+          },
+          "The mean summit height above the mean plane [m] ('mean-plane' datum), else None.")
+      .def_property_readonly("datum_position", &ContactModel::datum_position,
+                             "Where the datum is, as a separation in the origin convention [m].")
+      .def(
+          "at_separations",
+          [](const ContactModel& model, const std::string& quantity, const ArrayLike& separation,
+             const OptionalOut& out) {
+            ContactQuantity q;
+            if (!parse_contact_quantity(quantity, q))
+              throw py::value_error("unknown quantity '" + quantity +
+                                    "': expected 'count', 'real-area', 'area-fraction', 'load', 'pressure' or "
+                                    "'stiffness'");
+            return map_batch(
+                separation.object, "separation", out.object,
+                [&](const double* in, double* result, std::size_t n) { model.at_separations(q, in, result, n); },
+                [&](double x) {
+                  double y;
+                  model.at_separations(q, &x, &y, 1);
+                  return y;
+                });
+          },
+          "quantity"_a, "separation"_a, py::kw_only(), "out"_a = py::none(),
+          "One quantity ('count', 'real-area', 'area-fraction', 'load', 'pressure', 'stiffness') at separations\n"
+          "[m] from the model's datum, through the vectorized batch lookup (no Python loop, the GIL released for\n"
+          "large arrays): at_separation(d).<quantity> to the batch lookup's rounding (a few ulp of ln X), and\n"
+          "exactly where that is NaN, 0 or infinite. A number gives a float, an array an array of its shape;\n"
+          "out: an optional C-contiguous float64 array of the same size to write into.")
+      .def("__repr__",
+           [](const ContactModel& model) {
+             const RoughSurface& s = model.surface();
+             std::string text = std::string("<asperity.ContactModel ") + to_string(s.distribution) + " " + to_string(s.side);
+             if (s.distribution == Distribution::weibull) text += " shape=" + py::repr(py::float_(s.shape)).cast<std::string>();
+             text += std::string(" datum='") + separation_datum_name(model.datum()) + "'";
+             if (model.datum() == SeparationDatum::mean_plane)
+               text += " mean_summit_height=" + py::repr(py::float_(model.mean_summit_height())).cast<std::string>();
+             if (model.datum() == default_separation_datum) text += " (the default)";
+             return text + ">";
+           })
       .def(
           "at_separation",
           [](const ContactModel& model, const ArrayLike& separation) {
             return physical_states(separation.object, "separation", [&](double d) { return model.at_separation(d); });
           },
-          "separation"_a, "The PhysicalState at separations d [m] (a number or an array).")
+          "separation"_a, "The PhysicalState at separations d [m] from the model's datum (a number or an array).")
       .def(
           "at_load",
           [](const ContactModel& model, const ArrayLike& load) {
@@ -569,18 +648,25 @@ void bind(py::module_& m) {
       .def(
           "pressure_overclosure_card",
           [](const ContactModel& model, double pressure_min, double pressure_max, double tolerance,
-             const std::string& format, const std::string& units, const std::string& description) {
+             const std::string& format, const std::string& units, const std::string& description,
+             const std::string& overclosure_datum) {
+            OverclosureDatum datum;
+            if (!parse_overclosure_datum(overclosure_datum, datum))
+              throw py::value_error("unknown overclosure_datum '" + overclosure_datum +
+                                    "': expected 'mean-summit', 'origin', 'zero-pressure' or 'mean-plane'");
             const PressureOverclosureTable table =
-                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance);
+                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance, datum);
             std::ostringstream out;
             write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
             return out.str();
           },
           "pressure_min"_a, "pressure_max"_a, "tolerance"_a = 1e-3, "format"_a = "calculix", "units"_a = "si",
-          "description"_a = "",
+          "description"_a = "", "overclosure_datum"_a = "mean-summit",
           "FE export: the contact-pressure law as the tabular pressure-overclosure card of CalculiX or Abaqus\n"
           "(format 'calculix', 'abaqus' or 'csv'; units 'si' for m and Pa, 'mm' for mm and MPa) as text, the\n"
-          "overclosure from the mean summit height, linear interpolation within `tolerance` (relative, in\n"
+          "overclosure from overclosure_datum ('mean-summit', the default: the mean summit height; 'origin';\n"
+          "'zero-pressure': the card's first point; 'mean-plane': a model made with datum='mean-plane'),\n"
+          "whatever the model's separation datum; linear interpolation within `tolerance` (relative, in\n"
           "pressure) of the law from pressure_min to pressure_max [Pa]. Raises asperity.Error for a bad range\n"
           "or tolerance.")
       .def("__copy__", [](const ContactModel& model) { return model; })
@@ -590,7 +676,8 @@ void bind(py::module_& m) {
           [](const ContactModel& model, const ArrayLike& separation) {
             return map_scalar(separation.object, "separation", [&](double d) { return model.dimensionless(d); });
           },
-          "separation"_a, "s = d / sigma_s.");
+          "separation"_a, "s (origin convention, units of sigma_s) of d [m] from the model's datum: d / sigma_s plus\n"
+          "the datum's position / sigma_s.");
 
   py::class_<PerssonLaw>(m, "PerssonLaw",
                          "Persson's (2007) law for comparison: p = reference_pressure exp(-s / beta).")

@@ -15,7 +15,9 @@
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
+#include "asperity/plausibility.hpp"
 #include "asperity/pressure_overclosure.hpp"
+#include "asperity/separation_datum.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
@@ -28,6 +30,7 @@ struct asperity_curve {
 };
 struct asperity_model {
   asperity::ContactModel model;
+  std::string warnings;  // asperity_model_warnings: implausible_values, one a line
 };
 
 namespace {
@@ -244,8 +247,22 @@ void asperity_curve_close(asperity_curve* curve) { delete curve; }
 asperity_model* asperity_model_open(const asperity_table* table, const char* dist, const char* side, double shape,
                                     double height_scale, double summit_radius, double summit_density,
                                     double nominal_area, double contact_modulus, char* err, size_t err_size) {
+  return asperity_model_open_datum(table, dist, side, shape, height_scale, summit_radius, summit_density, nominal_area,
+                                   contact_modulus, nullptr, not_a_number, err, err_size);
+}
+
+asperity_model* asperity_model_open_datum(const asperity_table* table, const char* dist, const char* side,
+                                          double shape, double height_scale, double summit_radius,
+                                          double summit_density, double nominal_area, double contact_modulus,
+                                          const char* datum, double mean_summit_height, char* err, size_t err_size) {
   if (!table || !dist || !side) {
     write_error(err, err_size, "asperity_model_open: NULL table, dist or side");
+    return nullptr;
+  }
+  asperity::SeparationDatum separation_datum = asperity::default_separation_datum;
+  if (datum && !asperity::parse_separation_datum(datum, separation_datum)) {
+    write_error(err, err_size,
+                (std::string("unknown datum '") + datum + "' (origin, mean-summit or mean-plane)").c_str());
     return nullptr;
   }
   asperity::RoughSurface surface;
@@ -263,8 +280,47 @@ asperity_model* asperity_model_open(const asperity_table* table, const char* dis
   surface.summit_density = summit_density;
   surface.nominal_area = nominal_area;
   surface.contact_modulus = contact_modulus;
-  return guarded(err, err_size, "asperity_model_open",
-                 [&] { return new asperity_model{asperity::ContactModel(table->table, surface)}; });
+  return guarded(err, err_size, "asperity_model_open", [&] {
+    asperity_model* model = new asperity_model{
+        asperity::ContactModel(table->table, surface, separation_datum, mean_summit_height), std::string()};
+    for (const std::string& line : asperity::implausible_values(surface)) model->warnings += line + "\n";
+    return model;
+  });
+}
+
+const char* asperity_model_datum(const asperity_model* model) {
+  return model ? asperity::separation_datum_name(model->model.datum()) : nullptr;
+}
+
+size_t asperity_model_warnings(const asperity_model* model, char* buffer, size_t buffer_size) {
+  if (!model) return 0;
+  if (buffer && buffer_size > 0) std::snprintf(buffer, buffer_size, "%s", model->warnings.c_str());
+  return static_cast<size_t>(std::count(model->warnings.begin(), model->warnings.end(), '\n'));
+}
+
+static_assert(ASPERITY_QUANTITY_COUNT == static_cast<int>(asperity::ContactQuantity::count) &&
+                  ASPERITY_QUANTITY_REAL_AREA == static_cast<int>(asperity::ContactQuantity::real_area) &&
+                  ASPERITY_QUANTITY_AREA_FRACTION == static_cast<int>(asperity::ContactQuantity::area_fraction) &&
+                  ASPERITY_QUANTITY_LOAD == static_cast<int>(asperity::ContactQuantity::load) &&
+                  ASPERITY_QUANTITY_PRESSURE == static_cast<int>(asperity::ContactQuantity::pressure) &&
+                  ASPERITY_QUANTITY_STIFFNESS == static_cast<int>(asperity::ContactQuantity::stiffness),
+              "asperity_quantity is asperity::ContactQuantity");
+
+int asperity_model_at_separation_batch(const asperity_model* model, int quantity, const double* separation,
+                                       double* out, size_t n) {
+  if (!model || (n > 0 && (!separation || !out))) return ASPERITY_BAD_HANDLE;
+  if (quantity < 0 || quantity >= asperity::contact_quantity_count) {
+    for (size_t i = 0; i < n; ++i) out[i] = not_a_number;
+    return ASPERITY_BAD_PARAMETER;
+  }
+  // the status from the inputs, read before out (which may be separation) is written
+  bool bad = false;
+  for (size_t i = 0; i < n; ++i) bad |= std::isnan(separation[i]);
+  model->model.at_separations(static_cast<asperity::ContactQuantity>(quantity), separation, out, n);
+  if (bad) return ASPERITY_BAD_SEPARATION;
+  bool outside = false;
+  for (size_t i = 0; i < n; ++i) outside |= std::isnan(out[i]);
+  return outside ? ASPERITY_OUTSIDE_RANGE : ASPERITY_OK;
 }
 
 void asperity_model_close(asperity_model* model) { delete model; }

@@ -29,10 +29,14 @@ std::string short_number(double value) {
   return text;
 }
 
-// The separation (origin convention) of an overclosure measured from the mean summit height.
+// The mean summit height as an origin-convention separation [m] (asperity/separation_datum.hpp).
+double mean_summit_position(const ContactModel& model) {
+  return separation_datum_position(model.surface(), SeparationDatum::mean_summit, NAN);
+}
+
+// The separation (in the model's datum) of an overclosure measured from the mean summit height.
 double separation_of(const ContactModel& model, double overclosure) {
-  const double origin_to_mean = -model.at_separation(0).mean_separation;
-  return origin_to_mean - overclosure;
+  return (mean_summit_position(model) - overclosure) - model.datum_position();
 }
 
 struct Node {
@@ -176,7 +180,13 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
     return overclosure_mean - pressure / slope;
   };
   double shift = 0;  // overclosure in the datum minus overclosure from the mean summit height
-  if (datum == OverclosureDatum::origin) shift = model.at_separation(0).mean_separation;
+  if (datum == OverclosureDatum::origin) shift = -mean_summit_position(model);
+  if (datum == OverclosureDatum::mean_plane) {
+    if (model.datum() != SeparationDatum::mean_plane)
+      throw Error("the mean-plane overclosure datum needs the mean summit height above the mean plane: make the "
+                  "model with the mean-plane separation datum and that height");
+    shift = -model.mean_summit_height();  // the flat at the mean summit is that far from the mean plane
+  }
   if (datum == OverclosureDatum::zero_pressure) shift = -tangent_zero(low_mean, pressure_min);
   if (!std::isfinite(shift)) throw Error("the model gives no finite datum for the overclosure");
   const DatumLaw law{model, shift};
@@ -319,6 +329,11 @@ void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTabl
       " " + length_unit + ")";
   if (table.datum == OverclosureDatum::mean_summit)
     datum << mean_summit_datum << " (--overclosure-datum mean-summit, the default)";
+  else if (table.datum == OverclosureDatum::mean_plane)
+    datum << "  from the mean plane of the surface heights to the flat (--overclosure-datum mean-plane; the mean\n"
+          << "  summit height is " << card_number(-table.mean_summit_overclosure * length) << " " << length_unit
+          << " above it)\n"
+          << mean_at;
   else if (table.datum == OverclosureDatum::origin)
     datum << "  from the origin of the separation (the Weibull origin: its lowest summit on the tail side, its\n"
           << "  highest on the bounded side; the Gaussian's mean) to the flat (--overclosure-datum origin)\n"
@@ -356,21 +371,25 @@ void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<P
   write_card(out, rounded, format, units, description, mean_summit_datum, notes);
 }
 
+// The separation datums' names are separation_datum.hpp's; zero-pressure is the card's own.
 bool parse_overclosure_datum(const std::string& name, OverclosureDatum& datum) {
-  if (name == "mean-summit") datum = OverclosureDatum::mean_summit;
-  else if (name == "origin") datum = OverclosureDatum::origin;
-  else if (name == "zero-pressure") datum = OverclosureDatum::zero_pressure;
-  else return false;
+  SeparationDatum separation_datum;
+  if (name == "zero-pressure") datum = OverclosureDatum::zero_pressure;
+  else if (!parse_separation_datum(name, separation_datum)) return false;
+  else if (separation_datum == SeparationDatum::origin) datum = OverclosureDatum::origin;
+  else if (separation_datum == SeparationDatum::mean_plane) datum = OverclosureDatum::mean_plane;
+  else datum = OverclosureDatum::mean_summit;
   return true;
 }
 
 const char* datum_name(OverclosureDatum datum) {
   switch (datum) {
-    case OverclosureDatum::origin: return "origin";
+    case OverclosureDatum::origin: return separation_datum_name(SeparationDatum::origin);
+    case OverclosureDatum::mean_plane: return separation_datum_name(SeparationDatum::mean_plane);
     case OverclosureDatum::zero_pressure: return "zero-pressure";
     case OverclosureDatum::mean_summit: break;
   }
-  return "mean-summit";
+  return separation_datum_name(SeparationDatum::mean_summit);
 }
 
 bool parse_card_format(const std::string& name, CardFormat& format) {

@@ -1,5 +1,6 @@
 #include "asperity/contact_model.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -10,8 +11,32 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
-ContactModel::ContactModel(const Table& table, const RoughSurface& surface) : surface_(surface) {
+const char* contact_quantity_name(ContactQuantity quantity) noexcept {
+  switch (quantity) {
+    case ContactQuantity::count: return "count";
+    case ContactQuantity::real_area: return "real-area";
+    case ContactQuantity::area_fraction: return "area-fraction";
+    case ContactQuantity::load: return "load";
+    case ContactQuantity::pressure: return "pressure";
+    case ContactQuantity::stiffness: break;
+  }
+  return "stiffness";
+}
+
+bool parse_contact_quantity(const std::string& name, ContactQuantity& quantity) noexcept {
+  for (int k = 0; k < contact_quantity_count; ++k)
+    if (name == contact_quantity_name(static_cast<ContactQuantity>(k))) {
+      quantity = static_cast<ContactQuantity>(k);
+      return true;
+    }
+  return false;
+}
+
+ContactModel::ContactModel(const Table& table, const RoughSurface& surface, SeparationDatum datum,
+                           double mean_summit_height)
+    : surface_(surface), datum_(datum), mean_summit_height_(mean_summit_height) {
   surface_.validate();
+  datum_offset_ = separation_datum_position(surface_, datum_, mean_summit_height_) / surface_.height_scale;
   curve_ = table.curve(surface_.distribution, surface_.side, surface_.shape, contact_order_mask);
   load_inverse_ = InverseCurve(curve_, orders::load);
   area_inverse_ = InverseCurve(curve_, orders::area);
@@ -24,7 +49,7 @@ ContactModel::ContactModel(const Table& table, const RoughSurface& surface) : su
 PhysicalState ContactModel::no_contact() const noexcept {
   PhysicalState state{};
   const bool bounded = surface_.side == Side::bounded;
-  state.separation = bounded ? 0.0 : std::numeric_limits<double>::infinity();
+  state.separation = bounded ? physical(0.0) : std::numeric_limits<double>::infinity();
   state.mean_separation = bounded ? -mean_offset_ * surface_.height_scale : state.separation;
   state.stiffness_over_load = nan;
   return state;
@@ -54,7 +79,7 @@ PhysicalState ContactModel::state_at_dimensionless(double s) const noexcept {
   }
   const double sigma = surface_.height_scale;
   PhysicalState state;
-  state.separation = s * sigma;
+  state.separation = physical(s);
   state.mean_separation = (s - mean_offset_) * sigma;
   state.count = contact.count;
   state.real_area = contact.area;
@@ -67,7 +92,67 @@ PhysicalState ContactModel::state_at_dimensionless(double s) const noexcept {
 }
 
 PhysicalState ContactModel::at_separation(double separation) const noexcept {
-  return state_at_dimensionless(separation / surface_.height_scale);
+  return state_at_dimensionless(dimensionless(separation));
+}
+
+void ContactModel::at_separations(ContactQuantity quantity, const double* separations, double* out,
+                                  std::size_t count) const noexcept {
+  // quantity = factor * X_n (/ A0 for the fractions), as state_at_dimensionless forms it
+  int twice_order = orders::load;
+  double factor = scales_.load;
+  bool per_area = false;
+  switch (quantity) {
+    case ContactQuantity::count: twice_order = orders::count, factor = scales_.count; break;
+    case ContactQuantity::area_fraction: per_area = true; [[fallthrough]];
+    case ContactQuantity::real_area: twice_order = orders::area, factor = scales_.area; break;
+    case ContactQuantity::pressure: per_area = true; break;
+    case ContactQuantity::load: break;
+    case ContactQuantity::stiffness: twice_order = orders::stiffness, factor = scales_.stiffness; break;
+  }
+  if (!curve_.has_order(orders::load) || static_cast<unsigned>(quantity) >= contact_quantity_count) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = nan;
+    return;
+  }
+  const double area = surface_.nominal_area, sigma = surface_.height_scale, offset = datum_offset_;
+  constexpr std::size_t block = 256;
+  double s[block];              // the block's dimensionless separations (a copy: out may be separations)
+  unsigned char special[block]; // not a normal product: the scalar path answers
+  // Branch-free passes that the compiler vectorizes (dimensionless's and state_at_dimensionless's
+  // arithmetic, the same operations in the same order), then the rare elements one by one.
+  for (std::size_t start = 0; start < count; start += block) {
+    const std::size_t size = count - start < block ? count - start : block;
+    const double* in = separations + start;
+    double* x = out + start;
+    if (offset == 0)
+      for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma;
+    else
+      for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma + offset;
+    curve_.value_batch(twice_order, s, x, size);
+    unsigned any = 0;
+    for (std::size_t j = 0; j < size; ++j) {
+      const double product = x[j] * factor;
+      const unsigned rare = !(x[j] >= DBL_MIN) | !(product <= DBL_MAX);  // NaN, 0, subnormal, inf
+      special[j] = static_cast<unsigned char>(rare);
+      any |= rare;
+      x[j] = product;
+    }
+    if (per_area)
+      for (std::size_t j = 0; j < size; ++j) x[j] /= area;
+    if (__builtin_expect(any == 0, 1)) continue;
+    for (std::size_t j = 0; j < size; ++j) {
+      if (!special[j]) continue;
+      // NaN, no contact, all in contact, or X_n beyond the doubles: the scalar path's answer
+      const PhysicalState state = state_at_dimensionless(s[j]);
+      switch (quantity) {
+        case ContactQuantity::count: x[j] = state.count; break;
+        case ContactQuantity::real_area: x[j] = state.real_area; break;
+        case ContactQuantity::area_fraction: x[j] = state.area_fraction; break;
+        case ContactQuantity::load: x[j] = state.load; break;
+        case ContactQuantity::pressure: x[j] = state.pressure; break;
+        case ContactQuantity::stiffness: x[j] = state.stiffness; break;
+      }
+    }
+  }
 }
 
 PhysicalState ContactModel::at_load(double load) const noexcept {

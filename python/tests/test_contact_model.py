@@ -1,0 +1,118 @@
+"""ContactModel's separation datum, units caught and batch (issue 32 items 2, 4, 5): the datum's
+shift against the closed form Gamma(1 + 1/a) sigma_s, round trips in each datum, the default
+stated, the mean plane only where the user gives it; asperity.ImplausibleValueWarning for a unit
+slip; at_separations over numpy arrays against at_separation element by element."""
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import asperity
+
+
+@pytest.fixture(scope="module")
+def table():
+    return asperity.Table.open_default()
+
+
+def steel(**changes):
+    values = dict(shape=2.0, height_scale=1e-6, summit_radius=1e-4, summit_density=1e10, nominal_area=1e-4,
+                  contact_modulus=1.15e11)
+    values.update(changes)
+    return asperity.RoughSurface("weibull", "tail", **values)
+
+
+def test_the_default_datum_is_the_origin_and_says_so(table):
+    model = asperity.ContactModel(table, steel())
+    assert model.datum == "origin"
+    assert model.mean_summit_height is None
+    assert model.datum_position == 0.0
+    assert "datum='origin' (the default)" in repr(model)
+    assert "origin" in asperity.ContactModel.__init__.__doc__
+    assert "datum" in asperity.PhysicalState.__doc__
+
+
+@pytest.mark.parametrize("side,shape", [("tail", 2.0), ("tail", 0.7), ("bounded", 1.3)])
+def test_mean_summit_datum_is_the_origin_shifted_by_the_weibull_mean(table, side, shape):
+    surface = asperity.RoughSurface("weibull", side, shape=shape, height_scale=2e-6, summit_radius=1e-4,
+                                    summit_density=1e10, nominal_area=1e-4, contact_modulus=1.15e11)
+    origin = asperity.ContactModel(table, surface)
+    summit = asperity.ContactModel(table, surface, datum="mean-summit")
+    mean = (1 if side == "tail" else -1) * math.gamma(1 + 1 / shape) * 2e-6  # closed form
+    assert summit.datum_position == pytest.approx(mean, rel=1e-14)
+    loads = np.geomspace(1e-3, 1e3, 25)
+    a, b = origin.at_load(loads), summit.at_load(loads)
+    np.testing.assert_allclose(b.separation, a.separation - mean, rtol=1e-15, atol=1e-20)  # one rounding
+    np.testing.assert_allclose(b.separation, b.mean_separation, rtol=1e-15, atol=1e-20)
+    # round trip in the datum
+    np.testing.assert_allclose(summit.at_separation(b.separation).load, loads, rtol=1e-9)
+
+
+def test_mean_plane_needs_the_users_height(table):
+    with pytest.raises(asperity.Error, match="mean summit height above the mean plane"):
+        asperity.ContactModel(table, steel(), datum="mean-plane")
+    with pytest.raises(asperity.Error, match="goes with the mean-plane datum"):
+        asperity.ContactModel(table, steel(), datum="mean-summit", mean_summit_height=1e-7)
+    with pytest.raises(ValueError, match="unknown datum 'mean'"):
+        asperity.ContactModel(table, steel(), datum="mean")
+    plane = asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=3e-7)
+    summit = asperity.ContactModel(table, steel(), datum="mean-summit")
+    assert plane.mean_summit_height == 3e-7
+    assert "datum='mean-plane' mean_summit_height=3e-07" in repr(plane)
+    assert plane.at_load(1.0).separation == pytest.approx(summit.at_load(1.0).separation + 3e-7, rel=1e-14)
+
+
+def test_a_unit_slip_warns_one_line_each(table):
+    with pytest.warns(asperity.ImplausibleValueWarning) as caught:
+        asperity.ContactModel(table, steel(summit_radius=10.0, contact_modulus=210.0))
+    messages = [str(w.message) for w in caught]
+    assert messages == ["summit radius 10 m is implausible (above 0.001 m): did you mean 10 µm (1e-05 m)?",
+                        "contact modulus E* 210 Pa is implausible (below 1 MPa, softer than rubber): did you mean "
+                        "210 GPa (2.1e+11 Pa)?"]
+    assert issubclass(asperity.ImplausibleValueWarning, UserWarning)
+    assert caught[0].filename == __file__  # points at the caller
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        asperity.ContactModel(table, steel())  # plausible: silent
+        with pytest.raises(asperity.ImplausibleValueWarning):
+            asperity.ContactModel(table, steel(height_scale=0.5))
+    assert asperity.implausible_values(steel()) == []
+    assert len(asperity.implausible_values(steel(summit_density=100.0, nominal_area=1.0))) == 1
+
+
+@pytest.mark.parametrize("datum", ["origin", "mean-summit"])
+def test_at_separations_is_at_separation_element_by_element(table, datum):
+    model = asperity.ContactModel(table, steel(shape=1.6), datum=datum)
+    rng = np.random.default_rng(3)
+    d = np.concatenate([rng.uniform(-4e-6, 6e-6, 997), [np.nan, np.inf, -np.inf, 0.0, 1e-4, 1e300]])
+    scalar = model.at_separation(d)
+    fields = {"count": scalar.count, "real-area": scalar.real_area, "area-fraction": scalar.area_fraction,
+              "load": scalar.load, "pressure": scalar.pressure, "stiffness": scalar.stiffness}
+    for quantity, expected in fields.items():
+        got = model.at_separations(quantity, d)
+        assert got.shape == d.shape and got.dtype == np.float64
+        special = ~(np.isfinite(expected) & (expected > 0))
+        np.testing.assert_array_equal(got[special], expected[special])  # NaN, 0, inf: the same
+        np.testing.assert_allclose(got[~special], expected[~special], rtol=1e-12)
+        assert model.at_separations(quantity, float(d[5])) == got[5]  # a number gives a float
+        out = np.empty_like(d)
+        assert model.at_separations(quantity, d, out=out) is out
+        np.testing.assert_array_equal(out, got)
+    grid = d[:996].reshape(12, 83)
+    assert model.at_separations("load", grid).shape == (12, 83)
+    with pytest.raises(ValueError, match="unknown quantity 'area'"):
+        model.at_separations("area", d)
+
+
+def test_the_card_takes_the_datum_names(table):
+    plane = asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=3e-7)
+    default = plane.pressure_overclosure_card(1e3, 1e8, format="abaqus")
+    assert "--overclosure-datum mean-summit, the default" in default
+    assert default == asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, format="abaqus")
+    card = plane.pressure_overclosure_card(1e3, 1e8, format="abaqus", overclosure_datum="mean-plane")
+    assert "from the mean plane of the surface heights" in card and "summit height is 3e-07 m above it" in card
+    with pytest.raises(asperity.Error, match="mean-plane separation datum"):
+        asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, overclosure_datum="mean-plane")
+    with pytest.raises(ValueError, match="unknown overclosure_datum"):
+        plane.pressure_overclosure_card(1e3, 1e8, overclosure_datum="plane")
