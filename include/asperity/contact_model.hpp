@@ -28,6 +28,11 @@ struct PhysicalState {
   double stiffness_over_load;  // K / P [1/m]
 };
 
+// Above this real-area fraction A/A0 the model is past its validity: GW's asperities are
+// independent Hertz contacts, which holds only while contacts are sparse. The command and the
+// Python module warn there (asperity contact; asperity.AreaFractionWarning).
+inline constexpr double gw_area_fraction_limit = 0.1;
+
 // A model holds its curve and inverses by shared handles: copies are cheap and independent of
 // the Table it was made from.
 class ContactModel {
