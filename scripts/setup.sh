@@ -13,6 +13,9 @@ packages="g++ gfortran cmake make libboost-dev libhdf5-dev pkg-config libgtest-d
 # python3-dask and python3-distributed: asperity.batch, many surfaces on a Dask cluster
 packages="$packages python3 python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib python3-scipy"
 packages="$packages python3-dask python3-distributed"
+# `pip install .` without network or build isolation (setup.py, pyproject.toml): pip, venv and the
+# build backend setuptools with wheel, all Debian's
+packages="$packages python3-pip python3-venv python3-setuptools python3-wheel"
 # CalculiX (ccx), which the FE export test (tests/fe_export_calculix.py) runs the exported card in
 packages="$packages calculix-ccx"
 # shellcheck disable=SC2086

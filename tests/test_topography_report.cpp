@@ -14,12 +14,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "asperity/error.hpp"
 #include "asperity/topography/analysis.hpp"
+#include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/synthetic.hpp"
 
@@ -52,6 +55,66 @@ t::SurfaceAnalysis small_analysis(std::uint64_t seed) {
 const t::SurfaceAnalysis& analysis() {
   static const t::SurfaceAnalysis a = small_analysis(1);
   return a;
+}
+
+// A box in the SVG's user units (the renderers draw one unit a pixel).
+struct Box {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  bool empty() const { return x0 > x1; }
+  void add(double x, double y) {
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  bool meets(const Box& o) const { return !empty() && !o.empty() && x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+};
+
+// The value of attribute `name` in the element starting at `from`.
+double attribute(const std::string& svg, std::size_t from, const std::string& name) {
+  const std::size_t end = svg.find('>', from);
+  const std::size_t at = svg.find(" " + name + "=\"", from);
+  if (at == std::string::npos || at > end) return NAN;
+  return std::strtod(svg.c_str() + at + name.size() + 3, nullptr);
+}
+
+// The text of attribute `name` in the element starting at `from` (empty: none).
+std::string attribute_text(const std::string& svg, std::size_t from, const std::string& name) {
+  const std::size_t end = svg.find('>', from);
+  const std::size_t at = svg.find(" " + name + "=\"", from);
+  if (at == std::string::npos || at > end) return "";
+  const std::size_t open = at + name.size() + 3;
+  return svg.substr(open, svg.find('"', open) - open);
+}
+
+// What <g id="ID"> ... </g> draws: every polyline point, circle, rect, line and text (a text's box
+// from its anchor, font size and length, generously: 0.62 em a character).
+Box group_box(const std::string& svg, const std::string& id) {
+  Box box;
+  const std::size_t start = svg.find("<g id=\"" + id + "\">");
+  if (start == std::string::npos) return box;
+  const std::size_t stop = svg.find("</g>", start);
+  for (std::size_t at = svg.find('<', start + 1); at < stop; at = svg.find('<', at + 1)) {
+    const std::string tag = svg.substr(at + 1, svg.find_first_of(" >", at) - at - 1);
+    if (tag == "polyline") {
+      const std::size_t q = svg.find("points=\"", at) + 8;
+      std::istringstream points(svg.substr(q, svg.find('"', q) - q));
+      double x, y;
+      char comma;
+      while (points >> x >> comma >> y) box.add(x, y);
+    } else if (tag == "circle") {
+      const double x = attribute(svg, at, "cx"), y = attribute(svg, at, "cy"), r = attribute(svg, at, "r");
+      box.add(x - r, y - r), box.add(x + r, y + r);
+    } else if (tag == "rect") {
+      const double x = attribute(svg, at, "x"), y = attribute(svg, at, "y");
+      box.add(x, y), box.add(x + attribute(svg, at, "width"), y + attribute(svg, at, "height"));
+    } else if (tag == "line") {
+      box.add(attribute(svg, at, "x1"), attribute(svg, at, "y1")), box.add(attribute(svg, at, "x2"), attribute(svg, at, "y2"));
+    } else if (tag == "text") {
+      const double x = attribute(svg, at, "x"), y = attribute(svg, at, "y"), size = attribute(svg, at, "font-size");
+      const std::size_t open = svg.find('>', at) + 1;
+      const double length = static_cast<double>(svg.find("</text>", open) - open);
+      box.add(x, y - size), box.add(x + 0.62 * size * length, y + 0.3 * size);  // anchored at the start
+    }
+  }
+  return box;
 }
 
 std::string folder(const std::string& name) {
@@ -186,6 +249,121 @@ TEST(TopographyReport, PlotsRenderInEveryRenderer) {
       EXPECT_GT(blue, 200u) << plot << " in " << renderer;
       EXPECT_GT(red, 200u) << plot << " in " << renderer;
       EXPECT_GT(dark, 2000u) << plot << " in " << renderer;
+
+      // The axes themselves, panel by panel (ImageMagick once drew plots with empty axes): the frame's
+      // four sides dark along most of their length, and dark tick labels below the frame and left of
+      // it. The picture is one pixel a unit (its size is the SVG's).
+      const double width = attribute(text, text.find("<svg"), "width"), height = attribute(text, text.find("<svg"), "height");
+      const std::size_t columns = static_cast<std::size_t>(width), rows = static_cast<std::size_t>(height);
+      ASSERT_EQ(pixels.size(), 3 * columns * rows) << plot << " in " << renderer << ": not drawn at its size";
+      const auto dark_at = [&](long x, long y) {
+        if (x < 0 || y < 0 || x >= static_cast<long>(columns) || y >= static_cast<long>(rows)) return false;
+        const std::size_t k = 3 * (static_cast<std::size_t>(y) * columns + static_cast<std::size_t>(x));
+        // a black one-unit line on a pixel boundary is drawn as two pixels at half grey (128): dark;
+        // the grid (#e0e0e0) and the bars' outline (#999999) are not
+        return static_cast<unsigned char>(pixels[k]) < 140 && static_cast<unsigned char>(pixels[k + 1]) < 140 &&
+               static_cast<unsigned char>(pixels[k + 2]) < 140;
+      };
+      // dark pixels in a rectangle; a side of the frame: dark within a pixel of the line, point by point
+      const auto dark_in = [&](double x0, double y0, double x1, double y1) {
+        std::size_t n = 0;
+        for (long y = static_cast<long>(y0); y <= static_cast<long>(y1); ++y)
+          for (long x = static_cast<long>(x0); x <= static_cast<long>(x1); ++x) n += dark_at(x, y) ? 1 : 0;
+        return n;
+      };
+      const auto side = [&](double x0, double y0, double x1, double y1) {
+        std::size_t covered = 0, steps = 0;
+        for (double t = 0.02; t < 0.98; t += 0.01, ++steps) {
+          const long x = std::lround(x0 + t * (x1 - x0)), y = std::lround(y0 + t * (y1 - y0));
+          covered += (dark_at(x, y) || dark_at(x - 1, y) || dark_at(x + 1, y) || dark_at(x, y - 1) || dark_at(x, y + 1)) ? 1 : 0;
+        }
+        return static_cast<double>(covered) / static_cast<double>(steps);
+      };
+      int frames = 0;
+      for (std::size_t at = text.find("<rect"); at != std::string::npos; at = text.find("<rect", at + 1)) {
+        if (attribute_text(text, at, "stroke") != "#000000" || !(attribute(text, at, "width") > 200))
+          continue;  // the frames: outlined in black, the full plot width
+        ++frames;
+        const double x = attribute(text, at, "x"), y = attribute(text, at, "y");
+        const double w = attribute(text, at, "width"), h = attribute(text, at, "height");
+        const std::string where = plot + " panel " + std::to_string(frames) + " in " + renderer;
+        EXPECT_GT(side(x, y, x + w, y), 0.9) << where << ": top";
+        EXPECT_GT(side(x, y + h, x + w, y + h), 0.9) << where << ": bottom axis";
+        EXPECT_GT(side(x, y, x, y + h), 0.9) << where << ": left axis";
+        EXPECT_GT(side(x + w, y, x + w, y + h), 0.9) << where << ": right";
+        EXPECT_GT(dark_in(x, y + h + 6, x + w, y + h + 20), 60u) << where << ": x tick labels";
+        EXPECT_GT(dark_in(x - 50, y, x - 6, y + h), 60u) << where << ": y tick labels";
+        EXPECT_GT(dark_in(x - 74, y + h / 2 - 40, x - 54, y + h / 2 + 40), 60u) << where << ": y label";
+        EXPECT_EQ(dark_in(width - 1, 0, width - 1, height - 1) + dark_in(0, height - 1, width - 1, height - 1), 0u)
+            << where << ": the picture's edges";
+      }
+      EXPECT_GE(frames, 2) << plot << " in " << renderer;
     }
   }
+}
+
+// The legends are off the data: in every panel of every plot, the box around the legend meets no
+// drawn curve, marker or bar (the box around all of them).
+TEST(TopographyReport, LegendsNeverOnTheData) {
+  const std::string dir = folder("legends");
+  t::write_report(analysis(), dir);
+  for (const std::string plot : {"fits", "contact"}) {
+    const std::string svg = read_text(dir + "/" + plot + ".svg");
+    int panels = 0;
+    for (int k = 0; svg.find("<g id=\"data-" + std::to_string(k) + "\">") != std::string::npos; ++k, ++panels) {
+      const Box data = group_box(svg, "data-" + std::to_string(k)), legend = group_box(svg, "legend-" + std::to_string(k));
+      ASSERT_FALSE(data.empty()) << plot << " panel " << k;
+      ASSERT_FALSE(legend.empty()) << plot << " panel " << k;
+      EXPECT_FALSE(legend.meets(data)) << plot << " panel " << k << ": legend [" << legend.x0 << ", " << legend.x1
+                                       << "] x [" << legend.y0 << ", " << legend.y1 << "], data [" << data.x0 << ", "
+                                       << data.x1 << "] x [" << data.y0 << ", " << data.y1 << "]";
+    }
+    EXPECT_GE(panels, 2) << plot;
+  }
+}
+
+// Every output that shows a bootstrap p-value writes it as a bound at its floor 1/(B' + 1): the
+// report's text, its JSON (…_p_is_bound), its Markdown table and its plots' legends. A
+// Gaussian sample tested as a Weibull-shaped one (and a Weibull sample as Gaussian) puts the
+// p-values at the floor.
+TEST(TopographyReport, PValuesAtTheFloorAreBounds) {
+  EXPECT_EQ(t::p_value_text(0.005, true), "p <= 0.005");
+  EXPECT_EQ(t::p_value_text(0.0123, false), "p = 0.0123");
+  EXPECT_EQ(t::p_value_text(1.0 / 41, true), "p <= 0.0244");  // never rounded below the floor
+  EXPECT_EQ(t::p_value_text(NAN, false), "not tested");
+  // a sample no Gaussian would give: exponential values, 40 bootstrap samples
+  std::vector<double> values;
+  for (int k = 0; k < 400; ++k) values.push_back(-std::log(1 - (k + 0.5) / 400));
+  t::AssessmentOptions options;
+  options.bootstrap = 40;
+  options.threads = 2;
+  const t::SampleAssessment tested = t::assess_sample("exponential", values, options);
+  const t::ModelAssessment& gaussian = tested.model(t::HeightModel::gaussian);
+  ASSERT_TRUE(gaussian.p_at_floor);
+  ASSERT_TRUE(gaussian.kolmogorov_smirnov_p_at_floor);
+  EXPECT_DOUBLE_EQ(gaussian.anderson_darling_p, 1.0 / (41 - gaussian.failed_refits));
+  EXPECT_NE(tested.verdict.text.find("Anderson-Darling rejects the Gaussian (p <= 0.0244, KS p <= 0.0244"),
+            std::string::npos) << tested.verdict.text;
+  EXPECT_EQ(tested.verdict.text.find("p = 0.0244"), std::string::npos) << tested.verdict.text;
+
+  // the surface report's writers: the Gaussian's p-values at their floor (1/41, 40 surrogates) are
+  // written as bounds in the Markdown table, the JSON and the plot's legend
+  t::SurfaceAnalysis a = analysis();
+  t::ModelAssessment& m = a.summit_heights.models[static_cast<int>(t::HeightModel::gaussian)];
+  ASSERT_EQ(m.bootstrap, 40);
+  m.failed_refits = 0;
+  m.anderson_darling_p = m.kolmogorov_smirnov_p = 1.0 / 41;
+  m.p_at_floor = m.kolmogorov_smirnov_p_at_floor = true;
+  const std::string dir = folder("bounds");
+  t::write_report(a, dir);
+  const std::string json = read_text(dir + "/report.json"), md = read_text(dir + "/report.md");
+  const std::string fits = read_text(dir + "/fits.svg");
+  EXPECT_NE(md.find("| ≤ 0.0244 | " + std::string()), std::string::npos) << md;  // AD p
+  EXPECT_NE(md.find(" | ≤ 0.0244 | "), md.rfind(" | ≤ 0.0244 | ")) << "the KS p too";
+  EXPECT_EQ(md.find("| 0.024 |"), std::string::npos);
+  EXPECT_EQ(md.find("| 0.0244 |"), std::string::npos);
+  EXPECT_NE(json.find("\"anderson_darling_p_is_bound\": true"), std::string::npos);
+  EXPECT_NE(json.find("\"kolmogorov_smirnov_p_is_bound\": true"), std::string::npos);
+  EXPECT_NE(fits.find("(AD p &lt;= 0.0244)"), std::string::npos);
+  EXPECT_EQ(fits.find("(AD p = 0.0244)"), std::string::npos);
 }

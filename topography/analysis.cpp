@@ -225,9 +225,7 @@ SurfaceVerdict surface_verdict(const SurfaceAnalysis& a) {
     v.p_heights = H->model(HeightModel::gaussian).anderson_darling_p;
     v.p_heights_bound = H->model(HeightModel::gaussian).p_at_floor;
   }
-  const auto p = [](double value, bool bound) {
-    return short_number(value).insert(0, bound ? "p <= " : "p = ");
-  };
+  const auto p = [](double value, bool bound) { return p_value_text(value, bound); };
   std::string text;
   if (!v.tested) {
     text = "Is it Gaussian? Not tested (no surrogate surfaces: --ensemble 0).";

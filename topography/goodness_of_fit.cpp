@@ -36,14 +36,12 @@ std::string format(const char* pattern, double a) {
   return buffer;
 }
 
-std::string p_text(double p, int bootstrap) {
-  if (bootstrap <= 0) return "p not computed";
-  const double floor = 1.0 / (bootstrap + 1);
-  if (p <= floor) return "p <= " + format("%.3g", floor);
-  return "p = " + format("%.3g", p);
-}
-
 }  // namespace
+
+std::string p_value_text(double p, bool at_floor) {
+  if (!std::isfinite(p)) return "not tested";
+  return (at_floor ? "p <= " : "p = ") + format("%.3g", p);
+}
 
 int minimum_bootstrap(double significance) {
   // p = (1 + #exceeding) / (B + 1) >= 1 / (B + 1): below the significance only if B + 1 > 1 / significance
@@ -158,6 +156,8 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
   }
   result.anderson_darling_p = static_cast<double>(1 + exceed_a2) / (ok + 1);
   result.kolmogorov_smirnov_p = static_cast<double>(1 + exceed_d) / (ok + 1);
+  result.anderson_darling_p_at_floor = ok > 0 && exceed_a2 == 0;
+  result.kolmogorov_smirnov_p_at_floor = ok > 0 && exceed_d == 0;
   return result;
 }
 
@@ -179,6 +179,8 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
     m.anderson_darling_p = test.anderson_darling_p;
     m.kolmogorov_smirnov = test.kolmogorov_smirnov;
     m.kolmogorov_smirnov_p = test.kolmogorov_smirnov_p;
+    m.p_at_floor = options.bootstrap > 0 && test.anderson_darling_p_at_floor;
+    m.kolmogorov_smirnov_p_at_floor = options.bootstrap > 0 && test.kolmogorov_smirnov_p_at_floor;
     m.log_likelihood = log_likelihood(test.fit.distribution, values);
     m.aic = 2 * parameter_count(model) - 2 * m.log_likelihood;
     m.bootstrap = options.bootstrap;
@@ -222,7 +224,8 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
             "the lowest is " + std::string(describe(v.best)) + ".";
   } else {
     text += v.gaussian_rejected ? "not Gaussian: Anderson-Darling rejects the Gaussian (" : "consistent with a Gaussian (Anderson-Darling ";
-    text += p_text(gaussian.anderson_darling_p, b) + ", KS " + p_text(gaussian.kolmogorov_smirnov_p, b) + ", " +
+    text += p_value_text(gaussian.anderson_darling_p, gaussian.p_at_floor) + ", KS " +
+            p_value_text(gaussian.kolmogorov_smirnov_p, gaussian.kolmogorov_smirnov_p_at_floor) + ", " +
             std::to_string(b) + " bootstrap samples). ";
     if (v.best_rejected) {
       text += "No model passes at the " + format("%.0f%%", 100 * options.significance) + " level; the least bad by AIC is " +
@@ -233,7 +236,7 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
     if (v.best != HeightModel::gaussian)
       text += ", shape " + format("%.3g", winner.fit.distribution.shape) + " [" + format("%.3g", winner.shape.lo) + ", " +
               format("%.3g", winner.shape.hi) + "] (" + format("%.0f%%", 100 * options.confidence) + ")";
-    text += " (Anderson-Darling " + p_text(winner.anderson_darling_p, b) + ")";
+    text += " (Anderson-Darling " + p_value_text(winner.anderson_darling_p, winner.p_at_floor) + ")";
     if (v.best != HeightModel::gaussian) {
       text += "; its AIC is " + format("%.1f", v.aic_gain_over_gaussian) + " below the Gaussian's (Akaike weights " +
               format("%.3g", winner.akaike_weight) + " against " + format("%.3g", gaussian.akaike_weight) + ")";

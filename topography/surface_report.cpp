@@ -64,6 +64,7 @@ ordered_json assessment_json(const SampleAssessment& a) {
                       {"anderson_darling_p_is_bound", m.p_at_floor},
                       {"kolmogorov_smirnov", number(m.kolmogorov_smirnov)},
                       {"kolmogorov_smirnov_p", number(m.kolmogorov_smirnov_p)},
+                      {"kolmogorov_smirnov_p_is_bound", m.kolmogorov_smirnov_p_at_floor},
                       {"log_likelihood", number(m.log_likelihood)},
                       {"aic", number(m.aic)},
                       {"delta_aic", number(m.delta_aic)},
@@ -144,11 +145,7 @@ const char* legend_of(const std::string& label) {
 
 std::string p_label(const ModelAssessment& m) {
   if (!(m.bootstrap > 0) || !std::isfinite(m.anderson_darling_p)) return "";
-  const double floor = 1.0 / (m.bootstrap + 1);
-  char text[48];
-  if (m.anderson_darling_p <= floor) std::snprintf(text, sizeof text, " (AD p \xE2\x89\xA4 %.3g)", floor);
-  else std::snprintf(text, sizeof text, " (AD p = %.3g)", m.anderson_darling_p);
-  return text;
+  return " (AD " + p_value_text(m.anderson_darling_p, m.p_at_floor) + ")";
 }
 
 // A histogram (density) of values, and the fitted densities over the same span.
@@ -547,7 +544,8 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   const auto fits_table = [&](const SampleAssessment& s) {
     md << "\n| model | location [m] | scale [m] | shape [" << g(100 * s.options.confidence, 3) << "% interval] | A² | AD p | KS D | KS p | AIC | ΔAIC | Akaike weight |\n"
        << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    const auto p_cell = [](double p, bool bound) { return std::isfinite(p) ? (bound ? "≤ " : "") + g(p, 2) : std::string("–"); };
+    // a bound with three digits: two could round it below 1/(B + 1)
+    const auto p_cell = [](double p, bool bound) { return std::isfinite(p) ? (bound ? "≤ " + g(p, 3) : g(p, 2)) : std::string("–"); };
     for (const ModelAssessment& m : s.models) {
       const HeightDistribution& d = m.fit.distribution;
       std::string shape = "–";
@@ -558,7 +556,7 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
       }
       md << "| " << describe(d.model) << " | " << g(d.location) << " | " << g(d.scale) << " | " << shape << " | "
          << g(m.anderson_darling, 3) << " | " << p_cell(m.anderson_darling_p, m.p_at_floor) << " | "
-         << g(m.kolmogorov_smirnov, 3) << " | " << p_cell(m.kolmogorov_smirnov_p, false) << " | " << g(m.aic, 6) << " | "
+         << g(m.kolmogorov_smirnov, 3) << " | " << p_cell(m.kolmogorov_smirnov_p, m.kolmogorov_smirnov_p_at_floor) << " | " << g(m.aic, 6) << " | "
          << g(m.delta_aic, 3) << " | " << g(m.akaike_weight, 3) << " |\n";
     }
   };

@@ -142,6 +142,7 @@ void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const Assess
   m.anderson_darling_p = static_cast<double>(1 + exceed_a2) / (ok + 1);
   m.kolmogorov_smirnov_p = static_cast<double>(1 + exceed_d) / (ok + 1);
   m.p_at_floor = exceed_a2 == 0;
+  m.kolmogorov_smirnov_p_at_floor = exceed_d == 0;
   m.rejected = m.anderson_darling_p < options.significance;
   const double tail = 0.5 * (1 - options.confidence);
   const HeightModel model = m.fit.distribution.model;
@@ -190,13 +191,7 @@ void weigh(SampleAssessment& sample) {
   for (ModelAssessment& m : sample.models) m.akaike_weight /= sum;
 }
 
-std::string p_text(const ModelAssessment& m) {
-  char text[48];
-  if (!std::isfinite(m.anderson_darling_p)) return "not tested";
-  if (m.p_at_floor) std::snprintf(text, sizeof text, "p <= %.2g", m.anderson_darling_p);
-  else std::snprintf(text, sizeof text, "p = %.2g", m.anderson_darling_p);
-  return text;
-}
+std::string p_text(const ModelAssessment& m) { return p_value_text(m.anderson_darling_p, m.p_at_floor); }
 
 // The sample's own verdict, in words (the surface's verdict combines the two samples).
 void judge(SampleAssessment& sample, const AssessmentOptions& options) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 namespace asperity::topography::detail {
 namespace {
@@ -101,7 +102,7 @@ bool clip(double& x0, double& y0, double& x1, double& y1, double w, double h) {
   return true;
 }
 
-void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, double legend_rows) {
+void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::size_t index) {
   Axis ax, ay;
   ax.log = panel.log_x;
   ay.log = panel.log_y;
@@ -133,7 +134,7 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, doubl
   svg += "<text x=\"" + number(px + plot_width / 2) + "\" y=\"18\" font-size=\"12\" text-anchor=\"middle\" " + font +
          " fill=\"#000000\">" + escaped(panel.title) + "</text>\n";
   svg += "<rect x=\"" + number(px) + "\" y=\"" + number(py) + "\" width=\"" + number(plot_width) + "\" height=\"" +
-         number(plot_height) + "\" fill=\"#ffffff\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+         number(plot_height) + "\" fill=\"#ffffff\"/>\n";
   // grid and ticks
   for (const auto& [value, text] : ax.ticks()) {
     const double x = px + to_x(value);
@@ -159,14 +160,18 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, doubl
          "\" font-size=\"11\" text-anchor=\"middle\" " + font + " fill=\"#000000\">" + escaped(panel.x_label) +
          "</text>\n";
   const double label_x = origin_x + 14, label_y = py + plot_height / 2;
-  svg += "<text x=\"" + number(label_x) + "\" y=\"" + number(label_y) + "\" font-size=\"11\" text-anchor=\"middle\" " +
-         font + " fill=\"#000000\" transform=\"rotate(-90 " + number(label_x) + " " + number(label_y) + ")\">" +
-         escaped(panel.y_label) + "</text>\n";
+  // rotated about its own anchor by translate and a one-argument rotate: ImageMagick's renderer ignores
+  // rotate's centre (rotate(-90 x y)) and drew no y label
+  svg += std::string("<text x=\"0\" y=\"0\" font-size=\"11\" text-anchor=\"middle\" ") + font + " fill=\"#000000\" transform=\"translate(" +
+         number(label_x) + " " + number(label_y) + ") rotate(-90)\">" + escaped(panel.y_label) + "</text>\n";
   if (empty) {
     svg += "<text x=\"" + number(px + plot_width / 2) + "\" y=\"" + number(py + plot_height / 2) +
            "\" font-size=\"11\" text-anchor=\"middle\" " + font + " fill=\"#808080\">no data</text>\n";
   }
 
+  // the data: bars, reference lines and series, grouped (a plain <g>, which every renderer knows) so
+  // that a test can tell them from the legend
+  svg += "<g id=\"data-" + std::to_string(index) + "\">\n";
   // bars
   const auto& bars = panel.bars;
   for (std::size_t k = 0; k + 1 < bars.edges.size() && k < bars.heights.size(); ++k) {
@@ -226,7 +231,12 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, doubl
     }
     flush();
   }
-  // the legend, below the axes
+  svg += "</g>\n";
+  // the frame (the axes) over the data, so that no bar or curve hides it
+  svg += "<rect x=\"" + number(px) + "\" y=\"" + number(py) + "\" width=\"" + number(plot_width) + "\" height=\"" +
+         number(plot_height) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+  // the legend, below the axes and their labels: never on the data
+  svg += "<g id=\"legend-" + std::to_string(index) + "\">\n";
   double row = py + plot_height + axis_room;
   const auto legend = [&](const std::string& label, const std::string& colour, bool points, bool dashed, bool bar) {
     row += legend_line;
@@ -246,7 +256,7 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, doubl
   if (!bars.label.empty()) legend(bars.label, "", false, false, true);
   for (const PlotSeries& s : panel.series)
     if (!s.label.empty()) legend(s.label, s.colour, s.points, s.dashed, false);
-  (void)legend_rows;
+  svg += "</g>\n";
 }
 
 }  // namespace
@@ -263,9 +273,10 @@ std::string svg_figure(const std::vector<PlotPanel>& panels) {
   std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
                     number(width) + "\" height=\"" + number(height) + "\" viewBox=\"0 0 " + number(width) + " " +
                     number(height) + "\">\n";
-  svg += "<rect x=\"0\" y=\"0\" width=\"" + number(width) + "\" height=\"" + number(height) + "\" fill=\"#ffffff\"/>\n";
+  // the background a unit past each edge: ImageMagick left the last column and row unpainted (black)
+  svg += "<rect x=\"-1\" y=\"-1\" width=\"" + number(width + 2) + "\" height=\"" + number(height + 2) + "\" fill=\"#ffffff\"/>\n";
   for (std::size_t k = 0; k < panels.size(); ++k)
-    draw_panel(svg, panels[k], panel_width * static_cast<double>(k), static_cast<double>(rows));
+    draw_panel(svg, panels[k], panel_width * static_cast<double>(k), k);
   svg += "</svg>\n";
   return svg;
 }

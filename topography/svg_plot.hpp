@@ -2,7 +2,9 @@
 // report needs no Python, runs nothing, and its figures render the same in every SVG renderer
 // (librsvg, ImageMagick's own, browsers). Only the elements every renderer knows: rect, line,
 // polyline, circle and text with presentation attributes; no CSS, <defs>, <use> or clip paths
-// (lines are clipped to the axes here). Legends sit below their panel, never on the data.
+// (lines are clipped to the axes here), and <g> to group them. Legends sit below their panel,
+// never on the data: panel k's curves and markers are in <g id="data-k">, its legend in
+// <g id="legend-k"> (tests/test_topography_report.cpp checks that the two never meet).
 #pragma once
 #include <string>
 #include <vector>

@@ -42,6 +42,11 @@ inline constexpr int contact_quantity_count = 6;
 const char* contact_quantity_name(ContactQuantity quantity) noexcept;
 bool parse_contact_quantity(const std::string& name, ContactQuantity& quantity) noexcept;
 
+// Above this real-area fraction A/A0 the model is past its validity: GW's asperities are
+// independent Hertz contacts, which holds only while contacts are sparse. The command and the
+// Python module warn there (asperity contact; asperity.AreaFractionWarning).
+inline constexpr double gw_area_fraction_limit = 0.1;
+
 // A model holds its curve and inverses by shared handles: copies are cheap and independent of
 // the Table it was made from.
 class ContactModel {

@@ -23,15 +23,26 @@ table and each surface's JSON, resuming after an interruption (needs python3-dis
     from asperity import batch
     rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)   # results/surfaces.csv
 
+The common figures -- separation, real area and stiffness against load, one model or several
+compared -- are drawn by asperity.plot (matplotlib, imported only when it draws):
+
+    figure, axes = asperity.plot.contact_figure({"Gaussian": model1, "Weibull a = 1.6": model2})
+
+Orders are twice_order (0..5) or the quantity's name: curve.value("load", s) is curve.value(3, s).
 Arrays of any shape go through the library's vectorized batch path (no Python loop; the GIL
 is released for large arrays); numbers give floats. Errors raise asperity.Error with the
-library's message. The names mirror the C++ API (include/asperity/*.hpp).
+library's message; a ContactModel past Greenwood-Williamson's validity (real area above
+gw_area_fraction_limit of the nominal area) warns with asperity.AreaFractionWarning. The names
+mirror the C++ API (include/asperity/*.hpp). Two surface types: RoughSurface (formerly
+PhysicalSurface) is a physical surface in SI units for ContactModel; SurfaceScales (formerly
+Surface) is the four scales N, R, sigma_s, E* the lower-level contact_at multiplies a curve by.
 """
 import sys as _sys
 
 from ._asperity import (  # noqa: F401
     ALL_ORDERS,
     ORDER_COUNT,
+    AreaFractionWarning,
     ContactModel,
     ContactState,
     Curve,
@@ -61,6 +72,7 @@ from ._asperity import (  # noqa: F401
     contact_modulus_given,
     gaussian_log_density,
     gaussian_surface_from_moments,
+    gw_area_fraction_limit,
     height_scale_from_rms,
     implausible_values,
     nominal_pressure_from_load,
@@ -85,15 +97,16 @@ from ._asperity import topography  # noqa: F401
 _sys.modules[__name__ + ".topography"] = topography
 
 from . import batch  # noqa: E402,F401 (pure Python; imports dask only when it runs)
+from . import plot  # noqa: E402,F401 (pure Python; imports matplotlib only when it draws)
 
 __all__ = [
     "ImplausibleValueWarning", "implausible_values",
-    "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
+    "ALL_ORDERS", "ORDER_COUNT", "AreaFractionWarning", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
     "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",
     "batch", "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",
-    "gaussian_surface_from_moments", "height_scale_from_rms", "nominal_pressure_from_load", "order_of", "origin_from_standardized",
-    "parse_scene", "quantity_twice_order", "read_scene_file", "separation_at_load", "serve_scene",
+    "gaussian_surface_from_moments", "gw_area_fraction_limit", "height_scale_from_rms", "nominal_pressure_from_load", "order_of", "origin_from_standardized",
+    "parse_scene", "plot", "quantity_twice_order", "read_scene_file", "separation_at_load", "serve_scene",
     "standardized_from_origin", "tabulated_pressure_overclosure_card", "topography", "weibull_log_density", "weibull_mean", "weibull_moment",
     "weibull_rms",
 ]

@@ -2,12 +2,13 @@
 # exactly what the module holds.
 import enum
 import os
-from typing import List, NamedTuple, Optional, Sequence, TypeAlias, Union, overload
+from typing import List, Literal, NamedTuple, Optional, Sequence, TypeAlias, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import batch as batch
+from . import plot as plot
 from . import topography as topography
 
 __version__: str
@@ -19,6 +20,11 @@ PathLike = Union[str, bytes, os.PathLike]
 
 class Error(RuntimeError):
     """An error of the asperity library; its message is the library's."""
+
+class AreaFractionWarning(UserWarning):
+    """Warned where a ContactModel's real area passes gw_area_fraction_limit of the nominal area."""
+
+gw_area_fraction_limit: float
 
 class Distribution(enum.Enum):
     weibull = 0
@@ -36,9 +42,13 @@ class InstructionSet(enum.Enum):
 
 DistributionLike = Union[str, Distribution]
 SideLike = Union[str, Side]
+# twice_order 0..5, or the quantity's name (quantity_twice_order): curve.value("load", s)
+QuantityName = Literal["count", "stiffness", "area", "load", "F0", "F1/2", "F1", "F3/2", "F2", "F5/2",
+                       "I0", "I1/2", "I1", "I3/2", "I2", "I5/2"]
+OrderLike = Union[int, QuantityName]
 
 def best_instruction_set() -> InstructionSet: ...
-def order_of(twice_order: int) -> float: ...
+def order_of(twice_order: OrderLike) -> float: ...
 @overload
 def weibull_mean(shape: float) -> float: ...
 @overload
@@ -63,14 +73,14 @@ def gaussian_log_density(height: ArrayLike) -> FloatArray: ...
 class Curve:
     """One resolved curve (distribution, side, shape): the hot handle. Made by Table.curve."""
     @overload
-    def value(self, twice_order: int, separation: float, *, out: None = None) -> float: ...
+    def value(self, twice_order: OrderLike, separation: float, *, out: None = None) -> float: ...
     @overload
-    def value(self, twice_order: int, separation: ArrayLike, *, out: Optional[FloatArray] = None) -> FloatArray: ...
+    def value(self, twice_order: OrderLike, separation: ArrayLike, *, out: Optional[FloatArray] = None) -> FloatArray: ...
     @overload
-    def log_value(self, twice_order: int, separation: float, *, out: None = None) -> float: ...
+    def log_value(self, twice_order: OrderLike, separation: float, *, out: None = None) -> float: ...
     @overload
-    def log_value(self, twice_order: int, separation: ArrayLike, *, out: Optional[FloatArray] = None) -> FloatArray: ...
-    def has_order(self, twice_order: int) -> bool: ...
+    def log_value(self, twice_order: OrderLike, separation: ArrayLike, *, out: Optional[FloatArray] = None) -> FloatArray: ...
+    def has_order(self, twice_order: OrderLike) -> bool: ...
     @property
     def distribution(self) -> Distribution: ...
     @property
@@ -145,7 +155,9 @@ class Table:
     def exact_shapes(self) -> bool: ...
 
 class SurfaceScales:
-    """N summits of radius R, height scale sigma_s, modulus E*."""
+    """The lower level's four scales for contact_at: N summits of radius R, height scale sigma_s, modulus E*
+    (any consistent units; separations in units of sigma_s). Surface is its former name. A physical
+    surface in SI units for ContactModel is a RoughSurface."""
     summit_count: float
     summit_radius: float
     height_scale: float
@@ -182,7 +194,9 @@ def origin_from_standardized(curve: Curve, standardized: float) -> float: ...
 def origin_from_standardized(curve: Curve, standardized: ArrayLike) -> FloatArray: ...
 
 class RoughSurface:
-    """A physical rough surface in SI units."""
+    """A physical rough surface in SI units, what ContactModel takes (PhysicalSurface is its former name):
+    distribution, side, Weibull shape (None for the Gaussian), height scale or rms, summit radius and
+    density, nominal area, contact modulus."""
     distribution: Distribution
     side: Side
     shape: float
@@ -192,7 +206,7 @@ class RoughSurface:
     nominal_area: float
     contact_modulus: float
     rms: float
-    def __init__(self, distribution: DistributionLike = "weibull", side: SideLike = "tail", shape: float = 2.0,
+    def __init__(self, distribution: DistributionLike = "weibull", side: SideLike = "tail", shape: Optional[float] = 2.0,
                  height_scale: Optional[float] = None, summit_radius: float = 1e-4, summit_density: float = 1e10,
                  nominal_area: float = 1e-4, contact_modulus: float = 1e11, *, rms: Optional[float] = None) -> None: ...
     @property
@@ -220,7 +234,7 @@ def bandwidth_alpha(m0: float, m2: float, m4: float) -> float: ...
 
 class InverseCurve:
     """The separation where X_n takes a value."""
-    def __init__(self, curve: Curve, twice_order: int) -> None: ...
+    def __init__(self, curve: Curve, twice_order: OrderLike) -> None: ...
     @overload
     def separation_at(self, value: float) -> float: ...
     @overload
@@ -246,7 +260,8 @@ def implausible_values(surface: RoughSurface) -> List[str]: ...
 class ContactModel:
     """Contact of a flat with a RoughSurface, forward and inverse, SI units. Separations from the
     model's datum: 'origin' (the default: the Weibull origin, the Gaussian's mean), 'mean-summit'
-    or 'mean-plane' (with mean_summit_height, the mean summit height above the mean plane [m])."""
+    or 'mean-plane' (with mean_summit_height, the mean summit height above the mean plane [m]). Warns
+    AreaFractionWarning past gw_area_fraction_limit."""
     def __init__(self, table: Table, surface: RoughSurface, datum: str = "origin",
                  mean_summit_height: Optional[float] = None) -> None: ...
     @property
@@ -345,6 +360,7 @@ def separation_at_load(curve: Curve, load: float) -> float: ...
 def separation_at_load(curve: Curve, load: ArrayLike) -> FloatArray: ...
 def quantity_twice_order(quantity: str) -> int: ...
 
-# the former names (deprecated, kept for existing code)
+# the former names (deprecated, kept for existing code): Surface is SurfaceScales (contact_at's four
+# scales), PhysicalSurface is RoughSurface (ContactModel's physical surface in SI units)
 Surface: TypeAlias = SurfaceScales
 PhysicalSurface: TypeAlias = RoughSurface

@@ -44,6 +44,9 @@ struct PathName {
 struct Count {
   py::object object;  // an int or anything with __index__ (numpy's integers), checked where used
 };
+struct OrderName {
+  py::object object;  // twice_order 0..5 (an int) or a quantity's name ('load'), checked where used
+};
 
 }  // namespace asperity::python
 
@@ -70,6 +73,7 @@ ASPERITY_PASS_THROUGH_CASTER(DistributionName, "str | asperity.Distribution")
 ASPERITY_PASS_THROUGH_CASTER(SideName, "str | asperity.Side")
 ASPERITY_PASS_THROUGH_CASTER(PathName, "str | bytes | os.PathLike")
 ASPERITY_PASS_THROUGH_CASTER(Count, "int")
+ASPERITY_PASS_THROUGH_CASTER(OrderName, "int | str")
 #undef ASPERITY_PASS_THROUGH_CASTER
 }  // namespace pybind11::detail
 

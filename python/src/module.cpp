@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <limits>
@@ -66,9 +67,28 @@ Side to_side(const py::handle& value) {
   throw py::type_error("side must be 'tail', 'bounded' or an asperity.Side");
 }
 
-void check_order(int twice_order) {
+// twice_order from an int 0..5 or a quantity's name, as scene files name them (quantity_twice_order,
+// docs/model.md): 'count', 'stiffness', 'area', 'load', 'F2', 'F5/2', ...
+constexpr const char* order_names = "'count', 'stiffness', 'area', 'load' (or 'F0', 'F1/2', 'F1', 'F3/2', 'F2', 'F5/2')";
+int twice_order_of(const OrderName& order) {
+  const py::handle value = order.object;
+  if (py::isinstance<py::str>(value)) {
+    const std::string name = value.cast<std::string>();
+    const int twice_order = quantity_twice_order(name);
+    if (twice_order < 0)
+      throw py::value_error("unknown order " + std::string(py::repr(value)) + ": expected " + order_names +
+                            " or twice_order 0..5");
+    return twice_order;
+  }
+  if (PyBool_Check(value.ptr()) || !PyIndex_Check(value.ptr()))
+    throw py::type_error(std::string("the order must be twice_order 0..5 (an int) or a quantity's name (") +
+                         order_names + "), not '" +
+                         std::string(py::str(py::type::handle_of(value).attr("__name__"))) + "'");
+  const Py_ssize_t twice_order = PyNumber_AsSsize_t(value.ptr(), nullptr);  // clipped, never overflows
+  if (twice_order == -1 && PyErr_Occurred()) throw py::error_already_set();
   if (twice_order < 0 || twice_order >= order_count)
     throw py::value_error("twice_order " + std::to_string(twice_order) + " is outside 0..5");
+  return static_cast<int>(twice_order);
 }
 
 py::array_t<double> to_array(const std::vector<double>& values) {
@@ -83,10 +103,27 @@ py::object make_record(py::handle type, const std::vector<py::object>& fields) {
   return type(*arguments);
 }
 
+// asperity.AreaFractionWarning (a UserWarning), made once at import.
+PyObject* area_fraction_warning = nullptr;
+
+// As the command warns (asperity contact), a Python warning where the real area passes
+// gw_area_fraction_limit of the nominal area; raises if warnings are errors (-W error).
+void warn_past_gw(double area_fraction) {
+  if (!(area_fraction > gw_area_fraction_limit)) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the real contact area reaches %.4g of the nominal area (above %.4g): Greenwood-Williamson treats "
+                "the asperity contacts as sparse and independent, which no longer holds there%s",
+                area_fraction, gw_area_fraction_limit, area_fraction > 1 ? "; above 1 the answer is impossible" : "");
+  if (PyErr_WarnEx(area_fraction_warning, text, 1) < 0) throw py::error_already_set();
+}
+
 template <class Answer>
 PhysicalStateRecord physical_states(py::handle input, const char* name, Answer answer) {
-  return {make_record(physical_state_type, map_records<9>(input, name, [&](double x, double** out, std::size_t i) {
+  double largest_fraction = 0;  // NaN never counts
+  PhysicalStateRecord record{make_record(physical_state_type, map_records<9>(input, name, [&](double x, double** out, std::size_t i) {
     const PhysicalState state = answer(x);
+    if (state.area_fraction > largest_fraction) largest_fraction = state.area_fraction;
     out[0][i] = state.separation;
     out[1][i] = state.mean_separation;
     out[2][i] = state.count;
@@ -97,6 +134,8 @@ PhysicalStateRecord physical_states(py::handle input, const char* name, Answer a
     out[7][i] = state.stiffness;
     out[8][i] = state.stiffness_over_load;
   }))};
+  warn_past_gw(largest_fraction);
+  return record;
 }
 
 template <class Function>
@@ -147,6 +186,16 @@ void bind(py::module_& m) {
       Py_DECREF(text);
     }
   });
+  area_fraction_warning = PyErr_NewExceptionWithDoc(
+      "asperity.AreaFractionWarning",
+      "Warned (warnings.warn) where a ContactModel's real contact area passes gw_area_fraction_limit (0.1) of the\n"
+      "nominal area, as the command asperity contact warns: Greenwood-Williamson's asperity contacts are\n"
+      "sparse and independent only below it. warnings.simplefilter('error', asperity.AreaFractionWarning)\n"
+      "makes it an exception; 'ignore' silences it.",
+      PyExc_UserWarning, nullptr);
+  if (!area_fraction_warning) throw py::error_already_set();
+  m.attr("AreaFractionWarning") = py::reinterpret_borrow<py::object>(area_fraction_warning);  // the module keeps it
+  m.attr("gw_area_fraction_limit") = gw_area_fraction_limit;
   m.attr("Error").attr("__doc__") =
       "An error of the asperity library (a missing or bad table or scene, a shape outside the table, a bad "
       "physical parameter); its message is the library's.";
@@ -189,7 +238,8 @@ void bind(py::module_& m) {
   m.def("best_instruction_set", &best_instruction_set,
         "The widest instruction set this CPU has, which the batch path uses.");
 
-  m.def("order_of", &order_of, "twice_order"_a, "The order n = twice_order / 2.");
+  m.def("order_of", [](const OrderName& order) { return order_of(twice_order_of(order)); }, "twice_order"_a,
+        "The order n = twice_order / 2 (twice_order 0..5 or a quantity's name: order_of('load') is 1.5).");
   m.def("weibull_mean", py::vectorize(&weibull_mean), "shape"_a,
         "Mean of the unit Weibull density, mu_a = Gamma(1 + 1/a).");
   m.def("weibull_rms", py::vectorize(&weibull_rms), "shape"_a,
@@ -207,23 +257,24 @@ void bind(py::module_& m) {
                     "threads may query it at once. Made by Table.curve.")
       .def(
           "value",
-          [](const Curve& curve, int twice_order, const ArrayLike& separation, const OptionalOut& out) {
-            check_order(twice_order);
+          [](const Curve& curve, const OrderName& order, const ArrayLike& separation, const OptionalOut& out) {
+            const int twice_order = twice_order_of(order);
             return map_batch(separation.object, "separation", out.object, [&](const double* in, double* result, std::size_t n) {
               curve.value_batch(twice_order, in, result, n);
             }, [&](double x) { return curve.value(twice_order, x); });
           },
           "twice_order"_a, "separation"_a, py::kw_only(), "out"_a = py::none(),
           "X_n(s) for n = twice_order/2 (0 count, 1 stiffness, 2 area, 3 load, 4 F_2, 5 F_5/2) at the\n"
-          "separations s (origin convention, units of sigma_s; docs/model.md).\n\n"
+          "separations s (origin convention, units of sigma_s; docs/model.md). The order is twice_order or\n"
+          "the quantity's name: 'count', 'stiffness', 'area', 'load', 'F2', 'F5/2' (quantity_twice_order).\n\n"
           "separation: a number (the answer is a float) or an array of any shape (the answer is a float64\n"
           "array of that shape), computed by the vectorized batch path without the GIL. NaN for a NaN or\n"
           "infinite separation; underflows to 0 below ~1e-308 (use log_value there). out: an optional\n"
           "C-contiguous float64 array of the same size to write into (returned).")
       .def(
           "log_value",
-          [](const Curve& curve, int twice_order, const ArrayLike& separation, const OptionalOut& out) {
-            check_order(twice_order);
+          [](const Curve& curve, const OrderName& order, const ArrayLike& separation, const OptionalOut& out) {
+            const int twice_order = twice_order_of(order);
             return map_batch(separation.object, "separation", out.object, [&](const double* in, double* result, std::size_t n) {
               curve.log_value_batch(twice_order, in, result, n);
             }, [&](double x) { return curve.log_value(twice_order, x); });
@@ -231,7 +282,8 @@ void bind(py::module_& m) {
           "twice_order"_a, "separation"_a, py::kw_only(), "out"_a = py::none(),
           "ln X_n(s): finite wherever X_n > 0 (far below 1e-308), -inf where it is exactly 0 (bounded side,\n"
           "s >= 0). Arguments as for value().")
-      .def("has_order", &Curve::has_order, "twice_order"_a, "Whether the curve holds this order (order_mask).")
+      .def("has_order", [](const Curve& curve, const OrderName& order) { return curve.has_order(twice_order_of(order)); },
+           "twice_order"_a, "Whether the curve holds this order (twice_order or a quantity's name; order_mask).")
       .def_property_readonly("distribution", &Curve::distribution)
       .def_property_readonly("side", &Curve::side)
       .def_property_readonly("shape", &Curve::shape, "The Weibull shape a (2 for the Gaussian).")
@@ -352,7 +404,11 @@ void bind(py::module_& m) {
       });
 
   // ---- the physical quantities (asperity/contact.hpp) ----
-  py::class_<SurfaceScales>(m, "SurfaceScales", "N summits of radius R, height scale sigma_s (Gaussian: rms sigma), modulus E*.")
+  py::class_<SurfaceScales>(m, "SurfaceScales",
+                            "The four scales contact_at multiplies a curve's integrals by: N summits of radius R, height\n"
+                            "scale sigma_s (Gaussian: rms sigma), modulus E*, in any consistent units, with separations\n"
+                            "in units of sigma_s (the lower level; Surface is its former name). A physical surface in SI\n"
+                            "units, with its distribution, density and nominal area, for ContactModel: RoughSurface.")
       .def(py::init([](double summit_count, double summit_radius, double height_scale, double contact_modulus) {
              return SurfaceScales{summit_count, summit_radius, height_scale, contact_modulus};
            }),
@@ -400,14 +456,20 @@ void bind(py::module_& m) {
 
   // ---- physical surfaces and the contact model (surface.hpp, contact_model.hpp, inverse.hpp) ----
   py::class_<RoughSurface>(m, "RoughSurface",
-                              "A physical rough surface in SI units: Weibull summit heights of shape a and scale "
-                              "sigma_s, or Gaussian (rms sigma).")
-      .def(py::init([](const DistributionName& distribution, const SideName& side, double shape,
+                              "A physical rough surface in SI units, what ContactModel takes: Weibull summit heights "
+                              "of shape a and scale sigma_s, or Gaussian (rms sigma), summit radius and density, "
+                              "nominal area, contact modulus (PhysicalSurface is its former name; SurfaceScales, "
+                              "formerly Surface, is the lower level's four scales for contact_at).")
+      .def(py::init([](const DistributionName& distribution, const SideName& side, std::optional<double> given_shape,
                        std::optional<double> height_scale, double summit_radius, double summit_density,
                        double nominal_area, double contact_modulus, std::optional<double> rms) {
              RoughSurface s;
              s.distribution = to_distribution(distribution.object);
              s.side = to_side(side.object);
+             // the Gaussian has no shape: None (or any shape) is taken, as Table.curve takes it
+             if (!given_shape && s.distribution == Distribution::weibull)
+               throw py::value_error("a Weibull surface needs its shape (shape=None is for the Gaussian)");
+             const double shape = given_shape.value_or(2.0);
              s.shape = shape;
              if (height_scale && rms) throw py::value_error("give the height scale once: height_scale or rms");
              s.height_scale = rms ? height_scale_from_rms(s.distribution, shape, *rms) : height_scale.value_or(1e-6);
@@ -420,7 +482,9 @@ void bind(py::module_& m) {
            "distribution"_a = "weibull", "side"_a = "tail", "shape"_a = 2.0, "height_scale"_a = py::none(),
            "summit_radius"_a = 1e-4, "summit_density"_a = 1e10, "nominal_area"_a = 1e-4, "contact_modulus"_a = 1e11,
            py::kw_only(), "rms"_a = py::none(),
-           "height_scale sigma_s [m]: the Weibull scale (not its rms), or the Gaussian's rms summit height (default\n"
+           "The physical surface a ContactModel takes (PhysicalSurface is its former name). shape: the Weibull\n"
+           "shape a (ignored for the Gaussian, which takes None). height_scale sigma_s [m]: the Weibull scale (not\n"
+           "its rms), or the Gaussian's rms summit height (default\n"
            "1e-6); or instead rms [m], the rms summit height GW users measure, which sets height_scale through\n"
            "height_scale_from_rms (for a = 1.6, rms = 0.574 sigma_s). summit_radius R [m], summit_density [1/m^2],\n"
            "nominal_area A0 [m^2], contact_modulus E* [Pa] (plane strain).")
@@ -513,9 +577,11 @@ void bind(py::module_& m) {
   py::class_<InverseCurve>(m, "InverseCurve",
                            "The separation where X_n takes a value (n = twice_order/2 > 1/2): a tabulated inverse "
                            "and one Newton step on the curve, to the curve's accuracy.")
-      .def(py::init<const Curve&, int>(), "curve"_a, "twice_order"_a,
-           "The curve must hold twice_order and twice_order - 2 (asperity.Error otherwise). The inverse holds\n"
-           "the curve's data: it may outlive the Curve and the Table.")
+      .def(py::init([](const Curve& curve, const OrderName& order) { return InverseCurve(curve, twice_order_of(order)); }),
+           "curve"_a, "twice_order"_a,
+           "The curve must hold twice_order and twice_order - 2 (asperity.Error otherwise); twice_order 2..5 or\n"
+           "a quantity's name ('area', 'load', 'F2', 'F5/2'). The inverse holds the curve's data: it may outlive\n"
+           "the Curve and the Table.")
       .def(
           "separation_at",
           [](const InverseCurve& inverse, const ArrayLike& value) {
@@ -550,7 +616,9 @@ void bind(py::module_& m) {
   py::class_<ContactModel>(m, "ContactModel",
                            "Contact of a flat with a RoughSurface, forward and inverse, SI units. Separations "
                            "are lengths [m] from the model's datum (docs/model.md section 2): 'origin' by default "
-                           "(the Weibull origin, the Gaussian's mean), 'mean-summit' or 'mean-plane'.")
+                           "(the Weibull origin, the Gaussian's mean), 'mean-summit' or 'mean-plane'. Where the real area "
+                           "passes gw_area_fraction_limit (0.1) of the nominal area the answers come with an "
+                           "asperity.AreaFractionWarning (warnings.warn), as the command warns.")
       .def(py::init([](const Table& table, const RoughSurface& surface, const std::string& datum,
                        std::optional<double> mean_summit_height) {
              SeparationDatum separation_datum;
@@ -658,6 +726,7 @@ void bind(py::module_& m) {
                 tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance, datum);
             std::ostringstream out;
             write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
+            warn_past_gw(model.at_pressure(pressure_max).area_fraction);  // the command's check
             return out.str();
           },
           "pressure_min"_a, "pressure_max"_a, "tolerance"_a = 1e-3, "format"_a = "calculix", "units"_a = "si",
@@ -736,7 +805,8 @@ void bind(py::module_& m) {
   m.def("quantity_twice_order", &quantity_twice_order, "quantity"_a,
         "twice_order of a quantity's integral: count 0, stiffness 1, area 2, load 3, F2 4, F5/2 5; -1 otherwise.");
 
-  // the former names (deprecated, kept for existing code): Surface, PhysicalSurface
+  // the former names (deprecated, kept for existing code): Surface is SurfaceScales (contact_at's four
+  // scales), PhysicalSurface is RoughSurface (ContactModel's surface in SI units)
   m.attr("Surface") = m.attr("SurfaceScales");
   m.attr("PhysicalSurface") = m.attr("RoughSurface");
 

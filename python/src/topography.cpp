@@ -631,10 +631,18 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("rejected", &topo::ModelAssessment::rejected,
                     "The Anderson-Darling p-value is below the significance.")
       .def_readonly("p_at_floor", &topo::ModelAssessment::p_at_floor,
-                    "The p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value.")
+                    "The Anderson-Darling p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value.")
+      .def_readonly("kolmogorov_smirnov_p_at_floor", &topo::ModelAssessment::kolmogorov_smirnov_p_at_floor,
+                    "The Kolmogorov-Smirnov p-value is at its floor 1/(B + 1): a bound, not a value.")
       .def_readonly("shape_identified", &topo::ModelAssessment::shape_identified,
                     "The data pin the shape down (its interval stays inside the fit's bounds).")
-      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.");
+      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.")
+      .def("__repr__", [](const topo::ModelAssessment& m) {
+        // the p-values as the reports write them: a bound where they are one ("p <= 0.005")
+        return "<asperity.topography.ModelAssessment " + std::string(topo::to_string(m.fit.distribution.model)) +
+               ": AD " + topo::p_value_text(m.anderson_darling_p, m.p_at_floor) + ", KS " +
+               topo::p_value_text(m.kolmogorov_smirnov_p, m.kolmogorov_smirnov_p_at_floor) + ">";
+      });
   py::class_<topo::Verdict>(m, "Verdict", "Which model the evidence favours, and the evidence in words.")
       .def_readonly("gaussian_rejected", &topo::Verdict::gaussian_rejected)
       .def_readonly("best", &topo::Verdict::best, "Lowest AIC among the models not rejected.")

@@ -518,7 +518,7 @@ def test_stubs_name_what_the_module_holds():
         elif isinstance(node, ast.ImportFrom) and node.module is None:  # from . import topography
             for alias in node.names:
                 defined[alias.asname or alias.name] = node
-    aliases = {"FloatArray", "PathLike", "DistributionLike", "SideLike"}
+    aliases = {"FloatArray", "PathLike", "DistributionLike", "SideLike", "QuantityName", "OrderLike"}
     assert public_names() | {"__version__"} == set(defined) - aliases
     for name, node in defined.items():
         if isinstance(node, ast.ClassDef) and not issubclass(getattr(asperity, name), (tuple, BaseException)):
@@ -542,7 +542,8 @@ def test_fe_export_card_from_python(table):
     start = lines.index("*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR")
     points = [tuple(map(float, line.split(","))) for line in lines[start + 1:] if line and line[0] in "-0123456789"]
     assert points[0][0] == 0 and len(points) > 5
-    origin_to_mean = -model.at_separation(0.0).mean_separation
+    with pytest.warns(asperity.AreaFractionWarning):  # at the origin: far past GW's validity, only the datum used
+        origin_to_mean = -model.at_separation(0.0).mean_separation
     for pressure, overclosure in points[1:]:
         state = model.at_separation(origin_to_mean - overclosure)
         assert abs(state.pressure - pressure) <= 1e-9 * pressure
@@ -567,3 +568,107 @@ def test_input_checks_from_python():
     assert asperity.nominal_pressure_from_load(10.0, 1e-4) == 1e5
     with pytest.raises(asperity.Error):
         asperity.nominal_pressure_from_load(-1.0, 1e-4)
+
+
+# ---- a new user's small frictions (issue 32): named orders, the area-fraction warning, the Gaussian's shape ----
+
+def test_orders_by_name(table, weibull2):
+    s = np.linspace(-1.5, 0.5, 7)
+    for name in ("count", "stiffness", "area", "load", "F2", "F5/2", "F3/2", "I1"):
+        twice_order = asperity.quantity_twice_order(name)  # the one definition (scene files use it too)
+        assert twice_order >= 0, name
+        assert np.array_equal(weibull2.value(name, s), weibull2.value(twice_order, s))
+        assert np.array_equal(weibull2.log_value(name, s), weibull2.log_value(twice_order, s))
+        assert weibull2.has_order(name) == weibull2.has_order(twice_order)
+        assert asperity.order_of(name) == twice_order / 2
+    assert weibull2.value("load", 0.0) == weibull2.value(3, 0.0)
+    assert weibull2.value(np.int64(3), 0.0) == weibull2.value(3, 0.0)  # numpy's integers too
+    inverse = asperity.InverseCurve(weibull2, "load")
+    assert inverse.twice_order == 3
+    assert close(inverse.separation_at(weibull2.value("load", -0.5)), -0.5, 1e-9)
+
+
+def test_orders_by_name_refused_clearly(weibull2):
+    with pytest.raises(ValueError, match=r"unknown order 'pressure': expected 'count', 'stiffness', 'area', 'load'"):
+        weibull2.value("pressure", 0.0)
+    with pytest.raises(ValueError, match="unknown order 'Load'"):  # names are exact, as in scene files
+        weibull2.value("Load", 0.0)
+    for wrong, kind in ((1.5, "float"), (None, "NoneType"), (True, "bool"), ([3], "list")):
+        with pytest.raises(TypeError, match=f"twice_order 0..5 \\(an int\\) or a quantity's name .*not '{kind}'"):
+            weibull2.value(wrong, 0.0)
+    with pytest.raises(ValueError, match="twice_order 6 is outside 0..5"):
+        weibull2.value(6, 0.0)
+    with pytest.raises(ValueError, match="twice_order -1 is outside 0..5"):
+        asperity.order_of(-1)
+    with pytest.raises(ValueError, match="unknown order 'loads'"):
+        asperity.InverseCurve(weibull2, "loads")
+    with pytest.raises(asperity.Error):  # the inverse of the count is refused by the library, as for 0
+        asperity.InverseCurve(weibull2, "count")
+
+
+def model_of(table, nominal_area=1e-4):
+    surface = asperity.RoughSurface("weibull", "tail", shape=2.0, height_scale=1e-6, summit_radius=1e-4,
+                                    summit_density=1e10, nominal_area=nominal_area, contact_modulus=1e11)
+    return asperity.ContactModel(table, surface)
+
+
+def test_area_fraction_warning(table):
+    import warnings
+
+    assert issubclass(asperity.AreaFractionWarning, UserWarning)
+    assert asperity.gw_area_fraction_limit == 0.1  # the command's (asperity contact), one definition
+    model = model_of(table)
+    area = model.surface.nominal_area
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        model.at_real_area(0.05 * area)                      # within GW: no warning
+        model.at_real_area(np.array([0.01, 0.09]) * area)
+        model.at_separation(np.nan)
+        model.at_load(np.array([np.nan, 1.0]))
+    assert [w for w in caught if issubclass(w.category, asperity.AreaFractionWarning)] == []
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        state = model.at_real_area(np.array([0.01, 0.2]) * area)   # one element past the limit
+    found = [w for w in caught if issubclass(w.category, asperity.AreaFractionWarning)]
+    assert len(found) == 1
+    message = str(found[0].message)
+    assert "reaches 0.2 of the nominal area (above 0.1)" in message and "impossible" not in message
+    assert found[0].filename == __file__  # pointed at the caller's line
+    assert np.allclose(state.area_fraction, [0.01, 0.2], rtol=1e-9)  # the answer is still given
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", asperity.AreaFractionWarning)
+        past = model.at_real_area(0.3 * area)
+    for query, value in ((model.at_load, past.load), (model.at_pressure, past.pressure),
+                         (model.at_separation, past.separation)):
+        with pytest.warns(asperity.AreaFractionWarning, match="reaches 0.3 of"):
+            query(value)
+    with pytest.warns(asperity.AreaFractionWarning, match="above 1 the answer is impossible"):
+        model.at_real_area(2 * area)
+    with pytest.warns(asperity.AreaFractionWarning):  # the FE card up to a pressure past the limit, as the command
+        model.pressure_overclosure_card(1e3, 2 * past.pressure)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", asperity.AreaFractionWarning)   # as an exception when asked
+        with pytest.raises(asperity.AreaFractionWarning):
+            model.at_real_area(0.5 * area)
+        model.at_real_area(0.05 * area)
+
+
+def test_gaussian_surface_takes_no_shape(table):
+    for surface in (asperity.PhysicalSurface("gaussian", shape=None, rms=5e-7),
+                    asperity.RoughSurface("gaussian", shape=None, rms=5e-7),
+                    asperity.RoughSurface("gaussian", rms=5e-7),
+                    asperity.RoughSurface("gaussian", shape=7.0, rms=5e-7)):   # ignored, as Table.curve ignores it
+        assert surface.distribution == asperity.Distribution.gaussian and surface.height_scale == 5e-7
+        model = asperity.ContactModel(table, surface)
+        assert model.curve.distribution == asperity.Distribution.gaussian
+        assert model.at_load(1.0).load == pytest.approx(1.0, rel=1e-11)
+    with pytest.raises(ValueError, match="a Weibull surface needs its shape"):
+        asperity.RoughSurface("weibull", shape=None)
+    assert asperity.RoughSurface().shape == 2.0  # the default is unchanged
+
+
+def test_two_surface_types_say_which_is_which():
+    assert asperity.PhysicalSurface is asperity.RoughSurface and asperity.Surface is asperity.SurfaceScales
+    assert "ContactModel" in asperity.RoughSurface.__doc__ and "PhysicalSurface" in asperity.RoughSurface.__doc__
+    assert "contact_at" in asperity.SurfaceScales.__doc__ and "RoughSurface" in asperity.SurfaceScales.__doc__
+    assert "former name" in asperity.SurfaceScales.__doc__

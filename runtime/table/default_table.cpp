@@ -6,7 +6,9 @@
 //   2. <dir>/<rel>/asperity-default.h5, where <dir> is the directory of the file this code was
 //      loaded from (libasperity.so; for a static library, the program or Python module it is
 //      linked into) and <rel> the install layout's path from there to share/asperity
-//      (cmake/install_layout.cmake): the installed tree, even when moved;
+//      (cmake/install_layout.cmake): the installed tree, even when moved; for the package
+//      `pip install .` makes (ASPERITY_PYTHON_PACKAGE_TABLE), first "." itself: the table in
+//      the module's own folder;
 //   3. the build tree's table (ASPERITY_DEFAULT_TABLE when the library was configured);
 //   4. share/asperity/ under the install prefix the library was configured with.
 //

@@ -62,8 +62,10 @@ struct ModelAssessment {
   Interval location, scale, shape;  // percentile bootstrap intervals (shape: Weibull only)
   int bootstrap = 0, failed_refits = 0;
   bool rejected = false;            // the Anderson-Darling p-value is below the significance
-  // p at its floor 1/(B + 1): then it is a bound, "p <= 1/(B + 1)", not a value
+  // p at its floor 1/(B' + 1) (B' the refits that succeeded; no refit reached the statistic): then
+  // it is a bound, "p <= 1/(B' + 1)", not a value. p_at_floor is the Anderson-Darling p's.
   bool p_at_floor = false;
+  bool kolmogorov_smirnov_p_at_floor = false;
   // The shape is pinned down by the data: its interval stays inside the fit's bounds and at most
   // a tenth of the refits end at a bound. Otherwise it is "not identified", with why.
   bool shape_identified = true;
@@ -92,6 +94,10 @@ struct SampleAssessment {
 int minimum_bootstrap(double significance);
 void check_bootstrap_size(int bootstrap, double significance);
 
+// A bootstrap p-value as every output writes it: "p = 0.0123", or "p <= 0.005" at its floor (a
+// bound, not a value); "not tested" for NaN (no bootstrap).
+std::string p_value_text(double p, bool at_floor);
+
 // Fits the three models, bootstraps, and gives the verdict. `values` need not be sorted.
 // asperity::Error for confidence or significance outside (0, 1), bootstrap outside
 // [0, max_bootstrap], or values the fits refuse.
@@ -102,6 +108,7 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
 struct TestResult {
   FitResult fit;
   double anderson_darling = 0, anderson_darling_p = 0, kolmogorov_smirnov = 0, kolmogorov_smirnov_p = 0;
+  bool anderson_darling_p_at_floor = false, kolmogorov_smirnov_p_at_floor = false;  // bounds (ModelAssessment)
   std::vector<double> refit_shapes, refit_locations, refit_scales;
   int failed_refits = 0;
 };

@@ -1,0 +1,34 @@
+"""Run by pip_install.sh with the interpreter a `pip install .` put asperity under, from a folder
+outside the source and build trees: the package imports from PLACE, carries its own default
+table and compiled module, and answers against a closed form. usage: check_pip_install.py PLACE"""
+import math
+import os
+import sys
+import warnings
+from pathlib import Path
+
+place = Path(sys.argv[1]).resolve()
+import asperity  # noqa: E402
+
+package = Path(asperity.__file__).resolve().parent
+assert place in package.parents, f"asperity imported from {package}, not under {place}"
+assert Path(asperity._asperity.__file__).resolve().parent == package, asperity._asperity.__file__
+table_path = Path(asperity.Table.default_path()).resolve()
+assert table_path == package / "asperity-default.h5", f"the default table is {table_path}, not the package's"
+for stub in ("__init__.pyi", "plot.pyi", "topography.pyi", "py.typed"):
+    assert (package / stub).is_file(), stub
+
+table = asperity.Table.open_default()
+curve = table.curve("weibull", "tail", 2.0)
+# Weibull a = 2, tail side: X_0(s) = exp(-s^2) for s >= 0 (docs/model.md section 5)
+for s in (0.25, 0.5, 1.0, 2.0):
+    value = curve.value("count", s)
+    assert abs(value - math.exp(-s * s)) <= 1e-12 * math.exp(-s * s), (s, value)
+model = asperity.ContactModel(table, asperity.RoughSurface("gaussian", shape=None, rms=5e-7))
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    model.at_real_area(0.5 * model.surface.nominal_area)
+assert any(issubclass(w.category, asperity.AreaFractionWarning) for w in caught)
+import asperity.plot  # noqa: E402,F401 (matplotlib only when it draws)
+import asperity.topography  # noqa: E402,F401
+print(f"asperity {asperity.__version__} from {package} ({sys.executable}), table {table_path}: X_0 = exp(-s^2) to 1e-12")
