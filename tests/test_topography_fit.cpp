@@ -229,7 +229,7 @@ TEST(TopographyFit, SpacingGradientIsExact) {
     std::vector<double> y(x.size());
     for (std::size_t k = 0; k < x.size(); ++k) y[k] = x[k] - x[0];
     y[150] = y[149];  // a tie
-    const t::detail::SpacingProblem problem{&y, std::log(1e-6)};
+    const t::detail::SpacingProblem problem{&y, std::log(1e-6), {}};
     for (double gap : {1e-3, 0.1, 1.0}) {
       const double p[3] = {std::log(gap), std::log(2.0), std::log(shape)};
       double gradient[3];

@@ -634,7 +634,10 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
                     "The p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value.")
       .def_readonly("shape_identified", &topo::ModelAssessment::shape_identified,
                     "The data pin the shape down (its interval stays inside the fit's bounds).")
-      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.");
+      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.")
+      .def_readonly("bias_slope", &topo::ModelAssessment::bias_slope,
+                    "The heights' Weibull shape: d(bias of ln a)/d(ln a) on the surrogates, which its interval "
+                    "corrects for (NaN where not measured).");
   py::class_<topo::Verdict>(m, "Verdict", "Which model the evidence favours, and the evidence in words.")
       .def_readonly("gaussian_rejected", &topo::Verdict::gaussian_rejected)
       .def_readonly("best", &topo::Verdict::best, "Lowest AIC among the models not rejected.")
