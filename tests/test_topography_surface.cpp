@@ -219,6 +219,16 @@ TEST(TopographySurface, WeibullMarginalFieldRecovered) {
     EXPECT_GE(marginal.shape.hi, 1.5) << marginal.fit.distribution.shape;
     EXPECT_EQ(analysis.verdict.orientation, model) << analysis.verdict.text;
     EXPECT_TRUE(analysis.verdict.gaussian_rejected) << analysis.verdict.text;
+    // the heights' Weibull intervals carry the bias's slope in ln a, measured on the surrogates
+    // (a = 1.5: the bias falls as the shape grows); nothing else has one
+    for (t::HeightModel weibull : {t::HeightModel::weibull_tail, t::HeightModel::weibull_bounded}) {
+      const double slope = analysis.heights->model(weibull).bias_slope;
+      EXPECT_TRUE(std::isfinite(slope) && slope > -0.75 && slope < 1) << slope;
+      EXPECT_TRUE(std::isnan(analysis.summit_heights.model(weibull).bias_slope));
+    }
+    EXPECT_LT(marginal.bias_slope, 0) << "the bias of ln a_hat falls with the shape at a = 1.5";
+    EXPECT_TRUE(std::isnan(analysis.heights->model(t::HeightModel::gaussian).bias_slope));
+    EXPECT_TRUE(std::isnan(m.bias_slope)) << "the i.i.d. bootstrap measures no slope";
   }
 }
 

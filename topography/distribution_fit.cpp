@@ -219,7 +219,7 @@ FitResult fit_height_distribution(HeightModel model, const std::vector<double>& 
   const double origin = bounded ? sorted.back() : sorted.front();
   std::vector<double> y(n);
   for (std::size_t k = 0; k < n; ++k) y[k] = bounded ? (origin - sorted[n - 1 - k]) / sd : (sorted[k] - origin) / sd;
-  const detail::SpacingProblem problem{&y, std::log(smallest_gap(y))};
+  const detail::SpacingProblem problem{&y, std::log(smallest_gap(y)), {}};
   const double lower[3] = {std::log(1e-12), std::log(1e-4), std::log(options.shape_min)};
   const double upper[3] = {std::log(1e3), std::log(1e4), std::log(options.shape_max)};
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <nlopt.hpp>
 
+#include "vector_math.hpp"
+
 namespace asperity::topography::detail {
 namespace {
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -15,37 +17,69 @@ double spacing_objective(const SpacingProblem& problem, const double p[3], doubl
   const std::size_t n = y.size();
   const double gap = std::exp(p[0]), shape = std::exp(p[2]);
   const double log_scale = p[1];
+  // The transcendental functions a vector at a time (vector_math.hpp), into the problem's
+  // buffers: ln z, t = w^shape, then expm1 and ln of the steps between neighbours' t. A point
+  // whose argument leaves the vector functions' range is recomputed with <cmath> below.
+  problem.workspace.resize(4 * n);
+  double* const log_z = problem.workspace.data();
+  double* const t = log_z + n;
+  double* const em1 = t + n;
+  double* const log_em1 = em1 + n;
+  constexpr double tiny = std::numeric_limits<double>::min();  // below: subnormal, <cmath>'s
+  for (std::size_t k = 0; k < n; ++k) {
+    const double z = y[k] + gap;
+    if (!(z > 0)) return -inf;
+    em1[k] = z;
+  }
+  vector_log(em1, log_z, n);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (em1[k] < tiny) log_z[k] = std::log(em1[k]);
+    em1[k] = shape * (log_z[k] - log_scale);  // ln t
+  }
+  vector_exp(em1, t, n);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!(std::fabs(em1[k]) < 700)) t[k] = std::exp(em1[k]);  // overflow, or a subnormal t
+    const double step = t[k] - (k > 0 ? t[k - 1] : 0.0);
+    log_em1[k] = step >= tiny && step < vector_exp_max ? step : 1.0;  // the others taken below
+  }
+  vector_expm1(log_em1, em1, n);
+  vector_log(em1, log_em1, n);
   double sum = 0, g0 = 0, g1 = 0, g2 = 0;
   // t and its derivatives at the previous point (t_0 = 0)
   double t_previous = 0, d0_previous = 0, d1_previous = 0, d2_previous = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const double z = y[k] + gap;
-    if (!(z > 0)) return -inf;
-    const double log_w = std::log(z) - log_scale;
-    const double t = std::exp(shape * log_w);
+    const double log_w = log_z[k] - log_scale;
+    const double tk = t[k];
     // dt/d(ln gap), dt/d(ln scale), dt/d(ln shape)
-    const double d0 = shape * t * gap / z, d1 = -shape * t, d2 = shape * log_w * t;
-    const double step = t - t_previous;
+    const double d0 = shape * tk * gap / z, d1 = -shape * tk, d2 = shape * log_w * tk;
+    const double step = tk - t_previous;
     if (step > 0) {
       // ln(e^-t_prev - e^-t) = -t + ln(e^step - 1): one expm1 and one log a point
-      const double em1 = step < 700 ? std::expm1(step) : std::numeric_limits<double>::infinity();
-      sum += step < 700 ? -t + std::log(em1) : -t_previous + std::log1p(-std::exp(-step));
+      double e = em1[k], log_e = log_em1[k];
+      if (!(step < vector_exp_max)) {
+        e = std::numeric_limits<double>::infinity();
+      } else if (step < tiny) {
+        e = std::expm1(step);
+        log_e = std::log(e);
+      }
+      sum += std::isfinite(e) ? -tk + log_e : -t_previous + std::log1p(-std::exp(-step));
       if (gradient) {
-        const double r = std::isfinite(em1) ? 1 / em1 : 0;
+        const double r = std::isfinite(e) ? 1 / e : 0;
         g0 += -d0_previous + (d0 - d0_previous) * r;
         g1 += -d1_previous + (d1 - d1_previous) * r;
         g2 += -d2_previous + (d2 - d2_previous) * r;
       }
     } else {
       // a tie: ln(f(y) delta), f = (shape/scale) w^(shape-1) e^-t in standardized units
-      sum += p[2] - log_scale + (shape - 1) * log_w - t + problem.log_delta;
+      sum += p[2] - log_scale + (shape - 1) * log_w - tk + problem.log_delta;
       if (gradient) {
         g0 += (shape - 1) * gap / z - d0;
         g1 += -shape - d1;
         g2 += 1 + shape * log_w - d2;
       }
     }
-    t_previous = t;
+    t_previous = tk;
     d0_previous = d0;
     d1_previous = d1;
     d2_previous = d2;

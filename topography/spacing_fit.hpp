@@ -15,6 +15,7 @@ namespace asperity::topography::detail {
 struct SpacingProblem {
   const std::vector<double>* y = nullptr;  // ascending, y[0] = 0
   double log_delta = 0;                    // ln of the quantization step (ties)
+  mutable std::vector<double> workspace;   // the objective's buffers (4 n), kept between calls
 };
 
 // S at p, and dS/dp into gradient (if not null); -inf where the data leave the support.

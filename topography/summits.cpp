@@ -80,6 +80,12 @@ Summits find_summits(const HeightMap& map, const SummitOptions& options) {
   const std::size_t w = static_cast<std::size_t>(options.window);
   if (map.nx <= 2 * w || map.ny <= 2 * w) throw Error(map.source + ": too small for the summit window");
   const std::vector<char> maxima = w > 1 ? window_maxima(map, w) : std::vector<char>();
+  // rows without a missing point: there every neighbourhood is complete, and a point is
+  // dismissed at its first higher neighbour (most points: the search's cost)
+  std::vector<char> row_complete(map.ny, 1);
+  for (std::size_t j = 0; j < map.ny; ++j)
+    for (std::size_t i = 0; i < map.nx && row_complete[j]; ++i)
+      if (std::isnan(map.at(i, j))) row_complete[j] = 0;
   long double curvature_sum = 0;
   for (std::size_t j = w; j + w < map.ny; ++j)
     for (std::size_t i = w; i + w < map.nx; ++i) {
@@ -89,6 +95,14 @@ Summits find_summits(const HeightMap& map, const SummitOptions& options) {
       if (w > 1) {
         complete = maxima[j * map.nx + i] != 0;
         summit = maxima[j * map.nx + i] == 2;
+      } else if (row_complete[j - 1] && row_complete[j] && row_complete[j + 1]) {
+        // the same order of comparisons as below: strictly above the neighbours before (i, j),
+        // at least as high as those after
+        const double* below = &map.heights[(j - 1) * map.nx + i];
+        const double* row = &map.heights[j * map.nx + i];
+        const double* above = &map.heights[(j + 1) * map.nx + i];
+        summit = h >= row[1] && h > row[-1] && h > below[-1] && h > below[0] && h > below[1] && h >= above[-1] &&
+                 h >= above[0] && h >= above[1];
       } else {
         // the 8 neighbours directly: no tables
         for (std::size_t q = j - 1; q <= j + 1 && complete; ++q)

@@ -59,6 +59,7 @@ ordered_json assessment_json(const SampleAssessment& a) {
                       {"interval_location_m", {number(m.location.lo), number(m.location.hi)}},
                       {"interval_scale_m", {number(m.scale.lo), number(m.scale.hi)}},
                       {"interval_shape", {number(m.shape.lo), number(m.shape.hi)}},
+                      {"shape_bias_slope", number(m.bias_slope)},
                       {"anderson_darling", number(m.anderson_darling)},
                       {"anderson_darling_p", number(m.anderson_darling_p)},
                       {"anderson_darling_p_is_bound", m.p_at_floor},

@@ -7,6 +7,7 @@
 
 #include "asperity/error.hpp"
 #include "fft.hpp"
+#include "vector_math.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -255,16 +256,24 @@ void SurrogateFields::generate(std::uint64_t seed, std::size_t index, std::vecto
   thread_local std::vector<double> padded;
   coefficients.resize(py_ * half);
   padded.resize(px_ * py_);
-  for (std::size_t k = 0; k < coefficients.size(); ++k) {
-    // a complex normal (Marsaglia's polar method: no trigonometry), times the spectrum's amplitude
-    double u, v, s;
-    do {
-      u = engine.symmetric();
-      v = engine.symmetric();
-      s = u * u + v * v;
-    } while (s >= 1 || s == 0);
-    const double factor = amplitude_[k] * std::sqrt(-std::log(s) / s);
-    coefficients[k] = detail::Complex(factor * u, factor * v);
+  // complex normals (Marsaglia's polar method: no trigonometry) times the spectrum's amplitude,
+  // a block at a time so that the logarithms go a vector at a time (vector_math.hpp)
+  constexpr std::size_t block = 512;
+  double u[block], v[block], s[block], log_s[block];
+  for (std::size_t first = 0; first < coefficients.size(); first += block) {
+    const std::size_t count = std::min(block, coefficients.size() - first);
+    for (std::size_t k = 0; k < count; ++k) {
+      do {
+        u[k] = engine.symmetric();
+        v[k] = engine.symmetric();
+        s[k] = u[k] * u[k] + v[k] * v[k];
+      } while (s[k] >= 1 || s[k] == 0);  // s >= 2^-105 otherwise: normal, in ln's range
+    }
+    detail::vector_log(s, log_s, count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const double factor = amplitude_[first + k] * std::sqrt(-log_s[k] / s[k]);
+      coefficients[first + k] = detail::Complex(factor * u[k], factor * v[k]);
+    }
   }
   detail::make_hermitian_columns(coefficients.data(), py_, px_);
   detail::inverse_2d(coefficients.data(), padded.data(), py_, px_);

@@ -637,6 +637,9 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("shape_identified", &topo::ModelAssessment::shape_identified,
                     "The data pin the shape down (its interval stays inside the fit's bounds).")
       .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.")
+      .def_readonly("bias_slope", &topo::ModelAssessment::bias_slope,
+                    "The heights' Weibull shape: d(bias of ln a)/d(ln a) on the surrogates, which its interval "
+                    "corrects for (NaN where not measured).")
       .def("__repr__", [](const topo::ModelAssessment& m) {
         // the p-values as the reports write them: a bound where they are one ("p <= 0.005")
         return "<asperity.topography.ModelAssessment " + std::string(topo::to_string(m.fit.distribution.model)) +

@@ -20,6 +20,7 @@
 // sampling intervals apart); all heights of a map are not, and are thinned first (analysis.hpp).
 #pragma once
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,10 @@ struct ModelAssessment {
   // a tenth of the refits end at a bound. Otherwise it is "not identified", with why.
   bool shape_identified = true;
   std::string identification;
+  // The heights' Weibull shape interval: d(bias of ln a_hat)/d(ln a), measured on the surrogates
+  // (surface_tests.hpp); NaN where not measured (the summit heights, the Gaussian, an i.i.d.
+  // bootstrap).
+  double bias_slope = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Verdict {

@@ -17,16 +17,19 @@
 // For each sample and model: the fit (ML for the Gaussian, MPS for the Weibulls), its
 // Anderson-Darling A^2 and Kolmogorov-Smirnov D, and p = (1 + #{T_b >= T}) / (B + 1) with T_b
 // the statistic of the model refitted on surrogate b; for the Weibulls the shape's interval
-// from the refitted shapes: for the heights the basic bootstrap interval in ln a,
-// a_hat^2 / q_hi ... a_hat^2 / q_lo (the surrogates are drawn at the fitted shape, so the
-// refits' offset from it is the estimator's own bias, leveling's included, which the interval
-// takes back); for the summit heights centred on the estimate, a_hat m / q_hi ... a_hat m / q_lo
+// from the refitted shapes: for the heights the basic bootstrap interval in ln a corrected for
+// a bias that changes with the shape: the surrogates are drawn at the fitted shape, so the
+// refits' offset b0 = ln median - ln a_hat is the estimator's own bias there (leveling's
+// included); the same fields mapped to shape a_hat e^-0.1 and refitted give the bias there too
+// (common random numbers), hence its slope beta in ln a, and
+// ln a = ln a_hat - (b0 + e) / (1 + beta) over the refits' centred quantiles e (beta = 0: the
+// basic interval a_hat^2 / q_hi ... a_hat^2 / q_lo); for the summit heights centred on the estimate, a_hat m / q_hi ... a_hat m / q_lo
 // with m the refits' median (the surrogates' summit shape is that of the fitted marginal, not the
 // summits' estimate). A shape whose interval reaches the fit's
 // bounds, or with more than a tenth of its refits at a bound, is not identified.
 //
-// Cost: per surrogate one FFT of the padded map, the summits, and four warm-started refits:
-// O(N log N) a surrogate.
+// Cost: per surrogate one FFT of the padded map, the summits, and six warm-started refits (the
+// heights' two Weibulls twice): O(N log N) a surrogate.
 #pragma once
 #include <cstddef>
 #include <functional>
