@@ -14,6 +14,8 @@ set(ASPERITY_RUNTIME_HEADERS
   contact_scales.hpp contact.hpp    # contact_at: the four quantities of a curve
   surface.hpp            # a physical surface, unit conversions and input checks
   inverse.hpp contact_model.hpp persson.hpp
+  physical_state_fields.hpp  # the physical state's fields, once (C, Fortran, Python, CSV made or checked from it)
+  law_combination.hpp    # how a law's rough-surface quantities combine the tabulated orders (Hertz's numbers)
   contact_law.hpp        # single-asperity contact laws (Hertz, CEB, ZMC, KE, JG, DMT, JKR, MD)
   scene.hpp scene_curves.hpp
   pressure_overclosure.hpp          # FE export: CalculiX/Abaqus pressure-overclosure cards

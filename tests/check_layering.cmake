@@ -13,9 +13,9 @@ cmake_minimum_required(VERSION 3.18)
 # 4. The public face: every header under include/ is in cmake/public_headers.cmake once, and a
 #    public header includes only public headers.
 set(layer_core integrals model layout curve asymptotic instruction_set error segment_kind contact_scales number_text
-    contact_law)
+    contact_law law_combination)
 set(layer_table table table_schema table_data table_file table_writer)
-set(layer_physics contact contact_model inverse surface persson)
+set(layer_physics contact contact_model physical_state_fields inverse surface persson)
 set(layer_scene scene scene_curves)
 set(layer_fe_export pressure_overclosure)
 set(layer_c_api asperity)

@@ -154,10 +154,16 @@ PhysicalState query(const ContactModel& model, const std::string& kind, double v
   return model.at_real_area(value);
 }
 
+// the CSV's columns: the physical state's fields (physical_state_fields.hpp), in their order
+void print_header() {
+  for (std::size_t k = 0; k < physical_state_field_count; ++k)
+    std::printf("%s%s", k ? "," : "", physical_state_fields[k].column);
+  std::printf("\n");
+}
 void print(const PhysicalState& state) {
-  std::printf("%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.mean_separation,
-              state.count, state.real_area, state.area_fraction, state.load, state.pressure, state.stiffness,
-              state.stiffness_over_load);
+  for (std::size_t k = 0; k < physical_state_field_count; ++k)
+    std::printf(k ? ",%.10g" : "%.10g", state.*physical_state_members[k]);
+  std::printf("\n");
 }
 
 void warn_past_gw(const CLI::App& command, double area_fraction) {
@@ -274,8 +280,7 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!given_scale.empty()) note(command, given_scale);
   if (!options.export_format.empty()) return export_law(options, model, command, format, units, datum);
 
-  std::printf("separation_m,mean_separation_m,count,real_area_m2,area_fraction,load_N,nominal_pressure_Pa,"
-              "stiffness_N_per_m,stiffness_over_load_per_m\n");
+  print_header();
   double largest_fraction = 0;
   auto row = [&](const PhysicalState& state) {
     print(state);

@@ -11,6 +11,7 @@
 // Units: SI throughout (R, omega in m; E*, H, Y in Pa; work of adhesion in J/m^2 = N/m).
 // E* is the contact modulus, 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (asperity::contact_modulus_from).
 #pragma once
+#include "asperity/law_combination.hpp"  // Hertz's numbers (hertz_combination), shared with the kernels
 
 namespace asperity {
 

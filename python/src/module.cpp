@@ -83,17 +83,10 @@ py::object make_record(py::handle type, const std::vector<py::object>& fields) {
 
 template <class Answer>
 PhysicalStateRecord physical_states(py::handle input, const char* name, Answer answer) {
-  return {make_record(physical_state_type, map_records<9>(input, name, [&](double x, double** out, std::size_t i) {
+  constexpr std::size_t fields = physical_state_field_count;
+  return {make_record(physical_state_type, map_records<fields>(input, name, [&](double x, double** out, std::size_t i) {
     const PhysicalState state = answer(x);
-    out[0][i] = state.separation;
-    out[1][i] = state.mean_separation;
-    out[2][i] = state.count;
-    out[3][i] = state.real_area;
-    out[4][i] = state.area_fraction;
-    out[5][i] = state.load;
-    out[6][i] = state.pressure;
-    out[7][i] = state.stiffness;
-    out[8][i] = state.stiffness_over_load;
+    for (std::size_t k = 0; k < fields; ++k) out[k][i] = state.*physical_state_members[k];
   }))};
 }
 
@@ -158,15 +151,17 @@ void bind(py::module_& m) {
       "ratio (3/2) X_1/2 / X_3/2 (in separation units).";
   m.attr("ContactState") = contact_state;
   contact_state_type = contact_state.release();
-  py::object physical_state = collections.attr("namedtuple")(
-      "PhysicalState",
-      py::make_tuple("separation", "mean_separation", "count", "real_area", "area_fraction", "load", "pressure",
-                     "stiffness", "stiffness_over_load"),
-      "module"_a = "asperity");
-  physical_state.attr("__doc__") =
-      "ContactModel's answer (floats, or arrays shaped like the input), SI units: separation [m] (origin "
-      "convention), mean_separation [m] (from the mean summit height), count, real_area [m^2], area_fraction "
-      "(A/A0), load [N], pressure [Pa] (load/A0), stiffness [N/m], stiffness_over_load [1/m].";
+  // the fields' names and meanings from their one list (physical_state_fields.hpp)
+  py::list physical_state_names;
+  std::string physical_state_doc = "ContactModel's answer (floats, or arrays shaped like the input), SI units:";
+  for (const PhysicalStateField& field : physical_state_fields) {
+    physical_state_names.append(field.name);
+    physical_state_doc += std::string(" ") + field.name + " (" + field.meaning + "),";
+  }
+  physical_state_doc.back() = '.';
+  py::object physical_state = collections.attr("namedtuple")("PhysicalState", py::tuple(physical_state_names),
+                                                             "module"_a = "asperity");
+  physical_state.attr("__doc__") = physical_state_doc;
   m.attr("PhysicalState") = physical_state;
   physical_state_type = physical_state.release();
 

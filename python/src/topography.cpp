@@ -168,14 +168,12 @@ topo::HeightMap map_from_array(py::handle heights, double dx, double dy, std::st
 
 // PhysicalStates as the asperity.PhysicalState record of arrays.
 py::object states_record(py::handle type, const std::vector<PhysicalState>& states) {
-  constexpr std::size_t fields = 9;
+  constexpr std::size_t fields = physical_state_field_count;
   std::vector<py::array_t<double>> arrays;
   for (std::size_t k = 0; k < fields; ++k) arrays.emplace_back(static_cast<py::ssize_t>(states.size()));
   for (std::size_t i = 0; i < states.size(); ++i) {
     const PhysicalState& s = states[i];
-    const double values[fields] = {s.separation, s.mean_separation, s.count, s.real_area, s.area_fraction,
-                                   s.load, s.pressure, s.stiffness, s.stiffness_over_load};
-    for (std::size_t k = 0; k < fields; ++k) arrays[k].mutable_data()[i] = values[k];
+    for (std::size_t k = 0; k < fields; ++k) arrays[k].mutable_data()[i] = s.*physical_state_members[k];
   }
   py::tuple arguments(fields);
   for (std::size_t k = 0; k < fields; ++k) arguments[k] = arrays[k];

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -269,12 +270,23 @@ asperity_model* asperity_model_open(const asperity_table* table, const char* dis
 
 void asperity_model_close(asperity_model* model) { delete model; }
 
+// asperity.h's asperity_physical_state is PhysicalState field for field: its names and order
+// checked here against the one list (physical_state_fields.hpp)
+#define ASPERITY_SAME_FIELD(name, column, meaning)                                            \
+  static_assert(offsetof(asperity_physical_state, name) == offsetof(asperity::PhysicalState, name), \
+                "asperity.h's asperity_physical_state." #name " is out of place");
+ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_SAME_FIELD)
+#undef ASPERITY_SAME_FIELD
+static_assert(sizeof(asperity_physical_state) == sizeof(asperity::PhysicalState),
+              "asperity.h's asperity_physical_state has fields PhysicalState lacks");
+
 static int physical_query(const asperity_model* model, double input, asperity_physical_state* out,
                           asperity::PhysicalState (asperity::ContactModel::*query)(double) const noexcept) {
   if (!model || !out) return ASPERITY_BAD_HANDLE;
   const asperity::PhysicalState state = (model->model.*query)(input);
-  *out = {state.separation, state.mean_separation, state.count, state.real_area, state.area_fraction,
-          state.load, state.pressure, state.stiffness, state.stiffness_over_load};
+#define ASPERITY_COPY_FIELD(name, column, meaning) out->name = state.name;
+  ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_COPY_FIELD)
+#undef ASPERITY_COPY_FIELD
   if (std::isnan(input)) return ASPERITY_BAD_SEPARATION;
   // the count is NaN for a number in only where the separation is not served (a scene table's range)
   return std::isnan(state.count) ? ASPERITY_OUTSIDE_RANGE : ASPERITY_OK;

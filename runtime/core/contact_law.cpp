@@ -2,6 +2,8 @@
 // (sources in docs/contact-laws.md).
 #include "asperity/contact_law.hpp"
 
+#include "asperity/law_combination.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -31,13 +33,15 @@ ContactLaw bad_law(ContactLawKind kind) noexcept {
   return law;
 }
 
-// Hertz: P = (4/3) E* R^1/2 w^3/2, A = pi R w, dP/dw = 2 E* (R w)^1/2
+// Hertz: P = (4/3) E* R^1/2 w^3/2, A = pi R w, dP/dw = 2 E* (R w)^1/2: the numbers are
+// law_combination.hpp's hertz_combination, the same that the rough-surface kernels multiply
+constexpr const double (&hertz_numbers)[4] = hertz_combination.multiplier;  // count, area, load, stiffness
 AsperityResponse hertz(double radius, double modulus, double w) noexcept {
   const double root = std::sqrt(radius * w);
-  return {(4.0 / 3.0) * modulus * root * w, pi * radius * w, 2 * modulus * root};
+  return {hertz_numbers[2] * modulus * root * w, hertz_numbers[1] * radius * w, hertz_numbers[3] * modulus * root};
 }
 double hertz_load(double radius, double modulus, double w) noexcept {
-  return (4.0 / 3.0) * modulus * std::sqrt(radius * w) * w;
+  return hertz_numbers[2] * modulus * std::sqrt(radius * w) * w;
 }
 
 // Elastic-plastic laws share: R, E*, omega_c, P_c = Hertz at omega_c, A_c = pi R omega_c.
