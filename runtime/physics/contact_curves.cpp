@@ -75,6 +75,9 @@ struct ContactCurves::Impl {
     return interval;
   }
   bool served(double u) const noexcept { return u >= nodes.front() && u <= nodes.back(); }
+  // exp(ln p) within the stored end pressures: at the end nodes rounding could put it a hair
+  // outside the pressures served, which the inverse would refuse
+  double clamped(double p) const noexcept { return std::min(std::max(p, data.pressure.back()), data.pressure.front()); }
 };
 
 ContactCurves::ContactCurves(ContactCurvesData data) {
@@ -132,7 +135,7 @@ double ContactCurves::pressure(double separation) const noexcept {
   if (!impl_->served(separation)) return nan;
   double t;
   const Interval& i = impl_->locate(separation, t);
-  return std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1));
+  return impl_->clamped(std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1)));
 }
 
 double ContactCurves::stiffness(double separation) const noexcept {
@@ -154,7 +157,7 @@ ContactCurvesState ContactCurves::at_separation(double separation) const noexcep
   double t;
   const Interval& i = impl_->locate(separation, t);
   const double p = std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1));
-  return {separation, p, -p * hermite_slope(t, i.y0, i.y1, i.m0, i.m1) * i.inverse_h,
+  return {separation, impl_->clamped(p), -p * hermite_slope(t, i.y0, i.y1, i.m0, i.m1) * i.inverse_h,
           std::exp(hermite(t, i.a0, i.a1, i.b0, i.b1))};
 }
 
