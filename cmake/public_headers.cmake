@@ -11,6 +11,7 @@ set(ASPERITY_RUNTIME_HEADERS
   curve.hpp              # one resolved curve: the hot handle
   asymptotic.hpp         # the series beyond the table
   table_data.hpp table.hpp table_file.hpp table_schema.hpp table_writer.hpp
+  contact_curves_data.hpp contact_curves.hpp  # contact curves against separation: a measured surface served
   contact_scales.hpp contact.hpp    # contact_at: the four quantities of a curve
   surface.hpp            # a physical surface, unit conversions and input checks
   inverse.hpp contact_model.hpp persson.hpp
@@ -27,5 +28,6 @@ set(ASPERITY_TOPOGRAPHY_HEADERS
   topography/leveling.hpp topography/statistics.hpp topography/summits.hpp topography/distribution_fit.hpp
   topography/goodness_of_fit.hpp topography/synthetic.hpp topography/surrogates.hpp topography/surface_tests.hpp
   topography/summit_contact.hpp topography/contact_comparison.hpp topography/analysis.hpp
-  topography/surface_report.hpp topography/exact_contact.hpp topography/self_affine.hpp topography/persson_contact.hpp)
+  topography/surface_report.hpp topography/exact_contact.hpp topography/exact_contact_table.hpp topography/self_affine.hpp
+  topography/persson_contact.hpp)
 set(ASPERITY_FORTRAN_SOURCES asperity.f90)

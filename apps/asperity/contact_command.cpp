@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
+#include "asperity/table_file.hpp"
 #include "asperity/error.hpp"
 #include "command_line.hpp"
 #include "asperity/number_text.hpp"
@@ -243,7 +245,119 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
   return exit_success;
 }
 
+// `asperity contact --table FILE` with a contact-curves table (a measured surface's exact
+// contact, asperity exact-contact --table): its served curves at separations or pressures, or
+// their card.
+int run_contact_curves(const Options& options, const CLI::App& command) {
+  if (!options.dist.empty() || !options.side.empty() || given(options.shape) || given(options.sigma) ||
+      given(options.rms) || given(options.radius) || given(options.density) || given(options.count) ||
+      given(options.area) || given(options.modulus) || given(options.e1) || given(options.nu1) ||
+      given(options.e2) || given(options.nu2) || !options.moments.empty())
+    usage("the table '" + quote_text(options.table) +
+          "' holds a measured surface's contact curves: it is the surface (give no --dist, --shape, --sigma, "
+          "--rms, --radius, --density, --count, --area, --modulus, --e1..--nu2, --moments)");
+  if (given(options.load) || given(options.real_area))
+    usage("a measured surface's contact curves are served at a separation or a nominal pressure: --separation, "
+          "--pressure, --sweep separation|pressure, or --export");
+  const int queries =
+      given(options.separation) + given(options.pressure) + !options.sweep.empty() + !options.export_format.empty();
+  if (queries != 1)
+    usage(queries == 0 ? "a query is required: --separation, --pressure, --sweep or --export"
+                       : "give one query: --separation, --pressure, --sweep or --export");
+  Sweep sweep;
+  if (!options.sweep.empty()) {
+    sweep = sweep_from(options.sweep);
+    if (sweep.kind != "separation" && sweep.kind != "pressure")
+      usage("--sweep: a measured surface's curves sweep separation or pressure, not " + sweep.kind);
+  }
+  const ContactCurves curves = ContactCurves::open(options.table);
+  const ContactCurvesData& data = curves.data();
+  note(command, "contact curves of " + data.source + ": " + data.description);
+  note(command, "separation: " + data.separation_datum + "; served from " + number(curves.min_separation()) +
+                    " to " + number(curves.max_separation()) + " m (" + approximately(curves.max_pressure()) + " to " +
+                    approximately(curves.min_pressure()) + " Pa); stored error bound (relative): pressure " +
+                    approximately(data.max_rel_error[0]) + ", stiffness " + approximately(data.max_rel_error[1]) +
+                    ", area fraction " + approximately(data.max_rel_error[2]) + " (" +
+                    approximately(data.safety_factor) + " x the largest measured at " +
+                    std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
+                    approximately(data.solver_tolerance) + ")");
+  if (!options.export_format.empty()) {
+    CardFormat format = CardFormat::csv;
+    CardUnits units = CardUnits::si;
+    OverclosureDatum datum = OverclosureDatum::mean_summit;
+    if (!parse_card_format(options.export_format, format))
+      usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
+    if (!options.units.empty() && !parse_card_units(options.units, units))
+      usage("--units: '" + quote_text(options.units) + "' is not si or mm");
+    if (!options.overclosure_datum.empty() && !parse_overclosure_datum(options.overclosure_datum, datum))
+      usage("--overclosure-datum: '" + quote_text(options.overclosure_datum) +
+            "' is not mean-summit, origin or zero-pressure");
+    double low = curves.min_pressure(), high = curves.max_pressure();
+    if (!options.pressure_range.empty()) {
+      const std::vector<std::string> range = split(options.pressure_range, ':');
+      if (range.size() != 2) usage("--pressure-range wants PMIN:PMAX (Pa), got '" + quote_text(options.pressure_range) + "'");
+      low = number_from_text(range[0], "--pressure-range PMIN");
+      high = number_from_text(range[1], "--pressure-range PMAX");
+      if (!(low > 0 && high > low)) usage("--pressure-range needs 0 < PMIN < PMAX");
+    }
+    const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
+    const std::size_t max_points = options.max_points > 0        ? static_cast<std::size_t>(options.max_points)
+                                   : format == CardFormat::calculix ? calculix_points_max
+                                                                    : card_points_max;
+    const PressureOverclosureTable table = tabulate_pressure_overclosure(curves, low, high, tolerance, datum, max_points);
+    write_pressure_overclosure(std::cout, table, format, units,
+                               "asperity " ASPERITY_VERSION_STRING ": the pressure-overclosure law of a measured "
+                               "surface against a flat, from its contact-curves table\n" +
+                                   data.description + "\nthe table's own error bound (relative, in pressure): " +
+                                   approximately(data.max_rel_error[0]) + " (measured at " +
+                                   std::to_string(data.check_points) + " exact solves between its nodes, times " +
+                                   approximately(data.safety_factor) + ")");
+    if (table.tolerance != tolerance)
+      warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
+                        " points: the card is within " + number(table.tolerance) + " of the curves instead (--max-points)");
+    note(command, std::to_string(table.points.size()) + " points; linear interpolation within " +
+                      number(table.tolerance) + " of the served curve from " + number(low) + " to " + number(high) +
+                      " Pa (measured at most " + approximately(table.max_error) + " at " +
+                      std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
+                      " datum");
+    return exit_success;
+  }
+  if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance) ||
+      options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size))
+    usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
+          "with --export");
+  std::printf("separation_m,separation_from_mean_summit_m,nominal_pressure_Pa,stiffness_per_area_Pa_per_m,"
+              "area_fraction\n");
+  long outside = 0;
+  const auto row = [&](const ContactCurvesState& state) {
+    if (std::isnan(state.pressure)) ++outside;
+    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.separation - data.mean_summit_height,
+                state.pressure, state.stiffness, state.area_fraction);
+  };
+  const auto at = [&](const std::string& kind, double value) {
+    if (kind == "separation") return curves.at_separation(value);
+    ContactCurvesState state = curves.at_pressure(value);
+    state.pressure = value;
+    if (std::isnan(state.separation)) state.stiffness = state.area_fraction = NAN;
+    return state;
+  };
+  if (!options.sweep.empty()) {
+    for (long k = 0; k < sweep.count; ++k) row(at(sweep.kind, sweep_value(sweep, k)));
+  } else if (given(options.separation)) {
+    row(at("separation", options.separation));
+  } else {
+    row(at("pressure", options.pressure));
+  }
+  if (outside > 0)
+    warn(command, std::to_string(outside) + " of the queries lie outside the curves' range (their values are nan): " +
+                      "separations " + number(curves.min_separation()) + " to " + number(curves.max_separation()) +
+                      " m, pressures " + number(curves.min_pressure()) + " to " + number(curves.max_pressure()) + " Pa");
+  return exit_success;
+}
+
 int run_contact(const Options& options, const CLI::App& command) {
+  if (!options.table.empty() && read_table_kind(options.table) == TableKind::contact_curves)
+    return run_contact_curves(options, command);
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
   const int queries = given(options.separation) + given(options.load) + given(options.pressure) +
@@ -378,7 +492,11 @@ void add_contact_command(CLI::App& app) {
       "NODE TO SURFACE contact with this card (at most 200 points: the default --max-points; face-to-face,\n"
       "ccx 2.20: crashes above 41 points and gives zero force at clearances, silently), and makes a\n"
       "contact spring only within a clearance of 1e-3 sqrt(slave node area): --face-size L warns when\n"
-      "the card reaches beyond 1e-3 L.\n" +
+      "the card reaches beyond 1e-3 L.\n"
+      "A measured surface: --table FILE of contact curves (asperity exact-contact --table) is the surface\n"
+      "itself (no --dist ...): --separation (from the table's datum, the map's mean plane), --pressure,\n"
+      "--sweep separation|pressure or --export; CSV separation_m, separation_from_mean_summit_m,\n"
+      "nominal_pressure_Pa, stiffness_per_area_Pa_per_m, area_fraction; nan outside the range served.\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
   set_action(*command, [options, self] { return run_contact(*options, *self); });
