@@ -22,7 +22,8 @@ set(ASPERITY_RUNTIME_HEADERS
   pressure_overclosure.hpp          # FE export: CalculiX/Abaqus pressure-overclosure cards
   number_text.hpp)                  # the one strict number reader and writer
 set(ASPERITY_GENERATOR_HEADERS
-  generator/quadrature.hpp generator/chain_ode.hpp generator/generate.hpp generator/scene_table.hpp)
+  generator/quadrature.hpp generator/chain_ode.hpp generator/generate.hpp generator/scene_table.hpp
+  generator/law_curves.hpp)
 set(ASPERITY_TOPOGRAPHY_HEADERS
   topography/units.hpp topography/height_map.hpp topography/height_map_io.hpp topography/surface_formats.hpp
   topography/leveling.hpp topography/statistics.hpp topography/summits.hpp topography/distribution_fit.hpp

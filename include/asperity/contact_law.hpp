@@ -29,6 +29,8 @@ enum class ContactLawKind {
 // The name used in files and messages ("hertz", "chang-etsion-bogy", "zhao-maietta-chang",
 // "kogut-etsion", "jackson-green", "dmt", "jkr", "maugis-dugdale").
 const char* contact_law_name(ContactLawKind kind) noexcept;
+// The kind of such a name; false (and `kind` untouched) for a name that is not a law's.
+bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept;
 
 // Jackson-Green's geometric hardness H_G/S_y as a function of a/R: the 2005 paper's
 // 2.84 - 0.92 (1 - cos(pi a/R)), or the 2006 rough-surface paper's 2.84 (1 - exp(-0.82 (a/R)^-0.7)).

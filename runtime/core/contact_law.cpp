@@ -221,6 +221,22 @@ const char* contact_law_name(ContactLawKind kind) noexcept {
   return "unknown";
 }
 
+bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept {
+  if (!name) return false;
+  for (ContactLawKind candidate :
+       {ContactLawKind::hertz, ContactLawKind::chang_etsion_bogy, ContactLawKind::zhao_maietta_chang,
+        ContactLawKind::kogut_etsion, ContactLawKind::jackson_green, ContactLawKind::dmt, ContactLawKind::jkr,
+        ContactLawKind::maugis_dugdale}) {
+    const char *a = name, *b = contact_law_name(candidate);
+    while (*a && *a == *b) ++a, ++b;
+    if (*a == 0 && *b == 0) {
+      kind = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
 ContactLaw hertz_law(double radius, double modulus) noexcept {
   if (!positive(radius) || !positive(modulus)) return bad_law(ContactLawKind::hertz);
   ContactLaw law;
