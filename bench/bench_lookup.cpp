@@ -84,6 +84,10 @@
 #include "random_separations.hpp"
 #include "record_kernels.hpp"
 #include "asperity/asperity.h"
+#if ASPERITY_BENCH_LAW_CURVES
+#include "asperity/contact_curves.hpp"
+#include "asperity/generator/law_curves.hpp"
+#endif
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/detail/fast_math.hpp"
@@ -303,6 +307,61 @@ void BM_PhysicalInverseLoad(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_PhysicalInverseLoad);
+
+#if ASPERITY_BENCH_LAW_CURVES
+// A law scene's curves (docs/contact-laws.md section 8): Kogut-Etsion on Gaussian summits, s in
+// [0, 4], 1e-6 (tables/scenes/kogut-etsion.toml's), served by ContactCurves: forward at random
+// separations over the range, and the inverse at the pressures they give; compare with
+// BM_PhysicalForward / BM_PhysicalInverseLoad and BM_ContactAllFour.
+const ContactCurves& law_curves() {
+  static const ContactCurves curves = [] {
+    SceneLaw law;
+    law.law = kogut_etsion_law(1e-4, 1.13e11, 1e9, 0.3);
+    law.distribution = Distribution::gaussian;
+    law.height_scale = 1e-6;
+    law.summit_radius = 1e-4;
+    law.summit_density = 4e8;
+    law.nominal_area = 1e-4;
+    law.range_min = 0;
+    law.range_max = 4;
+    law.max_rel_error = 1e-6;
+    return ContactCurves(generator::generate_law_curves(law).data);
+  }();
+  return curves;
+}
+const std::vector<double>& law_separations() {
+  static const std::vector<double> out = [] {
+    std::vector<double> u;
+    std::uint64_t state = 88172645463325252ull;
+    for (std::size_t i = 0; i < query_count; ++i) {
+      state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+      u.push_back(4e-6 * static_cast<double>(state >> 11) * 0x1p-53);
+    }
+    return u;
+  }();
+  return out;
+}
+void BM_LawCurvesForward(benchmark::State& state) {
+  const ContactCurves& curves = law_curves();
+  const std::vector<double>& u = law_separations();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_separation(u[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LawCurvesForward);
+void BM_LawCurvesInversePressure(benchmark::State& state) {
+  const ContactCurves& curves = law_curves();
+  static const std::vector<double> pressures = [&] {
+    std::vector<double> out;
+    for (double u : law_separations()) out.push_back(curves.pressure(u));
+    return out;
+  }();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_pressure(pressures[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LawCurvesInversePressure);
+#endif
 
 // ---- the batch path ----
 
