@@ -9,7 +9,10 @@
 #include <vector>
 
 #include "asperity/contact_curves.hpp"
+#include "asperity/contact_law.hpp"
 #include "asperity/contact_model.hpp"
+#include "asperity/generator/law_curves.hpp"
+#include "asperity/scene.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/error.hpp"
 #include "command_line.hpp"
@@ -23,6 +26,8 @@ constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
   std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum;
+  std::string law, law_range;  // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
+  double hardness = not_given, yield_strength = not_given, law_poisson = not_given, law_tolerance = not_given;
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
@@ -245,9 +250,68 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
   return exit_success;
 }
 
+int serve_contact_curves(const Options& options, const CLI::App& command, const ContactCurves& curves);
+
+// The queries contact curves answer: one of --separation, --pressure, --sweep, --export
+void check_curve_queries(const Options& options, const std::string& what) {
+  if (given(options.load) || given(options.real_area))
+    usage(what + " are served at a separation or a nominal pressure: --separation, --pressure, --sweep "
+                 "separation|pressure, or --export");
+  const int queries =
+      given(options.separation) + given(options.pressure) + !options.sweep.empty() + !options.export_format.empty();
+  if (queries != 1)
+    usage(queries == 0 ? "a query is required: --separation, --pressure, --sweep or --export"
+                       : "give one query: --separation, --pressure, --sweep or --export");
+}
+
+// `asperity contact --law NAME ...`: the law's rough-surface curves on the surface the options
+// describe, tabulated now by the generator (as tablegen does a law scene: the scene is made of
+// the options, so that its checks and messages are the scene file's) and served as contact curves.
+int run_contact_law(const Options& options, const CLI::App& command) {
+  if (!options.table.empty()) usage("--law tabulates the law's curves itself: give no --table");
+  ContactLawKind kind;
+  if (!contact_law_kind_of(options.law.c_str(), kind))
+    usage("--law: '" + quote_text(options.law) +
+          "' is not hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or jackson-green");
+  if (options.law_range.empty()) throw CLI::RequiredError("--law-range (with --law)");
+  const std::vector<std::string> range = split(options.law_range, ':');
+  if (range.size() != 2) usage("--law-range wants SMIN:SMAX (dimensionless separations), got '" +
+                               quote_text(options.law_range) + "'");
+  const double lo = number_from_text(range[0], "--law-range SMIN"), hi = number_from_text(range[1], "--law-range SMAX");
+  check_curve_queries(options, "a law's curves");
+  std::string given_scale;
+  const RoughSurface surface = surface_from(options, given_scale);
+  std::string scene = "[[law]]\nlaw = \"" + std::string(contact_law_name(kind)) + "\"\n";
+  const auto key = [&](const char* name, double value) { scene += std::string(name) + " = " + number(value) + "\n"; };
+  key("contact_modulus", surface.contact_modulus);
+  if (given(options.hardness)) key("hardness", options.hardness);
+  if (given(options.yield_strength)) key("yield_strength", options.yield_strength);
+  if (given(options.law_poisson)) key("poisson", options.law_poisson);
+  scene += std::string("distribution = \"") + to_string(surface.distribution) + "\"\n";
+  if (surface.distribution == Distribution::weibull) {
+    key("shape", surface.shape);
+    scene += std::string("side = \"") + to_string(surface.side) + "\"\n";
+  }
+  key("height_scale", surface.height_scale);
+  key("summit_radius", surface.summit_radius);
+  key("summit_density", surface.summit_density);
+  key("nominal_area", surface.nominal_area);
+  scene += "separation = [" + number(lo) + ", " + number(hi) + "]\n";
+  key("max_rel_error", given(options.law_tolerance) ? options.law_tolerance : 1e-6);
+  const Scene parsed = parse_scene(scene, "asperity contact --law");
+  if (!given_scale.empty()) note(command, given_scale);
+  const SceneLaw& law = parsed.laws.front();
+  if (std::isfinite(law.law.critical_interference))
+    note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
+                      " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
+                      approximately(plasticity_index(law.law, surface.height_scale)));
+  const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity contact --law");
+  return serve_contact_curves(options, command, ContactCurves(result.data));
+}
+
 // `asperity contact --table FILE` with a contact-curves table (a measured surface's exact
-// contact, asperity exact-contact --table): its served curves at separations or pressures, or
-// their card.
+// contact, asperity exact-contact --table, or a law scene's, tablegen): its served curves at
+// separations or pressures, or their card.
 int run_contact_curves(const Options& options, const CLI::App& command) {
   if (!options.dist.empty() || !options.side.empty() || given(options.shape) || given(options.sigma) ||
       given(options.rms) || given(options.radius) || given(options.density) || given(options.count) ||
@@ -256,21 +320,19 @@ int run_contact_curves(const Options& options, const CLI::App& command) {
     usage("the table '" + quote_text(options.table) +
           "' holds a measured surface's contact curves: it is the surface (give no --dist, --shape, --sigma, "
           "--rms, --radius, --density, --count, --area, --modulus, --e1..--nu2, --moments)");
-  if (given(options.load) || given(options.real_area))
-    usage("a measured surface's contact curves are served at a separation or a nominal pressure: --separation, "
-          "--pressure, --sweep separation|pressure, or --export");
-  const int queries =
-      given(options.separation) + given(options.pressure) + !options.sweep.empty() + !options.export_format.empty();
-  if (queries != 1)
-    usage(queries == 0 ? "a query is required: --separation, --pressure, --sweep or --export"
-                       : "give one query: --separation, --pressure, --sweep or --export");
+  check_curve_queries(options, "a table's contact curves");
+  return serve_contact_curves(options, command, ContactCurves::open(options.table));
+}
+
+// Contact curves (a contact-curves table's, or a law's made by --law) at separations or
+// pressures, or their card
+int serve_contact_curves(const Options& options, const CLI::App& command, const ContactCurves& curves) {
   Sweep sweep;
   if (!options.sweep.empty()) {
     sweep = sweep_from(options.sweep);
     if (sweep.kind != "separation" && sweep.kind != "pressure")
-      usage("--sweep: a measured surface's curves sweep separation or pressure, not " + sweep.kind);
+      usage("--sweep: contact curves sweep separation or pressure, not " + sweep.kind);
   }
-  const ContactCurves curves = ContactCurves::open(options.table);
   const ContactCurvesData& data = curves.data();
   note(command, "contact curves of " + data.source + ": " + data.description);
   note(command, "separation: " + data.separation_datum + "; served from " + number(curves.min_separation()) +
@@ -306,8 +368,10 @@ int run_contact_curves(const Options& options, const CLI::App& command) {
                                                                     : card_points_max;
     const PressureOverclosureTable table = tabulate_pressure_overclosure(curves, low, high, tolerance, datum, max_points);
     write_pressure_overclosure(std::cout, table, format, units,
-                               "asperity " ASPERITY_VERSION_STRING ": the pressure-overclosure law of a measured "
-                               "surface against a flat, from its contact-curves table\n" +
+                               std::string("asperity " ASPERITY_VERSION_STRING ": the pressure-overclosure law of a ") +
+                                   (data.source.rfind("contact-law", 0) == 0 ? "rough surface under a contact law"
+                                                                             : "measured surface") +
+                                   " against a flat, from its contact-curves table (" + data.source + ")\n" +
                                    data.description + "\nthe table's own error bound (relative, in pressure): " +
                                    approximately(data.max_rel_error[0]) + " (measured at " +
                                    std::to_string(data.check_points) + " exact solves between its nodes, times " +
@@ -356,6 +420,10 @@ int run_contact_curves(const Options& options, const CLI::App& command) {
 }
 
 int run_contact(const Options& options, const CLI::App& command) {
+  if (!options.law.empty()) return run_contact_law(options, command);
+  if (!options.law_range.empty() || given(options.hardness) || given(options.yield_strength) ||
+      given(options.law_poisson) || given(options.law_tolerance))
+    usage("--law-range, --hardness, --yield-strength, --law-poisson and --law-tolerance go with --law");
   if (!options.table.empty() && read_table_kind(options.table) == TableKind::contact_curves)
     return run_contact_curves(options, command);
   std::string given_scale;
@@ -446,6 +514,24 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--moments", o.moments,
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
+  add_text(*command, "--law", o.law,
+           "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or "
+           "jackson-green, tabulated now on the surface given (docs/contact-laws.md section 8); queries "
+           "--separation, --pressure, --sweep separation|pressure, --export")
+      ->type_name("NAME")->group("Contact law");
+  add_text(*command, "--law-range", o.law_range,
+           "with --law: the dimensionless separations s tabulated (origin convention; required)")
+      ->type_name("SMIN:SMAX")->group("Contact law");
+  add_number(*command, "--hardness", o.hardness, "with --law chang-etsion-bogy or zhao-maietta-chang: hardness H [Pa]")
+      ->type_name("PA")->group("Contact law");
+  add_number(*command, "--yield-strength", o.yield_strength,
+             "with --law kogut-etsion or jackson-green: yield strength Y [Pa]")
+      ->type_name("PA")->group("Contact law");
+  add_number(*command, "--law-poisson", o.law_poisson,
+             "with --law chang-etsion-bogy, kogut-etsion or jackson-green: Poisson's ratio of the asperity")
+      ->type_name("X")->group("Contact law");
+  add_number(*command, "--law-tolerance", o.law_tolerance, "with --law: the curves' relative error (default 1e-6)")
+      ->type_name("REL")->group("Contact law");
   add_number(*command, "--separation", o.separation, "at a separation [m] (origin convention)")->type_name("M")->group("Query (one)");
   add_number(*command, "--load", o.load, "at a load [N]")->type_name("N")->group("Query (one)");
   add_number(*command, "--pressure", o.pressure, "at a nominal pressure [Pa]")->type_name("PA")->group("Query (one)");
