@@ -14,8 +14,8 @@ cmake_minimum_required(VERSION 3.18)
 #    public header includes only public headers.
 set(layer_core integrals model layout curve asymptotic instruction_set error segment_kind contact_scales number_text
     contact_law)
-set(layer_table table table_schema table_data table_file table_writer)
-set(layer_physics contact contact_model inverse surface persson)
+set(layer_table table table_schema table_data table_file table_writer contact_curves_data)
+set(layer_physics contact contact_model inverse surface persson contact_curves)
 set(layer_scene scene scene_curves)
 set(layer_fe_export pressure_overclosure)
 set(layer_c_api asperity)
