@@ -18,7 +18,7 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // One interval [u0, u0 + h] of both cubic Hermites in t = (u - u0) / h: values at its ends and
 // slopes times h.
 struct Interval {
-  double u0, inverse_h;
+  double u0, u1, inverse_h;
   double y0, y1, m0, m1;  // ln p
   double a0, a1, b0, b1;  // ln(area fraction)
 };
@@ -95,6 +95,7 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
     const double h = impl->nodes[i + 1] - impl->nodes[i];
     Interval interval{};
     interval.u0 = impl->nodes[i];
+    interval.u1 = impl->nodes[i + 1];
     interval.inverse_h = 1 / h;
     interval.y0 = impl->log_pressures[i];
     interval.y1 = impl->log_pressures[i + 1];
@@ -173,7 +174,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
   k = k == 0 ? 0 : std::min(k - 1, impl.intervals.size() - 1);
   const Interval& i = impl.intervals[k];
   if (y >= i.y0) return i.u0;
-  if (y <= i.y1) return k + 1 < impl.nodes.size() ? impl.nodes[k + 1] : impl.nodes.back();
+  if (y <= i.y1) return i.u1;
   // Newton on the monotone cubic, kept inside the bracket [lo, hi] by bisection
   double lo = 0, hi = 1, t = (y - i.y0) / (i.y1 - i.y0);
   for (int iteration = 0; iteration < 100; ++iteration) {
@@ -190,7 +191,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
     }
     t = next;
   }
-  return i.u0 + t / i.inverse_h;
+  return std::min(i.u0 + t / i.inverse_h, i.u1);  // t < 1, but its rounding must not pass the node
 }
 
 ContactCurvesState ContactCurves::at_pressure(double pressure) const noexcept {
