@@ -59,6 +59,11 @@
 //   BM_OursSameSegment, BM_Boost*    the far-tail segment of Weibull a = 2 X_3/2: ours against
 //                                    Boost.Math's interpolators on the table's knots and map
 //   BM_PhysicalForward, BM_PhysicalInverseLoad     ContactModel forward (separation) and inverse (load)
+//   BM_ContactCurves*/nodes:N        a contact-curves table (a measured surface's exact contact,
+//                                    contact_curves.hpp) of N nodes (a smooth law's, made here):
+//                                    Pressure, AtSeparation (pressure, stiffness, area), Inverse
+//                                    (separation at a pressure); against BM_Scalar/twice_order:3
+//                                    and BM_PhysicalForward
 // Counters: curve_bytes (Curve::memory_bytes, all six orders), grid_intervals (per order),
 // underflow_fraction (quadrature: share of queries whose X underflows to 0 in double).
 #include <benchmark/benchmark.h>
@@ -85,10 +90,10 @@
 #include "record_kernels.hpp"
 #include "asperity/asperity.h"
 #if ASPERITY_BENCH_LAW_CURVES
-#include "asperity/contact_curves.hpp"
 #include "asperity/generator/law_curves.hpp"
 #endif
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/detail/fast_math.hpp"
 #include "asperity/table.hpp"
@@ -362,6 +367,64 @@ void BM_LawCurvesInversePressure(benchmark::State& state) {
 }
 BENCHMARK(BM_LawCurvesInversePressure);
 #endif
+
+// ---- contact curves against separation (a measured surface as a table) ----
+
+// N nodes of ln p(u) = -u/lambda - (u/mu)^3 over 0.1 to 1.1 um, k = -dp/du, a ~ p: the shape of
+// an exact solve's curves, made here so that the benchmark needs no file.
+const ContactCurves& contact_curves(int nodes) {
+  static std::vector<std::unique_ptr<ContactCurves>> made(2);
+  auto& slot = made[nodes == 33 ? 0 : 1];
+  if (!slot) {
+    ContactCurvesData data;
+    data.source = "benchmark";
+    const double lambda = 0.2e-6, mu = 0.5e-6;
+    for (int i = 0; i < nodes; ++i) {
+      const double u = 0.1e-6 + 1e-6 * i / (nodes - 1);
+      const double p = 1e8 * std::exp(-u / lambda - std::pow(u / mu, 3));
+      data.separation.push_back(u);
+      data.pressure.push_back(p);
+      data.stiffness.push_back(p * (1 / lambda + 3 / mu * std::pow(u / mu, 2)));
+      data.area_fraction.push_back(0.5 * p / 1e8);
+    }
+    data.contact_modulus = 1e11;
+    data.nominal_area = 1e-6;
+    slot = std::make_unique<ContactCurves>(data);
+  }
+  return *slot;
+}
+const std::vector<double>& contact_curve_separations() {
+  static const std::vector<double> values = bench::uniform(0.1e-6, 1.1e-6, query_count, 31);
+  return values;
+}
+
+void BM_ContactCurvesPressure(benchmark::State& state) {
+  const ContactCurves& curves = contact_curves(static_cast<int>(state.range(0)));
+  const std::vector<double>& separations = contact_curve_separations();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.pressure(separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactCurvesPressure)->Arg(33)->Arg(257)->ArgName("nodes");
+
+void BM_ContactCurvesAtSeparation(benchmark::State& state) {
+  const ContactCurves& curves = contact_curves(static_cast<int>(state.range(0)));
+  const std::vector<double>& separations = contact_curve_separations();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_separation(separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactCurvesAtSeparation)->Arg(33)->Arg(257)->ArgName("nodes");
+
+void BM_ContactCurvesInverse(benchmark::State& state) {
+  const ContactCurves& curves = contact_curves(static_cast<int>(state.range(0)));
+  std::vector<double> pressures;
+  for (double u : contact_curve_separations()) pressures.push_back(curves.pressure(u));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.separation_at_pressure(pressures[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactCurvesInverse)->Arg(33)->Arg(257)->ArgName("nodes");
 
 // ---- the batch path ----
 

@@ -104,6 +104,31 @@ TEST(ContactCurvesInterpolant, StaysMonotoneWithInconsistentSlopes) {
   EXPECT_EQ(curves.area_fraction(data.separation[0] + 0.5 * (data.separation[1] - data.separation[0])), 0.5);
 }
 
+TEST(ContactCurvesInterpolant, UnevenNodesFindTheirIntervals) {
+  // nodes crowded at one end (a bin of the lookup's directory spans many intervals) and far
+  // apart at the other: every query lands in its own interval (between its nodes' values)
+  ContactCurvesData data = closed_form(200, 3);
+  for (std::size_t i = 0; i < data.separation.size(); ++i) {
+    const double f = static_cast<double>(i) / 199, u = 0.1e-6 + 1e-6 * f * f * f * f;
+    const double log_p = -u / 0.2e-6 - std::pow(u / 0.5e-6, 3);
+    data.separation[i] = u;
+    data.pressure[i] = 1e8 * std::exp(log_p);
+    data.stiffness[i] = data.pressure[i] * (1 / 0.2e-6 + 3 / 0.5e-6 * std::pow(u / 0.5e-6, 2));
+    data.area_fraction[i] = 0.5 * std::exp(log_p);
+  }
+  const ContactCurves curves(data);
+  for (std::size_t i = 0; i + 1 < data.separation.size(); ++i) {
+    for (double f : {0.0, 1e-9, 0.5, 1 - 1e-9}) {
+      const double u = data.separation[i] + f * (data.separation[i + 1] - data.separation[i]);
+      const double p = curves.pressure(u);
+      EXPECT_LE(p, data.pressure[i] * (1 + 1e-14)) << i;  // exp(ln p) rounds
+      EXPECT_GE(p, data.pressure[i + 1] * (1 - 1e-14)) << i;
+      EXPECT_NEAR(p / closed_form_pressure(u, 3), 1, 1e-12) << i;
+    }
+    EXPECT_NEAR(curves.pressure(data.separation[i]) / data.pressure[i], 1, 1e-14);
+  }
+}
+
 TEST(ContactCurvesInterpolant, OutsideTheRangeIsNaN) {
   const ContactCurves curves(closed_form(5, 3));
   const double nan = std::numeric_limits<double>::quiet_NaN();

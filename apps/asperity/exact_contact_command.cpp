@@ -283,7 +283,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
          << table.data.measured_rel_error[2] << " (stored bounds " << table.data.safety_factor << " times these)";
     if (table.limited_intervals > 0)
       line << "; " << table.limited_intervals << " intervals limited to keep the pressure monotone";
-    if (!o.quiet) note(command, line.str());
+    note(command, line.str());  // what the table states, not progress: also with --quiet
   }
   if (!o.card.empty()) {
     if (!std::isfinite(solver.mean_summit_height())) throw Error("the map has no summits: the card's datum (the mean summit height) does not exist");

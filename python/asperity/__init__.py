@@ -32,6 +32,7 @@ import sys as _sys
 from ._asperity import (  # noqa: F401
     ALL_ORDERS,
     ORDER_COUNT,
+    ContactCurves,
     ContactModel,
     ContactState,
     Curve,
@@ -85,7 +86,7 @@ _sys.modules[__name__ + ".topography"] = topography
 from . import batch  # noqa: E402,F401 (pure Python; imports dask only when it runs)
 
 __all__ = [
-    "ALL_ORDERS", "ORDER_COUNT", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
+    "ALL_ORDERS", "ORDER_COUNT", "ContactCurves", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
     "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",
     "batch", "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",

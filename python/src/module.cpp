@@ -18,6 +18,7 @@
 #include "bindings.hpp"
 #include "paths.hpp"
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "asperity/instruction_set.hpp"
@@ -586,6 +587,118 @@ void bind(py::module_& m) {
             return map_scalar(separation.object, "separation", [&](double d) { return model.dimensionless(d); });
           },
           "separation"_a, "s = d / sigma_s.");
+
+  py::class_<ContactCurves>(m, "ContactCurves",
+                            "Contact curves against separation, served: a measured surface's exact contact tabulated\n"
+                            "(asperity exact-contact --table; docs/exact-contact.md). Separation [m] from the table's\n"
+                            "datum (separation_datum: a map's mean plane), nominal pressure [Pa], stiffness -dp/du\n"
+                            "[Pa/m], real area fraction; NaN outside the range served (the first to the last node).\n"
+                            "Immutable: one object may serve many threads.")
+      .def(py::init([](const PathName& path) { return ContactCurves::open(to_path(path.object)); }), "path"_a,
+           "Opens and validates a contact-curves table (HDF5); raises asperity.Error naming the file and the problem.")
+      .def_static("open", [](const PathName& path) { return ContactCurves::open(to_path(path.object)); }, "path"_a,
+                  "The same as ContactCurves(path).")
+      .def(
+          "pressure",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.pressure(v); });
+          },
+          "separation"_a, "The nominal pressure [Pa] at separations [m] (float or array).")
+      .def(
+          "stiffness",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.stiffness(v); });
+          },
+          "separation"_a, "The stiffness per area -dp/du [Pa/m] at separations [m].")
+      .def(
+          "area_fraction",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.area_fraction(v); });
+          },
+          "separation"_a, "The real contact area over the nominal area at separations [m].")
+      .def(
+          "separation_at_pressure",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "pressure", [&](double v) { return curves.separation_at_pressure(v); });
+          },
+          "pressure"_a, "The separation [m] where the served pressure is `pressure` [Pa] (the inverse); NaN outside the range.")
+      .def(
+          "pressure_overclosure_card",
+          [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,
+             double tolerance, const std::string& format, const std::string& units, const std::string& description,
+             const std::string& datum) {
+            OverclosureDatum which;
+            if (!parse_overclosure_datum(datum, which))
+              throw Error("unknown overclosure datum '" + datum + "' (mean-summit, origin, zero-pressure)");
+            const PressureOverclosureTable table = tabulate_pressure_overclosure(
+                curves, pressure_min.value_or(curves.min_pressure()), pressure_max.value_or(curves.max_pressure()),
+                tolerance, which);
+            std::ostringstream out;
+            write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
+            return out.str();
+          },
+          "pressure_min"_a = py::none(), "pressure_max"_a = py::none(), "tolerance"_a = 1e-3, "format"_a = "calculix",
+          "units"_a = "si", "description"_a = "", "datum"_a = "mean-summit",
+          "FE export: the served pressure as the tabular pressure-overclosure card of CalculiX or Abaqus (or CSV),\n"
+          "overclosure from the mean summit height (datum 'mean-summit'), or 'origin' (the separation's datum) or\n"
+          "'zero-pressure'; the pressures default to the whole range served. Raises asperity.Error for a range\n"
+          "beyond the curves' or a bad tolerance.")
+      .def_property_readonly("min_separation", &ContactCurves::min_separation)
+      .def_property_readonly("max_separation", &ContactCurves::max_separation)
+      .def_property_readonly("min_pressure", &ContactCurves::min_pressure, "At max_separation [Pa].")
+      .def_property_readonly("max_pressure", &ContactCurves::max_pressure, "At min_separation [Pa].")
+      .def_property_readonly("limited_intervals", &ContactCurves::limited_intervals,
+                             "Intervals whose Hermite slopes were limited to keep ln p monotone.")
+      .def_property_readonly(
+          "max_rel_error",
+          [](const ContactCurves& c) {
+            const double* e = c.data().max_rel_error;
+            return py::make_tuple(e[0], e[1], e[2]);
+          },
+          "The stored bound (relative) of the served (pressure, stiffness, area fraction): measured_rel_error\n"
+          "times safety_factor.")
+      .def_property_readonly(
+          "measured_rel_error",
+          [](const ContactCurves& c) {
+            const double* e = c.data().measured_rel_error;
+            return py::make_tuple(e[0], e[1], e[2]);
+          },
+          "The largest relative errors measured against exact solves between the nodes (check_points of them).")
+      .def_property_readonly("check_points", [](const ContactCurves& c) { return c.data().check_points; })
+      .def_property_readonly("safety_factor", [](const ContactCurves& c) { return c.data().safety_factor; })
+      .def_property_readonly("solver_tolerance", [](const ContactCurves& c) { return c.data().solver_tolerance; },
+                             "The solves' own convergence tolerance (relative residual).")
+      .def_property_readonly("contact_modulus", [](const ContactCurves& c) { return c.data().contact_modulus; })
+      .def_property_readonly("nominal_area", [](const ContactCurves& c) { return c.data().nominal_area; })
+      .def_property_readonly("mean_summit_height", [](const ContactCurves& c) { return c.data().mean_summit_height; },
+                             "Above the separation's datum [m] (NaN: not stated).")
+      .def_property_readonly("max_height", [](const ContactCurves& c) { return c.data().max_height; },
+                             "The highest point above the separation's datum [m] (NaN: not stated).")
+      .def_property_readonly("source", [](const ContactCurves& c) { return c.data().source; })
+      .def_property_readonly("description", [](const ContactCurves& c) { return path_text(c.data().description); })
+      .def_property_readonly("separation_datum", [](const ContactCurves& c) { return c.data().separation_datum; })
+      .def_property_readonly("generator", [](const ContactCurves& c) { return c.data().generator; })
+      .def_property_readonly("generator_options", [](const ContactCurves& c) { return c.data().generator_options; })
+      .def_property_readonly(
+          "nodes",
+          [](const ContactCurves& c) {
+            const ContactCurvesData& d = c.data();
+            py::dict nodes;
+            nodes["separation"] = py::array_t<double>(d.separation.size(), d.separation.data());
+            nodes["pressure"] = py::array_t<double>(d.pressure.size(), d.pressure.data());
+            nodes["stiffness"] = py::array_t<double>(d.stiffness.size(), d.stiffness.data());
+            nodes["area_fraction"] = py::array_t<double>(d.area_fraction.size(), d.area_fraction.data());
+            return nodes;
+          },
+          "The table's nodes: arrays separation, pressure, stiffness, area_fraction (copies).")
+      .def("__copy__", [](const ContactCurves& c) { return c; })
+      .def("__deepcopy__", [](const ContactCurves& c, py::dict) { return c; }, "memo"_a)
+      .def("__repr__", [](const ContactCurves& c) {
+        std::ostringstream text;
+        text << "<asperity.ContactCurves of " << c.data().source << ": " << c.data().separation.size()
+             << " nodes, separations " << c.min_separation() << " to " << c.max_separation() << " m>";
+        return text.str();
+      });
 
   py::class_<PerssonLaw>(m, "PerssonLaw",
                          "Persson's (2007) law for comparison: p = reference_pressure exp(-s / beta).")

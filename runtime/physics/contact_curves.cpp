@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -18,7 +19,7 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // One interval [u0, u0 + h] of both cubic Hermites in t = (u - u0) / h: values at its ends and
 // slopes times h.
 struct Interval {
-  double u0, inverse_h;
+  double u0, u1, inverse_h;
   double y0, y1, m0, m1;  // ln p
   double a0, a1, b0, b1;  // ln(area fraction)
 };
@@ -65,11 +66,27 @@ struct ContactCurves::Impl {
   std::vector<double> log_pressures;  // at the nodes, descending
   std::vector<Interval> intervals;
   std::size_t limited = 0;
+  // A directory of equal bins over the range: bin b starts in interval directory[b], so a query
+  // searches only the intervals its bin overlaps (one or two when the nodes are about evenly
+  // spread; a bisection over those otherwise).
+  std::vector<std::uint32_t> directory;  // bins + 1 entries
+  double bin_scale = 0;
 
   // The interval holding u (inside the range), and t in it.
   const Interval& locate(double u, double& t) const noexcept {
-    std::size_t i = static_cast<std::size_t>(std::upper_bound(nodes.begin(), nodes.end(), u) - nodes.begin());
-    i = i == 0 ? 0 : std::min(i - 1, intervals.size() - 1);
+    const std::size_t bins = directory.size() - 1;
+    const double x = (u - nodes.front()) * bin_scale;  // >= 0; not a number only for a degenerate span
+    const std::size_t b = x < static_cast<double>(bins) ? static_cast<std::size_t>(x) : bins - 1;
+    const std::size_t first = directory[b], last = directory[b + 1];  // u lies in an interval first..last
+    std::size_t i = first;
+    if (last > first)
+      i = static_cast<std::size_t>(std::upper_bound(nodes.begin() + first + 1, nodes.begin() + last + 1, u) -
+                                   nodes.begin()) - 1;
+    // where rounding put u in a neighbouring bin: the whole search
+    if (!(u >= nodes[i] && (u < nodes[i + 1] || i + 1 == intervals.size()))) {
+      i = static_cast<std::size_t>(std::upper_bound(nodes.begin(), nodes.end(), u) - nodes.begin());
+      i = i == 0 ? 0 : std::min(i - 1, intervals.size() - 1);
+    }
     const Interval& interval = intervals[i];
     t = (u - interval.u0) * interval.inverse_h;
     return interval;
@@ -95,6 +112,7 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
     const double h = impl->nodes[i + 1] - impl->nodes[i];
     Interval interval{};
     interval.u0 = impl->nodes[i];
+    interval.u1 = impl->nodes[i + 1];
     interval.inverse_h = 1 / h;
     interval.y0 = impl->log_pressures[i];
     interval.y1 = impl->log_pressures[i + 1];
@@ -117,6 +135,17 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
     interval.b0 = area_slopes[i] * h;
     interval.b1 = area_slopes[i + 1] * h;
     impl->intervals.push_back(interval);
+  }
+  // four bins an interval: evenly spread nodes put each bin in one or two intervals
+  const std::size_t bins = 4 * (n - 1);
+  const double low = impl->nodes.front(), span = impl->nodes.back() - low;
+  impl->bin_scale = static_cast<double>(bins) / span;  // span > 0 (validated); inf only if subnormal
+  impl->directory.resize(bins + 1);
+  std::size_t interval = 0;
+  for (std::size_t b = 0; b <= bins; ++b) {
+    const double edge = b == bins ? impl->nodes.back() : low + span * static_cast<double>(b) / static_cast<double>(bins);
+    while (interval + 1 < n - 1 && impl->nodes[interval + 1] <= edge) ++interval;
+    impl->directory[b] = static_cast<std::uint32_t>(interval);
   }
   impl->data = std::move(data);
   impl_ = std::move(impl);
@@ -173,7 +202,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
   k = k == 0 ? 0 : std::min(k - 1, impl.intervals.size() - 1);
   const Interval& i = impl.intervals[k];
   if (y >= i.y0) return i.u0;
-  if (y <= i.y1) return k + 1 < impl.nodes.size() ? impl.nodes[k + 1] : impl.nodes.back();
+  if (y <= i.y1) return i.u1;
   // Newton on the monotone cubic, kept inside the bracket [lo, hi] by bisection
   double lo = 0, hi = 1, t = (y - i.y0) / (i.y1 - i.y0);
   for (int iteration = 0; iteration < 100; ++iteration) {
@@ -190,7 +219,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
     }
     t = next;
   }
-  return i.u0 + t / i.inverse_h;
+  return std::min(i.u0 + t / i.inverse_h, i.u1);  // t < 1, but its rounding must not pass the node
 }
 
 ContactCurvesState ContactCurves::at_pressure(double pressure) const noexcept {
