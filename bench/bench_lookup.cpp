@@ -59,6 +59,11 @@
 //   BM_OursSameSegment, BM_Boost*    the far-tail segment of Weibull a = 2 X_3/2: ours against
 //                                    Boost.Math's interpolators on the table's knots and map
 //   BM_PhysicalForward, BM_PhysicalInverseLoad     ContactModel forward (separation) and inverse (load)
+//   BM_ContactCurves*/nodes:N        a contact-curves table (a measured surface's exact contact,
+//                                    contact_curves.hpp) of N nodes (a smooth law's, made here):
+//                                    Pressure, AtSeparation (pressure, stiffness, area), Inverse
+//                                    (separation at a pressure); against BM_Scalar/twice_order:3
+//                                    and BM_PhysicalForward
 // Counters: curve_bytes (Curve::memory_bytes, all six orders), grid_intervals (per order),
 // underflow_fraction (quadrature: share of queries whose X underflows to 0 in double).
 #include <benchmark/benchmark.h>
@@ -84,7 +89,11 @@
 #include "random_separations.hpp"
 #include "record_kernels.hpp"
 #include "asperity/asperity.h"
+#if ASPERITY_BENCH_LAW_CURVES
+#include "asperity/generator/law_curves.hpp"
+#endif
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/detail/fast_math.hpp"
 #include "asperity/table.hpp"
@@ -303,6 +312,119 @@ void BM_PhysicalInverseLoad(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_PhysicalInverseLoad);
+
+#if ASPERITY_BENCH_LAW_CURVES
+// A law scene's curves (docs/contact-laws.md section 8): Kogut-Etsion on Gaussian summits, s in
+// [0, 4], 1e-6 (tables/scenes/kogut-etsion.toml's), served by ContactCurves: forward at random
+// separations over the range, and the inverse at the pressures they give; compare with
+// BM_PhysicalForward / BM_PhysicalInverseLoad and BM_ContactAllFour.
+const ContactCurves& law_curves() {
+  static const ContactCurves curves = [] {
+    SceneLaw law;
+    law.law = kogut_etsion_law(1e-4, 1.13e11, 1e9, 0.3);
+    law.distribution = Distribution::gaussian;
+    law.height_scale = 1e-6;
+    law.summit_radius = 1e-4;
+    law.summit_density = 4e8;
+    law.nominal_area = 1e-4;
+    law.range_min = 0;
+    law.range_max = 4;
+    law.max_rel_error = 1e-6;
+    return ContactCurves(generator::generate_law_curves(law).data);
+  }();
+  return curves;
+}
+const std::vector<double>& law_separations() {
+  static const std::vector<double> out = [] {
+    std::vector<double> u;
+    std::uint64_t state = 88172645463325252ull;
+    for (std::size_t i = 0; i < query_count; ++i) {
+      state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+      u.push_back(4e-6 * static_cast<double>(state >> 11) * 0x1p-53);
+    }
+    return u;
+  }();
+  return out;
+}
+void BM_LawCurvesForward(benchmark::State& state) {
+  const ContactCurves& curves = law_curves();
+  const std::vector<double>& u = law_separations();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_separation(u[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LawCurvesForward);
+void BM_LawCurvesInversePressure(benchmark::State& state) {
+  const ContactCurves& curves = law_curves();
+  static const std::vector<double> pressures = [&] {
+    std::vector<double> out;
+    for (double u : law_separations()) out.push_back(curves.pressure(u));
+    return out;
+  }();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_pressure(pressures[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LawCurvesInversePressure);
+#endif
+
+// ---- contact curves against separation (a measured surface as a table) ----
+
+// N nodes of ln p(u) = -u/lambda - (u/mu)^3 over 0.1 to 1.1 um, k = -dp/du, a ~ p: the shape of
+// an exact solve's curves, made here so that the benchmark needs no file.
+const ContactCurves& contact_curves(int nodes) {
+  static std::vector<std::unique_ptr<ContactCurves>> made(2);
+  auto& slot = made[nodes == 33 ? 0 : 1];
+  if (!slot) {
+    ContactCurvesData data;
+    data.source = "benchmark";
+    const double lambda = 0.2e-6, mu = 0.5e-6;
+    for (int i = 0; i < nodes; ++i) {
+      const double u = 0.1e-6 + 1e-6 * i / (nodes - 1);
+      const double p = 1e8 * std::exp(-u / lambda - std::pow(u / mu, 3));
+      data.separation.push_back(u);
+      data.pressure.push_back(p);
+      data.stiffness.push_back(p * (1 / lambda + 3 / mu * std::pow(u / mu, 2)));
+      data.area_fraction.push_back(0.5 * p / 1e8);
+    }
+    data.contact_modulus = 1e11;
+    data.nominal_area = 1e-6;
+    slot = std::make_unique<ContactCurves>(data);
+  }
+  return *slot;
+}
+const std::vector<double>& contact_curve_separations() {
+  static const std::vector<double> values = bench::uniform(0.1e-6, 1.1e-6, query_count, 31);
+  return values;
+}
+
+void BM_ContactCurvesPressure(benchmark::State& state) {
+  const ContactCurves& curves = contact_curves(static_cast<int>(state.range(0)));
+  const std::vector<double>& separations = contact_curve_separations();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.pressure(separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactCurvesPressure)->Arg(33)->Arg(257)->ArgName("nodes");
+
+void BM_ContactCurvesAtSeparation(benchmark::State& state) {
+  const ContactCurves& curves = contact_curves(static_cast<int>(state.range(0)));
+  const std::vector<double>& separations = contact_curve_separations();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_separation(separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactCurvesAtSeparation)->Arg(33)->Arg(257)->ArgName("nodes");
+
+void BM_ContactCurvesInverse(benchmark::State& state) {
+  const ContactCurves& curves = contact_curves(static_cast<int>(state.range(0)));
+  std::vector<double> pressures;
+  for (double u : contact_curve_separations()) pressures.push_back(curves.pressure(u));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.separation_at_pressure(pressures[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ContactCurvesInverse)->Arg(33)->Arg(257)->ArgName("nodes");
 
 // ---- the batch path ----
 

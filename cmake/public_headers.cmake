@@ -11,21 +11,26 @@ set(ASPERITY_RUNTIME_HEADERS
   curve.hpp              # one resolved curve: the hot handle
   asymptotic.hpp         # the series beyond the table
   table_data.hpp table.hpp table_file.hpp table_schema.hpp table_writer.hpp
+  contact_curves_data.hpp contact_curves.hpp  # contact curves against separation: a measured surface served
   contact_scales.hpp contact.hpp    # contact_at: the four quantities of a curve
   surface.hpp            # a physical surface, unit conversions and input checks
   inverse.hpp contact_model.hpp persson.hpp
   separation_datum.hpp   # where separations are measured from (origin, mean summit, mean plane)
   plausibility.hpp       # units caught: implausible surface parameters
+  physical_state_fields.hpp  # the physical state's fields, once (C, Fortran, Python, CSV made or checked from it)
+  law_combination.hpp    # how a law's rough-surface quantities combine the tabulated orders (Hertz's numbers)
   contact_law.hpp        # single-asperity contact laws (Hertz, CEB, ZMC, KE, JG, DMT, JKR, MD)
   scene.hpp scene_curves.hpp
   pressure_overclosure.hpp          # FE export: CalculiX/Abaqus pressure-overclosure cards
   number_text.hpp)                  # the one strict number reader and writer
 set(ASPERITY_GENERATOR_HEADERS
-  generator/quadrature.hpp generator/chain_ode.hpp generator/generate.hpp generator/scene_table.hpp)
+  generator/quadrature.hpp generator/chain_ode.hpp generator/generate.hpp generator/scene_table.hpp
+  generator/law_curves.hpp)
 set(ASPERITY_TOPOGRAPHY_HEADERS
   topography/units.hpp topography/height_map.hpp topography/height_map_io.hpp topography/surface_formats.hpp
   topography/leveling.hpp topography/statistics.hpp topography/summits.hpp topography/distribution_fit.hpp
   topography/goodness_of_fit.hpp topography/synthetic.hpp topography/surrogates.hpp topography/surface_tests.hpp
   topography/summit_contact.hpp topography/contact_comparison.hpp topography/analysis.hpp
-  topography/surface_report.hpp topography/exact_contact.hpp topography/self_affine.hpp topography/persson_contact.hpp)
+  topography/surface_report.hpp topography/exact_contact.hpp topography/exact_contact_table.hpp topography/self_affine.hpp
+  topography/persson_contact.hpp)
 set(ASPERITY_FORTRAN_SOURCES asperity.f90)

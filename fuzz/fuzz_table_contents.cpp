@@ -4,7 +4,9 @@
 // changed, objects deleted); the result is sealed with a valid header and read. What this
 // reaches is what a crafted file can express in well-formed HDF5: the reader's own checks,
 // which must refuse it with a message or give a table whose lookups hold, in bounded memory.
-// (HDF5's parser on malformed bytes is outside: see docs/reliability.md.)
+// (HDF5's parser on malformed bytes is outside: see docs/reliability.md.) The input's first
+// choice picks the table's kind: Greenwood-Williamson integrals, or contact curves against
+// separation (whose served values must then hold their promises: tiny_table.hpp's exercise).
 #include <fuzzer/FuzzedDataProvider.h>
 #include <hdf5.h>
 
@@ -15,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves.hpp"
+#include "asperity/contact_curves_data.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
@@ -23,16 +27,36 @@
 
 namespace {
 
+bool contact_curves = false;  // the kind of the input being crafted
+
 const std::vector<unsigned char>& base_file() {
   static const std::vector<unsigned char> bytes = asperity::table_file_bytes(asperity::fuzz::tiny_table());
-  return bytes;
+  static const std::vector<unsigned char> curves =
+      asperity::contact_curves_file_bytes(asperity::fuzz::tiny_contact_curves());
+  return contact_curves ? curves : bytes;
 }
 
-const char* const groups[] = {"/", "weibull_tail", "weibull_bounded", "gaussian_tail"};
-const char* const attributes[] = {"schema", "schema_version", "generator", "generator_options", "exact_shapes",
-                                  "conventions", "distribution"};
-const char* const datasets[] = {"shapes", "shape_range", "orders", "segment_kind", "segment_knots",
-                                "segment_p0", "segment_p1", "knots", "max_rel_error"};
+const char* const integral_groups[] = {"/", "weibull_tail", "weibull_bounded", "gaussian_tail"};
+const char* const integral_attributes[] = {"schema", "schema_version", "generator", "generator_options", "exact_shapes",
+                                           "conventions", "distribution", "kind"};
+const char* const integral_datasets[] = {"shapes", "shape_range", "orders", "segment_kind", "segment_knots",
+                                         "segment_p0", "segment_p1", "knots", "max_rel_error"};
+const char* const curves_groups[] = {"/", "contact_curves"};
+const char* const curves_attributes[] = {"schema", "schema_version", "generator", "generator_options", "kind",
+                                         "source", "description", "separation_datum", "definition"};
+const char* const curves_datasets[] = {"separation", "pressure", "stiffness", "area_fraction", "max_rel_error",
+                                       "measured_rel_error", "check_points", "safety_factor", "solver_tolerance",
+                                       "contact_modulus", "nominal_area", "mean_summit_height", "max_height"};
+
+const char* pick_group(FuzzedDataProvider& input) {
+  return contact_curves ? input.PickValueInArray(curves_groups) : input.PickValueInArray(integral_groups);
+}
+const char* pick_attribute(FuzzedDataProvider& input) {
+  return contact_curves ? input.PickValueInArray(curves_attributes) : input.PickValueInArray(integral_attributes);
+}
+const char* pick_dataset(FuzzedDataProvider& input) {
+  return contact_curves ? input.PickValueInArray(curves_datasets) : input.PickValueInArray(integral_datasets);
+}
 const hid_t* const types[] = {&H5T_IEEE_F64LE, &H5T_IEEE_F64BE, &H5T_IEEE_F32LE, &H5T_STD_I32LE,
                               &H5T_STD_I64LE, &H5T_STD_U64LE,  &H5T_STD_I8LE,   &H5T_STD_U8LE};
 
@@ -50,7 +74,7 @@ double interesting_double(FuzzedDataProvider& input) {
 }
 
 void replace_attribute(hid_t object, FuzzedDataProvider& input) {
-  const char* name = input.PickValueInArray(attributes);
+  const char* name = pick_attribute(input);
   if (H5Aexists(object, name) > 0) H5Adelete(object, name);
   const bool scalar = input.ConsumeBool();
   const hsize_t count = scalar ? 1 : input.ConsumeIntegralInRange<hsize_t>(0, 5000);
@@ -96,7 +120,7 @@ void replace_attribute(hid_t object, FuzzedDataProvider& input) {
 }
 
 void replace_dataset(hid_t group, FuzzedDataProvider& input) {
-  const char* name = input.PickValueInArray(datasets);
+  const char* name = pick_dataset(input);
   std::vector<hsize_t> dims;
   if (H5Lexists(group, name, H5P_DEFAULT) > 0) {  // start from its dimensions, then change some
     const hid_t set = H5Dopen2(group, name, H5P_DEFAULT);
@@ -139,7 +163,7 @@ void replace_dataset(hid_t group, FuzzedDataProvider& input) {
 }
 
 void change_value(hid_t group, FuzzedDataProvider& input) {
-  const char* name = input.PickValueInArray(datasets);
+  const char* name = pick_dataset(input);
   if (H5Lexists(group, name, H5P_DEFAULT) <= 0) return;
   const hid_t set = H5Dopen2(group, name, H5P_DEFAULT);
   if (set < 0) return;
@@ -163,10 +187,10 @@ void change_value(hid_t group, FuzzedDataProvider& input) {
 
 void delete_object(hid_t group, FuzzedDataProvider& input) {
   if (input.ConsumeBool()) {
-    const char* name = input.PickValueInArray(attributes);
+    const char* name = pick_attribute(input);
     if (H5Aexists(group, name) > 0) H5Adelete(group, name);
   } else {
-    const char* name = input.PickValueInArray(datasets);
+    const char* name = pick_dataset(input);
     if (H5Lexists(group, name, H5P_DEFAULT) > 0) H5Ldelete(group, name, H5P_DEFAULT);
   }
 }
@@ -185,7 +209,7 @@ std::vector<unsigned char> craft(FuzzedDataProvider& input) {
   if (file < 0) return bytes;
   const int edits = input.ConsumeIntegralInRange<int>(1, 4);
   for (int i = 0; i < edits && input.remaining_bytes() > 0; ++i) {
-    const char* group_name = input.PickValueInArray(groups);
+    const char* group_name = pick_group(input);
     const hid_t group = H5Oopen(file, group_name, H5P_DEFAULT);
     if (group < 0) continue;
     switch (input.ConsumeIntegralInRange<int>(0, 3)) {
@@ -217,11 +241,17 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider input(data, size);
+  contact_curves = input.ConsumeBool();
   const std::vector<unsigned char> bytes = craft(input);
   if (bytes.empty()) return 0;
   try {
-    const asperity::Table table(asperity::read_table_bytes(bytes.data(), bytes.size(), "crafted"));
-    asperity::fuzz::exercise(table);
+    if (contact_curves) {
+      const asperity::ContactCurves curves(asperity::read_contact_curves_bytes(bytes.data(), bytes.size(), "crafted"));
+      asperity::fuzz::exercise(curves);
+    } else {
+      const asperity::Table table(asperity::read_table_bytes(bytes.data(), bytes.size(), "crafted"));
+      asperity::fuzz::exercise(table);
+    }
   } catch (const asperity::Error&) {
   }
   return 0;

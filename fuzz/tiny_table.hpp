@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "asperity/contact_curves.hpp"
 #include "asperity/table.hpp"
 
 namespace asperity::fuzz {
@@ -49,6 +50,52 @@ inline double exercise(const Table& table) {
       for (double value : out) sum += value;
     }
   }
+  return sum;
+}
+
+// A tiny contact-curves table (a measured surface's, in form): five nodes.
+inline ContactCurvesData tiny_contact_curves() {
+  ContactCurvesData data;
+  data.generator = "fuzz";
+  data.generator_options = "tiny";
+  data.source = "exact-contact";
+  data.description = "tiny";
+  data.separation_datum = "the mean plane";
+  data.separation = {1e-7, 2e-7, 3e-7, 4e-7, 5e-7};
+  data.pressure = {1e8, 3e7, 1e7, 3e6, 1e6};
+  data.stiffness = {1e15, 3e14, 1e14, 3e13, 1e13};
+  data.area_fraction = {0.1, 0.04, 0.01, 0.004, 0.001};
+  for (int i = 0; i < 3; ++i) {
+    data.measured_rel_error[i] = 0.01;
+    data.max_rel_error[i] = 0.02;
+  }
+  data.check_points = 4;
+  data.safety_factor = 2;
+  data.solver_tolerance = 1e-8;
+  data.contact_modulus = 1e11;
+  data.nominal_area = 1e-10;
+  data.mean_summit_height = 2e-8;
+  data.max_height = 6e-7;
+  return data;
+}
+
+// Queries contact curves that loaded: inside the range every value is finite and in its
+// bounds, the pressure falls, the inverse lands inside; outside, NaN. A broken promise traps.
+inline double exercise(const ContactCurves& curves) {
+  double sum = 0, last = INFINITY;
+  const double low = curves.min_separation(), high = curves.max_separation();
+  for (int i = 0; i <= 64; ++i) {
+    const double u = i == 64 ? high : low + (high - low) * i / 64;
+    const ContactCurvesState s = curves.at_separation(u);
+    if (!(s.pressure > 0 && s.pressure <= last * (1 + 1e-12) && std::isfinite(s.stiffness) && s.area_fraction > 0 &&
+          s.area_fraction <= 1.0000000001))
+      __builtin_trap();
+    last = s.pressure;
+    const double back = curves.separation_at_pressure(s.pressure);
+    if (!(back >= low && back <= high)) __builtin_trap();
+    sum += s.pressure + s.stiffness + s.area_fraction + back;
+  }
+  if (!std::isnan(curves.pressure(high + (high - low))) || !std::isnan(curves.pressure(NAN))) __builtin_trap();
   return sum;
 }
 

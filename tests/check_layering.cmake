@@ -13,9 +13,10 @@ cmake_minimum_required(VERSION 3.18)
 # 4. The public face: every header under include/ is in cmake/public_headers.cmake once, and a
 #    public header includes only public headers.
 set(layer_core integrals model layout curve asymptotic instruction_set error segment_kind contact_scales number_text
-    contact_law)
-set(layer_table table table_schema table_data table_file table_writer)
-set(layer_physics contact contact_model inverse surface persson separation_datum plausibility)
+    contact_law law_combination)
+set(layer_table table table_schema table_data table_file table_writer contact_curves_data)
+set(layer_physics contact contact_model physical_state_fields inverse surface persson separation_datum plausibility
+    contact_curves)
 set(layer_scene scene scene_curves)
 set(layer_fe_export pressure_overclosure)
 set(layer_c_api asperity)
@@ -37,7 +38,7 @@ set(allowed_white_box ${runtime_public} detail generator topography)
 # The private headers tests, benchmarks and fuzzers may use (their CMake targets say so too:
 # asperity_runtime_test_seams, asperity_topography_test_seams).
 set(seams runtime/table/replace_file.hpp runtime/core/kernel/kernels.hpp topography/md5.hpp
-    topography/spacing_fit.hpp topography/fft.hpp apps/asperity/eval_csv.hpp tests/reference.hpp
+    topography/spacing_fit.hpp topography/fft.hpp topography/vector_math.hpp apps/asperity/eval_csv.hpp tests/reference.hpp
     tests/accuracy_harness.hpp)
 
 set(failures "")

@@ -12,6 +12,7 @@
 
 #include "asperity/asperity.h"
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/table.hpp"
 
 namespace {
@@ -72,6 +73,34 @@ TEST(HotPath, QueriesDoNotAllocate) {
   EXPECT_TRUE(std::isnan(sum));  // the NaN input went through, by value
   asperity_curve_close(c_curve);
   asperity_table_close(c_table);
+}
+
+TEST(HotPath, ContactCurvesQueriesDoNotAllocate) {
+  // a measured surface's table (contact_curves.hpp), of a smooth law's shape
+  ContactCurvesData data;
+  data.source = "test";
+  for (int i = 0; i < 40; ++i) {
+    const double u = 1e-7 * (1 + i), p = 1e8 * std::exp(-u / 2e-7);
+    data.separation.push_back(u);
+    data.pressure.push_back(p);
+    data.stiffness.push_back(p / 2e-7);
+    data.area_fraction.push_back(0.1 * std::exp(-u / 4e-7));
+  }
+  data.contact_modulus = 1e11;
+  data.nominal_area = 1e-6;
+  const ContactCurves curves(data);
+  const ContactCurves copy = curves;
+  std::vector<double> inputs = separations();
+  for (double& s : inputs) s = 2e-6 + 2e-6 * std::tanh(s);  // in the range and out of it, NaN, +-inf
+  double sum = 0;
+  const long before = allocations.load();
+  for (double s : inputs) {
+    const ContactCurvesState state = copy.at_separation(s);
+    sum += curves.pressure(s) + curves.stiffness(s) + curves.area_fraction(s) + state.stiffness +
+           curves.separation_at_pressure(s * 1e14) + copy.at_pressure(s * 1e14).separation;
+  }
+  EXPECT_EQ(allocations.load() - before, 0);
+  EXPECT_TRUE(std::isnan(sum));
 }
 
 TEST(HotPath, ManyThreadsOnOneCurve) {

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "asperity/contact_scales.hpp"
 #include "asperity/error.hpp"
 #include "asperity/generator/scene_table.hpp"
 #include "asperity/scene.hpp"
@@ -366,8 +367,8 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
           throw Error("the fitted shape " + shape_text(fit.shape) + " is outside the shapes scene tables serve (" +
                       shape_text(scene_shape_min) + " to " + shape_text(scene_shape_max) + ")");
         // an exact-shape scene table over the loads the curves visit (X_3/2, dimensionless)
-        const double load_unit = (4.0 / 3.0) * summits.density * e_star * std::sqrt(summits.radius) *
-                                 std::pow(fit.scale, 1.5);  // P/A0 per unit X_3/2
+        // P/A0 per unit X_3/2: the load factor per unit nominal area (contact_scales.hpp)
+        const double load_unit = detail::contact_scales_of(summits.density, summits.radius, fit.scale, e_star).load;
         Scene scene;
         scene.name = "asperity surface: " + model.label;
         scene.source = "asperity surface";

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "asperity/error.hpp"
+#include "asperity/law_combination.hpp"
 
 namespace asperity::topography {
 
@@ -38,13 +39,14 @@ PhysicalState SummitContact::at_separation(double d) const noexcept {
   PhysicalState state{};
   state.separation = state.mean_separation = d;
   long double count = 0, area = 0, load = 0, stiffness = 0;
-  const double pi = 3.14159265358979323846;
+  // Hertz for each summit (its numbers: law_combination.hpp, count, area, load, stiffness)
+  const double(&hertz)[4] = hertz_combination.multiplier;
   for (std::size_t k = 0; k < heights_.size() && heights_[k] > d; ++k) {  // descending: stop at the first clear
     const double w = heights_[k] - d, root_w = std::sqrt(w);
     count += 1;
-    area += pi * radii_[k] * w;
-    load += (4.0 / 3.0) * modulus_ * root_radii_[k] * w * root_w;
-    stiffness += 2 * modulus_ * root_radii_[k] * root_w;
+    area += hertz[1] * radii_[k] * w;
+    load += hertz[2] * modulus_ * root_radii_[k] * w * root_w;
+    stiffness += hertz[3] * modulus_ * root_radii_[k] * root_w;
   }
   state.count = static_cast<double>(count) * scale_;
   state.real_area = static_cast<double>(area) * scale_;

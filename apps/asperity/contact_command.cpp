@@ -8,7 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves.hpp"
+#include "asperity/contact_law.hpp"
 #include "asperity/contact_model.hpp"
+#include "asperity/generator/law_curves.hpp"
+#include "asperity/scene.hpp"
+#include "asperity/table_file.hpp"
 #include "asperity/error.hpp"
 #include "command_line.hpp"
 #include "asperity/number_text.hpp"
@@ -23,6 +28,8 @@ constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
   std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum, datum;
+  std::string law, law_range;  // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
+  double hardness = not_given, yield_strength = not_given, law_poisson = not_given, law_tolerance = not_given;
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
@@ -156,10 +163,16 @@ PhysicalState query(const ContactModel& model, const std::string& kind, double v
   return model.at_real_area(value);
 }
 
+// the CSV's columns: the physical state's fields (physical_state_fields.hpp), in their order
+void print_header() {
+  for (std::size_t k = 0; k < physical_state_field_count; ++k)
+    std::printf("%s%s", k ? "," : "", physical_state_fields[k].column);
+  std::printf("\n");
+}
 void print(const PhysicalState& state) {
-  std::printf("%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.mean_separation,
-              state.count, state.real_area, state.area_fraction, state.load, state.pressure, state.stiffness,
-              state.stiffness_over_load);
+  for (std::size_t k = 0; k < physical_state_field_count; ++k)
+    std::printf(k ? ",%.10g" : "%.10g", state.*physical_state_members[k]);
+  std::printf("\n");
 }
 
 void warn_past_gw(const CLI::App& command, double area_fraction) {
@@ -239,7 +252,192 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
   return exit_success;
 }
 
+int serve_contact_curves(const Options& options, const CLI::App& command, const ContactCurves& curves);
+
+// The queries contact curves answer: one of --separation, --pressure, --sweep, --export
+void check_curve_queries(const Options& options, const std::string& what) {
+  // Contact curves carry their own separation datum (a law's: the origin convention; a measured
+  // surface's: its mean plane), stated on standard error; their CSV also gives the separation from
+  // the mean summit height.
+  if (!options.datum.empty() || given(options.mean_summit_height))
+    usage(what + " are served from their own separation datum (standard error names it; the CSV's "
+                 "separation_from_mean_summit_m is from the mean summit height): --datum and --mean-summit-height "
+                 "go with a Greenwood-Williamson surface (--dist ...)");
+  if (given(options.load) || given(options.real_area))
+    usage(what + " are served at a separation or a nominal pressure: --separation, --pressure, --sweep "
+                 "separation|pressure, or --export");
+  const int queries =
+      given(options.separation) + given(options.pressure) + !options.sweep.empty() + !options.export_format.empty();
+  if (queries != 1)
+    usage(queries == 0 ? "a query is required: --separation, --pressure, --sweep or --export"
+                       : "give one query: --separation, --pressure, --sweep or --export");
+}
+
+// `asperity contact --law NAME ...`: the law's rough-surface curves on the surface the options
+// describe, tabulated now by the generator (as tablegen does a law scene: the scene is made of
+// the options, so that its checks and messages are the scene file's) and served as contact curves.
+int run_contact_law(const Options& options, const CLI::App& command) {
+  if (!options.table.empty()) usage("--law tabulates the law's curves itself: give no --table");
+  ContactLawKind kind;
+  if (!contact_law_kind_of(options.law.c_str(), kind))
+    usage("--law: '" + quote_text(options.law) +
+          "' is not hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or jackson-green");
+  if (options.law_range.empty()) throw CLI::RequiredError("--law-range (with --law)");
+  const std::vector<std::string> range = split(options.law_range, ':');
+  if (range.size() != 2) usage("--law-range wants SMIN:SMAX (dimensionless separations), got '" +
+                               quote_text(options.law_range) + "'");
+  const double lo = number_from_text(range[0], "--law-range SMIN"), hi = number_from_text(range[1], "--law-range SMAX");
+  check_curve_queries(options, "a law's curves");
+  std::string given_scale;
+  const RoughSurface surface = surface_from(options, given_scale);
+  std::string scene = "[[law]]\nlaw = \"" + std::string(contact_law_name(kind)) + "\"\n";
+  const auto key = [&](const char* name, double value) { scene += std::string(name) + " = " + number(value) + "\n"; };
+  key("contact_modulus", surface.contact_modulus);
+  if (given(options.hardness)) key("hardness", options.hardness);
+  if (given(options.yield_strength)) key("yield_strength", options.yield_strength);
+  if (given(options.law_poisson)) key("poisson", options.law_poisson);
+  scene += std::string("distribution = \"") + to_string(surface.distribution) + "\"\n";
+  if (surface.distribution == Distribution::weibull) {
+    key("shape", surface.shape);
+    scene += std::string("side = \"") + to_string(surface.side) + "\"\n";
+  }
+  key("height_scale", surface.height_scale);
+  key("summit_radius", surface.summit_radius);
+  key("summit_density", surface.summit_density);
+  key("nominal_area", surface.nominal_area);
+  scene += "separation = [" + number(lo) + ", " + number(hi) + "]\n";
+  key("max_rel_error", given(options.law_tolerance) ? options.law_tolerance : 1e-6);
+  const Scene parsed = parse_scene(scene, "asperity contact --law");
+  if (!given_scale.empty()) note(command, given_scale);
+  const SceneLaw& law = parsed.laws.front();
+  if (std::isfinite(law.law.critical_interference))
+    note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
+                      " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
+                      approximately(plasticity_index(law.law, surface.height_scale)));
+  const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity contact --law");
+  return serve_contact_curves(options, command, ContactCurves(result.data));
+}
+
+// `asperity contact --table FILE` with a contact-curves table (a measured surface's exact
+// contact, asperity exact-contact --table, or a law scene's, tablegen): its served curves at
+// separations or pressures, or their card.
+int run_contact_curves(const Options& options, const CLI::App& command) {
+  if (!options.dist.empty() || !options.side.empty() || given(options.shape) || given(options.sigma) ||
+      given(options.rms) || given(options.radius) || given(options.density) || given(options.count) ||
+      given(options.area) || given(options.modulus) || given(options.e1) || given(options.nu1) ||
+      given(options.e2) || given(options.nu2) || !options.moments.empty())
+    usage("the table '" + quote_text(options.table) +
+          "' holds a measured surface's contact curves: it is the surface (give no --dist, --shape, --sigma, "
+          "--rms, --radius, --density, --count, --area, --modulus, --e1..--nu2, --moments)");
+  check_curve_queries(options, "a table's contact curves");
+  return serve_contact_curves(options, command, ContactCurves::open(options.table));
+}
+
+// Contact curves (a contact-curves table's, or a law's made by --law) at separations or
+// pressures, or their card
+int serve_contact_curves(const Options& options, const CLI::App& command, const ContactCurves& curves) {
+  Sweep sweep;
+  if (!options.sweep.empty()) {
+    sweep = sweep_from(options.sweep);
+    if (sweep.kind != "separation" && sweep.kind != "pressure")
+      usage("--sweep: contact curves sweep separation or pressure, not " + sweep.kind);
+  }
+  const ContactCurvesData& data = curves.data();
+  note(command, "contact curves of " + data.source + ": " + data.description);
+  note(command, "separation: " + data.separation_datum + "; served from " + number(curves.min_separation()) +
+                    " to " + number(curves.max_separation()) + " m (" + approximately(curves.max_pressure()) + " to " +
+                    approximately(curves.min_pressure()) + " Pa); stored error bound (relative): pressure " +
+                    approximately(data.max_rel_error[0]) + ", stiffness " + approximately(data.max_rel_error[1]) +
+                    ", area fraction " + approximately(data.max_rel_error[2]) + " (" +
+                    approximately(data.safety_factor) + " x the largest measured at " +
+                    std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
+                    approximately(data.solver_tolerance) + ")");
+  if (!options.export_format.empty()) {
+    CardFormat format = CardFormat::csv;
+    CardUnits units = CardUnits::si;
+    OverclosureDatum datum = OverclosureDatum::mean_summit;
+    if (!parse_card_format(options.export_format, format))
+      usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
+    if (!options.units.empty() && !parse_card_units(options.units, units))
+      usage("--units: '" + quote_text(options.units) + "' is not si or mm");
+    if (!options.overclosure_datum.empty() && !parse_overclosure_datum(options.overclosure_datum, datum))
+      usage("--overclosure-datum: '" + quote_text(options.overclosure_datum) +
+            "' is not mean-summit, origin or zero-pressure");
+    if (datum == OverclosureDatum::mean_plane)
+      usage("--overclosure-datum mean-plane is a Greenwood-Williamson surface's: contact curves take mean-summit, "
+            "origin (their separation's datum: " + data.separation_datum + ") or zero-pressure");
+    double low = curves.min_pressure(), high = curves.max_pressure();
+    if (!options.pressure_range.empty()) {
+      const std::vector<std::string> range = split(options.pressure_range, ':');
+      if (range.size() != 2) usage("--pressure-range wants PMIN:PMAX (Pa), got '" + quote_text(options.pressure_range) + "'");
+      low = number_from_text(range[0], "--pressure-range PMIN");
+      high = number_from_text(range[1], "--pressure-range PMAX");
+      if (!(low > 0 && high > low)) usage("--pressure-range needs 0 < PMIN < PMAX");
+    }
+    const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
+    const std::size_t max_points = options.max_points > 0        ? static_cast<std::size_t>(options.max_points)
+                                   : format == CardFormat::calculix ? calculix_points_max
+                                                                    : card_points_max;
+    const PressureOverclosureTable table = tabulate_pressure_overclosure(curves, low, high, tolerance, datum, max_points);
+    write_pressure_overclosure(std::cout, table, format, units,
+                               std::string("asperity " ASPERITY_VERSION_STRING ": the pressure-overclosure law of a ") +
+                                   (data.source.rfind("contact-law", 0) == 0 ? "rough surface under a contact law"
+                                                                             : "measured surface") +
+                                   " against a flat, from its contact-curves table (" + data.source + ")\n" +
+                                   data.description + "\nthe table's own error bound (relative, in pressure): " +
+                                   approximately(data.max_rel_error[0]) + " (measured at " +
+                                   std::to_string(data.check_points) + " exact solves between its nodes, times " +
+                                   approximately(data.safety_factor) + ")");
+    if (table.tolerance != tolerance)
+      warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
+                        " points: the card is within " + number(table.tolerance) + " of the curves instead (--max-points)");
+    note(command, std::to_string(table.points.size()) + " points; linear interpolation within " +
+                      number(table.tolerance) + " of the served curve from " + number(low) + " to " + number(high) +
+                      " Pa (measured at most " + approximately(table.max_error) + " at " +
+                      std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
+                      " datum");
+    return exit_success;
+  }
+  if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance) ||
+      options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size))
+    usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
+          "with --export");
+  std::printf("separation_m,separation_from_mean_summit_m,nominal_pressure_Pa,stiffness_per_area_Pa_per_m,"
+              "area_fraction\n");
+  long outside = 0;
+  const auto row = [&](const ContactCurvesState& state) {
+    if (std::isnan(state.pressure)) ++outside;
+    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.separation - data.mean_summit_height,
+                state.pressure, state.stiffness, state.area_fraction);
+  };
+  const auto at = [&](const std::string& kind, double value) {
+    if (kind == "separation") return curves.at_separation(value);
+    ContactCurvesState state = curves.at_pressure(value);
+    state.pressure = value;
+    if (std::isnan(state.separation)) state.stiffness = state.area_fraction = NAN;
+    return state;
+  };
+  if (!options.sweep.empty()) {
+    for (long k = 0; k < sweep.count; ++k) row(at(sweep.kind, sweep_value(sweep, k)));
+  } else if (given(options.separation)) {
+    row(at("separation", options.separation));
+  } else {
+    row(at("pressure", options.pressure));
+  }
+  if (outside > 0)
+    warn(command, std::to_string(outside) + " of the queries lie outside the curves' range (their values are nan): " +
+                      "separations " + number(curves.min_separation()) + " to " + number(curves.max_separation()) +
+                      " m, pressures " + number(curves.min_pressure()) + " to " + number(curves.max_pressure()) + " Pa");
+  return exit_success;
+}
+
 int run_contact(const Options& options, const CLI::App& command) {
+  if (!options.law.empty()) return run_contact_law(options, command);
+  if (!options.law_range.empty() || given(options.hardness) || given(options.yield_strength) ||
+      given(options.law_poisson) || given(options.law_tolerance))
+    usage("--law-range, --hardness, --yield-strength, --law-poisson and --law-tolerance go with --law");
+  if (!options.table.empty() && read_table_kind(options.table) == TableKind::contact_curves)
+    return run_contact_curves(options, command);
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
   const int queries = given(options.separation) + given(options.load) + given(options.pressure) +
@@ -294,8 +492,7 @@ int run_contact(const Options& options, const CLI::App& command) {
   note(command, "separation_m (and --separation, --sweep separation): " +
                     describe_separation_datum(separation_datum, options.mean_summit_height) +
                     "; mean_separation_m: from the mean summit height");
-  std::printf("separation_m,mean_separation_m,count,real_area_m2,area_fraction,load_N,nominal_pressure_Pa,"
-              "stiffness_N_per_m,stiffness_over_load_per_m\n");
+  print_header();
   double largest_fraction = 0;
   auto row = [&](const PhysicalState& state) {
     print(state);
@@ -347,6 +544,24 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--moments", o.moments,
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
+  add_text(*command, "--law", o.law,
+           "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or "
+           "jackson-green, tabulated now on the surface given (docs/contact-laws.md section 8); queries "
+           "--separation, --pressure, --sweep separation|pressure, --export")
+      ->type_name("NAME")->group("Contact law");
+  add_text(*command, "--law-range", o.law_range,
+           "with --law: the dimensionless separations s tabulated (origin convention; required)")
+      ->type_name("SMIN:SMAX")->group("Contact law");
+  add_number(*command, "--hardness", o.hardness, "with --law chang-etsion-bogy or zhao-maietta-chang: hardness H [Pa]")
+      ->type_name("PA")->group("Contact law");
+  add_number(*command, "--yield-strength", o.yield_strength,
+             "with --law kogut-etsion or jackson-green: yield strength Y [Pa]")
+      ->type_name("PA")->group("Contact law");
+  add_number(*command, "--law-poisson", o.law_poisson,
+             "with --law chang-etsion-bogy, kogut-etsion or jackson-green: Poisson's ratio of the asperity")
+      ->type_name("X")->group("Contact law");
+  add_number(*command, "--law-tolerance", o.law_tolerance, "with --law: the curves' relative error (default 1e-6)")
+      ->type_name("REL")->group("Contact law");
   add_number(*command, "--separation", o.separation, "at a separation [m] from the datum (--datum)")->type_name("M")->group("Query (one)");
   add_number(*command, "--load", o.load, "at a load [N]")->type_name("N")->group("Query (one)");
   add_number(*command, "--pressure", o.pressure, "at a nominal pressure [Pa]")->type_name("PA")->group("Query (one)");
@@ -404,7 +619,11 @@ void add_contact_command(CLI::App& app) {
       "NODE TO SURFACE contact with this card (at most 200 points: the default --max-points; face-to-face,\n"
       "ccx 2.20: crashes above 41 points and gives zero force at clearances, silently), and makes a\n"
       "contact spring only within a clearance of 1e-3 sqrt(slave node area): --face-size L warns when\n"
-      "the card reaches beyond 1e-3 L.\n" +
+      "the card reaches beyond 1e-3 L.\n"
+      "A measured surface: --table FILE of contact curves (asperity exact-contact --table) is the surface\n"
+      "itself (no --dist ...): --separation (from the table's datum, the map's mean plane), --pressure,\n"
+      "--sweep separation|pressure or --export; CSV separation_m, separation_from_mean_summit_m,\n"
+      "nominal_pressure_Pa, stiffness_per_area_Pa_per_m, area_fraction; nan outside the range served.\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
   set_action(*command, [options, self] { return run_contact(*options, *self); });

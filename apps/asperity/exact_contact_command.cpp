@@ -15,6 +15,8 @@
 #include "asperity/error.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/exact_contact_table.hpp"
+#include "asperity/contact_curves_data.hpp"
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/units.hpp"
@@ -31,9 +33,9 @@ constexpr long max_steps = 10000;
 
 struct Options {
   std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, method, fields,
-      card, card_format, units;
+      card, card_format, units, table;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
-         tolerance = not_given;
+         tolerance = not_given, table_safety = not_given;
   long long max_iterations = 20000;
   bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false;
 };
@@ -205,6 +207,16 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   if (!o.units.empty() && !parse_card_units(o.units, card_units)) usage("--units: '" + quote_text(o.units) + "' is not si or mm");
   if (o.card.empty() && (!o.card_format.empty() || !o.units.empty())) usage("--card-format and --units go with --card");
   const Steps steps = steps_from(o);
+  if (o.table.empty() && given(o.table_safety)) usage("--table-safety goes with --table");
+  if (!o.table.empty()) {
+    if (!steps.by_pressure) usage("--table needs the nodes as pressures: --pressure or --sweep pressure:FROM:TO:COUNT");
+    if (steps.values.size() < 3) usage("--table needs at least 3 pressures");
+    for (std::size_t i = 1; i < steps.values.size(); ++i)
+      if (!(steps.values[i] > steps.values[i - 1])) usage("--table needs the pressures in ascending order");
+    if (o.no_stiffness) usage("--table needs the stiffness: leave out --no-stiffness");
+    if (given(o.table_safety) && !(o.table_safety >= 1 && o.table_safety <= 1000))
+      usage("--table-safety must be from 1 to 1000");
+  }
 
   topo::HeightMap map = topo::read_height_map(o.file, read_options(o));
   if (!o.no_level) topo::subtract_plane(map, topo::fit_plane(map));
@@ -219,7 +231,9 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
       if (now - step_start < std::chrono::seconds(2) || now - last_line < std::chrono::seconds(2)) return;
       last_line = now;
       std::ostringstream line;
-      line << "step " << step_index + 1 << "/" << steps.values.size() << ": " << progress.stage << " iteration "
+      if (step_index < steps.values.size()) line << "step " << step_index + 1 << "/" << steps.values.size() << ": ";
+      else line << "the table's checks between the nodes: ";
+      line << progress.stage << " iteration "
            << progress.iteration << ", residual " << progress.residual << ", " << progress.contact_points
            << " points in contact";
       note(command, line.str());
@@ -244,6 +258,33 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
 
   const std::string boundary = topo::contact_boundary_name(options.boundary);
   const std::string kernel = topo::contact_kernel_name(options.kernel);
+  if (!o.table.empty()) {
+    std::ostringstream description, generator_options;
+    description << "the exact elastic contact of a measured surface with a flat (boundary elements, " << boundary
+                << " boundary, " << kernel << " kernel, " << topo::contact_solver_name(options.solver)
+                << " solver, E* " << format_double(modulus) << " Pa, tolerance " << format_double(options.tolerance)
+                << ")\nmap: " << map.source << " (" << map.nx << " x " << map.ny << " points, dx "
+                << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
+                << (o.no_level ? "" : ", leveled") << ")";
+    generator_options << "nodes at pressures [Pa]:";
+    for (double p : steps.values) generator_options << " " << format_double(p);
+    generator_options << "; checks at their neighbours' geometric means";
+    step_index = steps.values.size();  // the checks: no step number in the progress lines
+    step_start = clock::now();
+    const topo::ExactContactTable table = topo::measure_exact_contact_table(
+        solver, results, description.str(), generator_options.str(),
+        given(o.table_safety) ? o.table_safety : topo::default_table_safety_factor);
+    write_contact_curves_file(table.data, o.table);
+    std::ostringstream line;
+    line << "table " << o.table << ": " << table.nodes.size() << " nodes, separations " << format_double(table.data.separation.front())
+         << " to " << format_double(table.data.separation.back()) << " m; measured at " << table.checks.size()
+         << " solves between them, largest relative errors: pressure " << table.data.measured_rel_error[0]
+         << ", stiffness " << table.data.measured_rel_error[1] << ", area fraction "
+         << table.data.measured_rel_error[2] << " (stored bounds " << table.data.safety_factor << " times these)";
+    if (table.limited_intervals > 0)
+      line << "; " << table.limited_intervals << " intervals limited to keep the pressure monotone";
+    note(command, line.str());  // what the table states, not progress: also with --quiet
+  }
   if (!o.card.empty()) {
     if (!std::isfinite(solver.mean_summit_height())) throw Error("the map has no summits: the card's datum (the mean summit height) does not exist");
     std::vector<PressureOverclosurePoint> points;
@@ -388,6 +429,14 @@ void add_exact_contact_command(CLI::App& app) {
            "write the solved curve as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card (overclosure from the "
            "mean summit height)")
       ->type_name("FILE")->group(output);
+  add_text(*command, "--table", o.table,
+           "write the solved curves as a contact-curves table (HDF5, the tables' format): the pressures asked are "
+           "its nodes (ascending, at least 3), and one more solve between each two measures the error of the "
+           "curves as served (asperity contact --table FILE serves it)")
+      ->type_name("FILE")->group(output);
+  add_number(*command, "--table-safety", o.table_safety,
+             "with --table: the stored error bound is the measured one times this (default 2)")
+      ->type_name("FACTOR")->group(output);
   add_text(*command, "--card-format", o.card_format, "calculix (default), abaqus or csv")->type_name("FORMAT")->group(output);
   add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
   command->footer(

@@ -15,12 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves_data.hpp"
 #include "asperity/error.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/table_schema.hpp"
 #include "command_line.hpp"
 #include "asperity/generator/generate.hpp"
 #include "asperity/number_text.hpp"
+#include "asperity/generator/law_curves.hpp"
 #include "asperity/generator/scene_table.hpp"
 #include "asperity/table_writer.hpp"
 
@@ -118,9 +120,35 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// A law scene: the law's rough-surface curves as a contact-curves table
+int generate_law_scene(const Options& options, const Scene& scene, std::chrono::steady_clock::time_point start) {
+  const SceneLaw& law = scene.laws.front();
+  if (!options.quiet)
+    std::fprintf(stderr, "tablegen: scene %s: the %s law's curves\n", quote_text(options.scene, 200).c_str(),
+                 contact_law_name(law.law.kind));
+  const generator::LawCurvesResult result =
+      generator::generate_law_curves(law, "--scene " + quote_text(options.scene, 200));
+  if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
+  write_contact_curves_file(result.data, options.out);
+  const ContactCurvesData& data = result.data;
+  std::printf("%-18s %-8s %-8s %7s %-20s %9s %28s %6s %8s\n", "law", "dist", "side", "shape", "separations", "asked",
+              "achieved p / k / a", "nodes", "evals");
+  char range[64], achieved[64];
+  std::snprintf(range, sizeof range, "[%.4g, %.4g]", law.range_min, law.range_max);
+  std::snprintf(achieved, sizeof achieved, "%.2g / %.2g / %.2g", data.max_rel_error[0], data.max_rel_error[1],
+                data.max_rel_error[2]);
+  std::printf("%-18s %-8s %-8s %7.4g %-20s %9.2g %28s %6d %8d\n", contact_law_name(law.law.kind),
+              to_string(law.distribution), to_string(law.side), law.shape, range, law.max_rel_error, achieved,
+              result.nodes, result.evaluations);
+  std::printf("wrote %s: a contact-curves table, %d nodes, %.2f s\n", options.out.c_str(), result.nodes,
+              seconds_since(start));
+  return cli::exit_success;
+}
+
 int generate_scene(const Options& options, int threads) {
   const auto start = std::chrono::steady_clock::now();
   const Scene scene = read_scene_file(options.scene);
+  if (!scene.laws.empty()) return generate_law_scene(options, scene, start);
   check_scene(scene);
   if (!options.quiet)
     std::fprintf(stderr, "tablegen: scene %s: %zu curves\n", quote_text(options.scene, 200).c_str(), scene.curves.size());

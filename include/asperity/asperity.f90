@@ -89,6 +89,20 @@ module asperity
     real(c_double) :: stiffness_over_load  ! 1/m
   end type
 
+  ! asperity_contact_curves_*: a contact-curves table (a measured surface's exact contact), SI units
+  type, bind(c), public :: asperity_contact_curves_state
+    real(c_double) :: separation     ! m, from the table's datum (a map's mean plane)
+    real(c_double) :: pressure       ! Pa, mean nominal pressure
+    real(c_double) :: stiffness      ! Pa/m, -dp/d(separation)
+    real(c_double) :: area_fraction  ! real area / nominal area
+  end type
+  type, bind(c), public :: asperity_contact_curves_info
+    real(c_double) :: min_separation, max_separation, min_pressure, max_pressure
+    real(c_double) :: max_rel_error(3), measured_rel_error(3)  ! pressure, stiffness, area fraction
+    real(c_double) :: safety_factor, solver_tolerance, contact_modulus, nominal_area, mean_summit_height
+    integer(c_int) :: nodes, check_points
+  end type
+
   public :: asperity_table_load, asperity_table_open, asperity_table_close
   public :: asperity_curve_load, asperity_curve_open, asperity_curve_order_mask, asperity_curve_close
   public :: asperity_curve_range
@@ -101,6 +115,10 @@ module asperity
   public :: asperity_model_pressure_overclosure_card, asperity_tabulated_pressure_overclosure_card
   public :: asperity_model_open_datum, asperity_model_datum, asperity_model_warnings
   public :: asperity_model_at_separation_batch
+  public :: asperity_contact_curves_load, asperity_contact_curves_close, asperity_contact_curves_get_info
+  public :: asperity_contact_curves_pressure, asperity_contact_curves_stiffness, asperity_contact_curves_area_fraction
+  public :: asperity_contact_curves_separation, asperity_contact_curves_at_separation
+  public :: asperity_contact_curves_at_pressure, asperity_contact_curves_pressure_overclosure_card
 
   interface
     ! Loads a table: path c_null_ptr for the default table ($ASPERITY_TABLE if set). Returns
@@ -365,6 +383,86 @@ module asperity
       real(c_double), dimension(*), intent(out) :: out
       integer(c_size_t), value :: n
       integer(c_int) :: asperity_model_at_separation_batch
+    end function
+
+    ! Contact curves against separation (asperity.h): path a C string (c_null_char-terminated).
+    function asperity_contact_curves_load(path, curves, err, err_size) bind(c, name="asperity_contact_curves_load")
+      import :: c_ptr, c_char, c_size_t, c_int
+      character(kind=c_char), dimension(*) :: path, err
+      type(c_ptr), intent(out) :: curves
+      integer(c_size_t), value :: err_size
+      integer(c_int) :: asperity_contact_curves_load
+    end function
+
+    subroutine asperity_contact_curves_close(curves) bind(c, name="asperity_contact_curves_close")
+      import :: c_ptr
+      type(c_ptr), value :: curves
+    end subroutine
+
+    function asperity_contact_curves_get_info(curves, out) bind(c, name="asperity_contact_curves_get_info")
+      import :: c_ptr, c_int, asperity_contact_curves_info
+      type(c_ptr), value :: curves
+      type(asperity_contact_curves_info), intent(out) :: out
+      integer(c_int) :: asperity_contact_curves_get_info
+    end function
+
+    function asperity_contact_curves_pressure(curves, separation) bind(c, name="asperity_contact_curves_pressure")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double), value :: separation
+      real(c_double) :: asperity_contact_curves_pressure
+    end function
+
+    function asperity_contact_curves_stiffness(curves, separation) bind(c, name="asperity_contact_curves_stiffness")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double), value :: separation
+      real(c_double) :: asperity_contact_curves_stiffness
+    end function
+
+    function asperity_contact_curves_area_fraction(curves, separation) &
+        bind(c, name="asperity_contact_curves_area_fraction")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double), value :: separation
+      real(c_double) :: asperity_contact_curves_area_fraction
+    end function
+
+    function asperity_contact_curves_separation(curves, pressure) bind(c, name="asperity_contact_curves_separation")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double), value :: pressure
+      real(c_double) :: asperity_contact_curves_separation
+    end function
+
+    function asperity_contact_curves_at_separation(curves, separation, out) &
+        bind(c, name="asperity_contact_curves_at_separation")
+      import :: c_ptr, c_int, c_double, asperity_contact_curves_state
+      type(c_ptr), value :: curves
+      real(c_double), value :: separation
+      type(asperity_contact_curves_state), intent(out) :: out
+      integer(c_int) :: asperity_contact_curves_at_separation
+    end function
+
+    function asperity_contact_curves_at_pressure(curves, pressure, out) bind(c, name="asperity_contact_curves_at_pressure")
+      import :: c_ptr, c_int, c_double, asperity_contact_curves_state
+      type(c_ptr), value :: curves
+      real(c_double), value :: pressure
+      type(asperity_contact_curves_state), intent(out) :: out
+      integer(c_int) :: asperity_contact_curves_at_pressure
+    end function
+
+    function asperity_contact_curves_pressure_overclosure_card(curves, pressure_min, pressure_max, tolerance, format, &
+                                                               units, description, buffer, buffer_size, length, err, &
+                                                               err_size) &
+        bind(c, name="asperity_contact_curves_pressure_overclosure_card")
+      import :: c_ptr, c_char, c_double, c_int, c_size_t
+      type(c_ptr), value :: curves, description, buffer
+      real(c_double), value :: pressure_min, pressure_max, tolerance
+      character(kind=c_char), dimension(*) :: format, units, err
+      integer(c_size_t), value :: buffer_size, err_size
+      integer(c_size_t), intent(out) :: length
+      integer(c_int) :: asperity_contact_curves_pressure_overclosure_card
     end function
 
     subroutine asperity_model_close(model) bind(c, name="asperity_model_close")

@@ -234,6 +234,57 @@ int asperity_tabulated_pressure_overclosure_card(const double *pressures, const 
                                                  const char *notes, char *buffer, size_t buffer_size, size_t *length,
                                                  char *err, size_t err_size);
 
+/* Contact curves against separation (asperity/contact_curves.hpp): a measured surface's exact
+ * contact tabulated (asperity exact-contact --table), served like any curve. The separation is
+ * from the table's datum (for a measured map: the mean gap, from the map's mean plane) in m;
+ * pressure the mean nominal pressure in Pa; stiffness -dp/d(separation) in Pa/m; area_fraction
+ * the real contact area over the nominal area. Served from the first to the last node; outside,
+ * NaN. The handle is immutable: one may serve many threads; queries never allocate or lock. */
+typedef struct asperity_contact_curves asperity_contact_curves;
+typedef struct asperity_contact_curves_state {
+  double separation, pressure, stiffness, area_fraction;
+} asperity_contact_curves_state;
+/* What a contact-curves table states about itself. */
+typedef struct asperity_contact_curves_info {
+  double min_separation, max_separation; /* m: the range served */
+  double min_pressure, max_pressure;     /* Pa: the pressures at its ends */
+  double max_rel_error[3];               /* the stored bound (relative): pressure, stiffness, area fraction */
+  double measured_rel_error[3];          /* the largest measured between the nodes (bound = this x safety_factor) */
+  double safety_factor;
+  double solver_tolerance;               /* the solves' relative residual */
+  double contact_modulus;                /* Pa */
+  double nominal_area;                   /* m^2 */
+  double mean_summit_height;             /* m above the separation's datum; NaN if not stated */
+  int nodes, check_points;
+} asperity_contact_curves_info;
+/* Loads a contact-curves table; the statuses of asperity_table_load (ASPERITY_OTHER_SCHEMA for a
+ * table of Greenwood-Williamson integrals), *curves = NULL and a message on failure. */
+asperity_status asperity_contact_curves_load(const char *path, asperity_contact_curves **curves, char *err,
+                                             size_t err_size);
+void asperity_contact_curves_close(asperity_contact_curves *curves);
+/* ASPERITY_OK, or ASPERITY_BAD_HANDLE for a NULL argument. */
+int asperity_contact_curves_get_info(const asperity_contact_curves *curves, asperity_contact_curves_info *out);
+/* The hot path: NaN for a NULL handle, a NaN input or one outside the range served. */
+double asperity_contact_curves_pressure(const asperity_contact_curves *curves, double separation);
+double asperity_contact_curves_stiffness(const asperity_contact_curves *curves, double separation);
+double asperity_contact_curves_area_fraction(const asperity_contact_curves *curves, double separation);
+/* The separation where the served pressure is `pressure` (the inverse). */
+double asperity_contact_curves_separation(const asperity_contact_curves *curves, double pressure);
+/* All four at a separation, or at a pressure. Return ASPERITY_OK, ASPERITY_BAD_HANDLE (NULL),
+ * ASPERITY_BAD_SEPARATION (NaN input) or ASPERITY_OUTSIDE_RANGE (outside the range served: NaN
+ * outputs). */
+int asperity_contact_curves_at_separation(const asperity_contact_curves *curves, double separation,
+                                          asperity_contact_curves_state *out);
+int asperity_contact_curves_at_pressure(const asperity_contact_curves *curves, double pressure,
+                                        asperity_contact_curves_state *out);
+/* The curves' pressure-overclosure card, as asperity_model_pressure_overclosure_card (the same
+ * buffer contract and statuses): overclosure from the mean summit height, pressures within the
+ * range served. */
+int asperity_contact_curves_pressure_overclosure_card(const asperity_contact_curves *curves, double pressure_min,
+                                                      double pressure_max, double tolerance, const char *format,
+                                                      const char *units, const char *description, char *buffer,
+                                                      size_t buffer_size, size_t *length, char *err, size_t err_size);
+
 /* A message for a status code (static storage). */
 const char *asperity_status_string(int status);
 

@@ -11,6 +11,7 @@
 // Units: SI throughout (R, omega in m; E*, H, Y in Pa; work of adhesion in J/m^2 = N/m).
 // E* is the contact modulus, 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (asperity::contact_modulus_from).
 #pragma once
+#include "asperity/law_combination.hpp"  // Hertz's numbers (hertz_combination), shared with the kernels
 
 namespace asperity {
 
@@ -28,6 +29,8 @@ enum class ContactLawKind {
 // The name used in files and messages ("hertz", "chang-etsion-bogy", "zhao-maietta-chang",
 // "kogut-etsion", "jackson-green", "dmt", "jkr", "maugis-dugdale").
 const char* contact_law_name(ContactLawKind kind) noexcept;
+// The kind of such a name; false (and `kind` untouched) for a name that is not a law's.
+bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept;
 
 // Jackson-Green's geometric hardness H_G/S_y as a function of a/R: the 2005 paper's
 // 2.84 - 0.92 (1 - cos(pi a/R)), or the 2006 rough-surface paper's 2.84 (1 - exp(-0.82 (a/R)^-0.7)).

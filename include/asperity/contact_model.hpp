@@ -17,23 +17,25 @@
 #include "asperity/contact.hpp"
 #include "asperity/curve.hpp"
 #include "asperity/inverse.hpp"
+#include "asperity/physical_state_fields.hpp"
 #include "asperity/separation_datum.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table.hpp"
 
 namespace asperity {
 
+// separation, mean_separation, count, real_area, area_fraction, load, pressure, stiffness,
+// stiffness_over_load: doubles, their meanings and units in physical_state_fields.hpp
 struct PhysicalState {
-  double separation;           // d [m], from the model's datum (default: origin convention)
-  double mean_separation;      // [m], from the mean summit height
-  double count;                // summits in contact
-  double real_area;            // A [m^2]
-  double area_fraction;        // A / A0
-  double load;                 // P [N]
-  double pressure;             // P / A0 [Pa]
-  double stiffness;            // K = -dP/dd [N/m]
-  double stiffness_over_load;  // K / P [1/m]
+#define ASPERITY_PHYSICAL_STATE_MEMBER(name, column, meaning) double name;
+  ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_PHYSICAL_STATE_MEMBER)
+#undef ASPERITY_PHYSICAL_STATE_MEMBER
 };
+// The members in physical_state_fields' order (the writers and bindings iterate over them)
+#define ASPERITY_PHYSICAL_STATE_POINTER(name, column, meaning) &PhysicalState::name,
+inline constexpr double PhysicalState::*const physical_state_members[] = {
+    ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_PHYSICAL_STATE_POINTER)};
+#undef ASPERITY_PHYSICAL_STATE_POINTER
 
 // One field of PhysicalState, for the batch (ContactModel::at_separations); the names
 // ("count", "real-area", "area-fraction", "load", "pressure", "stiffness") are the command's and Python's.

@@ -1,9 +1,12 @@
-// The factors of docs/model.md section 3 (quantity = factor * X_n), defined once: contact_scales
-// (contact.hpp) and the contact kernels (runtime/core/kernel/), whose x86 build computes them
-// in vector registers in the same order of operations (the same bits: test_kernels,
-// test_contact).
+// The factors of docs/model.md section 3 (quantity = factor * X_n) of the law the contact
+// kernels serve, Hertz's (law_combination.hpp's hertz_combination: its numbers are defined
+// there once): contact_scales (contact.hpp) and the contact kernels (runtime/core/kernel/),
+// whose x86 build computes them in vector registers in the same order of operations (the same
+// bits: test_kernels, test_contact).
 #pragma once
 #include <cmath>
+
+#include "asperity/law_combination.hpp"
 
 namespace asperity {
 
@@ -15,8 +18,10 @@ struct ContactScales {
 };
 
 namespace detail {
-// The numbers in the factors: count, area (pi; M_PI is POSIX, not C++), load, stiffness
-inline constexpr double contact_multipliers[4] = {1.0, 3.14159265358979323846, 4.0 / 3.0, 2.0};
+// The combination the contact kernels and ContactScales serve: the numbers in the factors (count,
+// area, load, stiffness) and the orders they multiply
+inline constexpr const LawCombination& served_combination = hertz_combination;
+inline constexpr const double (&contact_multipliers)[4] = served_combination.multiplier;
 
 // One square root (R^(1/2) sigma^(3/2) = sigma sqrt(R sigma)), grouped as (1, pi, 4/3, 2) N
 // times (1, R sigma, sigma E* sqrt(R sigma), E* sqrt(R sigma)): one vector product in the kernels

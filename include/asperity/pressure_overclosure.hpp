@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 
 namespace asperity {
@@ -48,6 +49,7 @@ struct PressureOverclosureTable {
   long checked_points = 0;                       // where it was measured
   OverclosureDatum datum = OverclosureDatum::mean_summit;
   double mean_summit_overclosure = 0;  // m: the overclosure (in this datum) of the flat at the mean summit height
+  std::string origin;  // the separation's origin in words, where it is not the model's (contact curves')
 };
 
 // The law the table follows: the nominal pressure [Pa] at overclosure h [m] from the mean summit height.
@@ -66,6 +68,16 @@ inline constexpr std::size_t card_points_max = 100000, card_points_min = 3;
 // loosened to the smallest that fits (table.tolerance; found by bisection in its logarithm);
 // Error when even card_tolerance_max does not fit.
 PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model, double pressure_min,
+                                                       double pressure_max, double tolerance,
+                                                       OverclosureDatum datum = OverclosureDatum::mean_summit,
+                                                       std::size_t max_points = card_points_max);
+
+// The same card from contact curves against separation (a measured surface's table,
+// contact_curves.hpp): the law is the curves' served pressure, overclosure from the mean summit
+// height (ContactCurvesData::mean_summit_height; without one only the origin and zero-pressure
+// datums), origin: the separation's datum. Throws Error as above, and for a pressure range
+// beyond the one the curves serve.
+PressureOverclosureTable tabulate_pressure_overclosure(const ContactCurves& curves, double pressure_min,
                                                        double pressure_max, double tolerance,
                                                        OverclosureDatum datum = OverclosureDatum::mean_summit,
                                                        std::size_t max_points = card_points_max);

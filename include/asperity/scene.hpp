@@ -15,6 +15,27 @@
 //   load = [1e-6, 1e-2]             # ... or the range of X_3/2 it visits (one of the two)
 //   max_rel_error = 1e-10           # optional, overrides the scene's
 //
+// A scene may instead name a contact law (docs/contact-laws.md section 8): one [[law]] and no
+// [[curve]]; tablegen tabulates that law's rough-surface pressure, stiffness and area fraction
+// against separation as a contact-curves table (contact_curves_data.hpp):
+//
+//   [[law]]
+//   name = "steel pad"              # optional
+//   law = "kogut-etsion"            # hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion, jackson-green
+//   contact_modulus = 1.15e11       # E* [Pa] (every law)
+//   yield_strength = 1.0e9          # Y [Pa]: kogut-etsion, jackson-green
+//   hardness = 2.0e9                # H [Pa]: chang-etsion-bogy, zhao-maietta-chang
+//   poisson = 0.3                   # nu: chang-etsion-bogy, kogut-etsion, jackson-green
+//   pressure_factor = 0.6           # zhao-maietta-chang's K (optional, 0.6)
+//   geometric_hardness = "2005"     # jackson-green's H_G: "2005" (cosine, default) or "2006"
+//   distribution = "gaussian"       # summit heights: as a [[curve]]'s (shape, side)
+//   height_scale = 1e-6             # sigma_s [m]
+//   summit_radius = 1e-4            # R [m]
+//   summit_density = 1e10           # summits per m^2
+//   nominal_area = 1e-4             # A0 [m^2]
+//   separation = [-1.0, 4.0]        # dimensionless s (origin convention), the range served
+//   max_rel_error = 1e-6            # optional (1e-10 .. 1e-2; default the scene's, 1e-8)
+//
 // Errors name the file, the line and the key (asperity::Error). A scene file is untrusted input
 // (docs/reliability.md): before TOML parsing it must be valid UTF-8 without control characters,
 // at most scene_max_bytes long, nested at most scene_max_nesting deep, with at most
@@ -25,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_law.hpp"
 #include "asperity/integrals.hpp"
 
 namespace asperity {
@@ -41,12 +63,32 @@ struct SceneCurve {
   int line = 0;                      // where the curve starts in the file
 };
 
+// A contact law on a physical surface (see the top of this file)
+struct SceneLaw {
+  std::string name;
+  ContactLaw law;                    // made by its factory (radius: summit_radius)
+  Distribution distribution = Distribution::gaussian;
+  Side side = Side::tail;
+  double shape = 2.0;
+  double height_scale = 0;           // sigma_s [m]
+  double summit_radius = 0;          // R [m]
+  double summit_density = 0;         // [1/m^2]
+  double nominal_area = 0;           // A0 [m^2]
+  double range_min = 0, range_max = 0;  // dimensionless separation s
+  double max_rel_error = 1e-8;
+  int line = 0;
+};
+
 struct Scene {
   std::string name;
   std::string source;                // the file it came from (for messages)
   double memory_budget_bytes = 0;    // 0: no budget
   std::vector<SceneCurve> curves;
+  std::vector<SceneLaw> laws;        // at most one, and then no curves
 };
+
+// The tolerances a law scene may ask (its exact values are quadratures to ~1e-13)
+inline constexpr double scene_law_error_min = 1e-10;
 
 // The limits a scene is checked against.
 inline constexpr double scene_shape_min = 0.3, scene_shape_max = 50.0;

@@ -33,6 +33,15 @@ class TableFileError : public Error {
   TableFileStatus status_;
 };
 
+// What a table file holds (table_schema.hpp): Greenwood-Williamson integrals (Table, table.hpp)
+// or contact curves against separation (ContactCurves, contact_curves.hpp).
+enum class TableKind { integrals, contact_curves };
+const char* to_string(TableKind kind) noexcept;
+// The kind of a table file, after its integrity header is checked. Throws TableFileError as
+// reading it would for a file that is no table (missing, damaged, another schema or version,
+// an unknown kind: invalid).
+TableKind read_table_kind(const std::string& path);
+
 // Fills the first schema::header_bytes of a table file's bytes (an HDF5 file made with a user
 // block of that size) with the integrity header of the rest. Throws Error if size is too small.
 void seal_table_bytes(unsigned char* bytes, std::size_t size);

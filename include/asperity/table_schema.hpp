@@ -35,6 +35,33 @@
 //       grid_separations [S][2]      optional (scene tables): the separations the curve serves
 //                                    (its scene's range), which the grid covers; outside them a
 //                                    lookup answers NaN (X = 0 on the bounded side, s >= 0, excepted)
+//
+// A second kind of table, contact curves against separation (ContactCurvesData,
+// contact_curves_data.hpp), has the same header and root attributes and, at the root, the text
+// attribute kind = "contact-curves" (absent: the Greenwood-Williamson integrals above), with one
+// group and no curve sets:
+//
+//   /contact_curves          attributes: source (what the curves are of: "exact-contact", the
+//                                        exact elastic contact of a measured map), description
+//                                        (the map, its grid, the solver and its options),
+//                                        separation_datum (the datum of the separation, in words),
+//                                        definition (the quantities and their units)
+//       separation      [N]  m, strictly ascending: the nodes (the mean gap, from the datum)
+//       pressure        [N]  Pa, mean nominal pressure, > 0, strictly descending
+//       stiffness       [N]  Pa/m, -dp/d(separation), > 0
+//       area_fraction   [N]  real contact area / nominal area, in (0, 1], never rising
+//       max_rel_error   [3]  the stored bound of the served pressure, stiffness and area fraction
+//                            (relative): measured_rel_error times safety_factor
+//       measured_rel_error [3]  the largest relative error measured against independent solves
+//                            between the nodes (check_points of them)
+//       check_points    [1] int32, safety_factor [1], solver_tolerance [1] (the solves' relative
+//                            residual), contact_modulus [1] Pa, nominal_area [1] m^2
+//       mean_summit_height [1], max_height [1]  optional: m above the separation's datum (the
+//                            GW curves' datum; first contact)
+//   Served between the first and last node (outside: NaN); between nodes by a cubic Hermite in
+//   ln p with the stored stiffness as slope (-k/p), limited to stay monotone (Fritsch-Carlson),
+//   and by Steffen's monotone cubic in ln(area fraction); the stiffness is -p d(ln p)/du of the
+//   interpolant.
 #pragma once
 #include "asperity/segment_kind.hpp"
 #include <cstddef>
@@ -87,6 +114,45 @@ inline constexpr const char* set_knots = "knots";
 inline constexpr const char* set_max_rel_error = "max_rel_error";
 inline constexpr const char* set_grid_tolerance = "grid_tolerance";
 inline constexpr const char* set_grid_separations = "grid_separations";
+
+// The kind of a table (root attribute `kind`; absent: integrals).
+inline constexpr const char* attr_kind = "kind";
+inline constexpr const char* kind_integrals = "gw-integrals";
+inline constexpr const char* kind_contact_curves = "contact-curves";
+
+// Contact curves against separation (see above).
+inline constexpr const char* group_contact_curves = "contact_curves";
+inline constexpr const char* attr_source = "source";
+inline constexpr const char* attr_description = "description";
+inline constexpr const char* attr_separation_datum = "separation_datum";
+inline constexpr const char* set_separation = "separation";
+inline constexpr const char* set_pressure = "pressure";
+inline constexpr const char* set_stiffness = "stiffness";
+inline constexpr const char* set_area_fraction = "area_fraction";
+inline constexpr const char* set_measured_rel_error = "measured_rel_error";
+inline constexpr const char* set_check_points = "check_points";
+inline constexpr const char* set_safety_factor = "safety_factor";
+inline constexpr const char* set_solver_tolerance = "solver_tolerance";
+inline constexpr const char* set_contact_modulus = "contact_modulus";
+inline constexpr const char* set_nominal_area = "nominal_area";
+inline constexpr const char* set_mean_summit_height = "mean_summit_height";
+inline constexpr const char* set_max_height = "max_height";
+// What a reader accepts: bounds that keep every served quantity and its logarithm's slope
+// finite, far beyond a physical surface's (separations of micrometres, pressures of kPa to GPa).
+inline constexpr int min_contact_curve_nodes = 3, max_contact_curve_nodes = 65536;
+inline constexpr double max_contact_separation = 1e3;  // |separation| [m]
+inline constexpr double min_contact_value = 1e-150, max_contact_value = 1e150;  // pressure [Pa], stiffness [Pa/m]
+inline constexpr double min_contact_node_spacing = 1e-12;  // relative to the separations' span
+inline constexpr double max_contact_rel_error = 1e3;     // a stored bound beyond this is refused
+
+inline constexpr const char* contact_curves_definition =
+    "Contact curves against separation u [m]: the mean nominal pressure p(u) [Pa] (load over the\n"
+    "nominal area), the normal stiffness per area k(u) = -dp/du [Pa/m] and the real contact area\n"
+    "fraction a(u) (real area / nominal area). Stored at nodes; served between the first and last\n"
+    "node (NaN outside): ln p by cubic Hermite with slope -k/p at the nodes (Fritsch-Carlson limited\n"
+    "to stay monotone), k = -p d(ln p)/du of that interpolant, ln a by Steffen's monotone cubic.\n"
+    "max_rel_error: the measured largest relative error of the served values against independent\n"
+    "solves between the nodes (measured_rel_error) times safety_factor.";
 
 inline constexpr const char* conventions =
     "Greenwood-Williamson asperity integrals, see docs/model.md of the asperity project.\n"

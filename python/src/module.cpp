@@ -19,6 +19,7 @@
 #include "bindings.hpp"
 #include "paths.hpp"
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "asperity/instruction_set.hpp"
@@ -121,18 +122,11 @@ void warn_past_gw(double area_fraction) {
 template <class Answer>
 PhysicalStateRecord physical_states(py::handle input, const char* name, Answer answer) {
   double largest_fraction = 0;  // NaN never counts
-  PhysicalStateRecord record{make_record(physical_state_type, map_records<9>(input, name, [&](double x, double** out, std::size_t i) {
+  constexpr std::size_t fields = physical_state_field_count;
+  PhysicalStateRecord record{make_record(physical_state_type, map_records<fields>(input, name, [&](double x, double** out, std::size_t i) {
     const PhysicalState state = answer(x);
     if (state.area_fraction > largest_fraction) largest_fraction = state.area_fraction;
-    out[0][i] = state.separation;
-    out[1][i] = state.mean_separation;
-    out[2][i] = state.count;
-    out[3][i] = state.real_area;
-    out[4][i] = state.area_fraction;
-    out[5][i] = state.load;
-    out[6][i] = state.pressure;
-    out[7][i] = state.stiffness;
-    out[8][i] = state.stiffness_over_load;
+    for (std::size_t k = 0; k < fields; ++k) out[k][i] = state.*physical_state_members[k];
   }))};
   warn_past_gw(largest_fraction);
   return record;
@@ -209,16 +203,17 @@ void bind(py::module_& m) {
       "ratio (3/2) X_1/2 / X_3/2 (in separation units).";
   m.attr("ContactState") = contact_state;
   contact_state_type = contact_state.release();
-  py::object physical_state = collections.attr("namedtuple")(
-      "PhysicalState",
-      py::make_tuple("separation", "mean_separation", "count", "real_area", "area_fraction", "load", "pressure",
-                     "stiffness", "stiffness_over_load"),
-      "module"_a = "asperity");
-  physical_state.attr("__doc__") =
-      "ContactModel's answer (floats, or arrays shaped like the input), SI units: separation [m] (from the model's "
-      "datum, ContactModel.datum: 'origin' by default, the Weibull origin or the Gaussian's mean; or 'mean-summit', "
-      "'mean-plane'), mean_separation [m] (from the mean summit height), count, real_area [m^2], area_fraction "
-      "(A/A0), load [N], pressure [Pa] (load/A0), stiffness [N/m], stiffness_over_load [1/m].";
+  // the fields' names and meanings from their one list (physical_state_fields.hpp)
+  py::list physical_state_names;
+  std::string physical_state_doc = "ContactModel's answer (floats, or arrays shaped like the input), SI units:";
+  for (const PhysicalStateField& field : physical_state_fields) {
+    physical_state_names.append(field.name);
+    physical_state_doc += std::string(" ") + field.name + " (" + field.meaning + "),";
+  }
+  physical_state_doc.back() = '.';
+  py::object physical_state = collections.attr("namedtuple")("PhysicalState", py::tuple(physical_state_names),
+                                                             "module"_a = "asperity");
+  physical_state.attr("__doc__") = physical_state_doc;
   m.attr("PhysicalState") = physical_state;
   physical_state_type = physical_state.release();
 
@@ -747,6 +742,118 @@ void bind(py::module_& m) {
           },
           "separation"_a, "s (origin convention, units of sigma_s) of d [m] from the model's datum: d / sigma_s plus\n"
           "the datum's position / sigma_s.");
+
+  py::class_<ContactCurves>(m, "ContactCurves",
+                            "Contact curves against separation, served: a measured surface's exact contact tabulated\n"
+                            "(asperity exact-contact --table; docs/exact-contact.md). Separation [m] from the table's\n"
+                            "datum (separation_datum: a map's mean plane), nominal pressure [Pa], stiffness -dp/du\n"
+                            "[Pa/m], real area fraction; NaN outside the range served (the first to the last node).\n"
+                            "Immutable: one object may serve many threads.")
+      .def(py::init([](const PathName& path) { return ContactCurves::open(to_path(path.object)); }), "path"_a,
+           "Opens and validates a contact-curves table (HDF5); raises asperity.Error naming the file and the problem.")
+      .def_static("open", [](const PathName& path) { return ContactCurves::open(to_path(path.object)); }, "path"_a,
+                  "The same as ContactCurves(path).")
+      .def(
+          "pressure",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.pressure(v); });
+          },
+          "separation"_a, "The nominal pressure [Pa] at separations [m] (float or array).")
+      .def(
+          "stiffness",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.stiffness(v); });
+          },
+          "separation"_a, "The stiffness per area -dp/du [Pa/m] at separations [m].")
+      .def(
+          "area_fraction",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.area_fraction(v); });
+          },
+          "separation"_a, "The real contact area over the nominal area at separations [m].")
+      .def(
+          "separation_at_pressure",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "pressure", [&](double v) { return curves.separation_at_pressure(v); });
+          },
+          "pressure"_a, "The separation [m] where the served pressure is `pressure` [Pa] (the inverse); NaN outside the range.")
+      .def(
+          "pressure_overclosure_card",
+          [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,
+             double tolerance, const std::string& format, const std::string& units, const std::string& description,
+             const std::string& datum) {
+            OverclosureDatum which;
+            if (!parse_overclosure_datum(datum, which))
+              throw Error("unknown overclosure datum '" + datum + "' (mean-summit, origin, zero-pressure, mean-plane)");
+            const PressureOverclosureTable table = tabulate_pressure_overclosure(
+                curves, pressure_min.value_or(curves.min_pressure()), pressure_max.value_or(curves.max_pressure()),
+                tolerance, which);
+            std::ostringstream out;
+            write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
+            return out.str();
+          },
+          "pressure_min"_a = py::none(), "pressure_max"_a = py::none(), "tolerance"_a = 1e-3, "format"_a = "calculix",
+          "units"_a = "si", "description"_a = "", "datum"_a = "mean-summit",
+          "FE export: the served pressure as the tabular pressure-overclosure card of CalculiX or Abaqus (or CSV),\n"
+          "overclosure from the mean summit height (datum 'mean-summit'), or 'origin' (the separation's datum) or\n"
+          "'zero-pressure'; the pressures default to the whole range served. Raises asperity.Error for a range\n"
+          "beyond the curves' or a bad tolerance.")
+      .def_property_readonly("min_separation", &ContactCurves::min_separation)
+      .def_property_readonly("max_separation", &ContactCurves::max_separation)
+      .def_property_readonly("min_pressure", &ContactCurves::min_pressure, "At max_separation [Pa].")
+      .def_property_readonly("max_pressure", &ContactCurves::max_pressure, "At min_separation [Pa].")
+      .def_property_readonly("limited_intervals", &ContactCurves::limited_intervals,
+                             "Intervals whose Hermite slopes were limited to keep ln p monotone.")
+      .def_property_readonly(
+          "max_rel_error",
+          [](const ContactCurves& c) {
+            const double* e = c.data().max_rel_error;
+            return py::make_tuple(e[0], e[1], e[2]);
+          },
+          "The stored bound (relative) of the served (pressure, stiffness, area fraction): measured_rel_error\n"
+          "times safety_factor.")
+      .def_property_readonly(
+          "measured_rel_error",
+          [](const ContactCurves& c) {
+            const double* e = c.data().measured_rel_error;
+            return py::make_tuple(e[0], e[1], e[2]);
+          },
+          "The largest relative errors measured against exact solves between the nodes (check_points of them).")
+      .def_property_readonly("check_points", [](const ContactCurves& c) { return c.data().check_points; })
+      .def_property_readonly("safety_factor", [](const ContactCurves& c) { return c.data().safety_factor; })
+      .def_property_readonly("solver_tolerance", [](const ContactCurves& c) { return c.data().solver_tolerance; },
+                             "The solves' own convergence tolerance (relative residual).")
+      .def_property_readonly("contact_modulus", [](const ContactCurves& c) { return c.data().contact_modulus; })
+      .def_property_readonly("nominal_area", [](const ContactCurves& c) { return c.data().nominal_area; })
+      .def_property_readonly("mean_summit_height", [](const ContactCurves& c) { return c.data().mean_summit_height; },
+                             "Above the separation's datum [m] (NaN: not stated).")
+      .def_property_readonly("max_height", [](const ContactCurves& c) { return c.data().max_height; },
+                             "The highest point above the separation's datum [m] (NaN: not stated).")
+      .def_property_readonly("source", [](const ContactCurves& c) { return c.data().source; })
+      .def_property_readonly("description", [](const ContactCurves& c) { return path_text(c.data().description); })
+      .def_property_readonly("separation_datum", [](const ContactCurves& c) { return c.data().separation_datum; })
+      .def_property_readonly("generator", [](const ContactCurves& c) { return c.data().generator; })
+      .def_property_readonly("generator_options", [](const ContactCurves& c) { return c.data().generator_options; })
+      .def_property_readonly(
+          "nodes",
+          [](const ContactCurves& c) {
+            const ContactCurvesData& d = c.data();
+            py::dict nodes;
+            nodes["separation"] = py::array_t<double>(d.separation.size(), d.separation.data());
+            nodes["pressure"] = py::array_t<double>(d.pressure.size(), d.pressure.data());
+            nodes["stiffness"] = py::array_t<double>(d.stiffness.size(), d.stiffness.data());
+            nodes["area_fraction"] = py::array_t<double>(d.area_fraction.size(), d.area_fraction.data());
+            return nodes;
+          },
+          "The table's nodes: arrays separation, pressure, stiffness, area_fraction (copies).")
+      .def("__copy__", [](const ContactCurves& c) { return c; })
+      .def("__deepcopy__", [](const ContactCurves& c, py::dict) { return c; }, "memo"_a)
+      .def("__repr__", [](const ContactCurves& c) {
+        std::ostringstream text;
+        text << "<asperity.ContactCurves of " << c.data().source << ": " << c.data().separation.size()
+             << " nodes, separations " << c.min_separation() << " to " << c.max_separation() << " m>";
+        return text.str();
+      });
 
   py::class_<PerssonLaw>(m, "PerssonLaw",
                          "Persson's (2007) law for comparison: p = reference_pressure exp(-s / beta).")

@@ -15,6 +15,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@
 #include "asperity/topography/contact_comparison.hpp"
 #include "asperity/topography/distribution_fit.hpp"
 #include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/exact_contact_table.hpp"
+#include "asperity/contact_curves_data.hpp"
 #include "asperity/topography/persson_contact.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/height_map.hpp"
@@ -168,14 +171,12 @@ topo::HeightMap map_from_array(py::handle heights, double dx, double dy, std::st
 
 // PhysicalStates as the asperity.PhysicalState record of arrays.
 py::object states_record(py::handle type, const std::vector<PhysicalState>& states) {
-  constexpr std::size_t fields = 9;
+  constexpr std::size_t fields = physical_state_field_count;
   std::vector<py::array_t<double>> arrays;
   for (std::size_t k = 0; k < fields; ++k) arrays.emplace_back(static_cast<py::ssize_t>(states.size()));
   for (std::size_t i = 0; i < states.size(); ++i) {
     const PhysicalState& s = states[i];
-    const double values[fields] = {s.separation, s.mean_separation, s.count, s.real_area, s.area_fraction,
-                                   s.load, s.pressure, s.stiffness, s.stiffness_over_load};
-    for (std::size_t k = 0; k < fields; ++k) arrays[k].mutable_data()[i] = values[k];
+    for (std::size_t k = 0; k < fields; ++k) arrays[k].mutable_data()[i] = s.*physical_state_members[k];
   }
   py::tuple arguments(fields);
   for (std::size_t k = 0; k < fields; ++k) arguments[k] = arrays[k];
@@ -815,6 +816,33 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
             return h.solver.at_mean_gap(mean_gap);
           },
           "mean_gap"_a, "The contact at a mean gap [m] > 0 (the separation from the mean plane).")
+      .def(
+          "write_table",
+          [](ExactContactHandle& h, const PathName& path, const std::vector<double>& pressures, double safety_factor,
+             const std::string& description) {
+            const std::string file = to_path(path.object);
+            topo::ExactContactTable table;
+            {
+              py::gil_scoped_release unlocked;
+              std::lock_guard<std::mutex> guard(h.lock);
+              for (std::size_t i = 1; i < pressures.size(); ++i)
+                if (!(pressures[i] > pressures[i - 1])) throw Error("write_table needs the pressures in ascending order");
+              std::vector<topo::ContactStep> nodes;
+              for (double pressure : pressures) nodes.push_back(h.solver.at_pressure(pressure));
+              std::ostringstream options;
+              options << "asperity.topography.ExactContact.write_table: nodes at pressures [Pa]:";
+              for (double pressure : pressures) options << " " << pressure;
+              table = topo::measure_exact_contact_table(h.solver, nodes, description, options.str(), safety_factor);
+              write_contact_curves_file(table.data, file);
+            }
+            py::list nodes;
+            for (const topo::ContactStep& step : table.nodes) nodes.append(step);
+            return nodes;
+          },
+          "path"_a, "pressures"_a, "safety_factor"_a = topo::default_table_safety_factor, "description"_a = "",
+          "Writes the map's contact curves as a contact-curves table (asperity.ContactCurves serves it): solves at\n"
+          "the pressures [Pa] (ascending, at least 3) as nodes, one more solve between each two to measure the\n"
+          "served curves' error; the stored bound is that times safety_factor. Returns the nodes' ContactSteps.")
       .def(
           "pressure_field",
           [](ExactContactHandle& h) {

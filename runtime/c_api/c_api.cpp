@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "asperity/plausibility.hpp"
@@ -31,6 +33,9 @@ struct asperity_curve {
 struct asperity_model {
   asperity::ContactModel model;
   std::string warnings;  // asperity_model_warnings: implausible_values, one a line
+};
+struct asperity_contact_curves {
+  asperity::ContactCurves curves;
 };
 
 namespace {
@@ -325,12 +330,23 @@ int asperity_model_at_separation_batch(const asperity_model* model, int quantity
 
 void asperity_model_close(asperity_model* model) { delete model; }
 
+// asperity.h's asperity_physical_state is PhysicalState field for field: its names and order
+// checked here against the one list (physical_state_fields.hpp)
+#define ASPERITY_SAME_FIELD(name, column, meaning)                                            \
+  static_assert(offsetof(asperity_physical_state, name) == offsetof(asperity::PhysicalState, name), \
+                "asperity.h's asperity_physical_state." #name " is out of place");
+ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_SAME_FIELD)
+#undef ASPERITY_SAME_FIELD
+static_assert(sizeof(asperity_physical_state) == sizeof(asperity::PhysicalState),
+              "asperity.h's asperity_physical_state has fields PhysicalState lacks");
+
 static int physical_query(const asperity_model* model, double input, asperity_physical_state* out,
                           asperity::PhysicalState (asperity::ContactModel::*query)(double) const noexcept) {
   if (!model || !out) return ASPERITY_BAD_HANDLE;
   const asperity::PhysicalState state = (model->model.*query)(input);
-  *out = {state.separation, state.mean_separation, state.count, state.real_area, state.area_fraction,
-          state.load, state.pressure, state.stiffness, state.stiffness_over_load};
+#define ASPERITY_COPY_FIELD(name, column, meaning) out->name = state.name;
+  ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_COPY_FIELD)
+#undef ASPERITY_COPY_FIELD
   if (std::isnan(input)) return ASPERITY_BAD_SEPARATION;
   // the count is NaN for a number in only where the separation is not served (a scene table's range)
   return std::isnan(state.count) ? ASPERITY_OUTSIDE_RANGE : ASPERITY_OK;
@@ -442,6 +458,94 @@ int asperity_model_pressure_overclosure_card(const asperity_model* model, double
       [&](std::ostream& out) {
         const asperity::PressureOverclosureTable table =
             asperity::tabulate_pressure_overclosure(model->model, pressure_min, pressure_max, tolerance);
+        asperity::write_pressure_overclosure(out, table, card_format, card_units, description ? description : "");
+      },
+      buffer, buffer_size, length, err, err_size);
+}
+
+asperity_status asperity_contact_curves_load(const char* path, asperity_contact_curves** curves, char* err,
+                                             size_t err_size) {
+  if (!curves || !path) {
+    write_error(err, err_size, "asperity_contact_curves_load: NULL path or output");
+    if (curves) *curves = nullptr;
+    return ASPERITY_BAD_HANDLE;
+  }
+  *curves = nullptr;
+  return guarded_status(err, err_size, "asperity_contact_curves_load", ASPERITY_FAILURE, curves,
+                        [&] { return new asperity_contact_curves{asperity::ContactCurves::open(path)}; });
+}
+
+void asperity_contact_curves_close(asperity_contact_curves* curves) { delete curves; }
+
+int asperity_contact_curves_get_info(const asperity_contact_curves* curves, asperity_contact_curves_info* out) {
+  if (!curves || !out) return ASPERITY_BAD_HANDLE;
+  const asperity::ContactCurves& c = curves->curves;
+  const asperity::ContactCurvesData& data = c.data();
+  asperity_contact_curves_info info{};
+  info.min_separation = c.min_separation();
+  info.max_separation = c.max_separation();
+  info.min_pressure = c.min_pressure();
+  info.max_pressure = c.max_pressure();
+  for (int i = 0; i < 3; ++i) {
+    info.max_rel_error[i] = data.max_rel_error[i];
+    info.measured_rel_error[i] = data.measured_rel_error[i];
+  }
+  info.safety_factor = data.safety_factor;
+  info.solver_tolerance = data.solver_tolerance;
+  info.contact_modulus = data.contact_modulus;
+  info.nominal_area = data.nominal_area;
+  info.mean_summit_height = data.mean_summit_height;
+  info.nodes = static_cast<int>(data.separation.size());
+  info.check_points = data.check_points;
+  *out = info;
+  return ASPERITY_OK;
+}
+
+double asperity_contact_curves_pressure(const asperity_contact_curves* curves, double separation) {
+  return curves ? curves->curves.pressure(separation) : not_a_number;
+}
+double asperity_contact_curves_stiffness(const asperity_contact_curves* curves, double separation) {
+  return curves ? curves->curves.stiffness(separation) : not_a_number;
+}
+double asperity_contact_curves_area_fraction(const asperity_contact_curves* curves, double separation) {
+  return curves ? curves->curves.area_fraction(separation) : not_a_number;
+}
+double asperity_contact_curves_separation(const asperity_contact_curves* curves, double pressure) {
+  return curves ? curves->curves.separation_at_pressure(pressure) : not_a_number;
+}
+
+namespace {
+int curves_state(const asperity::ContactCurvesState& state, double input, asperity_contact_curves_state* out) {
+  *out = {state.separation, state.pressure, state.stiffness, state.area_fraction};
+  if (std::isnan(input)) return ASPERITY_BAD_SEPARATION;
+  return std::isnan(state.pressure) || std::isnan(state.separation) ? ASPERITY_OUTSIDE_RANGE : ASPERITY_OK;
+}
+}  // namespace
+
+int asperity_contact_curves_at_separation(const asperity_contact_curves* curves, double separation,
+                                          asperity_contact_curves_state* out) {
+  if (!curves || !out) return ASPERITY_BAD_HANDLE;
+  return curves_state(curves->curves.at_separation(separation), separation, out);
+}
+
+int asperity_contact_curves_at_pressure(const asperity_contact_curves* curves, double pressure,
+                                        asperity_contact_curves_state* out) {
+  if (!curves || !out) return ASPERITY_BAD_HANDLE;
+  return curves_state(curves->curves.at_pressure(pressure), pressure, out);
+}
+
+int asperity_contact_curves_pressure_overclosure_card(const asperity_contact_curves* curves, double pressure_min,
+                                                      double pressure_max, double tolerance, const char* format,
+                                                      const char* units, const char* description, char* buffer,
+                                                      size_t buffer_size, size_t* length, char* err, size_t err_size) {
+  if (!curves) return ASPERITY_BAD_HANDLE;
+  asperity::CardFormat card_format;
+  asperity::CardUnits card_units;
+  if (!card_names(format, units, card_format, card_units, err, err_size)) return ASPERITY_BAD_NAME;
+  return card_out(
+      [&](std::ostream& out) {
+        const asperity::PressureOverclosureTable table =
+            asperity::tabulate_pressure_overclosure(curves->curves, pressure_min, pressure_max, tolerance);
         asperity::write_pressure_overclosure(out, table, card_format, card_units, description ? description : "");
       },
       buffer, buffer_size, length, err, err_size);

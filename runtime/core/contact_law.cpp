@@ -2,6 +2,8 @@
 // (sources in docs/contact-laws.md).
 #include "asperity/contact_law.hpp"
 
+#include "asperity/law_combination.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -31,13 +33,15 @@ ContactLaw bad_law(ContactLawKind kind) noexcept {
   return law;
 }
 
-// Hertz: P = (4/3) E* R^1/2 w^3/2, A = pi R w, dP/dw = 2 E* (R w)^1/2
+// Hertz: P = (4/3) E* R^1/2 w^3/2, A = pi R w, dP/dw = 2 E* (R w)^1/2: the numbers are
+// law_combination.hpp's hertz_combination, the same that the rough-surface kernels multiply
+constexpr const double (&hertz_numbers)[4] = hertz_combination.multiplier;  // count, area, load, stiffness
 AsperityResponse hertz(double radius, double modulus, double w) noexcept {
   const double root = std::sqrt(radius * w);
-  return {(4.0 / 3.0) * modulus * root * w, pi * radius * w, 2 * modulus * root};
+  return {hertz_numbers[2] * modulus * root * w, hertz_numbers[1] * radius * w, hertz_numbers[3] * modulus * root};
 }
 double hertz_load(double radius, double modulus, double w) noexcept {
-  return (4.0 / 3.0) * modulus * std::sqrt(radius * w) * w;
+  return hertz_numbers[2] * modulus * std::sqrt(radius * w) * w;
 }
 
 // Elastic-plastic laws share: R, E*, omega_c, P_c = Hertz at omega_c, A_c = pi R omega_c.
@@ -215,6 +219,22 @@ const char* contact_law_name(ContactLawKind kind) noexcept {
     case ContactLawKind::maugis_dugdale: return "maugis-dugdale";
   }
   return "unknown";
+}
+
+bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept {
+  if (!name) return false;
+  for (ContactLawKind candidate :
+       {ContactLawKind::hertz, ContactLawKind::chang_etsion_bogy, ContactLawKind::zhao_maietta_chang,
+        ContactLawKind::kogut_etsion, ContactLawKind::jackson_green, ContactLawKind::dmt, ContactLawKind::jkr,
+        ContactLawKind::maugis_dugdale}) {
+    const char *a = name, *b = contact_law_name(candidate);
+    while (*a && *a == *b) ++a, ++b;
+    if (*a == 0 && *b == 0) {
+      kind = candidate;
+      return true;
+    }
+  }
+  return false;
 }
 
 ContactLaw hertz_law(double radius, double modulus) noexcept {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <ostream>
 #include <sstream>
 
@@ -43,11 +44,21 @@ struct Node {
   double overclosure, pressure;
 };
 
+// A law as the tabulation sees it, overclosures from the mean summit height: the nominal
+// pressure at an overclosure, the overclosure at a pressure, dp/dh at an overclosure, and where
+// the separation's origin is (the overclosure in the origin datum less that from the mean summit).
+struct LawFunctions {
+  std::function<double(double)> pressure, overclosure, slope;
+  double origin_shift = 0;
+  double mean_plane_shift = NAN;  // likewise for the mean plane; NaN: not known, no_mean_plane says why
+  std::string no_mean_plane;
+};
+
 // The law in the card's datum: overclosure h in the datum is h - shift from the mean summit height.
 struct DatumLaw {
-  const ContactModel& model;
+  const LawFunctions& law;
   double shift;
-  double pressure(double overclosure) const { return law_pressure(model, overclosure - shift); }
+  double pressure(double overclosure) const { return law.pressure(overclosure - shift); }
 };
 
 Node node_at(const DatumLaw& law, double overclosure) {
@@ -153,9 +164,10 @@ double law_overclosure(const ContactModel& model, double pressure) {
   return -model.at_pressure(pressure).mean_separation;
 }
 
-PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model, double pressure_min,
-                                                       double pressure_max, double tolerance, OverclosureDatum datum,
-                                                       std::size_t max_points) {
+namespace {
+
+PressureOverclosureTable tabulate_law(const LawFunctions& functions, double pressure_min, double pressure_max,
+                                      double tolerance, OverclosureDatum datum, std::size_t max_points) {
   if (!(std::isfinite(pressure_min) && std::isfinite(pressure_max) && pressure_min > 0 && pressure_max > pressure_min))
     throw Error("the pressure range needs 0 < PMIN < PMAX, finite");
   if (!(tolerance >= card_tolerance_min && tolerance <= card_tolerance_max)) {
@@ -170,26 +182,22 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
             << ", got " << max_points;
     throw Error(message.str());
   }
-  const double low_mean = law_overclosure(model, pressure_min), high_mean = law_overclosure(model, pressure_max);
+  const double low_mean = functions.overclosure(pressure_min), high_mean = functions.overclosure(pressure_max);
   if (!(std::isfinite(low_mean) && std::isfinite(high_mean) && high_mean > low_mean))
     throw Error("the model gives no finite overclosure over this pressure range");
   // Below pressure_min the card follows the law's tangent there down to zero pressure.
   const auto tangent_zero = [&](double overclosure_mean, double pressure) {
-    const PhysicalState state = model.at_separation(separation_of(model, overclosure_mean));
-    const double slope = state.stiffness / model.surface().nominal_area;  // dp/dh
-    return overclosure_mean - pressure / slope;
+    return overclosure_mean - pressure / functions.slope(overclosure_mean);
   };
   double shift = 0;  // overclosure in the datum minus overclosure from the mean summit height
-  if (datum == OverclosureDatum::origin) shift = -mean_summit_position(model);
+  if (datum == OverclosureDatum::origin) shift = functions.origin_shift;
   if (datum == OverclosureDatum::mean_plane) {
-    if (model.datum() != SeparationDatum::mean_plane)
-      throw Error("the mean-plane overclosure datum needs the mean summit height above the mean plane: make the "
-                  "model with the mean-plane separation datum and that height");
-    shift = -model.mean_summit_height();  // the flat at the mean summit is that far from the mean plane
+    if (std::isnan(functions.mean_plane_shift)) throw Error(functions.no_mean_plane);
+    shift = functions.mean_plane_shift;
   }
   if (datum == OverclosureDatum::zero_pressure) shift = -tangent_zero(low_mean, pressure_min);
   if (!std::isfinite(shift)) throw Error("the model gives no finite datum for the overclosure");
-  const DatumLaw law{model, shift};
+  const DatumLaw law{functions, shift};
   // The range's ends: the pressures asked, at the law's overclosures.
   const Node low{round_to_card(low_mean + shift), round_to_card(pressure_min)};
   const Node high{round_to_card(high_mean + shift), round_to_card(pressure_max)};
@@ -244,6 +252,58 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
   table.checked_points = result.checked;
   table.datum = datum;
   table.mean_summit_overclosure = shift;
+  return table;
+}
+
+}  // namespace
+
+PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model, double pressure_min,
+                                                       double pressure_max, double tolerance, OverclosureDatum datum,
+                                                       std::size_t max_points) {
+  LawFunctions law;
+  law.pressure = [&](double overclosure) { return law_pressure(model, overclosure); };
+  law.overclosure = [&](double pressure) { return law_overclosure(model, pressure); };
+  law.slope = [&](double overclosure) {  // dp/dh
+    return model.at_separation(separation_of(model, overclosure)).stiffness / model.surface().nominal_area;
+  };
+  law.origin_shift = -mean_summit_position(model);  // the separation's origin, whatever the model's datum
+  if (model.datum() == SeparationDatum::mean_plane)
+    law.mean_plane_shift = -model.mean_summit_height();  // the flat at the mean summit is that far from the mean plane
+  law.no_mean_plane =
+      "the mean-plane overclosure datum needs the mean summit height above the mean plane: make the model with the "
+      "mean-plane separation datum and that height";
+  return tabulate_law(law, pressure_min, pressure_max, tolerance, datum, max_points);
+}
+
+PressureOverclosureTable tabulate_pressure_overclosure(const ContactCurves& curves, double pressure_min,
+                                                       double pressure_max, double tolerance, OverclosureDatum datum,
+                                                       std::size_t max_points) {
+  const double summit = curves.data().mean_summit_height;
+  if (std::isnan(summit) && datum == OverclosureDatum::mean_summit)
+    throw Error("the contact curves state no mean summit height: give the overclosure datum origin or zero-pressure");
+  const double from = std::isnan(summit) ? 0.0 : summit;  // overclosure from here: -(u - from)
+  if (!(pressure_min >= curves.min_pressure() && pressure_max <= curves.max_pressure())) {
+    std::ostringstream message;
+    message << "the contact curves serve pressures from " << curves.min_pressure() << " to " << curves.max_pressure()
+            << " Pa: the card's range must lie within them";
+    throw Error(message.str());
+  }
+  // The card's 13 digits may put the range's ends a hair outside the curves: those are their ends.
+  const double low_u = curves.min_separation(), high_u = curves.max_separation(), hair = 1e-9 * (high_u - low_u);
+  const auto separation = [=](double overclosure) {
+    const double u = from - overclosure;
+    return u < low_u && u > low_u - hair ? low_u : u > high_u && u < high_u + hair ? high_u : u;
+  };
+  LawFunctions law;
+  law.pressure = [&](double overclosure) { return curves.pressure(separation(overclosure)); };
+  law.overclosure = [&](double pressure) { return from - curves.separation_at_pressure(pressure); };
+  law.slope = [&](double overclosure) { return curves.stiffness(separation(overclosure)); };  // dp/dh = -dp/du
+  law.origin_shift = -from;  // the origin datum: overclosure -u, from the separation's datum
+  // The curves name their separation's datum in words only: overclosure from it is the origin datum.
+  law.no_mean_plane = "contact curves take the overclosure datums mean-summit, origin (their separation's datum: " +
+                      curves.data().separation_datum + ") and zero-pressure, not mean-plane";
+  PressureOverclosureTable table = tabulate_law(law, pressure_min, pressure_max, tolerance, datum, max_points);
+  table.origin = curves.data().separation_datum;
   return table;
 }
 
@@ -333,6 +393,10 @@ void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTabl
     datum << "  from the mean plane of the surface heights to the flat (--overclosure-datum mean-plane; the mean\n"
           << "  summit height is " << card_number(-table.mean_summit_overclosure * length) << " " << length_unit
           << " above it)\n"
+          << mean_at;
+  else if (table.datum == OverclosureDatum::origin && !table.origin.empty())
+    datum << "  from the origin of the separation (" << table.origin << ") to the flat\n"
+          << "  (--overclosure-datum origin)\n"
           << mean_at;
   else if (table.datum == OverclosureDatum::origin)
     datum << "  from the origin of the separation (the Weibull origin: its lowest summit on the tail side, its\n"

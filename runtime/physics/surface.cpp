@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "asperity/contact_scales.hpp"
 #include "asperity/error.hpp"
 
 namespace asperity {
@@ -35,10 +36,10 @@ void RoughSurface::validate() const {
   require_positive(contact_modulus, "contact modulus E*");
   // The factors of docs/model.md section 3 must be ordinary numbers: sigma_s = 1e-300 or E* = 1e308
   // would give a load of 0 or inf at every separation.
+  // (the factors the kernels multiply: contact_scales.hpp)
   const double n = summit_count();
-  const double factors[] = {n, M_PI * n * summit_radius * height_scale,
-                            (4.0 / 3.0) * n * contact_modulus * std::sqrt(summit_radius) * height_scale * std::sqrt(height_scale),
-                            2 * n * contact_modulus * std::sqrt(summit_radius * height_scale), n / nominal_area};
+  const ContactScales scales = detail::contact_scales_of(n, summit_radius, height_scale, contact_modulus);
+  const double factors[] = {scales.count, scales.area, scales.load, scales.stiffness, n / nominal_area};
   const char* names[] = {"summit count N = density * A0", "area factor pi N R sigma_s",
                          "load factor (4/3) N E* R^1/2 sigma_s^3/2", "stiffness factor 2 N E* R^1/2 sigma_s^1/2",
                          "summit density"};

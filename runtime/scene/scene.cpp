@@ -240,6 +240,138 @@ SceneCurve read_curve(const toml::value& table, double default_tolerance, std::s
   return curve;
 }
 
+// The summit heights of a [[curve]] or a [[law]]: distribution, shape, side
+void read_heights(const toml::value& table, const std::string& where, Distribution& distribution, Side& side,
+                  double& shape) {
+  const toml::value* given = entry_of(table, "distribution");
+  if (!given) fail_at(table, where + " has no 'distribution'", "here");
+  if (!parse_distribution(text(*given, "distribution"), distribution))
+    fail_at(*given, "distribution must be \"weibull\" or \"gaussian\"", "unknown distribution");
+  if (const toml::value* s = entry_of(table, "side"))
+    if (!parse_side(text(*s, "side"), side)) fail_at(*s, "side must be \"tail\" or \"bounded\"", "here");
+  if (distribution == Distribution::gaussian) {
+    if (const toml::value* s = entry_of(table, "shape")) fail_at(*s, "the Gaussian has no shape", "remove this key");
+    if (side == Side::bounded) fail_at(*entry_of(table, "side"), "the Gaussian has a tail side only", "here");
+    shape = 2.0;
+    return;
+  }
+  const toml::value* s = entry_of(table, "shape");
+  if (!s) fail_at(table, where + " has no 'shape'", "here");
+  shape = number(*s, "shape");
+  if (!(shape >= scene_shape_min && shape <= scene_shape_max)) {
+    std::ostringstream message;
+    message << "shape must be between " << scene_shape_min << " and " << scene_shape_max;
+    fail_at(*s, message.str(), "out of range");
+  }
+}
+
+SceneLaw read_law(const toml::value& table, double default_tolerance) {
+  const std::string where = "the law";
+  if (!table.is_table()) fail_at(table, where + " is not a table", "here");
+  check_keys(table,
+             {"name", "law", "contact_modulus", "yield_strength", "hardness", "poisson", "pressure_factor",
+              "geometric_hardness", "distribution", "shape", "side", "height_scale", "summit_radius", "summit_density",
+              "nominal_area", "separation", "max_rel_error"},
+             where);
+  SceneLaw out;
+  out.line = static_cast<int>(table.location().line());
+  out.max_rel_error = std::max(default_tolerance, scene_law_error_min);
+  auto required = [&](const std::string& key) -> const toml::value& {
+    const toml::value* value = entry_of(table, key);
+    if (!value) fail_at(table, where + " has no '" + key + "'", "this law");
+    return *value;
+  };
+  auto positive = [&](const std::string& key) {
+    const toml::value& value = required(key);
+    const double x = number(value, key);
+    if (!(std::isfinite(x) && x > 0)) fail_at(value, "'" + key + "' must be positive and finite", "here");
+    return x;
+  };
+  if (const toml::value* name = entry_of(table, "name")) out.name = name_text(*name);
+  const toml::value& law_name = required("law");
+  ContactLawKind kind;
+  if (!contact_law_kind_of(text(law_name, "law").c_str(), kind))
+    fail_at(law_name,
+            "law must be \"hertz\", \"chang-etsion-bogy\", \"zhao-maietta-chang\", \"kogut-etsion\" or "
+            "\"jackson-green\"",
+            "unknown law");
+  if (kind == ContactLawKind::dmt || kind == ContactLawKind::jkr || kind == ContactLawKind::maugis_dugdale)
+    fail_at(law_name,
+            "adhesive laws are not tabulated as scenes: their rough-surface pressure changes sign, and the "
+            "contact-curves table serves ln p (docs/contact-laws.md section 8)",
+            "not tabulated");
+  read_heights(table, where, out.distribution, out.side, out.shape);
+  out.height_scale = positive("height_scale");
+  out.summit_radius = positive("summit_radius");
+  out.summit_density = positive("summit_density");
+  out.nominal_area = positive("nominal_area");
+  const double modulus = positive("contact_modulus");
+  // each law's material keys, and no other
+  const bool takes_hardness = kind == ContactLawKind::chang_etsion_bogy || kind == ContactLawKind::zhao_maietta_chang;
+  const bool takes_yield = kind == ContactLawKind::kogut_etsion || kind == ContactLawKind::jackson_green;
+  const bool takes_poisson = kind == ContactLawKind::chang_etsion_bogy || kind == ContactLawKind::kogut_etsion ||
+                             kind == ContactLawKind::jackson_green;
+  const std::string law_text = contact_law_name(kind);
+  auto refuse = [&](const char* key, bool taken) {
+    if (const toml::value* value = entry_of(table, key); value && !taken)
+      fail_at(*value, std::string("'") + key + "' does not apply to " + law_text, "remove this key");
+  };
+  refuse("hardness", takes_hardness);
+  refuse("yield_strength", takes_yield);
+  refuse("poisson", takes_poisson);
+  refuse("pressure_factor", kind == ContactLawKind::zhao_maietta_chang);
+  refuse("geometric_hardness", kind == ContactLawKind::jackson_green);
+  const double r = out.summit_radius;
+  double poisson = 0;
+  if (takes_poisson) {
+    const toml::value& value = required("poisson");
+    poisson = number(value, "poisson");
+    if (!(poisson >= 0 && poisson <= 0.5)) fail_at(value, "'poisson' must be between 0 and 0.5", "here");
+  }
+  switch (kind) {
+    case ContactLawKind::hertz: out.law = hertz_law(r, modulus); break;
+    case ContactLawKind::chang_etsion_bogy:
+      out.law = chang_etsion_bogy_law(r, modulus, positive("hardness"), poisson);
+      break;
+    case ContactLawKind::zhao_maietta_chang: {
+      double factor = 0.6;
+      if (const toml::value* value = entry_of(table, "pressure_factor")) {
+        factor = number(*value, "pressure_factor");
+        if (!(factor > 0 && factor <= 1)) fail_at(*value, "'pressure_factor' must be in (0, 1]", "here");
+      }
+      out.law = zhao_maietta_chang_law(r, modulus, positive("hardness"), factor);
+      break;
+    }
+    case ContactLawKind::kogut_etsion: out.law = kogut_etsion_law(r, modulus, positive("yield_strength"), poisson); break;
+    case ContactLawKind::jackson_green: {
+      JacksonGreenHardness hardness = JacksonGreenHardness::cosine_2005;
+      if (const toml::value* value = entry_of(table, "geometric_hardness")) {
+        const std::string form = text(*value, "geometric_hardness");
+        if (form == "2006") hardness = JacksonGreenHardness::exponential_2006;
+        else if (form != "2005") fail_at(*value, "'geometric_hardness' is \"2005\" or \"2006\"", "here");
+      }
+      out.law = jackson_green_law(r, modulus, positive("yield_strength"), poisson, hardness);
+      break;
+    }
+    default: break;
+  }
+  if (!std::isfinite(out.law.lowest_interference))
+    fail_at(law_name, "the law's parameters give no finite critical interference (not physical?)", "here");
+  const toml::value& separation = required("separation");
+  range(separation, "separation", out.range_min, out.range_max);
+  if (out.side == Side::bounded && !(out.range_max < 0))
+    fail_at(separation, "on the bounded side nothing touches at separation >= 0: the range must end below 0",
+            "impossible range");
+  if (std::fabs(out.range_min) > 1e3 || std::fabs(out.range_max) > 1e3)
+    fail_at(separation, "a law's separations are within [-1e3, 1e3] (dimensionless)", "too far");
+  if (const toml::value* own = entry_of(table, "max_rel_error")) {
+    out.max_rel_error = tolerance(*own);
+    if (out.max_rel_error < scene_law_error_min)
+      fail_at(*own, "a law's max_rel_error is at least 1e-10 (its values are quadratures to ~1e-13)", "too small");
+  }
+  return out;
+}
+
 }  // namespace
 
 int quantity_twice_order(const std::string& quantity) {
@@ -263,7 +395,7 @@ Scene parse_scene(const std::string& content, const std::string& source) {
   }
   Scene scene;
   scene.source = source;
-  check_keys(root, {"name", "max_rel_error", "memory_budget_kib", "curve"}, "the scene");
+  check_keys(root, {"name", "max_rel_error", "memory_budget_kib", "curve", "law"}, "the scene");
   if (const toml::value* name = entry_of(root, "name")) scene.name = name_text(*name);
   double default_tolerance = 1e-8;
   if (const toml::value* value = entry_of(root, "max_rel_error")) default_tolerance = tolerance(*value);
@@ -273,6 +405,13 @@ Scene parse_scene(const std::string& content, const std::string& source) {
     scene.memory_budget_bytes = kib * 1024;
   }
   const toml::value* curves = entry_of(root, "curve");
+  if (const toml::value* laws = entry_of(root, "law")) {
+    if (curves) fail_at(*laws, "a scene names a law or curves, not both (a law scene makes a contact-curves table)", "here");
+    if (!laws->is_array() || laws->as_array().size() != 1)
+      fail_at(*laws, "'law' must be one table ([[law]]): a law scene tabulates one law", "here");
+    scene.laws.push_back(read_law(laws->as_array()[0], default_tolerance));
+    return scene;
+  }
   if (!curves) throw Error("scene " + source + ": no [[curve]] entries");
   if (!curves->is_array() || curves->as_array().empty())
     fail_at(*curves, "'curve' must be a list of tables ([[curve]])", "here");

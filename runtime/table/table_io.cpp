@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves_data.hpp"
+#include "asperity/error.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
@@ -186,12 +188,10 @@ class Reader {
   std::string name_;
 };
 
-TableData read_verified(const unsigned char* bytes, std::size_t size, const std::string& name) {
-  std::lock_guard<std::mutex> lock(hdf5_mutex());
-  const detail::QuietHdf5Errors quiet;
-  Reader reader(name);
-  // HDF5's core driver on a copy of the checked bytes; the name only identifies the image
-  // (it must not be an existing file, and must differ between images open at once).
+// HDF5's core driver on a copy of the checked bytes (the caller holds hdf5_mutex()); the name
+// only identifies the image (it must not be an existing file, and must differ between images
+// open at once).
+Hdf5Handle open_image(const unsigned char* bytes, std::size_t size, const Reader& reader) {
   static unsigned long images = 0;
   const std::string image_name = "/dev/null/asperity-table-image-" + std::to_string(++images);
   Hdf5Handle file;
@@ -203,15 +203,40 @@ TableData read_verified(const unsigned char* bytes, std::size_t size, const std:
     file = detail::hdf5_file(H5Fopen(image_name.c_str(), H5F_ACC_RDONLY, access.get()));
   }
   if (!file.ok()) reader.invalid("its header is intact but HDF5 cannot open what follows");
+  return file;
+}
 
-  const std::optional<std::string> schema_name = reader.text_attribute(file.get(), schema::attr_schema, false);
+// The schema, its version and the table's kind, from the root attributes.
+TableKind read_kind(hid_t file, const Reader& reader, const std::string& name) {
+  const std::optional<std::string> schema_name = reader.text_attribute(file, schema::attr_schema, false);
   if (!schema_name) fail(TableFileStatus::other_schema, name, "an HDF5 file, but not an asperity table (no 'schema')");
   if (*schema_name != schema::name) fail(TableFileStatus::other_schema, name, "an HDF5 file of another schema");
-  const long long version = *reader.integer_attribute(file.get(), schema::attr_schema_version, true);
+  const long long version = *reader.integer_attribute(file, schema::attr_schema_version, true);
   if (version != schema::version)
     fail(TableFileStatus::other_version, name,
          "schema version " + std::to_string(version) + ", this runtime reads version " +
              std::to_string(schema::version) + "; regenerate the table with this tablegen");
+  const std::optional<std::string> kind = reader.text_attribute(file, schema::attr_kind, false);
+  if (!kind || *kind == schema::kind_integrals) return TableKind::integrals;
+  if (*kind == schema::kind_contact_curves) return TableKind::contact_curves;
+  reader.invalid("an asperity table of an unknown kind '" + kind->substr(0, 40) + "'");
+}
+
+[[noreturn]] void wrong_kind(const std::string& name, TableKind kind) {
+  fail(TableFileStatus::other_schema, name,
+       kind == TableKind::contact_curves
+           ? "a table of contact curves against separation (a measured surface's: asperity contact --table "
+             "serves it), not of Greenwood-Williamson integrals"
+           : "a table of Greenwood-Williamson integrals, not of contact curves against separation");
+}
+
+TableData read_verified(const unsigned char* bytes, std::size_t size, const std::string& name) {
+  std::lock_guard<std::mutex> lock(hdf5_mutex());
+  const detail::QuietHdf5Errors quiet;
+  Reader reader(name);
+  const Hdf5Handle file = open_image(bytes, size, reader);
+  const TableKind kind = read_kind(file.get(), reader, name);
+  if (kind != TableKind::integrals) wrong_kind(name, kind);
 
   TableData data;
   data.generator = *reader.text_attribute(file.get(), schema::attr_generator, true);
@@ -274,7 +299,63 @@ TableData read_verified(const unsigned char* bytes, std::size_t size, const std:
   return data;
 }
 
+// One float of a [1] dataset.
+double scalar(const Reader& reader, hid_t group, const char* name) {
+  return reader.doubles(group, name, {1})[0];
+}
+
+ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::size_t size, const std::string& name) {
+  std::lock_guard<std::mutex> lock(hdf5_mutex());
+  const detail::QuietHdf5Errors quiet;
+  Reader reader(name);
+  const Hdf5Handle file = open_image(bytes, size, reader);
+  const TableKind kind = read_kind(file.get(), reader, name);
+  if (kind != TableKind::contact_curves) wrong_kind(name, kind);
+  ContactCurvesData data;
+  data.generator = *reader.text_attribute(file.get(), schema::attr_generator, true);
+  data.generator_options = *reader.text_attribute(file.get(), schema::attr_generator_options, true);
+  if (H5Lexists(file.get(), schema::group_contact_curves, H5P_DEFAULT) <= 0)
+    reader.invalid(std::string("missing group '") + schema::group_contact_curves + "'");
+  const Hdf5Handle group = detail::hdf5_group(H5Gopen2(file.get(), schema::group_contact_curves, H5P_DEFAULT));
+  if (!group.ok()) reader.invalid(std::string("'") + schema::group_contact_curves + "' is not a group");
+  const Reader in_group(name + "' group '" + schema::group_contact_curves);
+  const hid_t g = group.get();
+  data.source = *in_group.text_attribute(g, schema::attr_source, true);
+  data.description = *in_group.text_attribute(g, schema::attr_description, true);
+  data.separation_datum = *in_group.text_attribute(g, schema::attr_separation_datum, true);
+  const hsize_t nodes = in_group.length(g, schema::set_separation, schema::max_contact_curve_nodes);
+  // four values a node, bounded against the file's size before they are read
+  if (4.0 * static_cast<double>(nodes) * sizeof(double) > schema::max_expansion * static_cast<double>(size))
+    in_group.invalid("it claims " + std::to_string(nodes) + " nodes, more than a table of " + std::to_string(size) +
+                     " bytes may hold");
+  data.separation = in_group.doubles(g, schema::set_separation, {nodes});
+  data.pressure = in_group.doubles(g, schema::set_pressure, {nodes});
+  data.stiffness = in_group.doubles(g, schema::set_stiffness, {nodes});
+  data.area_fraction = in_group.doubles(g, schema::set_area_fraction, {nodes});
+  const std::vector<double> bound = in_group.doubles(g, schema::set_max_rel_error, {3});
+  const std::vector<double> measured = in_group.doubles(g, schema::set_measured_rel_error, {3});
+  for (int i = 0; i < 3; ++i) {
+    data.max_rel_error[i] = bound[i];
+    data.measured_rel_error[i] = measured[i];
+  }
+  data.check_points = static_cast<int>(in_group.integers(g, schema::set_check_points, {1}, 0, 1 << 30)[0]);
+  data.safety_factor = scalar(in_group, g, schema::set_safety_factor);
+  data.solver_tolerance = scalar(in_group, g, schema::set_solver_tolerance);
+  data.contact_modulus = scalar(in_group, g, schema::set_contact_modulus);
+  data.nominal_area = scalar(in_group, g, schema::set_nominal_area);
+  if (H5Lexists(g, schema::set_mean_summit_height, H5P_DEFAULT) > 0)
+    data.mean_summit_height = scalar(in_group, g, schema::set_mean_summit_height);
+  if (H5Lexists(g, schema::set_max_height, H5P_DEFAULT) > 0)
+    data.max_height = scalar(in_group, g, schema::set_max_height);
+  data.validate("table '" + name + "'");
+  return data;
+}
+
 }  // namespace
+
+const char* to_string(TableKind kind) noexcept {
+  return kind == TableKind::contact_curves ? schema::kind_contact_curves : schema::kind_integrals;
+}
 
 TableData read_table_bytes(const void* bytes, std::size_t size, const std::string& name) {
   const auto* data = static_cast<const unsigned char*>(bytes);
@@ -290,17 +371,54 @@ TableData read_table_bytes(const void* bytes, std::size_t size, const std::strin
   }
 }
 
-TableData read_table_file(const std::string& path) {
-  std::string bytes;
+namespace {
+
+std::string read_file_bytes(const std::string& path) {
   try {
-    bytes = detail::read_regular_file(path, schema::max_file_bytes);
+    return detail::read_regular_file(path, schema::max_file_bytes);
   } catch (const detail::RegularFileError& error) {
     const TableFileStatus status = error.failure() == detail::FileFailure::missing ? TableFileStatus::missing
                                    : error.failure() == detail::FileFailure::too_large ? TableFileStatus::invalid
                                                                                        : TableFileStatus::unreadable;
     fail(status, path, error.what());
   }
+}
+
+}  // namespace
+
+TableData read_table_file(const std::string& path) {
+  const std::string bytes = read_file_bytes(path);
   return read_table_bytes(bytes.data(), bytes.size(), path);
+}
+
+ContactCurvesData read_contact_curves_bytes(const void* bytes, std::size_t size, const std::string& name) {
+  const auto* data = static_cast<const unsigned char*>(bytes);
+  if (size > schema::max_file_bytes)
+    fail(TableFileStatus::invalid, name, "more bytes than a table may have (" + std::to_string(schema::max_file_bytes) + ")");
+  verify_table_bytes(data, size, name);
+  try {
+    return read_contact_curves_verified(data, size, name);
+  } catch (const TableFileError&) {
+    throw;
+  } catch (const Error& error) {  // ContactCurvesData::validate: the contents break the schema
+    throw TableFileError(TableFileStatus::invalid, error.what());
+  }
+}
+
+ContactCurvesData read_contact_curves_file(const std::string& path) {
+  const std::string bytes = read_file_bytes(path);
+  return read_contact_curves_bytes(bytes.data(), bytes.size(), path);
+}
+
+TableKind read_table_kind(const std::string& path) {
+  const std::string bytes = read_file_bytes(path);
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  verify_table_bytes(data, bytes.size(), path);
+  std::lock_guard<std::mutex> lock(hdf5_mutex());
+  const detail::QuietHdf5Errors quiet;
+  const Reader reader(path);
+  const Hdf5Handle file = open_image(data, bytes.size(), reader);
+  return read_kind(file.get(), reader, path);
 }
 
 }  // namespace asperity

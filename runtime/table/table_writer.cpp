@@ -2,9 +2,11 @@
 
 #include <hdf5.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "asperity/contact_curves_data.hpp"
 #include "asperity/error.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
@@ -115,16 +117,45 @@ void write_contents(hid_t file, const TableData& table) {
   }
 }
 
-}  // namespace
+void write_contact_curves_contents(hid_t file, const ContactCurvesData& data) {
+  write_string_attribute(file, schema::attr_schema, schema::name);
+  write_int_attribute(file, schema::attr_schema_version, schema::version);
+  write_string_attribute(file, schema::attr_kind, schema::kind_contact_curves);
+  write_string_attribute(file, schema::attr_generator, data.generator);
+  write_string_attribute(file, schema::attr_generator_options, data.generator_options);
+  write_string_attribute(file, schema::attr_conventions, schema::contact_curves_definition);
+  const char* name = schema::group_contact_curves;
+  const Hdf5Handle group_properties = checked(detail::hdf5_properties(H5Pcreate(H5P_GROUP_CREATE)), name);
+  check(H5Pset_obj_track_times(group_properties.get(), false), name);
+  const Hdf5Handle group =
+      checked(detail::hdf5_group(H5Gcreate2(file, name, H5P_DEFAULT, group_properties.get(), H5P_DEFAULT)), name);
+  const hid_t g = group.get();
+  write_string_attribute(g, schema::attr_source, data.source);
+  write_string_attribute(g, schema::attr_description, data.description);
+  write_string_attribute(g, schema::attr_separation_datum, data.separation_datum);
+  write_string_attribute(g, schema::attr_definition, schema::contact_curves_definition);
+  const hsize_t nodes = data.separation.size();
+  const auto doubles = [&](const char* set, const double* values, hsize_t count) {
+    write_dataset(g, set, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {count}, values);
+  };
+  doubles(schema::set_separation, data.separation.data(), nodes);
+  doubles(schema::set_pressure, data.pressure.data(), nodes);
+  doubles(schema::set_stiffness, data.stiffness.data(), nodes);
+  doubles(schema::set_area_fraction, data.area_fraction.data(), nodes);
+  doubles(schema::set_max_rel_error, data.max_rel_error, 3);
+  doubles(schema::set_measured_rel_error, data.measured_rel_error, 3);
+  write_dataset(g, schema::set_check_points, H5T_STD_I32LE, H5T_NATIVE_INT, {1}, &data.check_points);
+  doubles(schema::set_safety_factor, &data.safety_factor, 1);
+  doubles(schema::set_solver_tolerance, &data.solver_tolerance, 1);
+  doubles(schema::set_contact_modulus, &data.contact_modulus, 1);
+  doubles(schema::set_nominal_area, &data.nominal_area, 1);
+  if (!std::isnan(data.mean_summit_height)) doubles(schema::set_mean_summit_height, &data.mean_summit_height, 1);
+  if (!std::isnan(data.max_height)) doubles(schema::set_max_height, &data.max_height, 1);
+}
 
-std::vector<unsigned char> table_file_bytes(const TableData& table) {
-  // Everything the reader would refuse is refused here, before HDF5 is asked for anything.
-  for (const CurveSet& set : table.sets) {
-    set.validate("generated");
-    if (set.max_rel_error.size() != set.shapes.size() * order_count)
-      throw Error("generated: every curve needs its measured max_rel_error");
-  }
-  if (table.sets.empty()) throw Error("generated: a table needs at least one curve set");
+// The file's bytes: HDF5 in memory with the user block, `write` filling it, the header sealed.
+template <class Write>
+std::vector<unsigned char> sealed_file_bytes(Write write) {
   const detail::QuietHdf5Errors quiet;  // our messages say what failed
   std::vector<unsigned char> bytes;
   {
@@ -138,7 +169,7 @@ std::vector<unsigned char> table_file_bytes(const TableData& table) {
     const std::string image_name = "asperity-table-being-written-" + std::to_string(++images);
     Hdf5Handle file = checked(detail::hdf5_file(H5Fcreate(image_name.c_str(), H5F_ACC_TRUNC, create.get(), access.get())),
                               "HDF5 cannot create a file in memory");
-    write_contents(file.get(), table);
+    write(file.get());
     check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing the file");
     // The image starts at the superblock (HDF5 leaves the user block out): the header goes before it.
     const ssize_t size = H5Fget_file_image(file.get(), nullptr, 0);
@@ -152,8 +183,31 @@ std::vector<unsigned char> table_file_bytes(const TableData& table) {
   return bytes;
 }
 
+}  // namespace
+
+std::vector<unsigned char> table_file_bytes(const TableData& table) {
+  // Everything the reader would refuse is refused here, before HDF5 is asked for anything.
+  for (const CurveSet& set : table.sets) {
+    set.validate("generated");
+    if (set.max_rel_error.size() != set.shapes.size() * order_count)
+      throw Error("generated: every curve needs its measured max_rel_error");
+  }
+  if (table.sets.empty()) throw Error("generated: a table needs at least one curve set");
+  return sealed_file_bytes([&](hid_t file) { write_contents(file, table); });
+}
+
 void write_table_file(const TableData& table, const std::string& path) {
   const std::vector<unsigned char> bytes = table_file_bytes(table);
+  replace_file(path, bytes.data(), bytes.size());
+}
+
+std::vector<unsigned char> contact_curves_file_bytes(const ContactCurvesData& data) {
+  data.validate("contact curves to write");
+  return sealed_file_bytes([&](hid_t file) { write_contact_curves_contents(file, data); });
+}
+
+void write_contact_curves_file(const ContactCurvesData& data, const std::string& path) {
+  const std::vector<unsigned char> bytes = contact_curves_file_bytes(data);
   replace_file(path, bytes.data(), bytes.size());
 }
 

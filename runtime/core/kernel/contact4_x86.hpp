@@ -30,8 +30,18 @@ ASPERITY_ALWAYS_INLINE __m256d contact4_quintics(const double* __restrict record
   return _mm256_fmadd_pd(at2, _mm256_fmadd_pd(at2, high, middle), low);
 }
 
-// the record's lanes (orders 0, 1, 3/2, 1/2) in contact4's order (0, 1/2, 1, 3/2)
-constexpr int contact4_order_permutation = 0 | 3 << 2 | 1 << 4 | 2 << 6;
+// the record's lanes (the served combination's orders, contact_lane_orders) in contact4's
+// order (twice_order 0, 1, 2, 3): output k takes the lane whose order is k
+constexpr int lane_of_order(int twice_order) noexcept {
+  int lane = 0;
+  while (contact_lane_orders[lane] != twice_order) ++lane;
+  return lane;
+}
+constexpr int contact4_order_permutation = lane_of_order(0) | lane_of_order(1) << 2 | lane_of_order(2) << 4 |
+                                           lane_of_order(3) << 6;
+// The ratio is taken within the vector's upper half: the load in lane 2, its derivative's
+// order (the stiffness) in lane 3
+static_assert(contact_lane_orders[3] == contact_lane_orders[2] - 2, "the stiffness lane must follow the load lane");
 
 void contact4_x86(const double* __restrict record, double y, double* __restrict log2s,
                   double* __restrict values) noexcept {
@@ -49,7 +59,7 @@ void contact4_x86(const double* __restrict record, double y, double* __restrict 
 }
 
 // contact_scales_of's factors (contact_scales.hpp) as one vector, in the same order of
-// operations (the same bits, test_kernels): (1, pi, 4/3, 2) N times (1, R sigma, sigma E*
+// operations (the same bits, test_kernels): the served multipliers (1, pi, 4/3, 2) N times (1, R sigma, sigma E*
 // sqrt(R sigma), E* sqrt(R sigma)): a square root, three scalar products and two vector ones
 // besides the vector's assembly, where the caller made eleven scalar operations and std::sqrt's
 // errno test (faster in bench_lookup's BM_ContactAllFour; BM_ContactAllFourScales unchanged)
@@ -114,7 +124,8 @@ bool contact_products_x86(const FastGrid& grid, const double* __restrict contact
   const __m256d mantissas = _mm256_add_pd(_mm256_set1_pd(1.0), expm1);
   // lane 3 against lane 2 in place (X_1/2 and X_3/2): the upper pair's first element in both
   const auto across = [](__m256d v) { return _mm256_permute_pd(v, 0b0000); };
-  const __m256d ratio_mantissa = _mm256_mul_pd(_mm256_set1_pd(1.5), _mm256_div_pd(mantissas, across(mantissas)));
+  const __m256d ratio_mantissa =
+      _mm256_mul_pd(_mm256_set1_pd(served_combination.load_order), _mm256_div_pd(mantissas, across(mantissas)));
 #if defined(__AVX512VL__)
   const int in_range = _mm256_mask_cmp_pd_mask(_mm256_cmp_pd_mask(factors, _mm256_set1_pd(contact_factor_min), _CMP_GE_OQ),
                                                factors, _mm256_set1_pd(contact_factor_max), _CMP_LE_OQ);

@@ -34,7 +34,9 @@ inline constexpr int batch_block = 256;
 // test_kernels ContactRecordsAgainstTheExactQuintic: 3.1e-16 (1 + |ln X|) at most, 2.2e-16 for
 // the ln X quintic).
 inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][lane]
-inline constexpr int contact_lane_orders[4] = {0, 2, 3, 1};  // each lane's twice_order
+// each lane's twice_order: the served combination's (contact_scales.hpp), in its quantities' order
+inline constexpr int contact_lane_orders[4] = {served_combination.twice_order[0], served_combination.twice_order[1],
+                                               served_combination.twice_order[2], served_combination.twice_order[3]};
 
 // One interval's record from the grid's ln X coefficients of orders 0, 1/2, 1, 3/2
 // (twice_order k: ln_orders[k] points at the interval's fast_stride coefficients)

@@ -1,4 +1,5 @@
-// The one rule for contact_at's stiffness/load ratio, -(dP/ds)/P = (3/2) X_1/2 / X_3/2, from
+// The one rule for contact_at's stiffness/load ratio, -(dP/ds)/P = n X_{n-1} / X_n (the served
+// combination's load order n, law_combination.hpp: Hertz's (3/2) X_1/2 / X_3/2), from
 // what each path holds: contact_ratio from ln X and X (contact_state_from_logs,
 // runtime/physics/contact.cpp: one division where both are normal doubles; from the logs where
 // either underflows, so that it stays finite there), contact_ratio_of_parts and
@@ -9,9 +10,14 @@
 #include <limits>
 
 #include "asperity/detail/fast_math.hpp"
+#include "asperity/contact_scales.hpp"
 #include "asperity/integrals.hpp"
 
 namespace asperity::detail {
+
+// the paths below read the load and stiffness orders by their twice_order
+static_assert(served_combination.twice_order[2] == orders::load && served_combination.twice_order[3] == orders::stiffness,
+              "contact_ratio reads the served combination's load and stiffness orders");
 
 // logs and values of orders 0, 1/2, 1, 3/2 (Curve::contact_orders)
 static ASPERITY_ALWAYS_INLINE double contact_ratio(const double logs[4], const double values[4]) noexcept {
@@ -20,9 +26,9 @@ static ASPERITY_ALWAYS_INLINE double contact_ratio(const double logs[4], const d
   if (__builtin_expect((stiffness >= smallest_normal) & (load >= smallest_normal) & (stiffness <= largest) &
                            (load <= largest),
                        1))
-    return 1.5 * (stiffness / load);
+    return served_combination.load_order * (stiffness / load);
   if (logs[orders::load] == -std::numeric_limits<double>::infinity()) return std::numeric_limits<double>::quiet_NaN();
-  return 1.5 * fast_exp(logs[orders::stiffness] - logs[orders::load]);
+  return served_combination.load_order * fast_exp(logs[orders::stiffness] - logs[orders::load]);
 }
 
 // The ratio -(dP/ds)/P = 1.5 X_1/2 / X_3/2 from X = m 2^k of each (m in [0.7, 1.5], k an
@@ -36,7 +42,8 @@ static ASPERITY_ALWAYS_INLINE double scaled_by_power_of_two(double x, double k) 
 }
 static ASPERITY_ALWAYS_INLINE double contact_ratio_of_parts(double stiffness_mantissa, double stiffness_k,
                                                             double load_mantissa, double load_k) noexcept {
-  return scaled_by_power_of_two(1.5 * (stiffness_mantissa / load_mantissa), stiffness_k - load_k);
+  return scaled_by_power_of_two(served_combination.load_order * (stiffness_mantissa / load_mantissa),
+                                stiffness_k - load_k);
 }
 // The same from log2 X (the baseline build's; the x86 kernels' where a lane is not finite or
 // beyond 2^50): NaN where X_3/2 = 0 (0/0) or a log is NaN, 0 where X_1/2 = 0 or X_3/2 = inf, inf

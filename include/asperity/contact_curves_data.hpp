@@ -1,0 +1,55 @@
+// A table of contact curves against separation in memory (ContactCurvesData), and the reader and
+// writer of its file: the table format of table_schema.hpp (the same integrity header and root
+// attributes as every table, kind "contact-curves"). ContactCurves (contact_curves.hpp) serves it.
+//
+// The curves are those of one surface against a flat: today the exact elastic contact of a
+// measured height map (asperity exact-contact --table; topography/exact_contact_table.hpp makes
+// them), generic enough for any source that gives pressure, stiffness and real area at
+// separations (a contact law's curves): `source` and `description` say what they are of.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace asperity {
+
+struct ContactCurvesData {
+  std::string generator;          // the program that wrote it ("asperity 0.2.0 exact-contact")
+  std::string generator_options;  // its options, as text
+  std::string source;             // what the curves are of: "exact-contact"
+  std::string description;        // the map, its grid, the solver and its options
+  std::string separation_datum;   // the separation's datum, in words
+  // The nodes, ascending in separation [m]: pressure [Pa] (descending), stiffness -dp/du [Pa/m],
+  // real area fraction (never rising).
+  std::vector<double> separation, pressure, stiffness, area_fraction;
+  // The stored error bounds (relative) of the served pressure, stiffness and area fraction:
+  // measured_rel_error (the largest against check_points independent solves between the nodes)
+  // times safety_factor.
+  double max_rel_error[3] = {0, 0, 0};
+  double measured_rel_error[3] = {0, 0, 0};
+  int check_points = 0;
+  double safety_factor = 1;
+  double solver_tolerance = 0;  // the solves' own convergence tolerance (relative residual)
+  double contact_modulus = 0;   // E* [Pa]
+  double nominal_area = 0;      // [m^2]
+  // Optional (NaN: not known): above the separation's datum [m], the mean summit height (the
+  // datum of the GW curves and of the FE cards) and the highest point (first contact).
+  double mean_summit_height = 0.0 / 0.0;
+  double max_height = 0.0 / 0.0;
+
+  // Throws Error (naming `context`) for sizes, order, values or text beyond table_schema.hpp's
+  // limits: what the reader refuses and the writer never writes.
+  void validate(const std::string& context) const;
+};
+
+// The whole file's bytes (validated first; throws Error).
+std::vector<unsigned char> contact_curves_file_bytes(const ContactCurvesData& data);
+// Written with the atomic replace of every table (a crash never leaves half a file).
+void write_contact_curves_file(const ContactCurvesData& data, const std::string& path);
+
+// Reads and validates a contact-curves table. Throws TableFileError (table_file.hpp): the
+// statuses of every table file, other_schema for a table of another kind.
+ContactCurvesData read_contact_curves_file(const std::string& path);
+ContactCurvesData read_contact_curves_bytes(const void* bytes, std::size_t size, const std::string& name);
+
+}  // namespace asperity

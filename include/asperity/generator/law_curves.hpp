@@ -1,0 +1,39 @@
+// A contact law's rough-surface curves (a law scene, asperity/scene.hpp's [[law]]): the pressure,
+// stiffness and real area fraction of a physical surface under that law against separation,
+// tabulated as a contact-curves table (contact_curves_data.hpp, served by ContactCurves) to the
+// scene's tolerance, with the error measured and stored (docs/contact-laws.md section 8).
+//
+// Method. The per-summit means E[P], E[dP/domega] (plus the load's jumps where they move with
+// the separation) and E[A] over the summit heights by double-exponential quadrature in the
+// height z, split at every switch point of the law (mapped to z at that separation), at the
+// density's edge and across its mass. Nodes: a few uniform in s, plus a knot wherever the
+// integrals themselves are not smooth (a Weibull density's edge z = 0 meeting first contact or
+// a switch point: s = 0 and s = -omega_k/sigma_s); then every interval whose midpoint the served
+// curves (the table's own interpolation) miss by more than half the tolerance is halved, until
+// none does. The stored bound is the largest midpoint error times 2.
+#pragma once
+#include <string>
+
+#include "asperity/contact_curves_data.hpp"
+#include "asperity/scene.hpp"
+
+namespace asperity::generator {
+
+// The per-summit means at dimensionless separation s (origin convention): count (the fraction
+// of summits in contact), area [m^2], load [N], stiffness -d load / d(sigma_s s) [N/m].
+struct LawMeans {
+  double count = 0, area = 0, load = 0, stiffness = 0;
+};
+LawMeans law_means(const SceneLaw& law, double s);
+
+struct LawCurvesResult {
+  ContactCurvesData data;
+  int nodes = 0;
+  int evaluations = 0;  // exact evaluations (nodes and midpoints)
+};
+
+// Throws asperity::Error where the curves cannot be tabulated (an area fraction beyond 1 or a
+// pressure below the format's range inside the asked separations, too many nodes).
+LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options = "");
+
+}  // namespace asperity::generator

@@ -1,0 +1,96 @@
+"""asperity.ContactCurves: a measured surface as a table from Python. The AFM map of
+tests/data/surfaces/ solved by asperity.topography.ExactContact and written with write_table,
+then served: the nodes to rounding, fresh solves between them within the stored bound, the
+inverse, arrays, the card, and the errors of a missing file or a table of the other kind."""
+import copy
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity import topography
+
+AFM = Path(__file__).resolve().parents[2] / "tests" / "data" / "surfaces" / "afm-zsensor-10um.txt"
+PRESSURES = [1e6 * 10 ** (2 * k / 8) for k in range(9)]
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    path = tmp_path_factory.mktemp("curves") / "afm.h5"
+    surface = topography.read_height_map(str(AFM))
+    topography.subtract_plane(surface, topography.fit_plane(surface))
+    solver = topography.ExactContact(surface, contact_modulus=1e11, tolerance=1e-10, threads=1)
+    nodes = solver.write_table(path, PRESSURES, description="the AFM map")
+    return path, surface, nodes
+
+
+def test_nodes_round_trip(written):
+    path, _, nodes = written
+    curves = asperity.ContactCurves(path)
+    assert len(nodes) == 9 and curves.check_points == 8 and curves.safety_factor == 2
+    assert curves.max_rel_error == tuple(2 * e for e in curves.measured_rel_error)
+    assert curves.solver_tolerance == 1e-10 and curves.contact_modulus == 1e11
+    assert curves.source == "exact-contact" and curves.description == "the AFM map"
+    assert "mean plane" in curves.separation_datum
+    assert curves.min_pressure == pytest.approx(1e6, rel=1e-15) and curves.max_pressure == pytest.approx(1e8, rel=1e-15)
+    for step in nodes:
+        assert curves.pressure(step.mean_gap) == pytest.approx(step.pressure, rel=1e-14)
+        assert curves.stiffness(step.mean_gap) == pytest.approx(step.stiffness_per_area, rel=1e-13)
+        assert curves.area_fraction(step.mean_gap) == pytest.approx(step.area_fraction, rel=1e-14)
+    table = curves.nodes
+    assert list(table["separation"]) == sorted(step.mean_gap for step in nodes)
+    assert np.all(np.diff(table["pressure"]) < 0)
+    assert copy.copy(curves).max_separation == curves.max_separation
+    assert "9 nodes" in repr(curves)
+
+
+def test_fresh_solves_within_the_stored_bound(written):
+    path, surface, _ = written
+    curves = asperity.ContactCurves.open(path)
+    solver = topography.ExactContact(surface, contact_modulus=1e11, tolerance=1e-10, threads=1)
+    separations = curves.nodes["separation"]
+    for u in 0.5 * (separations[1:] + separations[:-1]):
+        exact = solver.at_mean_gap(u)
+        assert abs(curves.pressure(exact.mean_gap) / exact.pressure - 1) <= curves.max_rel_error[0]
+        assert abs(curves.stiffness(exact.mean_gap) / exact.stiffness_per_area - 1) <= curves.max_rel_error[1]
+        assert abs(curves.area_fraction(exact.mean_gap) / exact.area_fraction - 1) <= curves.max_rel_error[2]
+
+
+def test_arrays_inverse_and_range(written):
+    curves = asperity.ContactCurves(written[0])
+    u = np.linspace(curves.min_separation, curves.max_separation, 101)
+    p = curves.pressure(u)
+    assert p.shape == (101,) and np.all(np.diff(p) < 0)
+    assert np.allclose(curves.separation_at_pressure(p), u, rtol=0, atol=1e-12 * (u[-1] - u[0]))
+    assert np.all(curves.stiffness(u) > 0) and np.all(np.diff(curves.area_fraction(u)) <= 0)
+    assert math.isnan(curves.pressure(curves.max_separation * 2))
+    assert math.isnan(curves.pressure(float("nan")))
+    assert math.isnan(curves.separation_at_pressure(1e9))
+    assert isinstance(curves.pressure(float(u[3])), float)
+
+
+def test_card(written):
+    curves = asperity.ContactCurves(written[0])
+    card = curves.pressure_overclosure_card(format="abaqus", units="mm")
+    assert "PRESSURE-OVERCLOSURE=TABULAR" in card and "in MPa" in card
+    rows = card.split("TABULAR\n")[1].split()
+    assert rows[0].startswith("0,") and rows[-1].startswith("100,")
+    with pytest.raises(asperity.Error, match="serve pressures"):
+        curves.pressure_overclosure_card(1e5, 1e7)
+
+
+def test_errors(tmp_path, written):
+    with pytest.raises(asperity.Error, match="No such file|missing|does not exist"):
+        asperity.ContactCurves(tmp_path / "missing.h5")
+    with pytest.raises(asperity.Error, match="Greenwood-Williamson integrals"):
+        asperity.ContactCurves(asperity.Table.default_path())
+    with pytest.raises(asperity.Error, match="contact curves"):
+        asperity.Table.open(written[0])
+    damaged = tmp_path / "damaged.h5"
+    data = bytearray(Path(written[0]).read_bytes())
+    data[len(data) // 2] ^= 1
+    damaged.write_bytes(bytes(data))
+    with pytest.raises(asperity.Error, match="SHA-256"):
+        asperity.ContactCurves(damaged)

@@ -1,0 +1,233 @@
+// ContactCurves: the interpolants of a contact-curves table (contact_curves.hpp) built once, and
+// the lookups that never allocate or throw.
+#include "asperity/contact_curves.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "asperity/error.hpp"
+
+namespace asperity {
+
+namespace {
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// One interval [u0, u0 + h] of both cubic Hermites in t = (u - u0) / h: values at its ends and
+// slopes times h.
+struct Interval {
+  double u0, u1, inverse_h;
+  double y0, y1, m0, m1;  // ln p
+  double a0, a1, b0, b1;  // ln(area fraction)
+};
+
+double hermite(double t, double y0, double y1, double m0, double m1) noexcept {
+  const double s = 1 - t;
+  return s * s * ((1 + 2 * t) * y0 + t * m0) + t * t * ((3 - 2 * t) * y1 - s * m1);
+}
+// d/dt of hermite()
+double hermite_slope(double t, double y0, double y1, double m0, double m1) noexcept {
+  return 6 * t * (t - 1) * (y0 - y1) + (1 - t) * (1 - 3 * t) * m0 + t * (3 * t - 2) * m1;
+}
+
+double sign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0; }
+
+// Steffen's (1990) slopes of a monotone cubic through (x, y): never an overshoot.
+std::vector<double> steffen_slopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> h(n - 1), s(n - 1), slope(n);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    h[i] = x[i + 1] - x[i];
+    s[i] = (y[i + 1] - y[i]) / h[i];
+  }
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double p = (s[i - 1] * h[i] + s[i] * h[i - 1]) / (h[i - 1] + h[i]);
+    slope[i] = (sign(s[i - 1]) + sign(s[i])) * std::min({std::fabs(s[i - 1]), std::fabs(s[i]), 0.5 * std::fabs(p)});
+  }
+  const auto end = [](double s0, double s1, double h0, double h1) {
+    const double p = s0 * (1 + h0 / (h0 + h1)) - s1 * h0 / (h0 + h1);
+    if (p * s0 <= 0) return 0.0;
+    if (std::fabs(p) > 2 * std::fabs(s0)) return 2 * s0;
+    return p;
+  };
+  slope[0] = end(s[0], s[1], h[0], h[1]);
+  slope[n - 1] = end(s[n - 2], s[n - 3], h[n - 2], h[n - 3]);  // n >= 3 (validated)
+  return slope;
+}
+
+}  // namespace
+
+struct ContactCurves::Impl {
+  ContactCurvesData data;
+  std::vector<double> nodes;          // separations
+  std::vector<double> log_pressures;  // at the nodes, descending
+  std::vector<Interval> intervals;
+  std::size_t limited = 0;
+  // A directory of equal bins over the range: bin b starts in interval directory[b], so a query
+  // searches only the intervals its bin overlaps (one or two when the nodes are about evenly
+  // spread; a bisection over those otherwise).
+  std::vector<std::uint32_t> directory;  // bins + 1 entries
+  double bin_scale = 0;
+
+  // The interval holding u (inside the range), and t in it.
+  const Interval& locate(double u, double& t) const noexcept {
+    const std::size_t bins = directory.size() - 1;
+    const double x = (u - nodes.front()) * bin_scale;  // >= 0; not a number only for a degenerate span
+    const std::size_t b = x < static_cast<double>(bins) ? static_cast<std::size_t>(x) : bins - 1;
+    const std::size_t first = directory[b], last = directory[b + 1];  // u lies in an interval first..last
+    std::size_t i = first;
+    if (last > first)
+      i = static_cast<std::size_t>(std::upper_bound(nodes.begin() + first + 1, nodes.begin() + last + 1, u) -
+                                   nodes.begin()) - 1;
+    // where rounding put u in a neighbouring bin: the whole search
+    if (!(u >= nodes[i] && (u < nodes[i + 1] || i + 1 == intervals.size()))) {
+      i = static_cast<std::size_t>(std::upper_bound(nodes.begin(), nodes.end(), u) - nodes.begin());
+      i = i == 0 ? 0 : std::min(i - 1, intervals.size() - 1);
+    }
+    const Interval& interval = intervals[i];
+    t = (u - interval.u0) * interval.inverse_h;
+    return interval;
+  }
+  bool served(double u) const noexcept { return u >= nodes.front() && u <= nodes.back(); }
+  // exp(ln p) within the stored end pressures: at the end nodes rounding could put it a hair
+  // outside the pressures served, which the inverse would refuse
+  double clamped(double p) const noexcept { return std::min(std::max(p, data.pressure.back()), data.pressure.front()); }
+};
+
+ContactCurves::ContactCurves(ContactCurvesData data) {
+  data.validate("contact curves");
+  auto impl = std::make_shared<Impl>();
+  const std::size_t n = data.separation.size();
+  impl->nodes = data.separation;
+  std::vector<double> log_area(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    impl->log_pressures.push_back(std::log(data.pressure[i]));
+    log_area[i] = std::log(data.area_fraction[i]);
+  }
+  const std::vector<double> area_slopes = steffen_slopes(impl->nodes, log_area);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double h = impl->nodes[i + 1] - impl->nodes[i];
+    Interval interval{};
+    interval.u0 = impl->nodes[i];
+    interval.u1 = impl->nodes[i + 1];
+    interval.inverse_h = 1 / h;
+    interval.y0 = impl->log_pressures[i];
+    interval.y1 = impl->log_pressures[i + 1];
+    // the nodes' own slopes of ln p, -k/p, times h
+    double m0 = -data.stiffness[i] / data.pressure[i] * h, m1 = -data.stiffness[i + 1] / data.pressure[i + 1] * h;
+    // Fritsch-Carlson: a cubic Hermite is monotone where alpha^2 + beta^2 <= 9 (alpha, beta the
+    // end slopes over the secant, both >= 0 here: p falls and k > 0)
+    const double secant = interval.y1 - interval.y0;  // < 0
+    const double alpha = m0 / secant, beta = m1 / secant, radius = alpha * alpha + beta * beta;
+    if (radius > 9) {
+      const double tau = 3 / std::sqrt(radius);
+      m0 = tau * alpha * secant;
+      m1 = tau * beta * secant;
+      ++impl->limited;
+    }
+    interval.m0 = m0;
+    interval.m1 = m1;
+    interval.a0 = log_area[i];
+    interval.a1 = log_area[i + 1];
+    interval.b0 = area_slopes[i] * h;
+    interval.b1 = area_slopes[i + 1] * h;
+    impl->intervals.push_back(interval);
+  }
+  // four bins an interval: evenly spread nodes put each bin in one or two intervals
+  const std::size_t bins = 4 * (n - 1);
+  const double low = impl->nodes.front(), span = impl->nodes.back() - low;
+  impl->bin_scale = static_cast<double>(bins) / span;  // span > 0 (validated); inf only if subnormal
+  impl->directory.resize(bins + 1);
+  std::size_t interval = 0;
+  for (std::size_t b = 0; b <= bins; ++b) {
+    const double edge = b == bins ? impl->nodes.back() : low + span * static_cast<double>(b) / static_cast<double>(bins);
+    while (interval + 1 < n - 1 && impl->nodes[interval + 1] <= edge) ++interval;
+    impl->directory[b] = static_cast<std::uint32_t>(interval);
+  }
+  impl->data = std::move(data);
+  impl_ = std::move(impl);
+}
+
+ContactCurves ContactCurves::open(const std::string& path) { return ContactCurves(read_contact_curves_file(path)); }
+
+const ContactCurvesData& ContactCurves::data() const noexcept { return impl_->data; }
+double ContactCurves::min_separation() const noexcept { return impl_->nodes.front(); }
+double ContactCurves::max_separation() const noexcept { return impl_->nodes.back(); }
+double ContactCurves::min_pressure() const noexcept { return impl_->data.pressure.back(); }
+double ContactCurves::max_pressure() const noexcept { return impl_->data.pressure.front(); }
+std::size_t ContactCurves::limited_intervals() const noexcept { return impl_->limited; }
+
+double ContactCurves::pressure(double separation) const noexcept {
+  if (!impl_->served(separation)) return nan;
+  double t;
+  const Interval& i = impl_->locate(separation, t);
+  return impl_->clamped(std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1)));
+}
+
+double ContactCurves::stiffness(double separation) const noexcept {
+  if (!impl_->served(separation)) return nan;
+  double t;
+  const Interval& i = impl_->locate(separation, t);
+  return -std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1)) * hermite_slope(t, i.y0, i.y1, i.m0, i.m1) * i.inverse_h;
+}
+
+double ContactCurves::area_fraction(double separation) const noexcept {
+  if (!impl_->served(separation)) return nan;
+  double t;
+  const Interval& i = impl_->locate(separation, t);
+  return std::exp(hermite(t, i.a0, i.a1, i.b0, i.b1));
+}
+
+ContactCurvesState ContactCurves::at_separation(double separation) const noexcept {
+  if (!impl_->served(separation)) return {separation, nan, nan, nan};
+  double t;
+  const Interval& i = impl_->locate(separation, t);
+  const double p = std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1));
+  return {separation, impl_->clamped(p), -p * hermite_slope(t, i.y0, i.y1, i.m0, i.m1) * i.inverse_h,
+          std::exp(hermite(t, i.a0, i.a1, i.b0, i.b1))};
+}
+
+double ContactCurves::separation_at_pressure(double pressure) const noexcept {
+  const Impl& impl = *impl_;
+  if (!(pressure >= impl.data.pressure.back() && pressure <= impl.data.pressure.front())) return nan;
+  const double y = std::log(pressure);
+  // the interval whose ln p brackets y (ln p descends along the nodes)
+  const auto& logs = impl.log_pressures;
+  std::size_t k = static_cast<std::size_t>(
+      std::upper_bound(logs.begin(), logs.end(), y, [](double value, double node) { return value > node; }) -
+      logs.begin());
+  k = k == 0 ? 0 : std::min(k - 1, impl.intervals.size() - 1);
+  const Interval& i = impl.intervals[k];
+  if (y >= i.y0) return i.u0;
+  if (y <= i.y1) return i.u1;
+  // Newton on the monotone cubic, kept inside the bracket [lo, hi] by bisection
+  double lo = 0, hi = 1, t = (y - i.y0) / (i.y1 - i.y0);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double f = hermite(t, i.y0, i.y1, i.m0, i.m1) - y;  // falls with t
+    if (f > 0) lo = t;
+    else if (f < 0) hi = t;
+    else break;
+    const double slope = hermite_slope(t, i.y0, i.y1, i.m0, i.m1);
+    double next = slope < 0 ? t - f / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - t) <= 1e-16 || hi - lo <= 1e-16) {
+      t = next;
+      break;
+    }
+    t = next;
+  }
+  return std::min(i.u0 + t / i.inverse_h, i.u1);  // t < 1, but its rounding must not pass the node
+}
+
+ContactCurvesState ContactCurves::at_pressure(double pressure) const noexcept {
+  const double u = separation_at_pressure(pressure);
+  if (std::isnan(u)) return {nan, nan, nan, nan};
+  ContactCurvesState state = at_separation(u);
+  state.pressure = pressure;  // what was asked; the curve gives it back to a few ulp
+  return state;
+}
+
+}  // namespace asperity

@@ -1,0 +1,294 @@
+#include "asperity/generator/law_curves.hpp"
+
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "asperity/contact_curves.hpp"
+#include "asperity/error.hpp"
+#include "asperity/integrals.hpp"
+#include "asperity/table_schema.hpp"
+
+namespace asperity::generator {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double quadrature_tolerance = 1e-13;
+// The integrand beyond exp(-60) of its start is dropped (below 1e-26 of the integral)
+constexpr double density_cutoff = 60;
+constexpr int max_nodes = 8192;
+constexpr double min_interval = 1e-9;  // of the separation range
+constexpr double safety_factor = 2;
+// Where each interval is checked: its midpoint (where a cubic Hermite interpolant's error peaks)
+// and 1/2 -+ 1/(2 sqrt 3) (where its derivative's does: the served stiffness is the derivative
+// of the ln p interpolant, whose error vanishes at the midpoint to leading order)
+constexpr double check_fractions[] = {0.21132486540518713, 0.5, 0.78867513459481287};
+
+double density(const SceneLaw& law, double z) {
+  if (law.distribution == Distribution::gaussian) return std::exp(-0.5 * z * z) / std::sqrt(2 * pi);
+  if (!(z > 0)) return 0;
+  const double a = law.shape, t = std::pow(z, a);
+  return a * t / z * std::exp(-t);
+}
+
+// The heights z a piece is cut at: the density's mass from the lower end `from` outward
+// (Weibull: in t = z^a, where its mass lies; Gaussian: in units of its decay length)
+void mass_cuts(const SceneLaw& law, double from, std::vector<double>& cuts) {
+  static const double steps[] = {1e-3, 1e-2, 0.1, 0.3, 1, 2, 4, 8, 16, 32};
+  if (law.distribution == Distribution::gaussian) {
+    for (int z = -8; z <= 8; ++z) cuts.push_back(z);
+    const double length = 1 / std::max(from, 1.0);
+    for (double step : steps) cuts.push_back(from + step * length);
+    return;
+  }
+  const double a = law.shape, t0 = from > 0 ? std::pow(from, a) : 0;
+  for (double step : steps) {
+    cuts.push_back(std::pow(step, 1 / a));
+    cuts.push_back(std::pow(t0 + step, 1 / a));
+  }
+}
+
+}  // namespace
+
+LawMeans law_means(const SceneLaw& scene, double s) {
+  static thread_local boost::math::quadrature::tanh_sinh<double> finite;
+  const ContactLaw& law = scene.law;
+  const double sigma = scene.height_scale;
+  const bool tail = scene.side == Side::tail;
+  const bool weibull = scene.distribution == Distribution::weibull;
+  // interference at height z, and the height of interference omega
+  auto omega_of = [&](double z) { return sigma * (tail ? z - s : -s - z); };
+  auto z_of = [&](double omega) { return tail ? s + omega / sigma : -s - omega / sigma; };
+  double lo, hi;
+  if (tail) {
+    lo = weibull ? std::max(s, 0.0) : s;
+    const double t_lo = weibull ? std::pow(std::max(lo, 0.0), scene.shape) : 0.5 * lo * lo * (lo > 0);
+    hi = weibull ? std::pow(t_lo + density_cutoff, 1 / scene.shape) : std::sqrt(2 * (t_lo + density_cutoff));
+    hi = std::max(hi, lo + 1e-3);
+  } else {
+    lo = 0;
+    hi = -s;
+  }
+  LawMeans out;
+  if (!(hi > lo)) return out;
+  // Beyond the interference its source supports (Jackson-Green: a = R) the law is not used: the
+  // summits there must be negligible (their share of the count below 1e-3 of the tolerance;
+  // their load share is within a power of the interference of that)
+  if (std::isfinite(law.valid_up_to)) {
+    const double z_valid = z_of(law.valid_up_to);  // tail: above it; bounded: below it
+    const bool beyond = tail ? z_valid < hi : z_valid > lo;
+    if (beyond) {
+      auto survival = [&](double z) {  // the density's mass above z
+        return weibull ? std::exp(-std::pow(std::max(z, 0.0), scene.shape)) : 0.5 * std::erfc(z / std::sqrt(2.0));
+      };
+      const double total = tail ? survival(lo) : 1 - survival(hi);
+      const double share = tail ? survival(z_valid) / total : (1 - survival(z_valid)) / total;
+      if (!(share < 1e-3 * scene.max_rel_error)) {
+        std::ostringstream message;
+        message << contact_law_name(law.kind) << ": at s = " << s << " a share " << share
+                << " of the summits in contact is beyond the interference its source supports (" << law.valid_up_to
+                << " m): narrow the separation range";
+        throw Error(message.str());
+      }
+      (tail ? hi : lo) = z_valid;
+      if (!(hi > lo)) return out;
+    }
+  }
+  std::vector<double> cuts{lo, hi};
+  const SwitchPoints points = switch_points(law);
+  for (int k = 0; k < points.count; ++k) cuts.push_back(z_of(points.interference[k]));
+  mass_cuts(scene, lo, cuts);
+  cuts.erase(std::remove_if(cuts.begin(), cuts.end(), [&](double z) { return !(z >= lo && z <= hi); }), cuts.end());
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+  auto integrate = [&](auto quantity) {
+    double total = 0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const double a = cuts[i], b = cuts[i + 1];
+      if (!(b > a)) continue;
+      // x from a; the complement from b given exactly, so that an end's distance is exact
+      total += finite.integrate(
+          [&](double x, double complement) {
+            const double z = x < 0.5 * (b - a) ? a + x : b - complement;
+            const double phi = density(scene, z);
+            return phi == 0 ? 0.0 : quantity(omega_of(z)) * phi;
+          },
+          0.0, b - a, quadrature_tolerance);
+    }
+    return total;
+  };
+  out.count = integrate([](double) { return 1.0; });
+  out.area = integrate([&](double omega) { return asperity_response(law, omega).area; });
+  out.load = integrate([&](double omega) { return asperity_response(law, omega).load; });
+  out.stiffness = integrate([&](double omega) { return asperity_response(law, omega).stiffness; });
+  // where the load jumps at a switch point, the jump moves with s (docs/contact-laws.md section 8)
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < points.count; ++k) {
+    const double omega = points.interference[k], z = z_of(omega);
+    if (!(z > lo && z < hi)) continue;
+    const double jump = asperity_response(law, std::nextafter(omega, inf)).load -
+                        asperity_response(law, std::nextafter(omega, -inf)).load;
+    out.stiffness += jump * density(scene, z) / sigma;
+  }
+  return out;
+}
+
+LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options) {
+  const double sigma = law.height_scale, eta = law.summit_density;
+  const double tolerance = law.max_rel_error;
+  const std::string name = law.name.empty() ? std::string("the law") : "law '" + law.name + "'";
+  std::map<double, LawMeans> exact;  // by s
+  auto at = [&](double s) -> const LawMeans& {
+    auto found = exact.find(s);
+    if (found == exact.end()) found = exact.emplace(s, law_means(law, s)).first;
+    return found->second;
+  };
+
+  // the nodes: uniform, and knots where the integrals are not smooth (a Weibull density's edge)
+  std::vector<double> nodes;
+  const int uniform = 9;
+  for (int i = 0; i + 1 < uniform; ++i)
+    nodes.push_back(law.range_min + (law.range_max - law.range_min) * i / (uniform - 1));
+  nodes.push_back(law.range_max);  // exactly: the range's end is served
+  if (law.distribution == Distribution::weibull) {
+    std::vector<double> knots{0.0};
+    const SwitchPoints points = switch_points(law.law);
+    for (int k = 0; k < points.count; ++k) knots.push_back(-points.interference[k] / sigma);
+    for (double knot : knots)
+      if (knot > law.range_min && knot < law.range_max) nodes.push_back(knot);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+
+  LawCurvesResult result;
+  ContactCurvesData& data = result.data;
+  data.generator = std::string("asperity ") + ASPERITY_VERSION_STRING + " tablegen";
+  data.generator_options = generator_options;
+  data.source = std::string("contact-law ") + contact_law_name(law.law.kind);
+  {
+    std::ostringstream text;
+    text.precision(17);
+    const ContactLaw& l = law.law;
+    text << contact_law_name(l.kind) << ": E* = " << l.modulus << " Pa";
+    if (l.kind == ContactLawKind::chang_etsion_bogy || l.kind == ContactLawKind::zhao_maietta_chang)
+      text << ", H = " << l.hardness << " Pa";
+    if (l.kind == ContactLawKind::kogut_etsion || l.kind == ContactLawKind::jackson_green)
+      text << ", Y = " << l.yield_strength << " Pa";
+    if (l.kind != ContactLawKind::hertz && l.kind != ContactLawKind::zhao_maietta_chang) text << ", nu = " << l.poisson;
+    if (l.kind == ContactLawKind::zhao_maietta_chang) text << ", K = " << l.pressure_factor;
+    if (l.kind != ContactLawKind::hertz) text << ", omega_c = " << l.critical_interference << " m";
+    text << "; summits " << to_string(law.distribution);
+    if (law.distribution == Distribution::weibull) text << " a = " << law.shape << " " << to_string(law.side) << " side";
+    text << ", sigma_s = " << sigma << " m, R = " << law.summit_radius << " m, density = " << eta
+         << " /m^2, A0 = " << law.nominal_area << " m^2; separations s in [" << law.range_min << ", "
+         << law.range_max << "] (dimensionless)";
+    if (!law.name.empty()) text << "; scene law '" << law.name << "'";
+    data.description = text.str();
+  }
+  data.separation_datum = law.distribution == Distribution::gaussian
+                              ? "the mean summit height"
+                              : law.side == Side::tail ? "the Weibull origin (the lowest summit)"
+                                                       : "the Weibull origin (the highest summit)";
+  data.solver_tolerance = quadrature_tolerance;
+  data.safety_factor = safety_factor;
+  data.contact_modulus = law.law.modulus;
+  data.nominal_area = law.nominal_area;
+  if (law.distribution == Distribution::gaussian) {
+    data.mean_summit_height = 0;
+  } else {
+    data.mean_summit_height = (law.side == Side::tail ? 1 : -1) * sigma * weibull_mean(law.shape);
+    if (law.side == Side::bounded) data.max_height = 0;
+  }
+
+  auto fill = [&]() {
+    data.separation.clear();
+    data.pressure.clear();
+    data.stiffness.clear();
+    data.area_fraction.clear();
+    for (double s : nodes) {
+      const LawMeans& m = at(s);
+      const double pressure = eta * m.load, area_fraction = eta * m.area;
+      if (!(area_fraction <= 1)) {
+        std::ostringstream message;
+        message << name << ": the real area fraction reaches " << area_fraction << " at s = " << s
+                << ": beyond 1 Greenwood-Williamson does not hold; raise the separation range's lower end";
+        throw Error(message.str());
+      }
+      if (!(pressure >= schema::min_contact_value)) {
+        std::ostringstream message;
+        message << name << ": the pressure falls to " << pressure << " Pa at s = " << s
+                << ", below what a contact-curves table holds (1e-150 Pa); lower the separation range's upper end";
+        throw Error(message.str());
+      }
+      data.separation.push_back(sigma * s);
+      data.pressure.push_back(pressure);
+      data.stiffness.push_back(eta * m.stiffness);
+      data.area_fraction.push_back(area_fraction);
+    }
+  };
+
+  int checks = 0;
+  for (;;) {
+    fill();
+    const ContactCurves curves(data);
+    std::vector<double> halves;
+    double worst[3] = {0, 0, 0};
+    checks = 0;
+    for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+      const double h = nodes[i + 1] - nodes[i];
+      bool split = false;
+      for (double fraction : check_fractions) {
+        const double s = nodes[i] + fraction * h;
+        const LawMeans& m = at(s);
+        const ContactCurvesState served = curves.at_separation(sigma * s);
+        const double truth[3] = {eta * m.load, eta * m.stiffness, eta * m.area};
+        const double value[3] = {served.pressure, served.stiffness, served.area_fraction};
+        for (int k = 0; k < 3; ++k) {
+          const double error = std::fabs(value[k] - truth[k]) / std::fabs(truth[k]);
+          if (!(error <= 0.5 * tolerance)) split = true;
+          else worst[k] = std::max(worst[k], error);
+        }
+        ++checks;
+      }
+      if (split && h < min_interval * (law.range_max - law.range_min)) {
+        // a singular point: where a law's load (or its slope) jumps at omega_k and the Weibull
+        // density is infinite at its edge (a < 1), the stiffness is unbounded (or has an infinite
+        // slope) at s = -omega_k / sigma_s
+        std::ostringstream message;
+        message << name << ": the curves are not smooth enough near s = " << nodes[i]
+                << " to be tabulated to max_rel_error " << tolerance
+                << " (intervals of 1e-9 of the range still miss it: a switch point of the law meeting the edge of a "
+                   "singular Weibull density, a < 1?); exclude it from the separation range or ask a larger tolerance";
+        throw Error(message.str());
+      }
+      if (split) halves.push_back(nodes[i] + 0.5 * h);
+    }
+    if (halves.empty()) {
+      for (int k = 0; k < 3; ++k) {
+        data.measured_rel_error[k] = worst[k];
+        data.max_rel_error[k] = worst[k] * safety_factor;
+      }
+      data.check_points = checks;
+      break;
+    }
+    nodes.insert(nodes.end(), halves.begin(), halves.end());
+    std::sort(nodes.begin(), nodes.end());
+    if (nodes.size() > static_cast<std::size_t>(max_nodes)) {
+      std::ostringstream message;
+      message << name << ": more than " << max_nodes << " nodes would be needed for max_rel_error " << tolerance
+              << " (ask a larger tolerance or a narrower range)";
+      throw Error(message.str());
+    }
+  }
+  data.validate("law curves");
+  result.nodes = static_cast<int>(nodes.size());
+  result.evaluations = static_cast<int>(exact.size());
+  return result;
+}
+
+}  // namespace asperity::generator

@@ -1,0 +1,431 @@
+// Contact curves against separation (asperity/contact_curves.hpp, contact_curves_data.hpp) and a
+// measured surface as a table (topography/exact_contact_table.hpp): the interpolants against
+// closed forms, the served curves against independent exact solves of a synthetic map (at the
+// nodes to rounding, between them within the stored bound), the inverse, the file's round trip,
+// and files damaged or forged in every way the reader must refuse.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asperity/contact_curves.hpp"
+#include "asperity/contact_curves_data.hpp"
+#include "asperity/error.hpp"
+#include "asperity/pressure_overclosure.hpp"
+#include "asperity/table.hpp"
+#include "asperity/table_file.hpp"
+#include "asperity/table_writer.hpp"
+#include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/exact_contact_table.hpp"
+#include "asperity/topography/self_affine.hpp"
+
+namespace {
+using namespace asperity;
+namespace topo = asperity::topography;
+
+std::string temp_path(const std::string& name) { return std::string(ASPERITY_TEST_BINARY_DIR) + "/" + name; }
+
+// Curves from a closed form: ln p(u) = -u/lambda - (u/mu)^power, k = -dp/du, a = p/(E* slope)
+// (any decreasing positive area will do for the tests of the pressure).
+ContactCurvesData closed_form(int nodes, double power, double u0 = 0.1e-6, double u1 = 1.1e-6) {
+  ContactCurvesData data;
+  data.source = "closed form";
+  data.separation_datum = "u";
+  const double lambda = 0.2e-6, mu = 0.5e-6, p0 = 1e8;
+  for (int i = 0; i < nodes; ++i) {
+    const double u = u0 + (u1 - u0) * i / (nodes - 1);
+    const double log_p = -u / lambda - std::pow(u / mu, power);
+    const double slope = -1 / lambda - power / mu * std::pow(u / mu, power - 1);  // d ln p / du
+    data.separation.push_back(u);
+    data.pressure.push_back(p0 * std::exp(log_p));
+    data.stiffness.push_back(-p0 * std::exp(log_p) * slope);
+    data.area_fraction.push_back(0.5 * std::exp(log_p));
+  }
+  data.contact_modulus = 1e11;
+  data.nominal_area = 1e-6;
+  data.safety_factor = 2;
+  return data;
+}
+
+double closed_form_pressure(double u, double power) {
+  return 1e8 * std::exp(-u / 0.2e-6 - std::pow(u / 0.5e-6, power));
+}
+
+TEST(ContactCurvesInterpolant, ReproducesACubicLogPressureExactly) {
+  const ContactCurves curves(closed_form(5, 3));  // ln p a cubic: Hermite on exact slopes is exact
+  EXPECT_EQ(curves.limited_intervals(), 0u);
+  for (int i = 0; i <= 1000; ++i) {
+    const double u = 0.1e-6 + 1e-6 * i / 1000;
+    EXPECT_NEAR(curves.pressure(u) / closed_form_pressure(u, 3), 1, 1e-13) << u;
+  }
+}
+
+TEST(ContactCurvesInterpolant, ConvergesAtFourthOrder) {
+  // ln p with a quartic term: the cubic Hermite's error falls 16 times as the nodes halve
+  double previous = 0;
+  for (int nodes : {9, 17, 33}) {
+    const ContactCurves curves(closed_form(nodes, 4));
+    double worst = 0;
+    for (int i = 0; i <= 4000; ++i) {
+      const double u = 0.1e-6 + 1e-6 * i / 4000;
+      worst = std::max(worst, std::fabs(curves.pressure(u) / closed_form_pressure(u, 4) - 1));
+    }
+    if (previous > 0) {
+      EXPECT_GT(previous / worst, 12) << nodes;
+      EXPECT_LT(previous / worst, 20) << nodes;
+    }
+    previous = worst;
+  }
+}
+
+TEST(ContactCurvesInterpolant, StaysMonotoneWithInconsistentSlopes) {
+  ContactCurvesData data = closed_form(6, 3);
+  data.stiffness[2] *= 50;  // a slope far steeper than its neighbours' secants
+  data.stiffness[3] *= 0.01;
+  data.area_fraction = {0.5, 0.5, 0.2, 0.2, 0.19, 0.01};  // flat stretches: Steffen keeps them flat
+  const ContactCurves curves(data);
+  EXPECT_GT(curves.limited_intervals(), 0u);
+  double last_p = INFINITY, last_a = INFINITY;
+  for (int i = 0; i <= 10000; ++i) {
+    const double u = curves.min_separation() + (curves.max_separation() - curves.min_separation()) * i / 10000;
+    const ContactCurvesState s = curves.at_separation(u);
+    EXPECT_LE(s.pressure, last_p);
+    EXPECT_LE(s.area_fraction, last_a * (1 + 1e-15));
+    EXPECT_GE(s.stiffness, 0);
+    last_p = s.pressure;
+    last_a = s.area_fraction;
+  }
+  EXPECT_EQ(curves.area_fraction(data.separation[0] + 0.5 * (data.separation[1] - data.separation[0])), 0.5);
+}
+
+TEST(ContactCurvesInterpolant, UnevenNodesFindTheirIntervals) {
+  // nodes crowded at one end (a bin of the lookup's directory spans many intervals) and far
+  // apart at the other: every query lands in its own interval (between its nodes' values)
+  ContactCurvesData data = closed_form(200, 3);
+  for (std::size_t i = 0; i < data.separation.size(); ++i) {
+    const double f = static_cast<double>(i) / 199, u = 0.1e-6 + 1e-6 * f * f * f * f;
+    const double log_p = -u / 0.2e-6 - std::pow(u / 0.5e-6, 3);
+    data.separation[i] = u;
+    data.pressure[i] = 1e8 * std::exp(log_p);
+    data.stiffness[i] = data.pressure[i] * (1 / 0.2e-6 + 3 / 0.5e-6 * std::pow(u / 0.5e-6, 2));
+    data.area_fraction[i] = 0.5 * std::exp(log_p);
+  }
+  const ContactCurves curves(data);
+  for (std::size_t i = 0; i + 1 < data.separation.size(); ++i) {
+    for (double f : {0.0, 1e-9, 0.5, 1 - 1e-9}) {
+      const double u = data.separation[i] + f * (data.separation[i + 1] - data.separation[i]);
+      const double p = curves.pressure(u);
+      EXPECT_LE(p, data.pressure[i] * (1 + 1e-14)) << i;  // exp(ln p) rounds
+      EXPECT_GE(p, data.pressure[i + 1] * (1 - 1e-14)) << i;
+      EXPECT_NEAR(p / closed_form_pressure(u, 3), 1, 1e-12) << i;
+    }
+    EXPECT_NEAR(curves.pressure(data.separation[i]) / data.pressure[i], 1, 1e-14);
+  }
+}
+
+TEST(ContactCurvesInterpolant, OutsideTheRangeIsNaN) {
+  const ContactCurves curves(closed_form(5, 3));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double u : {curves.min_separation() * (1 - 1e-15), curves.max_separation() * (1 + 1e-15), nan, double(INFINITY)}) {
+    EXPECT_TRUE(std::isnan(curves.pressure(u)));
+    EXPECT_TRUE(std::isnan(curves.stiffness(u)));
+    EXPECT_TRUE(std::isnan(curves.area_fraction(u)));
+    EXPECT_TRUE(std::isnan(curves.at_separation(u).pressure));
+  }
+  for (double p : {curves.min_pressure() * (1 - 1e-15), curves.max_pressure() * (1 + 1e-15), nan, 0.0, -1.0})
+    EXPECT_TRUE(std::isnan(curves.separation_at_pressure(p)));
+  EXPECT_EQ(curves.separation_at_pressure(curves.max_pressure()), curves.min_separation());
+  EXPECT_EQ(curves.separation_at_pressure(curves.min_pressure()), curves.max_separation());
+}
+
+TEST(ContactCurvesData, ValidateRefusesWhatTheSchemaForbids) {
+  const ContactCurvesData good = closed_form(5, 3);
+  EXPECT_NO_THROW(good.validate("good"));
+  const auto refused = [&](auto change) {
+    ContactCurvesData data = good;
+    change(data);
+    EXPECT_THROW(data.validate("bad"), Error);
+    EXPECT_THROW(ContactCurves{data}, Error);
+  };
+  refused([](ContactCurvesData& d) { d.separation.resize(2); d.pressure.resize(2); d.stiffness.resize(2); d.area_fraction.resize(2); });
+  refused([](ContactCurvesData& d) { d.pressure.pop_back(); });
+  refused([](ContactCurvesData& d) { d.separation[2] = d.separation[1]; });
+  refused([](ContactCurvesData& d) { d.separation[2] = NAN; });
+  refused([](ContactCurvesData& d) { d.pressure[2] = d.pressure[1]; });
+  refused([](ContactCurvesData& d) { d.pressure[2] = -1; });
+  refused([](ContactCurvesData& d) { d.pressure[0] = INFINITY; });
+  refused([](ContactCurvesData& d) { d.stiffness[1] = 0; });
+  refused([](ContactCurvesData& d) { d.area_fraction[3] = d.area_fraction[2] * 2; });
+  refused([](ContactCurvesData& d) { d.area_fraction[0] = 1.5; });
+  refused([](ContactCurvesData& d) { d.max_rel_error[1] = NAN; });
+  refused([](ContactCurvesData& d) { d.safety_factor = 0.5; });
+  refused([](ContactCurvesData& d) { d.contact_modulus = 0; });
+  refused([](ContactCurvesData& d) { d.source.clear(); });
+  refused([](ContactCurvesData& d) { d.mean_summit_height = INFINITY; });
+}
+
+// ---- a synthetic measured map, solved ----
+
+topo::HeightMap rough_map() {
+  topo::SelfAffineSpectrum spectrum;
+  spectrum.hurst = 0.8;
+  const double side = 1e-3;
+  const std::size_t n = 64;
+  spectrum.rolloff_wavelength = side * 0.5;
+  spectrum.cutoff_wavelength = 4 * side / static_cast<double>(n);
+  spectrum.rms_height = 1e-6;
+  return topo::self_affine_surface(n, n, side / n, side / n, spectrum, 11);
+}
+
+topo::ExactContactOptions solver_options() {
+  topo::ExactContactOptions options;
+  options.contact_modulus = 1e11;
+  options.tolerance = 1e-10;
+  options.threads = 1;
+  return options;
+}
+
+// 17 nodes from 1e6 to 1e8 Pa (area fractions of about 1% to 30% on this map)
+struct Solved {
+  topo::ExactContactTable table;
+  ContactCurves curves;
+};
+
+const Solved& solved() {
+  static const Solved result = [] {
+    const topo::HeightMap map = rough_map();
+    topo::ExactContact solver(map, solver_options());
+    std::vector<topo::ContactStep> nodes;
+    for (int i = 0; i < 17; ++i) nodes.push_back(solver.at_pressure(1e6 * std::pow(10.0, 2.0 * i / 16)));
+    topo::ExactContactTable table = topo::measure_exact_contact_table(solver, nodes, "synthetic", "17 nodes");
+    ContactCurves curves(table.data);
+    return Solved{std::move(table), std::move(curves)};
+  }();
+  return result;
+}
+
+TEST(ExactContactTable, ServedValuesAreTheNodesToRounding) {
+  const Solved& s = solved();
+  for (const topo::ContactStep& node : s.table.nodes) {
+    const ContactCurvesState state = s.curves.at_separation(node.mean_gap);
+    EXPECT_NEAR(state.pressure / node.pressure, 1, 1e-14);
+    EXPECT_NEAR(state.stiffness / node.stiffness_per_area, 1, 1e-13);
+    EXPECT_NEAR(state.area_fraction / node.area_fraction, 1, 1e-14);
+  }
+  EXPECT_EQ(s.table.data.check_points, 16);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_GT(s.table.data.measured_rel_error[k], 0);
+    EXPECT_EQ(s.table.data.max_rel_error[k], 2 * s.table.data.measured_rel_error[k]);
+  }
+  EXPECT_EQ(s.table.data.solver_tolerance, 1e-10);
+}
+
+TEST(ExactContactTable, IndependentSolvesBetweenTheNodesLieWithinTheStoredBound) {
+  // new solves, by mean gap, at the middle of each interval in separation (the table's own
+  // checks were by pressure, at the geometric means): a fresh solver, nothing shared
+  const Solved& s = solved();
+  const topo::HeightMap map = rough_map();
+  topo::ExactContact solver(map, solver_options());
+  const ContactCurvesData& data = s.table.data;
+  double worst[3] = {0, 0, 0};
+  for (std::size_t i = 0; i + 1 < data.separation.size(); ++i) {
+    const double u = 0.5 * (data.separation[i] + data.separation[i + 1]);
+    const topo::ContactStep exact = solver.at_mean_gap(u);
+    const ContactCurvesState served = s.curves.at_separation(exact.mean_gap);
+    const double errors[3] = {std::fabs(served.pressure / exact.pressure - 1),
+                              std::fabs(served.stiffness / exact.stiffness_per_area - 1),
+                              std::fabs(served.area_fraction / exact.area_fraction - 1)};
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(errors[k], data.max_rel_error[k]) << "quantity " << k << " at " << u;
+      worst[k] = std::max(worst[k], errors[k]);
+    }
+  }
+  std::printf("measured at the table's checks: %.3g %.3g %.3g; at independent mid-separation solves: %.3g %.3g %.3g\n",
+              data.measured_rel_error[0], data.measured_rel_error[1], data.measured_rel_error[2], worst[0], worst[1],
+              worst[2]);
+}
+
+TEST(ExactContactTable, InverseRoundTrip) {
+  const ContactCurves& curves = solved().curves;
+  const double span = curves.max_separation() - curves.min_separation();
+  for (int i = 0; i <= 2000; ++i) {
+    const double u = curves.min_separation() + span * i / 2000;
+    const double p = curves.pressure(u);
+    EXPECT_NEAR(curves.separation_at_pressure(p), u, 1e-12 * span) << u;
+    const ContactCurvesState at_p = curves.at_pressure(p);
+    EXPECT_NEAR(at_p.pressure, p, 1e-15 * p);
+    EXPECT_NEAR(at_p.stiffness / curves.stiffness(u), 1, 1e-9);
+  }
+  for (int i = 0; i <= 2000; ++i) {
+    const double p = curves.min_pressure() * std::pow(curves.max_pressure() / curves.min_pressure(), i / 2000.0);
+    EXPECT_NEAR(curves.pressure(curves.separation_at_pressure(p)) / p, 1, 1e-12) << p;
+  }
+}
+
+TEST(ExactContactTable, FileRoundTrip) {
+  const ContactCurvesData& data = solved().table.data;
+  const std::string path = temp_path("contact-curves-round-trip.h5");
+  write_contact_curves_file(data, path);
+  EXPECT_EQ(read_table_kind(path), TableKind::contact_curves);
+  const ContactCurvesData read = read_contact_curves_file(path);
+  EXPECT_EQ(read.separation, data.separation);
+  EXPECT_EQ(read.pressure, data.pressure);
+  EXPECT_EQ(read.stiffness, data.stiffness);
+  EXPECT_EQ(read.area_fraction, data.area_fraction);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(read.max_rel_error[k], data.max_rel_error[k]);
+    EXPECT_EQ(read.measured_rel_error[k], data.measured_rel_error[k]);
+  }
+  EXPECT_EQ(read.check_points, data.check_points);
+  EXPECT_EQ(read.safety_factor, data.safety_factor);
+  EXPECT_EQ(read.solver_tolerance, data.solver_tolerance);
+  EXPECT_EQ(read.contact_modulus, data.contact_modulus);
+  EXPECT_EQ(read.nominal_area, data.nominal_area);
+  EXPECT_EQ(read.mean_summit_height, data.mean_summit_height);
+  EXPECT_EQ(read.max_height, data.max_height);
+  EXPECT_EQ(read.source, data.source);
+  EXPECT_EQ(read.description, data.description);
+  EXPECT_EQ(read.separation_datum, data.separation_datum);
+  EXPECT_EQ(read.generator, data.generator);
+  // the same bytes for the same data (no timestamps)
+  EXPECT_EQ(contact_curves_file_bytes(read), contact_curves_file_bytes(data));
+  const ContactCurves opened = ContactCurves::open(path);
+  const ContactCurves& served = solved().curves;
+  for (int i = 0; i <= 100; ++i) {
+    const double u = served.min_separation() + (served.max_separation() - served.min_separation()) * i / 100;
+    EXPECT_EQ(opened.pressure(u), served.pressure(u));
+    EXPECT_EQ(opened.stiffness(u), served.stiffness(u));
+    EXPECT_EQ(opened.area_fraction(u), served.area_fraction(u));
+  }
+  // without the optional mean summit height
+  ContactCurvesData bare = data;
+  bare.mean_summit_height = NAN;
+  bare.max_height = NAN;
+  write_contact_curves_file(bare, path);
+  EXPECT_TRUE(std::isnan(read_contact_curves_file(path).mean_summit_height));
+}
+
+TEST(ExactContactTable, CardFromTheCurves) {
+  const ContactCurves& curves = solved().curves;
+  const double low = curves.min_pressure(), high = curves.max_pressure();
+  const PressureOverclosureTable card = tabulate_pressure_overclosure(curves, low, high, 1e-3);
+  EXPECT_LE(card.max_error, 1e-3);
+  EXPECT_EQ(card.points.front().pressure, 0);
+  const double summit = curves.data().mean_summit_height;
+  for (std::size_t i = 1; i < card.points.size(); ++i) {
+    // each point on the served curve: overclosure -(u - mean summit height)
+    const double u = summit - card.points[i].overclosure;
+    EXPECT_NEAR(card.points[i].pressure / curves.pressure(std::clamp(u, curves.min_separation(), curves.max_separation())),
+                1, 1e-9);
+  }
+  EXPECT_THROW(tabulate_pressure_overclosure(curves, low * 0.5, high, 1e-3), Error);  // beyond the range served
+  std::ostringstream text;
+  write_pressure_overclosure(text, tabulate_pressure_overclosure(curves, low, high, 1e-3, OverclosureDatum::origin),
+                             CardFormat::abaqus, CardUnits::si, "test");
+  EXPECT_NE(text.str().find("the mean gap"), std::string::npos) << text.str();
+  // the mean-plane datum is a GW model's (it needs the model's mean summit height above the plane):
+  // refused for curves, naming the datums they take
+  try {
+    tabulate_pressure_overclosure(curves, low, high, 1e-3, OverclosureDatum::mean_plane);
+    ADD_FAILURE() << "the mean-plane datum was not refused";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("not mean-plane"), std::string::npos) << error.what();
+  }
+}
+
+// ---- files from outside ----
+
+std::vector<unsigned char> good_bytes() { return contact_curves_file_bytes(closed_form(5, 3)); }
+
+TableFileStatus status_of(const std::vector<unsigned char>& bytes) {
+  try {
+    read_contact_curves_bytes(bytes.data(), bytes.size(), "test");
+  } catch (const TableFileError& error) {
+    return error.status();
+  }
+  ADD_FAILURE() << "accepted";
+  return TableFileStatus::missing;
+}
+
+// Replaces the 8 bytes of `from` (a double stored little-endian, as the writer stores every
+// float) by those of `to`, at its first occurrence, and seals the header again: a file whose
+// integrity header is right and whose contents are forged.
+std::vector<unsigned char> forged(std::vector<unsigned char> bytes, double from, double to) {
+  unsigned char a[8], b[8];
+  std::memcpy(a, &from, 8);
+  std::memcpy(b, &to, 8);
+  const auto at = std::search(bytes.begin() + 512, bytes.end(), a, a + 8);
+  EXPECT_NE(at, bytes.end()) << "no " << from << " in the file";
+  if (at != bytes.end()) std::copy(b, b + 8, at);
+  seal_table_bytes(bytes.data(), bytes.size());
+  return bytes;
+}
+
+TEST(ContactCurvesFile, DamagedFilesAreRefused) {
+  const std::vector<unsigned char> good = good_bytes();
+  EXPECT_NO_THROW(read_contact_curves_bytes(good.data(), good.size(), "good"));
+  std::vector<unsigned char> flipped = good;
+  flipped[good.size() / 2] ^= 0x10;
+  EXPECT_EQ(status_of(flipped), TableFileStatus::damaged);
+  EXPECT_EQ(status_of(std::vector<unsigned char>(good.begin(), good.end() - 100)), TableFileStatus::damaged);
+  std::vector<unsigned char> longer = good;
+  longer.push_back(0);
+  EXPECT_EQ(status_of(longer), TableFileStatus::damaged);
+  EXPECT_EQ(status_of(std::vector<unsigned char>(good.begin(), good.begin() + 100)), TableFileStatus::damaged);
+  EXPECT_EQ(status_of({}), TableFileStatus::not_hdf5);
+}
+
+TEST(ContactCurvesFile, ForgedContentsAreRefused) {
+  const ContactCurvesData data = closed_form(5, 3);
+  const std::vector<unsigned char> good = good_bytes();
+  // a pressure that rises, a NaN separation, an area above 1, a negative stiffness, a bound NaN
+  EXPECT_EQ(status_of(forged(good, data.pressure[2], data.pressure[0] * 2)), TableFileStatus::invalid);
+  EXPECT_EQ(status_of(forged(good, data.separation[3], NAN)), TableFileStatus::invalid);
+  EXPECT_EQ(status_of(forged(good, data.separation[3], data.separation[1])), TableFileStatus::invalid);
+  EXPECT_EQ(status_of(forged(good, data.area_fraction[0], 2.0)), TableFileStatus::invalid);
+  EXPECT_EQ(status_of(forged(good, data.stiffness[4], -data.stiffness[4])), TableFileStatus::invalid);
+  EXPECT_EQ(status_of(forged(good, data.contact_modulus, INFINITY)), TableFileStatus::invalid);
+}
+
+TEST(ContactCurvesFile, TheOtherKindIsRefusedEitherWay) {
+  const std::string curves_path = temp_path("contact-curves-kind.h5");
+  write_contact_curves_file(closed_form(5, 3), curves_path);
+  try {
+    Table::open(curves_path);
+    ADD_FAILURE() << "a contact-curves table opened as integrals";
+  } catch (const TableFileError& error) {
+    EXPECT_EQ(error.status(), TableFileStatus::other_schema);
+    EXPECT_NE(std::string(error.what()).find("contact curves"), std::string::npos) << error.what();
+  }
+  try {
+    read_contact_curves_file(ASPERITY_TEST_TABLE);
+    ADD_FAILURE() << "a table of integrals opened as contact curves";
+  } catch (const TableFileError& error) {
+    EXPECT_EQ(error.status(), TableFileStatus::other_schema);
+  }
+  EXPECT_EQ(read_table_kind(ASPERITY_TEST_TABLE), TableKind::integrals);
+  try {
+    read_table_kind(temp_path("no-such-table.h5"));
+    ADD_FAILURE();
+  } catch (const TableFileError& error) {
+    EXPECT_EQ(error.status(), TableFileStatus::missing);
+  }
+}
+
+TEST(ContactCurvesFile, WriterRefusesWhatTheReaderWould) {
+  ContactCurvesData data = closed_form(5, 3);
+  data.pressure[3] = data.pressure[1];
+  EXPECT_THROW(contact_curves_file_bytes(data), Error);
+  const std::string path = temp_path("contact-curves-refused.h5");
+  std::remove(path.c_str());
+  EXPECT_THROW(write_contact_curves_file(data, path), Error);
+  EXPECT_FALSE(std::ifstream(path).good());  // nothing written
+}
+
+}  // namespace
