@@ -243,12 +243,12 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
 // contact, asperity exact-contact --table): its served curves at separations or pressures, or
 // their card.
 int run_contact_curves(const Options& options, const CLI::App& command) {
-  if (!options.dist.empty() || !options.side.empty() || given(options.shape) || given(options.sigma) ||
+  if (!options.side.empty() || given(options.shape) || given(options.sigma) ||
       given(options.rms) || given(options.radius) || given(options.density) || given(options.count) ||
       given(options.area) || given(options.modulus) || given(options.e1) || given(options.nu1) ||
       given(options.e2) || given(options.nu2) || !options.moments.empty())
     usage("the table '" + quote_text(options.table) +
-          "' holds a measured surface's contact curves: it is the surface (give no --dist, --shape, --sigma, "
+          "' holds a measured surface's contact curves: it is the surface (give no --side, --shape, --sigma, "
           "--rms, --radius, --density, --count, --area, --modulus, --e1..--nu2, --moments)");
   if (given(options.load) || given(options.real_area))
     usage("a measured surface's contact curves are served at a separation or a nominal pressure: --separation, "
@@ -350,7 +350,9 @@ int run_contact_curves(const Options& options, const CLI::App& command) {
 }
 
 int run_contact(const Options& options, const CLI::App& command) {
-  if (!options.table.empty() && read_table_kind(options.table) == TableKind::contact_curves)
+  // A table alone, no surface: it may be a measured surface's (its kind read only then, so that
+  // a GW table is not read twice); with a surface, a contact-curves table is refused on opening.
+  if (!options.table.empty() && options.dist.empty() && read_table_kind(options.table) == TableKind::contact_curves)
     return run_contact_curves(options, command);
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
