@@ -129,6 +129,22 @@ TEST(ContactCurvesInterpolant, UnevenNodesFindTheirIntervals) {
   }
 }
 
+TEST(ContactCurvesInterpolant, PressuresAFewUlpApartStayFinite) {
+  // strictly falling pressures whose logarithms round to the same double: a flat interval
+  ContactCurvesData data = closed_form(5, 3);
+  data.pressure[2] = std::nextafter(data.pressure[1], 0.0);
+  data.pressure[3] = std::nextafter(data.pressure[2], 0.0);
+  ASSERT_EQ(std::log(data.pressure[2]), std::log(data.pressure[3]));
+  const ContactCurves curves(data);
+  for (int i = 0; i <= 1000; ++i) {
+    const double u = curves.min_separation() + (curves.max_separation() - curves.min_separation()) * i / 1000;
+    const ContactCurvesState s = curves.at_separation(u);
+    EXPECT_TRUE(std::isfinite(s.pressure) && std::isfinite(s.stiffness) && std::isfinite(s.area_fraction)) << u;
+    EXPECT_GE(curves.separation_at_pressure(s.pressure), curves.min_separation());
+  }
+  EXPECT_TRUE(std::isfinite(curves.separation_at_pressure(data.pressure[2])));
+}
+
 TEST(ContactCurvesInterpolant, OutsideTheRangeIsNaN) {
   const ContactCurves curves(closed_form(5, 3));
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -322,12 +322,12 @@ int run_contact_law(const Options& options, const CLI::App& command) {
 // contact, asperity exact-contact --table, or a law scene's, tablegen): its served curves at
 // separations or pressures, or their card.
 int run_contact_curves(const Options& options, const CLI::App& command) {
-  if (!options.dist.empty() || !options.side.empty() || given(options.shape) || given(options.sigma) ||
+  if (!options.side.empty() || given(options.shape) || given(options.sigma) ||
       given(options.rms) || given(options.radius) || given(options.density) || given(options.count) ||
       given(options.area) || given(options.modulus) || given(options.e1) || given(options.nu1) ||
       given(options.e2) || given(options.nu2) || !options.moments.empty())
     usage("the table '" + quote_text(options.table) +
-          "' holds a measured surface's contact curves: it is the surface (give no --dist, --shape, --sigma, "
+          "' holds a measured surface's contact curves: it is the surface (give no --side, --shape, --sigma, "
           "--rms, --radius, --density, --count, --area, --modulus, --e1..--nu2, --moments)");
   check_curve_queries(options, "a table's contact curves");
   return serve_contact_curves(options, command, ContactCurves::open(options.table));
@@ -436,7 +436,10 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!options.law_range.empty() || given(options.hardness) || given(options.yield_strength) ||
       given(options.law_poisson) || given(options.law_tolerance))
     usage("--law-range, --hardness, --yield-strength, --law-poisson and --law-tolerance go with --law");
-  if (!options.table.empty() && read_table_kind(options.table) == TableKind::contact_curves)
+  // A table alone, no surface: it may be a measured surface's or a law scene's (its kind read only
+  // then, so that a GW table is not read twice); with a surface, a contact-curves table is refused
+  // on opening.
+  if (!options.table.empty() && options.dist.empty() && read_table_kind(options.table) == TableKind::contact_curves)
     return run_contact_curves(options, command);
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);

@@ -7,8 +7,10 @@
 // A ContactCurves is a small handle over immutable shared data: copies share it, and any number
 // of threads may query one at once. Queries never allocate, lock or throw: NaN for a NaN
 // separation or pressure, or one outside the range served (the first to the last node: nothing
-// is extrapolated). A query finds its interval by bisection over the nodes (O(log N)), then
-// evaluates two cubics and one exp.
+// is extrapolated). A query finds its interval through a directory of equal bins over the range
+// (four an interval: O(1) for nodes about evenly spread, a bisection among a bin's intervals
+// otherwise), then evaluates a cubic and an exp per quantity; the inverse bisects the nodes'
+// pressures and solves the cubic by safeguarded Newton.
 //
 // Interpolation (fixed by the format, so that the stored bound is the bound of what is served):
 // ln p by cubic Hermite with the nodes' own slopes d(ln p)/du = -k/p (the stiffness the solver

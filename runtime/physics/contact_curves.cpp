@@ -58,36 +58,61 @@ std::vector<double> steffen_slopes(const std::vector<double>& x, const std::vect
   return slope;
 }
 
+// Equal bins over ascending keys (the nodes' separations, or their -ln p): bin b starts in the
+// interval holding its left edge, so a query searches only the intervals its bin overlaps (one
+// or two for keys about evenly spread, four bins an interval; a bisection among them otherwise).
+class Directory {
+ public:
+  void build(const std::vector<double>& keys) {
+    const std::size_t n = keys.size(), bins = 4 * (n - 1);
+    low_ = keys.front();
+    const double span = keys.back() - low_;
+    scale_ = static_cast<double>(bins) / span;  // inf or NaN for a degenerate span: find() then bisects
+    entries_.resize(bins + 1);
+    std::size_t interval = 0;
+    for (std::size_t b = 0; b <= bins; ++b) {
+      const double edge = b == bins ? keys.back() : low_ + span * static_cast<double>(b) / static_cast<double>(bins);
+      while (interval + 1 < n - 1 && keys[interval + 1] <= edge) ++interval;
+      entries_[b] = static_cast<std::uint32_t>(interval);
+    }
+  }
+  // The interval i (0 to keys.size() - 2) with keys[i] <= x < keys[i + 1] (the last: <=), for x
+  // in [keys.front(), keys.back()].
+  std::size_t find(const std::vector<double>& keys, double x) const noexcept {
+    const std::size_t bins = entries_.size() - 1, intervals = keys.size() - 1;
+    const double position = (x - low_) * scale_;
+    const std::size_t b = position < static_cast<double>(bins) ? static_cast<std::size_t>(position) : bins - 1;
+    const std::size_t first = entries_[b], last = entries_[b + 1];
+    std::size_t i = first;
+    if (last > first)
+      i = static_cast<std::size_t>(std::upper_bound(keys.begin() + first + 1, keys.begin() + last + 1, x) -
+                                   keys.begin()) - 1;
+    // where rounding put x in a neighbouring bin (or the span is degenerate): the whole search
+    if (!(x >= keys[i] && (x < keys[i + 1] || i + 1 == intervals))) {
+      i = static_cast<std::size_t>(std::upper_bound(keys.begin(), keys.end(), x) - keys.begin());
+      i = i == 0 ? 0 : std::min(i - 1, intervals - 1);
+    }
+    return i;
+  }
+
+ private:
+  std::vector<std::uint32_t> entries_;  // bins + 1
+  double low_ = 0, scale_ = 0;
+};
+
 }  // namespace
 
 struct ContactCurves::Impl {
   ContactCurvesData data;
   std::vector<double> nodes;          // separations
-  std::vector<double> log_pressures;  // at the nodes, descending
+  std::vector<double> minus_log_pressures;  // -ln p at the nodes, ascending
   std::vector<Interval> intervals;
   std::size_t limited = 0;
-  // A directory of equal bins over the range: bin b starts in interval directory[b], so a query
-  // searches only the intervals its bin overlaps (one or two when the nodes are about evenly
-  // spread; a bisection over those otherwise).
-  std::vector<std::uint32_t> directory;  // bins + 1 entries
-  double bin_scale = 0;
+  Directory by_separation, by_pressure;
 
   // The interval holding u (inside the range), and t in it.
   const Interval& locate(double u, double& t) const noexcept {
-    const std::size_t bins = directory.size() - 1;
-    const double x = (u - nodes.front()) * bin_scale;  // >= 0; not a number only for a degenerate span
-    const std::size_t b = x < static_cast<double>(bins) ? static_cast<std::size_t>(x) : bins - 1;
-    const std::size_t first = directory[b], last = directory[b + 1];  // u lies in an interval first..last
-    std::size_t i = first;
-    if (last > first)
-      i = static_cast<std::size_t>(std::upper_bound(nodes.begin() + first + 1, nodes.begin() + last + 1, u) -
-                                   nodes.begin()) - 1;
-    // where rounding put u in a neighbouring bin: the whole search
-    if (!(u >= nodes[i] && (u < nodes[i + 1] || i + 1 == intervals.size()))) {
-      i = static_cast<std::size_t>(std::upper_bound(nodes.begin(), nodes.end(), u) - nodes.begin());
-      i = i == 0 ? 0 : std::min(i - 1, intervals.size() - 1);
-    }
-    const Interval& interval = intervals[i];
+    const Interval& interval = intervals[by_separation.find(nodes, u)];
     t = (u - interval.u0) * interval.inverse_h;
     return interval;
   }
@@ -104,7 +129,7 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
   impl->nodes = data.separation;
   std::vector<double> log_area(n);
   for (std::size_t i = 0; i < n; ++i) {
-    impl->log_pressures.push_back(std::log(data.pressure[i]));
+    impl->minus_log_pressures.push_back(-std::log(data.pressure[i]));
     log_area[i] = std::log(data.area_fraction[i]);
   }
   const std::vector<double> area_slopes = steffen_slopes(impl->nodes, log_area);
@@ -114,15 +139,18 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
     interval.u0 = impl->nodes[i];
     interval.u1 = impl->nodes[i + 1];
     interval.inverse_h = 1 / h;
-    interval.y0 = impl->log_pressures[i];
-    interval.y1 = impl->log_pressures[i + 1];
+    interval.y0 = -impl->minus_log_pressures[i];
+    interval.y1 = -impl->minus_log_pressures[i + 1];
     // the nodes' own slopes of ln p, -k/p, times h
     double m0 = -data.stiffness[i] / data.pressure[i] * h, m1 = -data.stiffness[i + 1] / data.pressure[i + 1] * h;
     // Fritsch-Carlson: a cubic Hermite is monotone where alpha^2 + beta^2 <= 9 (alpha, beta the
     // end slopes over the secant, both >= 0 here: p falls and k > 0)
-    const double secant = interval.y1 - interval.y0;  // < 0
+    const double secant = interval.y1 - interval.y0;  // < 0, or 0 where two pressures a few ulp apart share a log
     const double alpha = m0 / secant, beta = m1 / secant, radius = alpha * alpha + beta * beta;
-    if (radius > 9) {
+    if (!(secant < 0)) {
+      m0 = m1 = 0;  // flat: the one monotone cubic between equal values
+      ++impl->limited;
+    } else if (radius > 9) {
       const double tau = 3 / std::sqrt(radius);
       m0 = tau * alpha * secant;
       m1 = tau * beta * secant;
@@ -136,17 +164,8 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
     interval.b1 = area_slopes[i + 1] * h;
     impl->intervals.push_back(interval);
   }
-  // four bins an interval: evenly spread nodes put each bin in one or two intervals
-  const std::size_t bins = 4 * (n - 1);
-  const double low = impl->nodes.front(), span = impl->nodes.back() - low;
-  impl->bin_scale = static_cast<double>(bins) / span;  // span > 0 (validated); inf only if subnormal
-  impl->directory.resize(bins + 1);
-  std::size_t interval = 0;
-  for (std::size_t b = 0; b <= bins; ++b) {
-    const double edge = b == bins ? impl->nodes.back() : low + span * static_cast<double>(b) / static_cast<double>(bins);
-    while (interval + 1 < n - 1 && impl->nodes[interval + 1] <= edge) ++interval;
-    impl->directory[b] = static_cast<std::uint32_t>(interval);
-  }
+  impl->by_separation.build(impl->nodes);
+  impl->by_pressure.build(impl->minus_log_pressures);
   impl->data = std::move(data);
   impl_ = std::move(impl);
 }
@@ -195,12 +214,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
   if (!(pressure >= impl.data.pressure.back() && pressure <= impl.data.pressure.front())) return nan;
   const double y = std::log(pressure);
   // the interval whose ln p brackets y (ln p descends along the nodes)
-  const auto& logs = impl.log_pressures;
-  std::size_t k = static_cast<std::size_t>(
-      std::upper_bound(logs.begin(), logs.end(), y, [](double value, double node) { return value > node; }) -
-      logs.begin());
-  k = k == 0 ? 0 : std::min(k - 1, impl.intervals.size() - 1);
-  const Interval& i = impl.intervals[k];
+  const Interval& i = impl.intervals[impl.by_pressure.find(impl.minus_log_pressures, -y)];
   if (y >= i.y0) return i.u0;
   if (y <= i.y1) return i.u1;
   // Newton on the monotone cubic, kept inside the bracket [lo, hi] by bisection

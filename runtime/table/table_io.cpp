@@ -225,8 +225,9 @@ TableKind read_kind(hid_t file, const Reader& reader, const std::string& name) {
 [[noreturn]] void wrong_kind(const std::string& name, TableKind kind) {
   fail(TableFileStatus::other_schema, name,
        kind == TableKind::contact_curves
-           ? "a table of contact curves against separation (a measured surface's: asperity contact --table "
-             "serves it), not of Greenwood-Williamson integrals"
+           ? "a table of contact curves against separation (a measured surface's: it is served by ContactCurves, "
+             "asperity_contact_curves_load, and asperity contact --table FILE without a surface), not of "
+             "Greenwood-Williamson integrals"
            : "a table of Greenwood-Williamson integrals, not of contact curves against separation");
 }
 
