@@ -114,42 +114,60 @@ void ContactModel::at_separations(ContactQuantity quantity, const double* separa
     return;
   }
   const double area = surface_.nominal_area, sigma = surface_.height_scale, offset = datum_offset_;
+  // state_at_dimensionless's rare answers need not build the whole state: contact_products'
+  // lane of the quantity (count, area, load, stiffness), the same bits
+  const int lane = twice_order == orders::count ? 0 : twice_order == orders::area ? 1 : twice_order == orders::load ? 2 : 3;
+  const bool bounded = surface_.side == Side::bounded;
   constexpr std::size_t block = 256;
-  double s[block];              // the block's dimensionless separations (a copy: out may be separations)
-  unsigned char special[block]; // not a normal product: the scalar path answers
+  double s[block];  // the block's dimensionless separations (a copy: out may be separations)
+  double x[block];  // X_n at them
   // Branch-free passes that the compiler vectorizes (dimensionless's and state_at_dimensionless's
-  // arithmetic, the same operations in the same order), then the rare elements one by one.
+  // arithmetic, the same operations in the same order): s, the batch lookup, then the factor (and
+  // the nominal area) with the count of the rare elements in one pass; the rare ones one by one
+  // only in a block that has any.
   for (std::size_t start = 0; start < count; start += block) {
     const std::size_t size = count - start < block ? count - start : block;
     const double* in = separations + start;
-    double* x = out + start;
+    double* to = out + start;
     if (offset == 0)
       for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma;
     else
       for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma + offset;
     curve_.value_batch(twice_order, s, x, size);
-    unsigned any = 0;
+    double rare_count = 0;  // a double: the loops vectorize (an integer count does not, GCC 12)
+    if (per_area)
+      for (std::size_t j = 0; j < size; ++j) {
+        const double product = x[j] * factor;
+        rare_count += (x[j] >= DBL_MIN) & (product <= DBL_MAX) ? 0.0 : 1.0;  // NaN, 0, subnormal, inf
+        to[j] = product / area;
+      }
+    else
+      for (std::size_t j = 0; j < size; ++j) {
+        const double product = x[j] * factor;
+        rare_count += (x[j] >= DBL_MIN) & (product <= DBL_MAX) ? 0.0 : 1.0;
+        to[j] = product;
+      }
+    if (__builtin_expect(rare_count == 0, 1)) continue;
     for (std::size_t j = 0; j < size; ++j) {
       const double product = x[j] * factor;
-      const unsigned rare = !(x[j] >= DBL_MIN) | !(product <= DBL_MAX);  // NaN, 0, subnormal, inf
-      special[j] = static_cast<unsigned char>(rare);
-      any |= rare;
-      x[j] = product;
-    }
-    if (per_area)
-      for (std::size_t j = 0; j < size; ++j) x[j] /= area;
-    if (__builtin_expect(any == 0, 1)) continue;
-    for (std::size_t j = 0; j < size; ++j) {
-      if (!special[j]) continue;
-      // NaN, no contact, all in contact, or X_n beyond the doubles: the scalar path's answer
-      const PhysicalState state = state_at_dimensionless(s[j]);
+      if (x[j] >= DBL_MIN && product <= DBL_MAX) continue;
+      // X_n beyond the doubles where contact is partial: contact_products' one kernel call, as
+      // state_at_dimensionless makes it
+      double state[5];
+      if (std::isfinite(s[j]) && !(bounded && s[j] >= 0) &&
+          curve_.contact_products(s[j], scales_.count, scales_.area, scales_.load, scales_.stiffness, state)) {
+        to[j] = per_area ? state[lane] / area : state[lane];
+        continue;
+      }
+      // NaN, no contact, all in contact, off the grid: the scalar path's answer
+      const PhysicalState answer = state_at_dimensionless(s[j]);
       switch (quantity) {
-        case ContactQuantity::count: x[j] = state.count; break;
-        case ContactQuantity::real_area: x[j] = state.real_area; break;
-        case ContactQuantity::area_fraction: x[j] = state.area_fraction; break;
-        case ContactQuantity::load: x[j] = state.load; break;
-        case ContactQuantity::pressure: x[j] = state.pressure; break;
-        case ContactQuantity::stiffness: x[j] = state.stiffness; break;
+        case ContactQuantity::count: to[j] = answer.count; break;
+        case ContactQuantity::real_area: to[j] = answer.real_area; break;
+        case ContactQuantity::area_fraction: to[j] = answer.area_fraction; break;
+        case ContactQuantity::load: to[j] = answer.load; break;
+        case ContactQuantity::pressure: to[j] = answer.pressure; break;
+        case ContactQuantity::stiffness: to[j] = answer.stiffness; break;
       }
     }
   }
