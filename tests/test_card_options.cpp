@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -158,6 +159,78 @@ TEST(CardOptions, MaxPointsLoosensTheToleranceToTheSmallestThatFits) {
   EXPECT_THROW(tabulate_pressure_overclosure(model, 1e3, 1e8, 1e-3, OverclosureDatum::mean_summit,
                                                   card_points_max + 1),
                Error);
+}
+
+// A tabulated curve's card (asperity exact-contact) under --max-points: at most the cap, the
+// first and last points kept, every point dropped within the tolerance stated of the chord
+// between the rows around it (checked here, from the curve), the tolerance the smallest of two
+// digits that fits (10 % tighter needs more rows), the datum in the header.
+TEST(CardOptions, TabulatedCurveKeepsAtMostMaxPointsWithinTheToleranceItStates) {
+  std::vector<PressureOverclosurePoint> curve{{0.0, -2e-6}};  // first contact, then p = 1e6 (e^(h / 1e-7) - ...) rising
+  for (int i = 1; i <= 300; ++i) {
+    const double h = -2e-6 + i * 1e-8;
+    curve.push_back({1e6 * std::expm1((h + 2e-6) / 4e-7), h});
+  }
+  const double mean_summit_overclosure = -3e-7;
+  for (std::size_t cap : {std::size_t{12}, std::size_t{41}, std::size_t{200}, std::size_t{301}, std::size_t{400}}) {
+    const TabulatedCard card = tabulate_points(curve, cap, OverclosureDatum::mean_plane, mean_summit_overclosure);
+    EXPECT_EQ(card.given_points, curve.size());
+    EXPECT_LE(card.points.size(), cap);
+    EXPECT_EQ(card.points.front().overclosure, curve.front().overclosure);
+    EXPECT_NEAR(card.points.back().overclosure, curve.back().overclosure, 1e-18);
+    if (cap >= curve.size()) {
+      EXPECT_EQ(card.points.size(), curve.size());
+      EXPECT_EQ(card.tolerance, 0.0);
+      continue;
+    }
+    ASSERT_GT(card.tolerance, 0.0);
+    EXPECT_LE(card.max_error, card.tolerance);
+    char two_digits[32];  // stated with two significant digits
+    std::snprintf(two_digits, sizeof two_digits, "%.1e", card.tolerance);
+    EXPECT_EQ(std::stod(two_digits), card.tolerance) << card.tolerance;
+    // every point of the curve against the card's linear interpolation
+    double worst = 0;
+    for (std::size_t i = 1, row = 1; i < curve.size(); ++i) {
+      while (row + 1 < card.points.size() && curve[i].overclosure > card.points[row].overclosure) ++row;  // (13 digits)
+      const PressureOverclosurePoint &a = card.points[row - 1], &b = card.points[row];
+      const double chord =
+          a.pressure + (curve[i].overclosure - a.overclosure) / (b.overclosure - a.overclosure) * (b.pressure - a.pressure);
+      const double error = std::fabs(chord - curve[i].pressure) / curve[i].pressure;
+      worst = std::max(worst, error);
+    }
+    EXPECT_LE(worst, card.tolerance * (1 + 1e-9)) << cap;
+    EXPECT_NEAR(worst, card.max_error, 1e-9 * card.max_error) << cap;
+    // the smallest that fits: one row fewer needs a larger tolerance, or none fits
+    try {
+      EXPECT_GT(tabulate_points(curve, card.points.size() - 1, OverclosureDatum::mean_plane, 0).tolerance, card.tolerance);
+    } catch (const Error&) {
+    }
+    std::ostringstream out;
+    write_tabulated_pressure_overclosure(out, card, CardFormat::abaqus, CardUnits::mm, "a curve", "from a test");
+    const std::vector<Row> rows = rows_of(out.str());
+    ASSERT_EQ(rows.size(), card.points.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      EXPECT_NEAR(rows[i].pressure, card.points[i].pressure / 1e6, 1e-12 * card.points[i].pressure / 1e6 + 1e-300);
+      EXPECT_NEAR(rows[i].overclosure, card.points[i].overclosure * 1e3, 1e-12 * std::fabs(card.points[i].overclosure) * 1e3);
+    }
+    EXPECT_NE(out.str().find("--overclosure-datum mean-plane; the mean\n**   summit height is 0.0003 mm above it"),
+              std::string::npos)
+        << out.str();
+    EXPECT_NE(out.str().find("rows: " + std::to_string(card.points.size()) + " of the curve's 301 points (at most " +
+                             std::to_string(cap) + ")"),
+              std::string::npos)
+        << out.str();
+  }
+  // the datum without a mean summit height (a map without summits): nothing said of it
+  std::ostringstream none;
+  write_tabulated_pressure_overclosure(none, tabulate_points(curve, 400, OverclosureDatum::zero_pressure, NAN),
+                                       CardFormat::calculix, CardUnits::si, "", "");
+  EXPECT_EQ(none.str().find("mean summit height"), std::string::npos) << none.str();
+  EXPECT_NE(none.str().find("(--overclosure-datum zero-pressure)"), std::string::npos) << none.str();
+  // a cap that even a tolerance of 0.1 cannot meet, and caps out of range
+  EXPECT_THROW(tabulate_points(curve, 3, OverclosureDatum::mean_summit, 0), Error);
+  EXPECT_THROW(tabulate_points(curve, 2, OverclosureDatum::mean_summit, 0), Error);
+  EXPECT_THROW(tabulate_points(curve, card_points_max + 1, OverclosureDatum::mean_summit, 0), Error);
 }
 
 TEST(CardOptions, NumbersAreTheShortestThatReadBack) {

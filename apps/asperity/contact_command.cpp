@@ -16,6 +16,7 @@
 #include "asperity/table_file.hpp"
 #include "asperity/error.hpp"
 #include "command_line.hpp"
+#include "fe_card_options.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/plausibility.hpp"
 #include "asperity/pressure_overclosure.hpp"
@@ -198,30 +199,6 @@ std::string describe(const RoughSurface& surface) {
   return text.str();
 }
 
-// CalculiX's node-to-surface contact makes no spring beyond a clearance of 1e-3 sqrt(A): say
-// what of the card never acts for faces of edge `face_size` (interior nodes: A = face_size^2).
-void check_spring_cutoff(const CLI::App& command, const ContactModel& model, const PressureOverclosureTable& table,
-                         double face_size) {
-  const double clearance = -table.points.front().overclosure;
-  if (!given(face_size)) {
-    if (clearance > 0)
-      note(command, "for CalculiX: the card reaches a clearance of " + approximately(clearance) +
-                        " m; give --face-size L (the slave faces' edge, m) to check it against node-to-surface "
-                        "contact's spring cut-off (1e-3 L)");
-    return;
-  }
-  const double cutoff = calculix_spring_cutoff_per_root_area * face_size;
-  if (!(clearance > cutoff)) return;
-  const double pressure_at_cutoff = law_pressure(model, -cutoff - table.mean_summit_overclosure);
-  warn(command, "the card reaches a clearance of " + approximately(clearance) +
-                    " m, but CalculiX's node-to-surface contact makes a contact spring only within a clearance of "
-                    "1e-3 sqrt(A) (A the slave node's area) = " + approximately(cutoff) + " m for faces of " +
-                    number(face_size) + " m (less at the mesh's edges): below " + approximately(pressure_at_cutoff) +
-                    " Pa the card never acts and contact starts at that pressure in one increment; use "
-                    "--overclosure-datum zero-pressure (and start the model with the surfaces touching), larger "
-                    "faces, or a higher PMIN");
-}
-
 int export_law(const Options& options, const ContactModel& model, const CLI::App& command, CardFormat format,
                CardUnits units, OverclosureDatum datum) {
   const std::vector<std::string> range = split(options.pressure_range, ':');
@@ -230,9 +207,7 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
   const double high = number_from_text(range[1], "--pressure-range PMAX");
   if (!(low > 0 && high > low)) usage("--pressure-range needs 0 < PMIN < PMAX");
   const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
-  const std::size_t max_points = options.max_points > 0        ? static_cast<std::size_t>(options.max_points)
-                                 : format == CardFormat::calculix ? calculix_points_max
-                                                                  : card_points_max;
+  const std::size_t max_points = card_max_points(options.max_points, format);
   const PressureOverclosureTable table = tabulate_pressure_overclosure(model, low, high, tolerance, datum, max_points);
   write_pressure_overclosure(std::cout, table, format, units,
                              "asperity " ASPERITY_VERSION_STRING
@@ -247,7 +222,12 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
                     " Pa (measured at most " + approximately(table.max_error) + " at " +
                     std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
                     " datum");
-  if (format == CardFormat::calculix) check_spring_cutoff(command, model, table, options.face_size);
+  if (format == CardFormat::calculix)
+    check_spring_cutoff(
+        command, -table.points.front().overclosure, options.face_size,
+        [&](double clearance) { return law_pressure(model, -clearance - table.mean_summit_overclosure); },
+        "use --overclosure-datum zero-pressure (and start the model with the surfaces touching), larger faces, or a "
+        "higher PMIN");
   warn_past_gw(command, model.at_pressure(high).area_fraction);
   return exit_success;
 }
@@ -461,13 +441,8 @@ int run_contact(const Options& options, const CLI::App& command) {
       usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
     if (!options.units.empty() && !parse_card_units(options.units, units))
       usage("--units: '" + quote_text(options.units) + "' is not si or mm");
-    if (!options.overclosure_datum.empty() && !parse_overclosure_datum(options.overclosure_datum, datum))
-      usage("--overclosure-datum: '" + quote_text(options.overclosure_datum) +
-            "' is not mean-summit, origin, zero-pressure or mean-plane");
-    if (given(options.face_size) && !(options.face_size > 0))
-      usage("--face-size must be a positive length [m], got " + number(options.face_size));
-    if (given(options.face_size) && format != CardFormat::calculix)
-      usage("--face-size checks CalculiX's contact-spring cut-off: it goes with --export calculix");
+    datum = overclosure_datum_option(options.overclosure_datum);
+    check_face_size_option(options.face_size, format, "--export");
     if (options.pressure_range.empty()) throw CLI::RequiredError("--pressure-range (with --export)");
   } else if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance) ||
              options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size)) {

@@ -21,6 +21,7 @@
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
+#include "fe_card_options.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/pressure_overclosure.hpp"
 
@@ -33,10 +34,10 @@ constexpr long max_steps = 10000;
 
 struct Options {
   std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, method, fields,
-      card, card_format, units, table;
+      card, card_format, units, table, overclosure_datum;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
-         tolerance = not_given, table_safety = not_given;
-  long long max_iterations = 20000;
+         tolerance = not_given, table_safety = not_given, face_size = not_given;
+  long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
   bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false;
 };
 
@@ -205,7 +206,16 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   if (!o.card_format.empty() && !parse_card_format(o.card_format, card_format))
     usage("--card-format: '" + quote_text(o.card_format) + "' is not calculix, abaqus or csv");
   if (!o.units.empty() && !parse_card_units(o.units, card_units)) usage("--units: '" + quote_text(o.units) + "' is not si or mm");
-  if (o.card.empty() && (!o.card_format.empty() || !o.units.empty())) usage("--card-format and --units go with --card");
+  if (o.card.empty() && (!o.card_format.empty() || !o.units.empty() || o.max_points > 0 ||
+                         !o.overclosure_datum.empty() || given(o.face_size)))
+    usage("--card-format, --units, --max-points, --overclosure-datum and --face-size go with --card");
+  const OverclosureDatum card_datum = overclosure_datum_option(o.overclosure_datum);
+  // a measured map has no fitted distribution: no origin (the Weibull origin, the Gaussian's mean)
+  if (card_datum == OverclosureDatum::origin)
+    usage("--overclosure-datum origin is a fitted distribution's (the Weibull origin, the Gaussian's mean): a "
+          "measured map's exact curve has none; give mean-summit (the map's mean summit height, the default), "
+          "mean-plane (the map's mean plane) or zero-pressure (first contact: the flat at the map's highest point)");
+  check_face_size_option(o.face_size, card_format, "--card-format");
   const Steps steps = steps_from(o);
   if (o.table.empty() && given(o.table_safety)) usage("--table-safety goes with --table");
   if (!o.table.empty()) {
@@ -286,15 +296,26 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
     note(command, line.str());  // what the table states, not progress: also with --quiet
   }
   if (!o.card.empty()) {
-    if (!std::isfinite(solver.mean_summit_height())) throw Error("the map has no summits: the card's datum (the mean summit height) does not exist");
+    // overclosure in the card's datum: -(mean gap) from the map's mean plane, shifted
+    const double summit = solver.mean_summit_height();
+    if (card_datum == OverclosureDatum::mean_summit && !std::isfinite(summit))
+      throw Error("the map has no summits: the card's datum (the mean summit height) does not exist; give "
+                  "--overclosure-datum mean-plane or zero-pressure");
+    const double shift = card_datum == OverclosureDatum::mean_summit   ? summit
+                         : card_datum == OverclosureDatum::zero_pressure ? solver.max_height()
+                                                                         : 0.0;
     std::vector<PressureOverclosurePoint> points;
-    points.push_back({0.0, solver.mean_summit_height() - solver.max_height()});  // first contact
+    points.push_back({0.0, shift - solver.max_height()});  // first contact
     std::vector<topo::ContactStep> sorted = results;
     std::sort(sorted.begin(), sorted.end(),
               [](const topo::ContactStep& a, const topo::ContactStep& b) { return a.pressure < b.pressure; });
-    for (const topo::ContactStep& s : sorted)
-      if (s.pressure > 0 && -s.separation_from_mean_summit > points.back().overclosure)
-        points.push_back({s.pressure, -s.separation_from_mean_summit});
+    for (const topo::ContactStep& s : sorted) {
+      const double overclosure = card_datum == OverclosureDatum::mean_summit ? -s.separation_from_mean_summit
+                                                                             : shift - s.mean_gap;
+      if (s.pressure > 0 && overclosure > points.back().overclosure) points.push_back({s.pressure, overclosure});
+    }
+    const TabulatedCard card = tabulate_points(points, card_max_points(o.max_points, card_format), card_datum,
+                                               shift - summit);  // the flat at the mean summit height
     std::ostringstream description, notes;
     description << "asperity " ASPERITY_VERSION_STRING ": the exact elastic contact of a measured surface with a flat\n"
                 << "(boundary elements, " << boundary << " boundary, " << kernel << " kernel, E* "
@@ -306,9 +327,30 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
           << "first point: zero pressure at first contact (the flat at the map's highest point)";
     std::ofstream out(o.card);
     if (!out) throw Error("cannot write " + quote_text(o.card, 4096));
-    write_tabulated_pressure_overclosure(out, points, card_format, card_units, description.str(), notes.str());
+    write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str());
     out.close();
     if (!out) throw Error("writing " + quote_text(o.card, 4096) + " failed");
+    if (card.points.size() < card.given_points)
+      warn(command, "the card keeps " + std::to_string(card.points.size()) + " of the curve's " +
+                        std::to_string(card.given_points) + " points (--max-points " +
+                        std::to_string(card.max_points) + "): linear interpolation between its rows is within " +
+                        format_double(card.tolerance) + " of the points dropped (relative, in pressure)");
+    if (card_format == CardFormat::calculix) {
+      // the card's pressure at a clearance: its linear interpolation (zero before the first point)
+      const std::vector<PressureOverclosurePoint>& rows = card.points;
+      const auto pressure_at = [&rows](double clearance) {
+        const double h = -clearance;
+        if (!(h > rows.front().overclosure)) return 0.0;
+        for (std::size_t i = 1; i < rows.size(); ++i)
+          if (h <= rows[i].overclosure)
+            return rows[i - 1].pressure + (h - rows[i - 1].overclosure) / (rows[i].overclosure - rows[i - 1].overclosure) *
+                                              (rows[i].pressure - rows[i - 1].pressure);
+        return rows.back().pressure;
+      };
+      check_spring_cutoff(command, -rows.front().overclosure, o.face_size, pressure_at,
+                          "use --overclosure-datum zero-pressure (and start the model with the surfaces touching) "
+                          "or larger faces");
+    }
   }
 
   if (o.json) {
@@ -427,7 +469,7 @@ void add_exact_contact_command(CLI::App& app) {
       ->type_name("DIR")->group(output);
   add_text(*command, "--card", o.card,
            "write the solved curve as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card (overclosure from the "
-           "mean summit height)")
+           "mean summit height: --overclosure-datum)")
       ->type_name("FILE")->group(output);
   add_text(*command, "--table", o.table,
            "write the solved curves as a contact-curves table (HDF5, the tables' format): the pressures asked are "
@@ -438,6 +480,22 @@ void add_exact_contact_command(CLI::App& app) {
              "with --table: the stored error bound is the measured one times this (default 2)")
       ->type_name("FACTOR")->group(output);
   add_text(*command, "--card-format", o.card_format, "calculix (default), abaqus or csv")->type_name("FORMAT")->group(output);
+  add_whole_number(*command, "--max-points", o.max_points, static_cast<long long>(card_points_min),
+                   static_cast<long long>(card_points_max),
+                   "at most N rows in the card (default: 200 for calculix, what its node-to-surface contact holds; "
+                   "no cap for abaqus and csv); with more solutions, points are dropped where linear interpolation "
+                   "between the rows kept is within the smallest tolerance that fits (a warning says which)")
+      ->group(output);
+  add_text(*command, "--overclosure-datum", o.overclosure_datum,
+           "where the card's overclosure is zero: mean-summit (default; the flat at the map's mean summit height), "
+           "mean-plane (the flat at the map's mean plane: overclosure -mean_gap_m) or zero-pressure (first contact: "
+           "the flat at the map's highest point; every overclosure >= 0). Not origin: a measured map has no "
+           "fitted distribution")
+      ->type_name("DATUM")->group(output);
+  add_number(*command, "--face-size", o.face_size,
+             "with a calculix card: the slave faces' edge [m]; warns when the card reaches beyond node-to-surface "
+             "contact's spring cut-off, a clearance of 1e-3 times it")
+      ->type_name("M")->group(output);
   add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
   command->footer(
       "Output: CSV, one row per step: pressure_Pa (nominal: load over the map's area), load_N,\n"

@@ -77,8 +77,9 @@ class ContactModel {
   // to the batch lookup's rounding (a few ulp of ln X: within 2e-14 (1 + |ln X|) relative,
   // tests/test_physical.cpp), and exactly at_separation's where it is not a normal positive
   // number: NaN (NaN input; outside a scene table's range), no contact (0), every summit in
-  // contact (-inf), and products whose X_n under- or overflows (answered by at_separation
-  // itself). No allocation, no throw; out may be separations (not a partial overlap).
+  // contact (-inf), and products whose X_n under- or overflows (answered with at_separation's
+  // arithmetic: its kernel call, the quantity's lane). No allocation, no throw; out may be
+  // separations (not a partial overlap).
   void at_separations(ContactQuantity quantity, const double* separations, double* out,
                       std::size_t count) const noexcept;
 

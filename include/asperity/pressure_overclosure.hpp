@@ -109,6 +109,29 @@ void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<P
                                           CardFormat format, CardUnits units, const std::string& description,
                                           const std::string& notes);
 
+// A tabulated curve's card with the law's card options (`asperity exact-contact`): the points
+// in the card's datum, of which at most max_points are kept. When the curve has more, points are
+// dropped (greedily, from the first) where linear interpolation between the kept neighbours is
+// within a tolerance (relative, in pressure) of them; the tolerance is the smallest that fits,
+// found as tabulate_pressure_overclosure loosens the law's. The first and last points are kept.
+struct TabulatedCard {
+  std::vector<PressureOverclosurePoint> points;  // the card's rows (rounded to its 13 digits), in `datum`
+  std::size_t given_points = 0;                  // the curve's points
+  std::size_t max_points = 0;                    // the cap asked
+  double tolerance = 0;                          // 0: every point kept; else the dropped points are within it
+  double max_error = 0;                          // measured at the dropped points (relative, in pressure)
+  OverclosureDatum datum = OverclosureDatum::mean_summit;
+  double mean_summit_overclosure = 0;  // m: the flat at the mean summit height, in this datum (NaN: none)
+};
+
+// Throws asperity::Error as write_tabulated_pressure_overclosure does for the points, for a cap
+// outside [card_points_min, card_points_max], or when even card_tolerance_max needs more rows.
+TabulatedCard tabulate_points(const std::vector<PressureOverclosurePoint>& points, std::size_t max_points,
+                              OverclosureDatum datum, double mean_summit_overclosure);
+// Its card: the header states the datum as the law's card does, `notes`, and the points dropped.
+void write_tabulated_pressure_overclosure(std::ostream& out, const TabulatedCard& card, CardFormat format,
+                                          CardUnits units, const std::string& description, const std::string& notes);
+
 bool parse_card_format(const std::string& name, CardFormat& format);
 bool parse_card_units(const std::string& name, CardUnits& units);
 bool parse_overclosure_datum(const std::string& name, OverclosureDatum& datum);

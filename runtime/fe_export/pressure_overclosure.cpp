@@ -147,6 +147,23 @@ double round_up_two_digits(double x) {
   return std::strtod(text, nullptr);  // 0.0012, not 0.0012000000000000001
 }
 
+// The smallest tolerance above `fails` (which does not fit) for which fits(tolerance), true at
+// card_tolerance_max: by bisection in its logarithm, stated with two digits where those fit too.
+// fits was last called with the tolerance returned.
+template <class Fits>
+double smallest_fitting_tolerance(double fails, Fits fits) {
+  double fits_at = card_tolerance_max;
+  while (fits_at / fails > 1.01) {
+    const double mid = std::sqrt(fails * fits_at);
+    if (fits(mid)) fits_at = mid;
+    else fails = mid;
+  }
+  const double stated = std::min(round_up_two_digits(fits_at), card_tolerance_max);
+  if (fits(stated)) return stated;
+  fits(fits_at);
+  return fits_at;
+}
+
 [[noreturn]] void too_many_points(double tolerance) {
   std::ostringstream message;
   message << "the law needs more than " << card_points_max << " points for a tolerance of " << tolerance
@@ -215,19 +232,9 @@ PressureOverclosureTable tabulate_law(const LawFunctions& functions, double pres
               << ": allow more points or give a narrower pressure range";
       throw Error(message.str());
     }
-    // The smallest tolerance that fits, by bisection in its logarithm; stated with two digits.
-    double fails = tolerance, fits = card_tolerance_max;
-    Tabulation trial;
-    while (fits / fails > 1.01) {
-      const double mid = std::sqrt(fails * fits);
-      if (tabulate_once(law, low, high, mid, limit, trial)) fits = mid;
-      else fails = mid;
-    }
-    met = std::min(round_up_two_digits(fits), card_tolerance_max);
-    if (!tabulate_once(law, low, high, met, limit, result)) {
-      met = fits;
-      tabulate_once(law, low, high, met, limit, result);
-    }
+    met = smallest_fitting_tolerance(tolerance, [&](double trial) {
+      return tabulate_once(law, low, high, trial, limit, result);
+    });
   }
   if (!(result.worst <= met)) {
     std::ostringstream message;
@@ -375,52 +382,9 @@ void write_card(std::ostream& out, const std::vector<PressureOverclosurePoint>& 
 
 const char* mean_summit_datum = "  from the rough surface's mean summit height to the flat";
 
-}  // namespace
-
-void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
-                                CardUnits units, const std::string& description) {
-  const double pressure = units == CardUnits::mm ? 1e6 : 1.0;
-  const double length = units == CardUnits::mm ? 1e3 : 1.0;
-  const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
-  const char* length_unit = units == CardUnits::mm ? "mm" : "m";
-  std::ostringstream datum;
-  const std::string mean_at =
-      "  (the flat at the mean summit height is at overclosure " + card_number(table.mean_summit_overclosure * length) +
-      " " + length_unit + ")";
-  if (table.datum == OverclosureDatum::mean_summit)
-    datum << mean_summit_datum << " (--overclosure-datum mean-summit, the default)";
-  else if (table.datum == OverclosureDatum::mean_plane)
-    datum << "  from the mean plane of the surface heights to the flat (--overclosure-datum mean-plane; the mean\n"
-          << "  summit height is " << card_number(-table.mean_summit_overclosure * length) << " " << length_unit
-          << " above it)\n"
-          << mean_at;
-  else if (table.datum == OverclosureDatum::origin && !table.origin.empty())
-    datum << "  from the origin of the separation (" << table.origin << ") to the flat\n"
-          << "  (--overclosure-datum origin)\n"
-          << mean_at;
-  else if (table.datum == OverclosureDatum::origin)
-    datum << "  from the origin of the separation (the Weibull origin: its lowest summit on the tail side, its\n"
-          << "  highest on the bounded side; the Gaussian's mean) to the flat (--overclosure-datum origin)\n"
-          << mean_at;
-  else
-    datum << "  from where the card's pressure reaches zero, its first point (--overclosure-datum zero-pressure):\n"
-          << "  start the FE model with the surfaces touching\n"
-          << mean_at;
-  std::ostringstream notes;
-  notes << "from " << short_number(table.pressure_min / pressure) << " to " << short_number(table.pressure_max / pressure)
-        << " " << pressure_unit << " linear interpolation between the points is within " << table.tolerance << "\n"
-        << "  (relative, in pressure) of the law: measured " << table.max_error << " at most, at "
-        << table.checked_points << " points\n";
-  if (table.tolerance != table.asked_tolerance)
-    notes << "  (tolerance " << table.asked_tolerance << " asked, loosened to fit at most " << table.max_points
-          << " points)\n";
-  notes << "first point: zero pressure where the law's tangent at the lowest pressure reaches zero\n";
-  write_card(out, table.points, format, units, description, datum.str(), notes.str());
-}
-
-void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<PressureOverclosurePoint>& points,
-                                          CardFormat format, CardUnits units, const std::string& description,
-                                          const std::string& notes) {
+// A curve given by its points, checked (see write_tabulated_pressure_overclosure) and rounded to
+// the card's 13 digits.
+std::vector<PressureOverclosurePoint> rounded_curve(const std::vector<PressureOverclosurePoint>& points) {
   if (points.size() < 2) throw Error("a tabulated pressure-overclosure curve needs at least two points");
   for (std::size_t i = 0; i < points.size(); ++i) {
     const PressureOverclosurePoint& point = points[i];
@@ -432,7 +396,152 @@ void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<P
   std::vector<PressureOverclosurePoint> rounded;
   for (const PressureOverclosurePoint& point : points)
     rounded.push_back({round_to_card(point.pressure), round_to_card(point.overclosure)});
-  write_card(out, rounded, format, units, description, mean_summit_datum, notes);
+  return rounded;
+}
+
+// Where the card's overclosure is zero, as its header says; the flat at the mean summit height
+// is at mean_summit_overclosure in it (NaN: no mean summit height, nothing said).
+// `origin`: the separation's origin in words where it is not the model's (contact curves'), or empty.
+std::string datum_text(OverclosureDatum datum_kind, double mean_summit_overclosure, CardUnits units,
+                       const std::string& origin = std::string()) {
+  const double length = units == CardUnits::mm ? 1e3 : 1.0;
+  const char* length_unit = units == CardUnits::mm ? "mm" : "m";
+  std::ostringstream datum;
+  const bool known = std::isfinite(mean_summit_overclosure);
+  const std::string mean_at =
+      known ? "  (the flat at the mean summit height is at overclosure " +
+                  card_number(mean_summit_overclosure * length) + " " + length_unit + ")"
+            : std::string();
+  if (datum_kind == OverclosureDatum::mean_summit)
+    datum << mean_summit_datum << " (--overclosure-datum mean-summit, the default)";
+  else if (datum_kind == OverclosureDatum::mean_plane) {
+    datum << "  from the mean plane of the surface heights to the flat (--overclosure-datum mean-plane";
+    if (known)
+      datum << "; the mean\n  summit height is " << card_number(-mean_summit_overclosure * length) << " " << length_unit
+            << " above it)\n"
+            << mean_at;
+    else
+      datum << ")";
+  } else if (datum_kind == OverclosureDatum::origin && !origin.empty())
+    datum << "  from the origin of the separation (" << origin << ") to the flat\n"
+          << "  (--overclosure-datum origin)\n"
+          << mean_at;
+  else if (datum_kind == OverclosureDatum::origin)
+    datum << "  from the origin of the separation (the Weibull origin: its lowest summit on the tail side, its\n"
+          << "  highest on the bounded side; the Gaussian's mean) to the flat (--overclosure-datum origin)\n"
+          << mean_at;
+  else
+    datum << "  from where the card's pressure reaches zero, its first point (--overclosure-datum zero-pressure):\n"
+          << "  start the FE model with the surfaces touching\n"
+          << mean_at;
+  return datum.str();
+}
+
+}  // namespace
+
+void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
+                                CardUnits units, const std::string& description) {
+  const double pressure = units == CardUnits::mm ? 1e6 : 1.0;
+  const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
+  const std::string datum = datum_text(table.datum, table.mean_summit_overclosure, units, table.origin);
+  std::ostringstream notes;
+  notes << "from " << short_number(table.pressure_min / pressure) << " to " << short_number(table.pressure_max / pressure)
+        << " " << pressure_unit << " linear interpolation between the points is within " << table.tolerance << "\n"
+        << "  (relative, in pressure) of the law: measured " << table.max_error << " at most, at "
+        << table.checked_points << " points\n";
+  if (table.tolerance != table.asked_tolerance)
+    notes << "  (tolerance " << table.asked_tolerance << " asked, loosened to fit at most " << table.max_points
+          << " points)\n";
+  notes << "first point: zero pressure where the law's tangent at the lowest pressure reaches zero\n";
+  write_card(out, table.points, format, units, description, datum, notes.str());
+}
+
+void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<PressureOverclosurePoint>& points,
+                                          CardFormat format, CardUnits units, const std::string& description,
+                                          const std::string& notes) {
+  write_card(out, rounded_curve(points), format, units, description, mean_summit_datum, notes);
+}
+
+namespace {
+// The indices of the points kept for `tolerance`: from each kept point, the farthest point whose
+// chord is within it of every point between (greedy); the largest error of a dropped point in `worst`.
+std::vector<std::size_t> kept_points(const std::vector<PressureOverclosurePoint>& points, double tolerance,
+                                     double& worst) {
+  const auto error = [&](std::size_t a, std::size_t b, std::size_t k) {
+    const PressureOverclosurePoint &p = points[a], &q = points[b];
+    const double fraction = (points[k].overclosure - p.overclosure) / (q.overclosure - p.overclosure);
+    const double chord = p.pressure + fraction * (q.pressure - p.pressure);
+    return std::fabs(chord - points[k].pressure) / points[k].pressure;  // k > 0: a positive pressure
+  };
+  std::vector<std::size_t> kept{0};
+  worst = 0;
+  while (kept.back() + 1 < points.size()) {
+    const std::size_t a = kept.back();
+    std::size_t b = a + 1;
+    double b_worst = 0;
+    for (std::size_t next = a + 2; next < points.size(); ++next) {
+      double next_worst = 0;
+      for (std::size_t k = a + 1; k < next && next_worst <= tolerance; ++k)
+        next_worst = std::max(next_worst, error(a, next, k));
+      if (!(next_worst <= tolerance)) break;
+      b = next;
+      b_worst = next_worst;
+    }
+    kept.push_back(b);
+    worst = std::max(worst, b_worst);
+  }
+  return kept;
+}
+}  // namespace
+
+TabulatedCard tabulate_points(const std::vector<PressureOverclosurePoint>& points, std::size_t max_points,
+                              OverclosureDatum datum, double mean_summit_overclosure) {
+  if (!(max_points >= card_points_min && max_points <= card_points_max)) {
+    std::ostringstream message;
+    message << "the card's rows must be capped at " << card_points_min << " to " << card_points_max << ", got "
+            << max_points;
+    throw Error(message.str());
+  }
+  const std::vector<PressureOverclosurePoint> rounded = rounded_curve(points);
+  TabulatedCard card;
+  card.given_points = rounded.size();
+  card.max_points = max_points;
+  card.datum = datum;
+  card.mean_summit_overclosure = mean_summit_overclosure;
+  if (rounded.size() <= max_points) {
+    card.points = rounded;
+    return card;
+  }
+  std::vector<std::size_t> kept;
+  double worst = 0;
+  const auto fits = [&](double tolerance) {
+    kept = kept_points(rounded, tolerance, worst);
+    return kept.size() <= max_points;
+  };
+  if (!fits(card_tolerance_max)) {
+    std::ostringstream message;
+    message << "the curve's " << rounded.size() << " points need more than " << max_points
+            << " rows even where linear interpolation may miss the dropped ones by " << card_tolerance_max
+            << ": allow more rows or give fewer points";
+    throw Error(message.str());
+  }
+  card.tolerance = fits(card_tolerance_min) ? card_tolerance_min : smallest_fitting_tolerance(card_tolerance_min, fits);
+  card.max_error = worst;
+  for (std::size_t index : kept) card.points.push_back(rounded[index]);
+  return card;
+}
+
+void write_tabulated_pressure_overclosure(std::ostream& out, const TabulatedCard& card, CardFormat format,
+                                          CardUnits units, const std::string& description, const std::string& notes) {
+  std::ostringstream all_notes;
+  all_notes << notes;
+  if (card.points.size() < card.given_points)
+    all_notes << (notes.empty() || notes.back() == '\n' ? "" : "\n") << "rows: " << card.points.size()
+              << " of the curve's " << card.given_points << " points (at most " << card.max_points
+              << "): linear interpolation between\n  the rows is within " << card.tolerance
+              << " (relative, in pressure) of the points dropped: measured " << card.max_error << " at most";
+  write_card(out, rounded_curve(card.points), format, units, description,
+             datum_text(card.datum, card.mean_summit_overclosure, units), all_notes.str());
 }
 
 // The separation datums' names are separation_datum.hpp's; zero-pressure is the card's own.

@@ -2,9 +2,14 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "asperity/error.hpp"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace asperity {
 namespace {
@@ -114,44 +119,75 @@ void ContactModel::at_separations(ContactQuantity quantity, const double* separa
     return;
   }
   const double area = surface_.nominal_area, sigma = surface_.height_scale, offset = datum_offset_;
+  // state_at_dimensionless's rare answers need not build the whole state: contact_products'
+  // lane of the quantity (count, area, load, stiffness), the same bits
+  const int lane = twice_order == orders::count ? 0 : twice_order == orders::area ? 1 : twice_order == orders::load ? 2 : 3;
+  const bool bounded = surface_.side == Side::bounded;
   constexpr std::size_t block = 256;
-  double s[block];              // the block's dimensionless separations (a copy: out may be separations)
-  unsigned char special[block]; // not a normal product: the scalar path answers
-  // Branch-free passes that the compiler vectorizes (dimensionless's and state_at_dimensionless's
-  // arithmetic, the same operations in the same order), then the rare elements one by one.
+  double s[block];  // the block's dimensionless separations (a copy: out may be separations)
+  double x[block];  // X_n at them
+  // Branch-free passes (dimensionless's and state_at_dimensionless's arithmetic, the same
+  // operations in the same order): s, the batch lookup, then the factor (and the nominal area)
+  // with the rare elements' bit mask in one pass; the rare ones one by one, found by their bits,
+  // only in a block that has any.
   for (std::size_t start = 0; start < count; start += block) {
     const std::size_t size = count - start < block ? count - start : block;
     const double* in = separations + start;
-    double* x = out + start;
+    double* to = out + start;
     if (offset == 0)
       for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma;
     else
       for (std::size_t j = 0; j < size; ++j) s[j] = in[j] / sigma + offset;
     curve_.value_batch(twice_order, s, x, size);
-    unsigned any = 0;
-    for (std::size_t j = 0; j < size; ++j) {
-      const double product = x[j] * factor;
-      const unsigned rare = !(x[j] >= DBL_MIN) | !(product <= DBL_MAX);  // NaN, 0, subnormal, inf
-      special[j] = static_cast<unsigned char>(rare);
-      any |= rare;
-      x[j] = product;
-    }
-    if (per_area)
-      for (std::size_t j = 0; j < size; ++j) x[j] /= area;
-    if (__builtin_expect(any == 0, 1)) continue;
-    for (std::size_t j = 0; j < size; ++j) {
-      if (!special[j]) continue;
-      // NaN, no contact, all in contact, or X_n beyond the doubles: the scalar path's answer
-      const PhysicalState state = state_at_dimensionless(s[j]);
-      switch (quantity) {
-        case ContactQuantity::count: x[j] = state.count; break;
-        case ContactQuantity::real_area: x[j] = state.real_area; break;
-        case ContactQuantity::area_fraction: x[j] = state.area_fraction; break;
-        case ContactQuantity::load: x[j] = state.load; break;
-        case ContactQuantity::pressure: x[j] = state.pressure; break;
-        case ContactQuantity::stiffness: x[j] = state.stiffness; break;
+    // the rare elements (X_n NaN, 0, subnormal or inf, or the product inf): bit j of rare[j / 64]
+    std::uint64_t rare[block / 64] = {0, 0, 0, 0};
+#if defined(__SSE2__)
+    const __m128d factors = _mm_set1_pd(factor), areas = _mm_set1_pd(area);
+    const __m128d smallest = _mm_set1_pd(DBL_MIN), largest = _mm_set1_pd(DBL_MAX);
+#endif
+    for (std::size_t word = 0; 64 * word < size; ++word) {
+      const std::size_t first = 64 * word, end = size - first < 64 ? size : first + 64;
+      std::uint64_t bits = 0;  // in a register: the mask of 64 elements
+      std::size_t j = first;
+#if defined(__SSE2__)
+      // two a step, the rare ones by movemask: no scan of the block for them
+      for (; j + 2 <= end; j += 2) {
+        const __m128d value = _mm_loadu_pd(x + j), product = _mm_mul_pd(value, factors);
+        const int two = _mm_movemask_pd(_mm_or_pd(_mm_cmpnge_pd(value, smallest), _mm_cmpnle_pd(product, largest)));
+        bits |= static_cast<std::uint64_t>(two) << (j - first);
+        _mm_storeu_pd(to + j, per_area ? _mm_div_pd(product, areas) : product);
       }
+#endif
+      for (; j < end; ++j) {
+        const double product = x[j] * factor;
+        bits |= static_cast<std::uint64_t>(!(x[j] >= DBL_MIN) | !(product <= DBL_MAX)) << (j - first);
+        to[j] = per_area ? product / area : product;
+      }
+      rare[word] = bits;
     }
+    if (__builtin_expect((rare[0] | rare[1] | rare[2] | rare[3]) == 0, 1)) continue;
+    for (std::size_t word = 0; word < block / 64; ++word)
+      for (std::uint64_t bits = rare[word]; bits != 0; bits &= bits - 1) {
+        const std::size_t j = 64 * word + static_cast<std::size_t>(__builtin_ctzll(bits));
+        // X_n beyond the doubles where contact is partial: contact_products' one kernel call, as
+        // state_at_dimensionless makes it
+        double state[5];
+        if (std::isfinite(s[j]) && !(bounded && s[j] >= 0) &&
+            curve_.contact_products(s[j], scales_.count, scales_.area, scales_.load, scales_.stiffness, state)) {
+          to[j] = per_area ? state[lane] / area : state[lane];
+          continue;
+        }
+        // NaN, no contact, all in contact, off the grid: the scalar path's answer
+        const PhysicalState answer = state_at_dimensionless(s[j]);
+        switch (quantity) {
+          case ContactQuantity::count: to[j] = answer.count; break;
+          case ContactQuantity::real_area: to[j] = answer.real_area; break;
+          case ContactQuantity::area_fraction: to[j] = answer.area_fraction; break;
+          case ContactQuantity::load: to[j] = answer.load; break;
+          case ContactQuantity::pressure: to[j] = answer.pressure; break;
+          case ContactQuantity::stiffness: to[j] = answer.stiffness; break;
+        }
+      }
   }
 }
 
