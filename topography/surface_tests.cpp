@@ -310,7 +310,7 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
   }
 
   if (a.bootstrap > 0) {
-    const SurrogateFields fields(map, lengths, options.leveled);
+    const SurrogateFields fields(map, lengths, options.leveled, a.threads);
     tests.padded_nx = fields.padded_nx();
     tests.padded_ny = fields.padded_ny();
     const std::size_t B = static_cast<std::size_t>(a.bootstrap);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
 #include "fft.hpp"
 #include "vector_math.hpp"
@@ -52,7 +53,7 @@ class Xoshiro256 {
 double normal_quantile(double p) { return -std::sqrt(2.0) * boost::math::erfc_inv(2 * p); }
 double normal_cdf(double z) { return 0.5 * boost::math::erfc(-z / std::sqrt(2.0)); }
 
-SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths, bool leveled)
+SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths, bool leveled, int threads)
     : nx_(map.nx), ny_(map.ny) {
   if (nx_ < 3 || ny_ < 3 || map.heights.size() != nx_ * ny_)
     throw Error(map.source + ": surrogates need a map of at least 3 x 3 points");
@@ -104,8 +105,8 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
   // Autocorrelations on a grid twice the map (no lag wraps onto another), by FFT: of a field
   // f(x) defined on the valid points, sum_x f(x) f(x + r) at every lag r.
   const std::size_t ax = smooth(2 * nx_), ay = smooth(2 * ny_), a_half = ax / 2 + 1;
-  std::vector<detail::Complex> spectrum(ay * a_half);
   const auto autocorrelation = [&](const auto& value_at) {
+    std::vector<detail::Complex> spectrum(ay * a_half);  // each call its own: they run side by side
     std::vector<double> field(ax * ay, 0.0);
     for (std::size_t j = 0; j < ny_; ++j)
       for (std::size_t i = 0; i < nx_; ++i)
@@ -149,32 +150,60 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
   const auto phi = [&](int k, std::size_t i, std::size_t j) {
     return k == 0 ? 1.0 : k == 1 ? static_cast<double>(i) - mean_i : static_cast<double>(j) - mean_j;
   };
-  const std::vector<double> values = autocorrelation([&](std::size_t i, std::size_t j) { return scores_[j * nx_ + i]; });
-  const std::vector<double> mask = autocorrelation([](std::size_t, std::size_t) { return 1.0; });
+  // The autocorrelations the equations need, independent of each other: computed side by side
+  // (before the ensemble, the one part of the analysis that ran on one core). Kept: the scores', the mask's and each
+  // phi_k's; the others reduced at once to the sums within the largest lag.
+  const auto within_sum = [&](const std::vector<double>& field) {
+    double sum = 0;
+    for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
+      for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx)
+        if (within(rx, ry)) sum += at(field, rx, ry);
+    return sum;
+  };
+  std::vector<double> values, mask;
   std::vector<std::vector<double>> mu(static_cast<std::size_t>(basis));  // autocorrelations of phi_k
+  double weighted_within[3] = {0, 0, 0}, product_within[3][3] = {};
+  struct Job {
+    int kind, b, k;  // 0: the scores, 1: the mask, 2: phi_b, 3: phi_b scores, 4: phi_b phi_k (b <= k)
+  };
+  std::vector<Job> jobs = {{0, 0, 0}, {1, 0, 0}};
+  for (int b = 1; b < basis; ++b) {
+    jobs.push_back({2, b, 0});
+    jobs.push_back({3, b, 0});
+  }
+  for (int b = 0; b < basis; ++b)
+    for (int k = b; k < basis; ++k)
+      if (b + k > 0) jobs.push_back({4, b, k});
+  asperity::detail::parallel_for(jobs.size(), threads, [&](std::size_t j) {
+    const Job job = jobs[j];
+    switch (job.kind) {
+      case 0: values = autocorrelation([&](std::size_t i, std::size_t jj) { return scores_[jj * nx_ + i]; }); break;
+      case 1: mask = autocorrelation([](std::size_t, std::size_t) { return 1.0; }); break;
+      case 2: mu[static_cast<std::size_t>(job.b)] = autocorrelation([&](std::size_t i, std::size_t jj) { return phi(job.b, i, jj); }); break;
+      case 3:
+        weighted_within[job.b] =
+            within_sum(autocorrelation([&](std::size_t i, std::size_t jj) { return phi(job.b, i, jj) * scores_[jj * nx_ + i]; }));
+        break;
+      default:
+        product_within[job.b][job.k] = product_within[job.k][job.b] = within_sum(
+            autocorrelation([&](std::size_t i, std::size_t jj) { return phi(job.b, i, jj) * phi(job.k, i, jj); }));
+    }
+  });
+  mu[0] = mask;
+  weighted_within[0] = within_sum(values);
+  product_within[0][0] = within_sum(mask);
   double lost[3] = {0, 0, 0};
   {
     double A[3][3] = {}, B[3] = {};
     for (int b = 0; b < basis; ++b) {
-      const std::vector<double> weighted =
-          b == 0 ? values : autocorrelation([&](std::size_t i, std::size_t j) { return phi(b, i, j) * scores_[j * nx_ + i]; });
-      mu[static_cast<std::size_t>(b)] = b == 0 ? mask : autocorrelation([&](std::size_t i, std::size_t j) { return phi(b, i, j); });
-      for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
-        for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx)
-          if (within(rx, ry)) B[b] += at(weighted, rx, ry);
+      B[b] = weighted_within[b];
       for (int k = 0; k < basis; ++k) {
         // beyond = all pairs - the pairs within; all pairs: (sum_x phi_b phi_k)^2
         double total = 0;
         for (std::size_t j = 0; j < ny_; ++j)
           for (std::size_t i = 0; i < nx_; ++i)
             if (valid_[j * nx_ + i]) total += phi(b, i, j) * phi(k, i, j);
-        const std::vector<double> product =
-            (b == 0 && k == 0) ? mask : autocorrelation([&](std::size_t i, std::size_t j) { return phi(b, i, j) * phi(k, i, j); });
-        double inside = 0;
-        for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
-          for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx)
-            if (within(rx, ry)) inside += at(product, rx, ry);
-        A[b][k] = total * total - inside;
+        A[b][k] = total * total - product_within[b][k];
       }
     }
     // Gaussian elimination with partial pivoting (at most 3 x 3); a singular system (a map with

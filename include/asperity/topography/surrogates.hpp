@@ -41,8 +41,8 @@ class SurrogateFields {
   // `map`: the heights as analysed, NaN missing; `lengths`: its correlation lengths (the largest
   // lag and the padding); `leveled`: the map's least-squares plane was subtracted (the variance
   // that took is restored, as the mean's always is). Throws asperity::Error for a map with fewer
-  // than 3 x 3 points.
-  SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths, bool leveled = true);
+  // than 3 x 3 points. `threads`: for the spectrum's autocorrelations (0: all cores).
+  SurrogateFields(const HeightMap& map, const CorrelationLengths& lengths, bool leveled = true, int threads = 0);
 
   // Surrogate `index` of the ensemble `seed`: normal scores on the map's grid (x fastest), unit
   // variance in expectation, NaN where the map is missing. `field` is resized.
