@@ -402,12 +402,14 @@ AsperityResponse asperity_response(const ContactLaw& law, double w) noexcept {
       return {mean * area, area, dmean * area + mean * darea};
     }
     case ContactLawKind::kogut_etsion: {
+      // the branch by w against the switch points as switch_points() gives them (x = w/wc
+      // rounds to 6 within an ulp or two of 6 wc: the load's jump there was lost)
       const double x = w / wc, pc = law.critical_load, ac = law.critical_area;
-      if (x <= 1) return hertz(r, e, w);
+      if (w <= wc) return hertz(r, e, w);
       double cp, ep, ca, ea;  // P/P_c = cp x^ep, A/A_c = ca x^ea
-      if (x <= 6) {
+      if (w <= 6 * wc) {
         cp = 1.03, ep = 1.425, ca = 0.93, ea = 1.136;
-      } else if (x <= 110) {
+      } else if (w <= 110 * wc) {
         cp = 1.40, ep = 1.263, ca = 0.94, ea = 1.146;
       } else {
         cp = 3 / law.pressure_factor, ep = 1, ca = 2, ea = 1;  // fully plastic: A = 2 pi R w, P = H A
