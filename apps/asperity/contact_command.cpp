@@ -17,6 +17,7 @@
 #include "asperity/error.hpp"
 #include "command_line.hpp"
 #include "fe_card_options.hpp"
+#include "law_options.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/plausibility.hpp"
 #include "asperity/pressure_overclosure.hpp"
@@ -29,8 +30,8 @@ constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
   std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum, datum;
-  std::string law, law_range;  // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
-  double hardness = not_given, yield_strength = not_given, law_poisson = not_given, law_tolerance = not_given;
+  LawOptions law;         // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
+  std::string law_range;  // the separations they are tabulated over
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
@@ -258,10 +259,7 @@ void check_curve_queries(const Options& options, const std::string& what) {
 // the options, so that its checks and messages are the scene file's) and served as contact curves.
 int run_contact_law(const Options& options, const CLI::App& command) {
   if (!options.table.empty()) usage("--law tabulates the law's curves itself: give no --table");
-  ContactLawKind kind;
-  if (!contact_law_kind_of(options.law.c_str(), kind))
-    usage("--law: '" + quote_text(options.law) +
-          "' is not hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or jackson-green");
+  law_kind(options.law);
   if (options.law_range.empty()) throw CLI::RequiredError("--law-range (with --law)");
   const std::vector<std::string> range = split(options.law_range, ':');
   if (range.size() != 2) usage("--law-range wants SMIN:SMAX (dimensionless separations), got '" +
@@ -270,28 +268,11 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   check_curve_queries(options, "a law's curves");
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
-  std::string scene = "[[law]]\nlaw = \"" + std::string(contact_law_name(kind)) + "\"\n";
-  const auto key = [&](const char* name, double value) { scene += std::string(name) + " = " + number(value) + "\n"; };
-  key("contact_modulus", surface.contact_modulus);
-  if (given(options.hardness)) key("hardness", options.hardness);
-  if (given(options.yield_strength)) key("yield_strength", options.yield_strength);
-  if (given(options.law_poisson)) key("poisson", options.law_poisson);
-  scene += std::string("distribution = \"") + to_string(surface.distribution) + "\"\n";
-  if (surface.distribution == Distribution::weibull) {
-    key("shape", surface.shape);
-    scene += std::string("side = \"") + to_string(surface.side) + "\"\n";
-  }
-  key("height_scale", surface.height_scale);
-  key("summit_radius", surface.summit_radius);
-  key("summit_density", surface.summit_density);
-  key("nominal_area", surface.nominal_area);
-  scene += "separation = [" + number(lo) + ", " + number(hi) + "]\n";
-  key("max_rel_error", given(options.law_tolerance) ? options.law_tolerance : 1e-6);
-  const Scene parsed = parse_scene(scene, "asperity contact --law");
+  const SceneLaw law = law_scene(options.law, surface, lo, hi, "asperity contact --law");
   if (!given_scale.empty()) note(command, given_scale);
-  const SceneLaw& law = parsed.laws.front();
   if (std::isfinite(law.law.critical_interference))
-    note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
+    note(command, std::string(contact_law_name(law.law.kind)) + ": omega_c = " +
+                      approximately(law.law.critical_interference) +
                       " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
                       approximately(plasticity_index(law.law, surface.height_scale)));
   const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity contact --law");
@@ -412,10 +393,9 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
 }
 
 int run_contact(const Options& options, const CLI::App& command) {
-  if (!options.law.empty()) return run_contact_law(options, command);
-  if (!options.law_range.empty() || given(options.hardness) || given(options.yield_strength) ||
-      given(options.law_poisson) || given(options.law_tolerance))
-    usage("--law-range, --hardness, --yield-strength, --law-poisson and --law-tolerance go with --law");
+  if (!options.law.law.empty()) return run_contact_law(options, command);
+  check_no_law_options(options.law, options.law_range.empty() ? "" : "--law-range, ");
+  if (!options.law_range.empty()) usage("--law-range goes with --law");
   // A table alone, no surface: it may be a measured surface's or a law scene's (its kind read only
   // then, so that a GW table is not read twice); with a surface, a contact-curves table is refused
   // on opening.
@@ -522,24 +502,13 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--moments", o.moments,
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
-  add_text(*command, "--law", o.law,
-           "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or "
-           "jackson-green, tabulated now on the surface given (docs/contact-laws.md section 8); queries "
-           "--separation, --pressure, --sweep separation|pressure, --export")
-      ->type_name("NAME")->group("Contact law");
+  add_law_options(*command, o.law,
+                  "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, "
+                  "kogut-etsion or jackson-green, tabulated now on the surface given (docs/contact-laws.md section 8); "
+                  "queries --separation, --pressure, --sweep separation|pressure, --export");
   add_text(*command, "--law-range", o.law_range,
            "with --law: the dimensionless separations s tabulated (origin convention; required)")
       ->type_name("SMIN:SMAX")->group("Contact law");
-  add_number(*command, "--hardness", o.hardness, "with --law chang-etsion-bogy or zhao-maietta-chang: hardness H [Pa]")
-      ->type_name("PA")->group("Contact law");
-  add_number(*command, "--yield-strength", o.yield_strength,
-             "with --law kogut-etsion or jackson-green: yield strength Y [Pa]")
-      ->type_name("PA")->group("Contact law");
-  add_number(*command, "--law-poisson", o.law_poisson,
-             "with --law chang-etsion-bogy, kogut-etsion or jackson-green: Poisson's ratio of the asperity")
-      ->type_name("X")->group("Contact law");
-  add_number(*command, "--law-tolerance", o.law_tolerance, "with --law: the curves' relative error (default 1e-6)")
-      ->type_name("REL")->group("Contact law");
   add_number(*command, "--separation", o.separation, "at a separation [m] from the datum (--datum)")->type_name("M")->group("Query (one)");
   add_number(*command, "--load", o.load, "at a load [N]")->type_name("N")->group("Query (one)");
   add_number(*command, "--pressure", o.pressure, "at a nominal pressure [Pa]")->type_name("PA")->group("Query (one)");
