@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,11 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "asperity/contact_law.hpp"
+#include "contact_law_reference.hpp"
 
 namespace {
 const std::string surfaces = ASPERITY_TEST_SURFACES;
@@ -129,4 +135,157 @@ TEST(TopographyCli, ThreadsTheSystemRefuses) {
   EXPECT_EQ(WEXITSTATUS(status), 0) << read_text(out);
   EXPECT_NE(read_text(out).find("summits"), std::string::npos);
 #endif
+}
+
+// ---- a contact law beside the elastic curves (issue 30 item 6) ----
+
+namespace {
+using nlohmann::json;
+
+const std::string afm = surfaces + "/afm-zsensor-10um.txt";
+// the AFM map's contact at two pressures, without the ensemble (the verdict is not needed here)
+const std::vector<std::string> afm_contact = {afm, "--ensemble", "0", "--no-height-fit", "--no-persson",
+                                              "--modulus", "1e11", "--pressure", "1e6,1e7"};
+
+std::vector<std::string> with(std::vector<std::string> arguments, const std::vector<std::string>& more) {
+  arguments.insert(arguments.end(), more.begin(), more.end());
+  return arguments;
+}
+
+double relative(double a, double b) { return std::fabs(a - b) / std::fabs(b); }
+
+const json& model_of(const json& contact, const std::string& label) {
+  for (const json& m : contact["models"])
+    if (m["model"] == label) return m;
+  throw std::runtime_error("no model " + label);
+}
+}  // namespace
+
+// Kogut-Etsion on the AFM map: the plasticity index against a hand computation from the reported
+// sigma_s (itself against the summits written to summits.csv), R, E* and H; the law's pressure,
+// stiffness and area at the separations reported against the independent reference quadrature
+// (tests/contact_law_reference.hpp), and the elastic numbers those of the fit's own curves.
+TEST(TopographyCli, LawPlasticityIndexAndCurves) {
+  const std::string dir = work + "/law-report";
+  std::filesystem::remove_all(dir);
+  const CommandRun r = run(with(afm_contact, {"--law", "kogut-etsion", "--yield-strength", "1e9", "--law-poisson", "0.3",
+                                              "--json", "--report", dir}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  const json& contact = j["contact"];
+  const json& law = contact["law"];
+  ASSERT_EQ(law["law"], "kogut-etsion");
+  ASSERT_TRUE(law["served"].get<bool>()) << law["note"];
+  const json& plasticity = law["plasticity"];
+  const double sd = plasticity["summit_height_standard_deviation_m"], radius = plasticity["summit_radius_m"];
+  const double e = 1e11, y = 1e9, nu = 0.3, h = 2.8 * y, k = 0.454 + 0.41 * nu, pi = 3.14159265358979323846;
+  EXPECT_EQ(radius, j["summits"]["radius_m"].get<double>());
+  // sigma_s: the sample standard deviation of the summit heights written to summits.csv
+  {
+    std::istringstream csv(read_text(dir + "/summits.csv"));
+    std::string line;
+    std::getline(csv, line);
+    std::vector<double> heights;
+    while (std::getline(csv, line)) {
+      std::istringstream fields(line);
+      std::string field;
+      for (int column = 0; column < 5; ++column) std::getline(fields, field, ',');
+      heights.push_back(std::stod(field));
+    }
+    ASSERT_EQ(heights.size(), j["summits"]["count"].get<std::size_t>());
+    double mean = 0, squares = 0;
+    for (double z : heights) mean += z;
+    mean /= static_cast<double>(heights.size());
+    for (double z : heights) squares += (z - mean) * (z - mean);
+    EXPECT_LT(relative(sd, std::sqrt(squares / static_cast<double>(heights.size() - 1))), 1e-8);
+  }
+  const double wc = std::pow(pi * k * h / (2 * e), 2) * radius;
+  EXPECT_LT(relative(plasticity["critical_interference_m"], wc), 1e-13);
+  EXPECT_LT(relative(plasticity["hardness_Pa"], h), 1e-15);
+  EXPECT_LT(relative(plasticity["psi"], std::sqrt(sd / wc)), 1e-13);
+  EXPECT_LT(relative(plasticity["psi_gw"], e / h * std::sqrt(sd / radius)), 1e-13);
+  EXPECT_NE(plasticity["regime"].get<std::string>().find("GW's psi = "), std::string::npos);
+
+  // the law's curves on the verdict's fit, against the reference at the reported separations
+  const json& fit = model_of(contact, law["model"]);
+  const json& surface = fit["surface"];
+  asperity::test::SummitHeights heights;
+  heights.distribution = surface["distribution"] == "weibull" ? asperity::Distribution::weibull : asperity::Distribution::gaussian;
+  heights.side = surface["side"] == "bounded" ? asperity::Side::bounded : asperity::Side::tail;
+  if (heights.distribution == asperity::Distribution::weibull) heights.shape = surface["shape"];
+  heights.scale = surface["height_scale_m"];
+  const double density = surface["summit_density_per_m2"];
+  const asperity::ContactLaw ke = asperity::kogut_etsion_law(radius, e, y, nu);
+  ASSERT_EQ(law["at_pressures"].size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const json& at = law["at_pressures"][i];
+    const double p = at["pressure_Pa"];
+    const double s = at["law"]["separation_m"].get<double>() / heights.scale;
+    const asperity::test::RoughSurfaceValues exact = asperity::test::law_integrals(ke, heights, s);
+    EXPECT_LT(relative(density * exact.load, p), 1e-6) << p;
+    EXPECT_LT(relative(density * exact.stiffness, at["law"]["stiffness_per_area_N_per_m3"]), 1e-5) << p;
+    EXPECT_LT(relative(density * exact.area, at["law"]["area_fraction"]), 1e-5) << p;
+    // the elastic numbers: the fit's own, and the ratios between them
+    EXPECT_EQ(at["elastic"]["mean_separation_m"], fit["at_pressures"][i]["mean_separation_m"]);
+    EXPECT_EQ(at["elastic"]["stiffness_N_per_m"], fit["at_pressures"][i]["stiffness_N_per_m"]);
+    EXPECT_LT(relative(at["stiffness_over_elastic"],
+                       at["law"]["stiffness_N_per_m"].get<double>() / at["elastic"]["stiffness_N_per_m"].get<double>()),
+              1e-15);
+    EXPECT_LT(relative(at["area_over_elastic"],
+                       at["law"]["real_area_m2"].get<double>() / at["elastic"]["real_area_m2"].get<double>()),
+              1e-15);
+    // a plastic surface (psi ~ 15) carries the same load on more area, less stiffly, closer
+    EXPECT_GT(at["area_over_elastic"].get<double>(), 2.0);
+    EXPECT_LT(at["stiffness_over_elastic"].get<double>(), 1.0);
+    EXPECT_LT(at["mean_separation_minus_elastic_m"].get<double>(), 0.0);
+  }
+  for (const char* name : {"report.md", "law.svg", "curves.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + name)) << name;
+  EXPECT_NE(read_text(dir + "/curves.csv").find("\nlaw:kogut-etsion,"), std::string::npos);
+}
+
+// Hertz as the law is the elastic curve itself (the generator's table against the default
+// table's, two independent tabulations): ratios 1; and the outputs without --law are the outputs
+// with it less the law's object.
+TEST(TopographyCli, HertzLawIsTheElasticCurveAndNoLawChangesNothing) {
+  const CommandRun plain = run(with(afm_contact, {"--json"}));
+  const CommandRun hertz = run(with(afm_contact, {"--json", "--law", "hertz"}));
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(hertz.status, 0) << hertz.err;
+  json a = json::parse(plain.out), b = json::parse(hertz.out);
+  const json law = b["contact"]["law"];
+  ASSERT_TRUE(law["served"].get<bool>()) << law["note"];
+  EXPECT_TRUE(law["plasticity"]["psi"].is_null());  // Hertz has no critical interference
+  const double scale = model_of(b["contact"], law["model"])["surface"]["height_scale_m"];
+  for (const json& at : law["at_pressures"]) {
+    EXPECT_LT(std::fabs(at["stiffness_over_elastic"].get<double>() - 1), 1e-6);
+    EXPECT_LT(std::fabs(at["area_over_elastic"].get<double>() - 1), 1e-6);
+    EXPECT_LT(std::fabs(at["mean_separation_minus_elastic_m"].get<double>()), 1e-7 * scale);
+  }
+  b["contact"].erase("law");
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a.dump().find("\"law\""), std::string::npos);
+  const CommandRun summary = run(afm_contact);
+  ASSERT_EQ(summary.status, 0) << summary.err;
+  EXPECT_EQ(summary.out.find("\n  law "), std::string::npos) << summary.out;
+}
+
+// A law's limits are stated, not silently wrong: Jackson-Green's fits end where a = R (a Gaussian's
+// highest summits reach it); a soft material's real area passes GW's sparse-contact limit (warned)
+// or 1 (no curves).
+TEST(TopographyCli, LawLimitsAreStated) {
+  const CommandRun jg = run(with(afm_contact, {"--law", "jackson-green", "--yield-strength", "1e9", "--law-poisson", "0.3"}));
+  ASSERT_EQ(jg.status, 0) << jg.err;
+  EXPECT_NE(jg.out.find("jackson-green: no curves over the pressures 1e+05 to 3e+07 Pa"), std::string::npos) << jg.out;
+  EXPECT_NE(jg.out.find("beyond the interference its source supports"), std::string::npos) << jg.out;
+  EXPECT_NE(jg.out.find("no hardness for GW's psi (jackson-green takes the yield strength); the law's psi = "),
+            std::string::npos) << jg.out;
+  const CommandRun soft = run(with(afm_contact, {"--law", "kogut-etsion", "--yield-strength", "3e7", "--law-poisson", "0.3"}));
+  ASSERT_EQ(soft.status, 0) << soft.err;
+  EXPECT_NE(soft.out.find("kogut-etsion: at 1e+07 Pa the real area fraction under the law is "), std::string::npos)
+      << soft.out;
+  const CommandRun softer = run(with(afm_contact, {"--law", "kogut-etsion", "--yield-strength", "1e6", "--law-poisson", "0.3"}));
+  ASSERT_EQ(softer.status, 0) << softer.err;
+  EXPECT_NE(softer.out.find("kogut-etsion: no curves over the pressures"), std::string::npos) << softer.out;
+  EXPECT_NE(softer.out.find("GW's psi = "), std::string::npos) << softer.out;
 }

@@ -25,6 +25,7 @@
 #include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/synthetic.hpp"
+#include "asperity/scene.hpp"
 
 namespace t = asperity::topography;
 namespace fs = std::filesystem;
@@ -36,12 +37,13 @@ std::string read_text(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// A small synthetic surface analysed with its contact curves (the default table).
-t::SurfaceAnalysis small_analysis(std::uint64_t seed) {
+// A small synthetic surface analysed with its contact curves (the default table), and a contact
+// law beside them when one is given.
+t::SurfaceAnalysis small_analysis(std::uint64_t seed, int bootstrap = 40, t::LawSceneMaker law = {}) {
   t::HeightMap map = t::gaussian_random_field(96, 96, 1e-7, 1e-7, {{1.5, 4e-16}}, seed);
   map.source = "synthetic-" + std::to_string(seed);
   t::AnalysisOptions options;
-  options.assessment.bootstrap = 40;
+  options.assessment.bootstrap = bootstrap;
   options.assessment.threads = 2;
   options.fit_heights = false;
   t::ContactOptions contact;
@@ -49,6 +51,7 @@ t::SurfaceAnalysis small_analysis(std::uint64_t seed) {
   contact.curve_points = 9;
   contact.table_path = ASPERITY_TEST_TABLE;
   options.contact = contact;
+  options.law = std::move(law);
   return t::analyse_height_map(map, options);
 }
 
@@ -56,6 +59,31 @@ const t::SurfaceAnalysis& analysis() {
   static const t::SurfaceAnalysis a = small_analysis(1);
   return a;
 }
+
+// The same surface with a contact law beside the elastic curves (Kogut-Etsion, a steel's yield
+// strength): its report adds law.svg. The scene is written here as `asperity surface --law` writes it.
+const t::SurfaceAnalysis& law_analysis() {
+  static const t::SurfaceAnalysis a = small_analysis(1, 0, [](const asperity::RoughSurface& surface, double s_min, double s_max) {
+    std::ostringstream scene;
+    scene.precision(17);
+    scene << "[[law]]\nlaw = \"kogut-etsion\"\ncontact_modulus = " << surface.contact_modulus
+          << "\nyield_strength = 1e9\npoisson = 0.3\ndistribution = \"" << asperity::to_string(surface.distribution) << "\"\n";
+    if (surface.distribution == asperity::Distribution::weibull)
+      scene << "shape = " << surface.shape << "\nside = \"" << asperity::to_string(surface.side) << "\"\n";
+    scene << "height_scale = " << surface.height_scale << "\nsummit_radius = " << surface.summit_radius
+          << "\nsummit_density = " << surface.summit_density << "\nnominal_area = " << surface.nominal_area
+          << "\nseparation = [" << s_min << ", " << s_max << "]\nmax_rel_error = 1e-6\n";
+    return asperity::parse_scene(scene.str(), "test").laws.front();
+  });
+  return a;
+}
+
+// Each plot of the reports, and the analysis whose report has it.
+struct Plot {
+  std::string name;
+  const t::SurfaceAnalysis& (*analysis)();
+};
+const Plot plots[] = {{"fits", analysis}, {"contact", analysis}, {"law", law_analysis}};
 
 // A box in the SVG's user units (the renderers draw one unit a pixel).
 struct Box {
@@ -224,9 +252,10 @@ TEST(TopographyReport, WriteErrorReportedAndNothingLost) {
 // The plots render with their axes and curves in both librsvg and ImageMagick's own SVG reader
 // (before: ImageMagick drew matplotlib's SVGs with empty axes).
 TEST(TopographyReport, PlotsRenderInEveryRenderer) {
-  const std::string dir = folder("render");
-  t::write_report(analysis(), dir);
-  for (const std::string plot : {"fits", "contact"}) {
+  for (const Plot& p : plots) {
+    const std::string plot = p.name, dir = folder("render-" + plot);
+    ASSERT_TRUE(p.analysis().law == std::nullopt || p.analysis().law->served) << p.analysis().law->note;
+    t::write_report(p.analysis(), dir);
     const std::string svg = dir + "/" + plot + ".svg";
     const std::string text = read_text(svg);
     for (const char* unknown : {"<defs", "<use", "clip-path", "<style", "class="})
@@ -305,9 +334,9 @@ TEST(TopographyReport, PlotsRenderInEveryRenderer) {
 // The legends are off the data: in every panel of every plot, the box around the legend meets no
 // drawn curve, marker or bar (the box around all of them).
 TEST(TopographyReport, LegendsNeverOnTheData) {
-  const std::string dir = folder("legends");
-  t::write_report(analysis(), dir);
-  for (const std::string plot : {"fits", "contact"}) {
+  for (const Plot& p : plots) {
+    const std::string plot = p.name, dir = folder("legends-" + plot);
+    t::write_report(p.analysis(), dir);
     const std::string svg = read_text(dir + "/" + plot + ".svg");
     int panels = 0;
     for (int k = 0; svg.find("<g id=\"data-" + std::to_string(k) + "\">") != std::string::npos; ++k, ++panels) {
@@ -366,4 +395,32 @@ TEST(TopographyReport, PValuesAtTheFloorAreBounds) {
   EXPECT_NE(json.find("\"kolmogorov_smirnov_p_is_bound\": true"), std::string::npos);
   EXPECT_NE(fits.find("(AD p &lt;= 0.0244)"), std::string::npos);
   EXPECT_EQ(fits.find("(AD p = 0.0244)"), std::string::npos);
+}
+
+// A contact law beside the elastic curves (issue 30 item 6): its section in report.md, its rows in
+// curves.csv, its object in the JSON and law.svg; none of them without a law.
+TEST(TopographyReport, TheLawInEveryOutput) {
+  const t::SurfaceAnalysis& with = law_analysis();
+  ASSERT_TRUE(with.law.has_value());
+  ASSERT_TRUE(with.law->served) << with.law->note;
+  const std::string dir = folder("law");
+  const t::ReportOutcome outcome = t::write_report(with, dir);
+  EXPECT_TRUE(fs::exists(dir + "/law.svg"));
+  EXPECT_NE(read_text(dir + "/report.md").find("### Under the contact law: kogut-etsion"), std::string::npos);
+  EXPECT_NE(read_text(dir + "/report.md").find("![law](law.svg)"), std::string::npos);
+  const std::string curves = read_text(dir + "/curves.csv");
+  std::size_t rows = 0;
+  for (std::size_t at = curves.find("\nlaw:kogut-etsion,"); at != std::string::npos; at = curves.find("\nlaw:kogut-etsion,", at + 1))
+    ++rows;
+  EXPECT_EQ(rows, with.law->curve.size());
+  const std::string json = t::analysis_json(with);
+  EXPECT_NE(json.find("\"law\": {\n   \"law\": \"kogut-etsion\""), std::string::npos);
+  EXPECT_NE(t::analysis_summary(with).find("law kogut-etsion on the "), std::string::npos);
+
+  const std::string plain = folder("no-law");
+  t::write_report(analysis(), plain);
+  EXPECT_FALSE(fs::exists(plain + "/law.svg"));
+  EXPECT_EQ(read_text(plain + "/curves.csv").find("law:"), std::string::npos);
+  EXPECT_EQ(t::analysis_json(analysis()).find("\"law\""), std::string::npos);
+  EXPECT_EQ(read_text(plain + "/report.md").find("contact law"), std::string::npos);
 }

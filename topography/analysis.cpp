@@ -203,6 +203,24 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     conclude_contact(c);
   }
   analysis.verdict = surface_verdict(analysis);
+  if (options.law && analysis.contact) {
+    // the law on the fit the verdict names for the contact, else the lowest AIC with curves
+    const SurfaceVerdict& v = analysis.verdict;
+    int model = v.named ? static_cast<int>(v.model) : -1;
+    std::string reason = "the verdict's model for the contact";
+    if (model < 0) {
+      for (HeightModel candidate : all_height_models) {
+        const ModelContact* curves = analysis.contact->find(to_string(candidate));
+        if (!curves || !curves->served) continue;
+        if (model < 0 || analysis.summit_heights.model(candidate).aic <
+                             analysis.summit_heights.models[static_cast<std::size_t>(model)].aic)
+          model = static_cast<int>(candidate);
+      }
+      reason = "no model is named by the verdict: the fit of the lowest AIC with elastic curves";
+    }
+    if (model < 0) throw Error(map.source + ": contact law: no fitted model has elastic curves to set the law beside");
+    analysis.law = compare_law(*analysis.contact, analysis.summits, static_cast<HeightModel>(model), reason, options.law);
+  }
   analysis.map = std::move(map);
   return analysis;
 }

@@ -26,15 +26,6 @@ std::string shape_text(double shape) {
   return text.str();
 }
 
-// The pressures of every curve: log-uniform over [pressure_min, pressure_max].
-std::vector<double> curve_pressures(const ContactComparison& comparison) {
-  const int points = comparison.options.curve_points;
-  const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
-  std::vector<double> pressures;
-  for (int k = 0; k < points; ++k) pressures.push_back(std::exp(lo + (hi - lo) * k / (points - 1)));
-  return pressures;
-}
-
 void fill_curves(ModelContact& model, const ContactModel& contact, const ContactComparison& comparison) {
   // a table answers NaN outside what it serves: no curve rather than a curve of NaN
   const auto state = [&](double p) {
@@ -216,6 +207,14 @@ void add_reference_contact(ContactComparison& comparison, const HeightMap& map, 
     }
     comparison.models.push_back(std::move(model));
   }
+}
+
+std::vector<double> curve_pressures(const ContactComparison& comparison) {
+  const int points = comparison.options.curve_points;
+  const double lo = std::log(comparison.pressure_min), hi = std::log(comparison.pressure_max);
+  std::vector<double> pressures;
+  for (int k = 0; k < points; ++k) pressures.push_back(std::exp(lo + (hi - lo) * k / (points - 1)));
+  return pressures;
 }
 
 std::vector<double> contact_pressures(const ContactOptions& options) {

@@ -224,43 +224,68 @@ std::string fits_svg(const SurfaceAnalysis& a) {
   return detail::svg_figure(panels);
 }
 
-std::string contact_svg(const SurfaceAnalysis& a) {
-  const ContactComparison& c = *a.contact;
-  const HeightUnit unit = height_unit(a);
+// The contact plots' three panels: load-separation, area-load, stiffness-load, each curve drawn
+// on all three, the pressures of interest marked.
+struct ContactPanels {
   detail::PlotPanel load, area, stiffness;
-  load.title = "load-separation";
-  load.x_label = std::string("separation from the mean summit height [") + unit.name + "]";
-  load.y_label = "nominal pressure [Pa]";
-  load.log_y = true;
-  area.title = "area-load";
-  area.x_label = stiffness.x_label = "nominal pressure [Pa]";
-  area.y_label = "real area / nominal area";
-  area.log_x = area.log_y = stiffness.log_x = stiffness.log_y = true;
-  char title[96];
-  std::snprintf(title, sizeof title, "stiffness-load (E* = %.3g Pa)", c.options.contact_modulus);
-  stiffness.title = title;
-  stiffness.y_label = "normal stiffness per nominal area [N/m\xC2\xB3]";
-  for (const ModelContact& m : c.models) {
-    if (!m.served) continue;
+  HeightUnit unit;
+  double nominal_area;
+
+  ContactPanels(const SurfaceAnalysis& a, const std::string& load_title, const std::string& stiffness_title)
+      : unit(height_unit(a)), nominal_area(a.contact->nominal_area) {
+    load.title = load_title;
+    load.x_label = std::string("separation from the mean summit height [") + unit.name + "]";
+    load.y_label = "nominal pressure [Pa]";
+    load.log_y = true;
+    area.title = "area-load";
+    area.x_label = stiffness.x_label = "nominal pressure [Pa]";
+    area.y_label = "real area / nominal area";
+    area.log_x = area.log_y = stiffness.log_x = stiffness.log_y = true;
+    stiffness.title = stiffness_title;
+    stiffness.y_label = "normal stiffness per nominal area [N/m\xC2\xB3]";
+    load.y_marks = area.x_marks = stiffness.x_marks = a.contact->pressures;
+  }
+  void add(const std::vector<PhysicalState>& curve, const std::string& label, const char* colour, bool points = false,
+           bool dashed = false) {
     detail::PlotSeries l, r, k;
-    l.label = r.label = k.label = legend_of(m.label);
-    l.colour = r.colour = k.colour = colour_of(m.label);
-    l.points = r.points = k.points = m.label == "exact";        // the solved steps
-    l.dashed = r.dashed = k.dashed = m.label == "persson";
-    for (const PhysicalState& s : m.curve) {
+    l.label = r.label = k.label = label;
+    l.colour = r.colour = k.colour = colour;
+    l.points = r.points = k.points = points;
+    l.dashed = r.dashed = k.dashed = dashed;
+    for (const PhysicalState& s : curve) {
       l.x.push_back(s.mean_separation * unit.per_metre);
       l.y.push_back(s.pressure);
       r.x.push_back(s.pressure);
       r.y.push_back(s.area_fraction);
       k.x.push_back(s.pressure);
-      k.y.push_back(s.stiffness / c.nominal_area);
+      k.y.push_back(s.stiffness / nominal_area);
     }
     load.series.push_back(std::move(l));
     area.series.push_back(std::move(r));
     stiffness.series.push_back(std::move(k));
   }
-  load.y_marks = area.x_marks = stiffness.x_marks = c.pressures;
-  return detail::svg_figure({load, area, stiffness});
+  std::string svg() const { return detail::svg_figure({load, area, stiffness}); }
+};
+
+std::string contact_svg(const SurfaceAnalysis& a) {
+  char title[96];
+  std::snprintf(title, sizeof title, "stiffness-load (E* = %.3g Pa)", a.contact->options.contact_modulus);
+  ContactPanels panels(a, "load-separation", title);
+  for (const ModelContact& m : a.contact->models)
+    if (m.served)  // the exact contact's solved steps as markers, Persson dashed
+      panels.add(m.curve, legend_of(m.label), colour_of(m.label), m.label == "exact", m.label == "persson");
+  return panels.svg();
+}
+
+// The law's curves next to the same fit's elastic ones.
+std::string law_svg(const SurfaceAnalysis& a) {
+  const LawContact& law = *a.law;
+  ContactPanels panels(a, law.law + " and elastic: load-separation", "stiffness-load");
+  const ModelContact* elastic = a.contact->find(law.model);
+  if (elastic && elastic->served)
+    panels.add(elastic->curve, std::string("elastic (Hertz), ") + legend_of(law.model), "#1f77b4");
+  panels.add(law.curve, law.law + ", " + legend_of(law.model), "#d62728");
+  return panels.svg();
 }
 
 }  // namespace
@@ -415,6 +440,52 @@ std::string analysis_json(const SurfaceAnalysis& a) {
     for (const SamplingContact& r : c.sampling)
       sampling_contact.push_back({{"factor", r.factor}, {"stiffness_over_finest", r.stiffness_over_finest}});
     j["contact"]["measured_summits_sampling_dependence"] = sampling_contact;
+    if (a.law) {
+      const LawContact& law = *a.law;
+      ordered_json at = ordered_json::array();
+      for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+        ordered_json lj = state_json(law.at_pressures[k]), ej = state_json(law.elastic_at_pressures[k]);
+        lj["stiffness_per_area_N_per_m3"] = number(law.at_pressures[k].stiffness / c.nominal_area);
+        ej["stiffness_per_area_N_per_m3"] = number(law.elastic_at_pressures[k].stiffness / c.nominal_area);
+        at.push_back({{"pressure_Pa", c.pressures[k]},
+                      {"law", lj},
+                      {"elastic", ej},
+                      {"mean_separation_minus_elastic_m", number(law.separation_minus_elastic[k])},
+                      {"area_over_elastic", number(law.area_over_elastic[k])},
+                      {"stiffness_over_elastic", number(law.stiffness_over_elastic[k])}});
+      }
+      ordered_json curve = ordered_json::array();
+      for (const PhysicalState& st : law.curve) curve.push_back(state_json(st));
+      j["contact"]["law"] = {
+          {"law", law.law},
+          {"model", law.model},
+          {"model_reason", law.model_reason},
+          {"plasticity",
+           {{"summit_height_standard_deviation_m", number(law.summit_height_sd)},
+            {"summit_radius_m", number(law.summit_radius)},
+            {"contact_modulus_Pa", number(law.contact_modulus)},
+            {"hardness_Pa", number(law.hardness)},
+            {"critical_interference_m", number(law.critical_interference)},
+            {"valid_up_to_m", number(law.valid_up_to)},
+            {"psi", number(law.plasticity_index)},
+            {"psi_definition", "(sigma_s / omega_c)^1/2 with the law's omega_c (Kogut-Etsion 2003's with the CEB/KE "
+                               "omega_c; Jackson-Green's with theirs)"},
+            {"psi_gw", number(law.gw_plasticity_index)},
+            {"psi_gw_definition", "(E*/H)(sigma_s/R)^1/2 (Greenwood-Williamson 1966; H: the law's hardness, "
+                                  "Kogut-Etsion's 2.8 Y)"},
+            {"regime", law.regime}}},
+          {"served", law.served},
+          {"note", law.note},
+          {"separation_range", {number(law.separation_min), number(law.separation_max)}},
+          {"nodes", law.nodes},
+          {"max_rel_error",
+           {{"pressure", number(law.max_rel_error[0])},
+            {"stiffness", number(law.max_rel_error[1])},
+            {"area_fraction", number(law.max_rel_error[2])}}},
+          {"at_pressures", at},
+          {"curve", curve},
+          {"warnings", law.warnings}};
+    }
   }
   // a source or note that is not UTF-8 (a path's bytes) is replaced, not an exception
   return j.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
@@ -463,13 +534,31 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
       if (!mc.served) out << "  " << mc.label << ": " << mc.note << "\n";
     if (!c.exact_headline.empty()) out << "  " << c.exact_headline << "\n";
   }
+  if (a.law) {
+    const LawContact& law = *a.law;
+    out << "  law " << law.law << " on the " << law.model << " fit (" << law.model_reason << "): sigma_s " << g(law.summit_height_sd)
+        << " m, R " << g(law.summit_radius) << " m, omega_c " << g(law.critical_interference) << " m, psi = (sigma_s/omega_c)^1/2 "
+        << g(law.plasticity_index, 3) << ", GW's psi = (E*/H)(sigma_s/R)^1/2 " << g(law.gw_plasticity_index, 3) << "\n";
+    out << "  " << law.regime << "\n";
+    const ContactComparison& c = *a.contact;
+    for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+      const PhysicalState &l = law.at_pressures[k], &e = law.elastic_at_pressures[k];
+      out << "  at " << g(c.pressures[k]) << " Pa under " << law.law << " (elastic; law/elastic): mean separation "
+          << g(l.mean_separation) << " m (" << g(e.mean_separation) << " m; " << g(law.separation_minus_elastic[k], 3)
+          << " m), area fraction " << g(l.area_fraction) << " (" << g(e.area_fraction) << "; "
+          << g(law.area_over_elastic[k], 3) << "x), stiffness per area " << g(l.stiffness / c.nominal_area) << " N/m^3 ("
+          << g(e.stiffness / c.nominal_area) << "; " << g(law.stiffness_over_elastic[k], 3) << "x)\n";
+    }
+    if (!law.served) out << "  " << law.law << ": " << law.note << "\n";
+    for (const std::string& warning : law.warnings) out << "  " << law.law << ": " << warning << "\n";
+  }
   return out.str();
 }
 
 ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& directory) {
   // every file a report of this schema can hold (and the PNGs of earlier versions)
-  const std::vector<std::string> names = {"report.md",   "report.json", "summits.csv", "curves.csv",
-                                          "fits.svg",    "contact.svg", "fits.png",    "contact.png"};
+  const std::vector<std::string> names = {"report.md",   "report.json", "summits.csv", "curves.csv", "fits.svg",
+                                          "contact.svg", "law.svg",     "fits.png",    "contact.png"};
   detail::ReportDirectory folder(directory);
   folder.remove_stale_temporaries(names);
   ReportOutcome outcome;
@@ -493,6 +582,12 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
         curves << mc.label << ',' << s.pressure << ',' << s.load << ',' << s.mean_separation << ',' << s.separation << ','
                << s.area_fraction << ',' << s.real_area << ',' << s.stiffness << ','
                << s.stiffness / a.contact->nominal_area << ',' << s.stiffness_over_load << ',' << s.count << '\n';
+    // the law's curve: rows of model "law:NAME" (the fit it is on: report.json's contact.law.model)
+    if (a.law)
+      for (const PhysicalState& s : a.law->curve)
+        curves << "law:" << a.law->law << ',' << s.pressure << ',' << s.load << ',' << s.mean_separation << ','
+               << s.separation << ',' << s.area_fraction << ',' << s.real_area << ',' << s.stiffness << ','
+               << s.stiffness / a.contact->nominal_area << ',' << s.stiffness_over_load << ',' << s.count << '\n';
     outcome.files.push_back(folder.write("curves.csv", curves.str()));
   }
 
@@ -500,6 +595,7 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   if (!a.noise_floor.reached) {
     outcome.files.push_back(folder.write("fits.svg", fits_svg(a)));
     if (a.contact) outcome.files.push_back(folder.write("contact.svg", contact_svg(a)));
+    if (a.contact && a.law && a.law->served) outcome.files.push_back(folder.write("law.svg", law_svg(a)));
     outcome.plots = true;
   } else {
     outcome.plot_note = "no plots: " + a.noise_floor.text;
@@ -634,6 +730,35 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
       md << "\nThe exact contact: " << exact->note << ".\n";
     }
     if (outcome.plots) md << "\n![contact](contact.svg)\n";
+    if (a.law) {
+      const LawContact& law = *a.law;
+      md << "\n### Under the contact law: " << law.law << "\n\nThe law's rough-surface curves on the " << law.model
+         << " fit (" << law.model_reason << "), with the measured summit density and radius, next to the same fit's "
+            "elastic (Hertz) curves above.\n\n| | |\n|---|---|\n";
+      md << "| σs: standard deviation of the measured summit heights | " << g(law.summit_height_sd) << " m |\n";
+      md << "| R: the measured summit radius | " << g(law.summit_radius) << " m |\n";
+      md << "| E* | " << g(law.contact_modulus) << " Pa |\n";
+      md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
+      md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";
+      md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
+      md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
+      md << "| the law's source range | " << (std::isfinite(law.valid_up_to) ? "ω up to " + g(law.valid_up_to) + " m" : "every ω") << " |\n";
+      md << "| its curves | " << law.note << " |\n\n**" << law.regime << ".**\n";
+      if (law.served) {
+        md << "\n| nominal pressure [Pa] | mean separation, elastic [m] | under the law [m] | law − elastic [m] | area "
+              "fraction, elastic | under the law | law / elastic | stiffness / A0, elastic [N/m³] | under the law | law / "
+              "elastic |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+          const PhysicalState &l = law.at_pressures[k], &e = law.elastic_at_pressures[k];
+          md << "| " << g(c.pressures[k]) << " | " << g(e.mean_separation) << " | " << g(l.mean_separation) << " | "
+             << g(law.separation_minus_elastic[k], 3) << " | " << g(e.area_fraction, 3) << " | " << g(l.area_fraction, 3)
+             << " | " << g(law.area_over_elastic[k], 3) << " | " << g(e.stiffness / c.nominal_area) << " | "
+             << g(l.stiffness / c.nominal_area) << " | " << g(law.stiffness_over_elastic[k], 3) << " |\n";
+        }
+      }
+      for (const std::string& warning : law.warnings) md << "\n**Warning:** " << warning << ".\n";
+      if (outcome.plots && law.served) md << "\n![law](law.svg)\n";
+    }
   }
   }  // not at the noise floor
   if (!outcome.plots) md << "\n_" << outcome.plot_note << "._\n";

@@ -18,6 +18,7 @@
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
+#include "law_options.hpp"
 #include "asperity/number_text.hpp"
 
 namespace asperity::cli {
@@ -34,6 +35,7 @@ struct Options {
   long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
   double exact_tolerance = not_given;
   bool json = false, no_level = false, no_height_fit = false, exact = false, no_persson = false;
+  LawOptions law;  // a contact law beside the elastic curves (law_options.hpp)
 };
 
 bool given(double value) { return !std::isnan(value); }
@@ -99,10 +101,22 @@ int run_surface(const Options& o) {
   const bool exact_options = !o.exact_boundary.empty() || !o.exact_kernel.empty() || given(o.exact_tolerance);
   if (exact_options && !o.exact) usage("--exact-boundary, --exact-kernel and --exact-tolerance go with --exact");
   const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area) ||
-                       o.exact || o.no_persson;
+                       o.exact || o.no_persson || !o.law.law.empty();
   if (contact && !given(modulus))
-    usage("the contact curves (--pressure, --load, --area, --table, --exact) need the contact modulus: --modulus E* [Pa] "
-          "or --e1 --nu1 --e2 --nu2");
+    usage("the contact curves (--pressure, --load, --area, --table, --exact, --law) need the contact modulus: --modulus "
+          "E* [Pa] or --e1 --nu1 --e2 --nu2");
+  check_no_law_options(o.law);
+  if (!o.law.law.empty()) {
+    // the law and its material checked now, as a scene on a stand-in surface, before the analysis
+    RoughSurface stand_in;
+    stand_in.distribution = Distribution::gaussian;
+    stand_in.height_scale = 1e-6;
+    stand_in.summit_radius = 1e-4;
+    stand_in.summit_density = 1e9;
+    stand_in.nominal_area = 1e-6;
+    stand_in.contact_modulus = modulus;
+    law_scene(o.law, stand_in, 0, 1, "asperity surface --law");
+  }
   std::vector<double> pressures, loads;
   if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
   if (!o.loads.empty()) loads = positive_numbers(o.loads, "--load");
@@ -131,6 +145,10 @@ int run_surface(const Options& o) {
     const double a0 = given(o.area) ? o.area : map.width() * map.length();
     for (double load : loads) curves.pressures.push_back(nominal_pressure_from_load(load, a0));
     options.contact = curves;
+    if (!o.law.law.empty())
+      options.law = [law = o.law](const RoughSurface& surface, double s_min, double s_max) {
+        return law_scene(law, surface, s_min, s_max, "asperity surface --law");
+      };
   }
   // progress on standard error for an ensemble that takes more than a second: a line that
   // rewrites itself on a terminal, a line every few seconds otherwise
@@ -256,6 +274,10 @@ void add_surface_command(CLI::App& app) {
   add_number(*command, "--exact-tolerance", o.exact_tolerance, "of each exact solve (default 1e-8)")
       ->type_name("TOL")->group(contact);
   command->add_flag("--no-persson", o.no_persson, "leave out Persson's theory of the map's spectrum")->group(contact);
+  add_law_options(*command, o.law,
+                  "a contact law beside the elastic curves (with --modulus): hertz, chang-etsion-bogy, "
+                  "zhao-maietta-chang, kogut-etsion or jackson-green with its material; gives the plasticity index of "
+                  "the measured summits and the law's curves on the fit the verdict names (docs/surfaces.md)");
   const char* output = "Output";
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
@@ -270,7 +292,12 @@ void add_surface_command(CLI::App& app) {
       "and with a modulus GW on the measured summits beside\n"
       "the contact curves of each fit and their ratios at the pressures of interest, Persson's theory of\n"
       "the map's spectrum, and with --exact the exact elastic contact of the map, which every curve is\n"
-      "then compared with (docs/surfaces.md, docs/exact-contact.md).\n" +
+      "then compared with (docs/surfaces.md, docs/exact-contact.md).\n"
+      "With --law NAME and its material: the plasticity index psi of the measured summits (the law's\n"
+      "(sigma_s/omega_c)^1/2 and GW's (E*/H)(sigma_s/R)^1/2, sigma_s the summit heights' standard\n"
+      "deviation, R the summit radius; GW: psi < 0.6 elastic, > 1 plastic) and the law's curves\n"
+      "(separation, real area, stiffness) on the fit the verdict names, next to its elastic ones, at\n"
+      "the pressures of interest (the report's law.svg; curves.csv rows law:NAME).\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
   set_action(*command, [options, self] { return run_surface(*options); });

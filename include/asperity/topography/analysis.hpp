@@ -13,6 +13,7 @@
 #include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/height_map.hpp"
 #include "asperity/topography/height_map_io.hpp"
+#include "asperity/topography/law_contact.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/summits.hpp"
@@ -33,6 +34,9 @@ struct AnalysisOptions {
   std::size_t max_fit_sample = 20000;
   std::vector<std::size_t> sampling_factors = {1, 2, 4};  // summits at k dx (sampling dependence)
   std::optional<ContactOptions> contact;  // contact curves: needs ContactOptions::contact_modulus
+  // A contact law beside the elastic curves (with `contact`): its plasticity index and its
+  // curves on the fit the verdict names (law_contact.hpp); empty: none
+  LawSceneMaker law;
   EnsembleProgress progress;              // the ensemble's progress (surrogates done of total)
   ExactProgress exact_progress;           // the exact contact's (load steps done of total)
 };
@@ -93,6 +97,7 @@ struct SurfaceAnalysis {
   std::size_t padded_nx = 0, padded_ny = 0;  // its fields' grid before cutting
   SurfaceVerdict verdict;
   std::optional<ContactComparison> contact;
+  std::optional<LawContact> law;   // with AnalysisOptions::law
   AnalysisOptions options;
 };
 

@@ -122,6 +122,9 @@ using ExactProgress = std::function<void(std::size_t done, std::size_t total)>;
 void add_reference_contact(ContactComparison& comparison, const HeightMap& map, double mean_summit_height,
                            const ExactProgress& progress = {});
 
+// The pressures of every curve: log-uniform over [pressure_min, pressure_max], curve_points of them.
+std::vector<double> curve_pressures(const ContactComparison& comparison);
+
 // The pressures of interest (sorted) that compare_contact will use.
 std::vector<double> contact_pressures(const ContactOptions& options);
 

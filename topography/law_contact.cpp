@@ -1,0 +1,147 @@
+#include "asperity/topography/law_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "asperity/contact_curves.hpp"
+#include "asperity/contact_law.hpp"
+#include "asperity/error.hpp"
+#include "asperity/generator/law_curves.hpp"
+
+namespace asperity::topography {
+namespace {
+
+std::string g(double value, int digits = 3) {
+  std::ostringstream text;
+  text.precision(digits);
+  text << value;
+  return text.str();
+}
+
+// GW 1966's ranges of their psi, said of whichever psi is given (`which` names it)
+std::string regime_text(double psi, const std::string& which) {
+  std::string text = which + " = " + g(psi) + ": ";
+  if (psi < 0.6) text += "below 0.6, elastic (plastic contacts only at impractically high pressures)";
+  else if (psi <= 1) text += "between 0.6 and 1, elastic at light loads, plastic contacts growing with the load";
+  else text += "above 1, plastic contacts at practically every load";
+  return text + " (Greenwood & Williamson 1966's ranges, on their psi = (E*/H)(sigma_s/R)^1/2)";
+}
+
+// The law's state at nominal pressure p from its served curves, as every model's (over A0).
+PhysicalState law_state(const ContactCurves& curves, double p, double area) {
+  const ContactCurvesState s = curves.at_pressure(p);
+  if (std::isnan(s.separation) || std::isnan(s.stiffness) || std::isnan(s.area_fraction))
+    throw Error("the law's curves give no value at " + g(p) + " Pa");
+  PhysicalState state{};
+  state.separation = s.separation;
+  state.mean_separation = s.separation - curves.data().mean_summit_height;
+  state.count = NAN;  // not tabulated (the table kind has no column for it)
+  state.area_fraction = s.area_fraction;
+  state.real_area = s.area_fraction * area;
+  state.pressure = p;
+  state.load = p * area;
+  state.stiffness = s.stiffness * area;
+  state.stiffness_over_load = s.stiffness / p;
+  return state;
+}
+
+}  // namespace
+
+LawContact compare_law(const ContactComparison& comparison, const Summits& summits, HeightModel model,
+                       const std::string& model_reason, const LawSceneMaker& make) {
+  const ModelContact* elastic = comparison.find(to_string(model));
+  if (!elastic || !elastic->served || elastic->at_pressures.size() != comparison.pressures.size())
+    throw Error(std::string("contact law: the ") + to_string(model) + " fit has no elastic curves to set the law beside");
+  if (summits.list.size() < 2) throw Error("contact law: too few summits for their heights' standard deviation");
+  LawContact out;
+  out.model = to_string(model);
+  out.model_reason = model_reason;
+  out.surface = elastic->surface;
+  out.elastic_at_pressures = elastic->at_pressures;
+  out.summit_radius = summits.radius;
+  out.contact_modulus = comparison.options.contact_modulus;
+  double mean = 0, squares = 0;
+  for (const Summit& s : summits.list) mean += s.height;
+  mean /= static_cast<double>(summits.list.size());
+  for (const Summit& s : summits.list) squares += (s.height - mean) * (s.height - mean);
+  out.summit_height_sd = std::sqrt(squares / static_cast<double>(summits.list.size() - 1));
+
+  // the separations (dimensionless, origin convention) of the elastic curve at its pressure range
+  const RoughSurface& surface = out.surface;
+  const double scale = surface.height_scale;
+  double s_lo = elastic->curve.back().separation / scale, s_hi = elastic->curve.front().separation / scale;
+  out.separation_min = s_lo;
+  out.separation_max = s_hi;
+  SceneLaw law = make(surface, s_lo, s_hi);  // the material's errors, before any work
+  out.law = contact_law_name(law.law.kind);
+  out.critical_interference = law.law.critical_interference;
+  out.valid_up_to = law.law.valid_up_to;
+  out.plasticity_index = plasticity_index(law.law, out.summit_height_sd);
+  if (law.law.hardness > 0) out.hardness = law.law.hardness;
+  out.gw_plasticity_index =
+      greenwood_williamson_plasticity_index(out.contact_modulus, out.hardness, out.summit_height_sd, out.summit_radius);
+  if (std::isfinite(out.gw_plasticity_index))
+    out.regime = regime_text(out.gw_plasticity_index, "GW's psi");
+  else if (std::isfinite(out.plasticity_index))
+    out.regime = regime_text(out.plasticity_index, "no hardness for GW's psi (" + out.law +
+                                                       " takes the yield strength); the law's psi");
+  else
+    out.regime = out.law + " has no critical interference: every contact is elastic, no plasticity index";
+
+  // Widen the range until the law's pressure covers the comparison's (the law is softer or
+  // stiffer than Hertz past omega_c): its exact pressure by the generator's own quadrature
+  const double density = surface.summit_density, p_min = comparison.pressure_min, p_max = comparison.pressure_max;
+  const auto pressure = [&](double s) { return density * generator::law_means(law, s).load; };
+  const bool bounded = surface.distribution == Distribution::weibull && surface.side == Side::bounded;
+  try {
+    double step = 0.02 * std::max(s_hi - s_lo, 0.05);
+    for (int k = 0; k < 80 && !(pressure(s_hi) < p_min * (1 - 1e-3)); ++k, step *= 1.5)
+      s_hi = bounded ? s_hi + std::min(step, -s_hi / 2) : s_hi + step;
+    step = 0.02 * std::max(s_hi - s_lo, 0.05);
+    for (int k = 0; k < 80 && !(pressure(s_lo) > p_max * (1 + 1e-3)) && s_lo > -1e3; ++k, step *= 1.5) s_lo -= step;
+    out.separation_min = std::max(s_lo, -1e3);
+    out.separation_max = s_hi;
+    if (!(pressure(out.separation_min) > p_max) || !(pressure(out.separation_max) < p_min))
+      throw Error("no separation within a scene's range [-1e3, 1e3] gives the law's pressures " + g(p_min) + " to " +
+                  g(p_max) + " Pa");
+    law = make(surface, out.separation_min, out.separation_max);
+    const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity surface --law");
+    out.nodes = result.nodes;
+    for (int k = 0; k < 3; ++k) out.max_rel_error[k] = result.data.max_rel_error[k];
+    const ContactCurves curves(result.data);
+    const double area = comparison.nominal_area;
+    for (double p : curve_pressures(comparison)) out.curve.push_back(law_state(curves, p, area));
+    for (double p : comparison.pressures) out.at_pressures.push_back(law_state(curves, p, area));
+    out.served = true;
+    std::ostringstream note;
+    note.precision(2);
+    note << "law scene table: separations s = " << g(out.separation_min, 4) << " to " << g(out.separation_max, 4)
+         << " (origin convention, in units of the fit's scale " << g(scale) << " m), " << result.nodes
+         << " nodes, stored relative error bound " << out.max_rel_error[0] << " (pressure), " << out.max_rel_error[1]
+         << " (stiffness), " << out.max_rel_error[2] << " (area fraction)";
+    out.note = note.str();
+  } catch (const Error& error) {
+    // the law's own limits (its source's interferences, an area fraction past 1, ...): stated
+    out.curve.clear();
+    out.at_pressures.clear();
+    out.note = "no curves over the pressures " + g(p_min) + " to " + g(p_max) + " Pa (a tenth of the least pressure "
+               "of interest to three times the largest): " + error.what();
+    return out;
+  }
+  for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
+    const PhysicalState &l = out.at_pressures[k], &e = out.elastic_at_pressures[k];
+    out.area_over_elastic.push_back(l.real_area / e.real_area);
+    out.stiffness_over_elastic.push_back(l.stiffness / e.stiffness);
+    out.separation_minus_elastic.push_back(l.mean_separation - e.mean_separation);
+    if (l.area_fraction > gw_area_fraction_limit)
+      out.warnings.push_back("at " + g(comparison.pressures[k]) + " Pa the real area fraction under the law is " +
+                             g(l.area_fraction) + " (above " + g(gw_area_fraction_limit) +
+                             "): GW's asperity contacts are sparse and independent only below it");
+  }
+  return out;
+}
+
+}  // namespace asperity::topography
