@@ -38,7 +38,8 @@ set(allowed_white_box ${runtime_public} detail generator topography)
 # The private headers tests, benchmarks and fuzzers may use (their CMake targets say so too:
 # asperity_runtime_test_seams, asperity_topography_test_seams).
 set(seams runtime/table/replace_file.hpp runtime/core/kernel/kernels.hpp topography/md5.hpp
-    topography/spacing_fit.hpp topography/vector_math.hpp topography/fft.hpp apps/asperity/eval_csv.hpp tests/reference.hpp
+    topography/spacing_fit.hpp topography/vector_math.hpp topography/fft.hpp apps/asperity/eval_csv.hpp
+    apps/asperity/law_options.hpp tests/reference.hpp
     tests/accuracy_harness.hpp)
 
 set(failures "")

@@ -1,0 +1,128 @@
+// A contact law beside a measured surface's elastic curves (topography/law_contact.hpp, issue 30
+// item 6), on each of the three fits (the Gaussian, the tail-up and the bounded Weibull): Hertz as
+// the law gives the fit's elastic curve back (the generator's table against the default table's);
+// Kogut-Etsion's pressure, stiffness and area at the separations it reports agree with the
+// independent reference quadrature (tests/contact_law_reference.hpp); and what it refuses.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "asperity/error.hpp"
+#include "asperity/topography/analysis.hpp"
+#include "asperity/topography/law_contact.hpp"
+#include "asperity/topography/synthetic.hpp"
+#include "contact_law_reference.hpp"
+#include "law_options.hpp"
+
+namespace t = asperity::topography;
+
+namespace {
+
+// A small synthetic surface's elastic curves at two pressures, no ensemble (its verdict is not needed)
+const t::SurfaceAnalysis& analysis() {
+  static const t::SurfaceAnalysis a = [] {
+    t::HeightMap map = t::gaussian_random_field(96, 96, 1e-7, 1e-7, {{1.5, 4e-16}}, 3);
+    map.source = "synthetic-3";
+    t::AnalysisOptions options;
+    options.assessment.bootstrap = 0;
+    options.fit_heights = false;
+    t::ContactOptions contact;
+    contact.contact_modulus = 1e11;
+    contact.curve_points = 9;
+    contact.table_path = ASPERITY_TEST_TABLE;
+    contact.pressures = {1e6, 1e7};
+    contact.persson = false;
+    options.contact = contact;
+    return t::analyse_height_map(map, options);
+  }();
+  return a;
+}
+
+// The law as `asperity surface --law` makes it (the command's one definition)
+t::LawSceneMaker maker(const std::string& name, double yield_strength = NAN, double poisson = NAN) {
+  asperity::cli::LawOptions law;
+  law.law = name;
+  law.yield_strength = yield_strength;
+  law.poisson = poisson;
+  return [law](const asperity::RoughSurface& surface, double s_min, double s_max) {
+    return asperity::cli::law_scene(law, surface, s_min, s_max, "test");
+  };
+}
+
+double relative(double a, double b) { return std::fabs(a - b) / std::fabs(b); }
+
+}  // namespace
+
+TEST(LawContact, HertzIsEachFitsElasticCurve) {
+  const t::SurfaceAnalysis& a = analysis();
+  for (t::HeightModel model : t::all_height_models) {
+    const t::ModelContact* elastic = a.contact->find(t::to_string(model));
+    ASSERT_TRUE(elastic && elastic->served) << t::to_string(model) << ": " << (elastic ? elastic->note : "none");
+    const t::LawContact law = t::compare_law(*a.contact, a.summits, model, "test", maker("hertz"));
+    ASSERT_TRUE(law.served) << t::to_string(model) << ": " << law.note;
+    EXPECT_TRUE(std::isnan(law.plasticity_index));
+    EXPECT_EQ(law.model, t::to_string(model));
+    ASSERT_EQ(law.at_pressures.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_LT(std::fabs(law.area_over_elastic[k] - 1), 1e-6) << t::to_string(model) << " " << k;
+      EXPECT_LT(std::fabs(law.stiffness_over_elastic[k] - 1), 1e-6) << t::to_string(model) << " " << k;
+      EXPECT_LT(std::fabs(law.separation_minus_elastic[k]), 1e-7 * law.surface.height_scale) << t::to_string(model) << " " << k;
+      EXPECT_LT(std::fabs(law.at_pressures[k].separation - elastic->at_pressures[k].separation),
+                1e-7 * law.surface.height_scale)
+          << t::to_string(model) << " " << k << ": the origin convention";
+    }
+    EXPECT_EQ(law.curve.size(), elastic->curve.size());
+  }
+}
+
+TEST(LawContact, KogutEtsionAgainstTheReferenceOnEachFit) {
+  const t::SurfaceAnalysis& a = analysis();
+  const double e = 1e11, y = 1e9, nu = 0.3;
+  for (t::HeightModel model : t::all_height_models) {
+    const t::LawContact law = t::compare_law(*a.contact, a.summits, model, "test", maker("kogut-etsion", y, nu));
+    ASSERT_TRUE(law.served) << t::to_string(model) << ": " << law.note;
+    const asperity::ContactLaw ke = asperity::kogut_etsion_law(a.summits.radius, e, y, nu);
+    EXPECT_EQ(law.critical_interference, ke.critical_interference);
+    asperity::test::SummitHeights heights;
+    heights.distribution = law.surface.distribution;
+    heights.side = law.surface.side;
+    heights.shape = law.surface.shape;
+    heights.scale = law.surface.height_scale;
+    const double density = law.surface.summit_density;
+    for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+      const asperity::PhysicalState& state = law.at_pressures[k];
+      const asperity::test::RoughSurfaceValues exact =
+          asperity::test::law_integrals(ke, heights, state.separation / heights.scale);
+      const std::string where = std::string(t::to_string(model)) + " at " + std::to_string(state.pressure) + " Pa";
+      EXPECT_LT(relative(density * exact.load, state.pressure), 1e-6) << where;
+      EXPECT_LT(relative(density * exact.stiffness * a.contact->nominal_area, state.stiffness), 1e-5) << where;
+      EXPECT_LT(relative(density * exact.area, state.area_fraction), 1e-5) << where;
+      EXPECT_EQ(state.pressure, a.contact->pressures[k]);
+    }
+  }
+}
+
+TEST(LawContact, RefusalsAndLimits) {
+  const t::SurfaceAnalysis& a = analysis();
+  // the material, from the scene's checks: before any curve
+  try {
+    t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", maker("chang-etsion-bogy", NAN, 0.3));
+    ADD_FAILURE() << "no hardness accepted";
+  } catch (const asperity::Error& error) {
+    EXPECT_NE(std::string(error.what()).find("the law has no 'hardness'"), std::string::npos) << error.what();
+  }
+  // a fit without elastic curves has nothing to set the law beside
+  t::ContactComparison without = *a.contact;
+  for (t::ModelContact& m : without.models)
+    if (m.label == "gaussian") m.served = false;
+  EXPECT_THROW(t::compare_law(without, a.summits, t::HeightModel::gaussian, "test", maker("hertz")), asperity::Error);
+  // a yield strength so low that the real area passes 1 within the pressures: stated, psi still given
+  const t::LawContact soft =
+      t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", maker("kogut-etsion", 1e5, 0.3));
+  EXPECT_FALSE(soft.served);
+  EXPECT_EQ(soft.note.rfind("no curves over the pressures 1e+05 to 3e+07 Pa", 0), 0u) << soft.note;
+  EXPECT_TRUE(soft.at_pressures.empty());
+  EXPECT_GT(soft.plasticity_index, 1);
+  EXPECT_GT(soft.gw_plasticity_index, 1);
+}
