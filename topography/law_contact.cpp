@@ -77,9 +77,10 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   out.separation_max = s_hi;
   SceneLaw law = make(surface, s_lo, s_hi);  // the material's errors, before any work
   out.law = contact_law_name(law.law.kind);
-  out.critical_interference = law.law.critical_interference;
   out.valid_up_to = law.law.valid_up_to;
   out.plasticity_index = plasticity_index(law.law, out.summit_height_sd);
+  // omega_c of first yield only (an adhesive law's critical_interference is its length scale)
+  if (std::isfinite(out.plasticity_index)) out.critical_interference = law.law.critical_interference;
   if (law.law.hardness > 0) out.hardness = law.law.hardness;
   out.gw_plasticity_index =
       greenwood_williamson_plasticity_index(out.contact_modulus, out.hardness, out.summit_height_sd, out.summit_radius);

@@ -47,7 +47,7 @@ struct LawContact {
   double summit_radius = 0;        // R [m]
   double contact_modulus = 0;      // E* [Pa]
   double hardness = 0.0 / 0.0;     // H of GW's psi [Pa]; NaN: the law has none (JG, Hertz)
-  double critical_interference = 0.0 / 0.0;  // the law's omega_c at R [m]; NaN: none (Hertz)
+  double critical_interference = 0.0 / 0.0;  // the law's omega_c of first yield at R [m]; NaN: none (Hertz)
   double plasticity_index = 0.0 / 0.0;       // (sigma_s / omega_c)^1/2
   double gw_plasticity_index = 0.0 / 0.0;    // (E*/H)(sigma_s/R)^1/2
   double valid_up_to = 0;          // the largest interference the law's source supports [m] (inf: every one)
