@@ -76,6 +76,7 @@ from ._asperity import (  # noqa: F401
     gw_area_fraction_limit,
     height_scale_from_rms,
     implausible_values,
+    law_curves,
     nominal_pressure_from_load,
     order_of,
     origin_from_standardized,
@@ -85,6 +86,7 @@ from ._asperity import (  # noqa: F401
     separation_at_load,
     serve_scene,
     standardized_from_origin,
+    tabulate_law_scene,
     tabulated_pressure_overclosure_card,
     weibull_log_density,
     weibull_mean,
@@ -106,9 +108,9 @@ __all__ = [
     "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",
     "batch", "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",
-    "gaussian_surface_from_moments", "gw_area_fraction_limit", "height_scale_from_rms", "nominal_pressure_from_load", "order_of", "origin_from_standardized",
+    "gaussian_surface_from_moments", "gw_area_fraction_limit", "height_scale_from_rms", "law_curves", "nominal_pressure_from_load", "order_of", "origin_from_standardized",
     "parse_scene", "plot", "quantity_twice_order", "read_scene_file", "separation_at_load", "serve_scene",
-    "standardized_from_origin", "tabulated_pressure_overclosure_card", "topography", "weibull_log_density", "weibull_mean", "weibull_moment",
+    "standardized_from_origin", "tabulate_law_scene", "tabulated_pressure_overclosure_card", "topography", "weibull_log_density", "weibull_mean", "weibull_moment",
     "weibull_rms",
 ]
 

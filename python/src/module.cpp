@@ -754,6 +754,16 @@ void bind(py::module_& m) {
       .def_static("open", [](const PathName& path) { return ContactCurves::open(to_path(path.object)); }, "path"_a,
                   "The same as ContactCurves(path).")
       .def(
+          "write",
+          [](const ContactCurves& curves, const PathName& path) {
+            const std::string file = to_path(path.object);
+            py::gil_scoped_release unlocked;
+            write_contact_curves_file(curves.data(), file);
+          },
+          "path"_a,
+          "Writes the curves as a contact-curves table (HDF5, with its integrity header): what ContactCurves(path),\n"
+          "asperity contact --table and the C API read back. Raises asperity.Error if it cannot be written.")
+      .def(
           "pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
             return map_scalar(x.object, "separation", [&](double v) { return curves.pressure(v); });
@@ -919,6 +929,7 @@ void bind(py::module_& m) {
 
   // ---- measured surfaces (asperity/topography/*.hpp): the submodule asperity.topography ----
   bind_topography(m, physical_state_type);
+  bind_law_curves(m);
 }
 
 }  // namespace asperity::python

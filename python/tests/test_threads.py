@@ -184,3 +184,22 @@ def test_two_threads_one_gil_releasing_method():
             field.notes = []
 
     assert hammer([both], threads=2) > 0
+
+
+def test_law_curves_from_many_threads():
+    # the generator runs without the GIL (python/src/law_curves.cpp): threads tabulating at once
+    # get the same nodes as one alone, and readers of the curves they made run meanwhile
+    keys = dict(contact_modulus=1.13e11, yield_strength=1e9, poisson=0.3, distribution="gaussian", height_scale=1e-6,
+                summit_radius=1e-4, summit_density=4e8, nominal_area=1e-4, separation=(0, 2), max_rel_error=1e-4)
+    alone = asperity.law_curves("kogut-etsion", **keys)
+    nodes = alone.nodes["pressure"]
+
+    def tabulate(rng, k):
+        made = asperity.law_curves("kogut-etsion", **keys)
+        assert np.array_equal(made.nodes["pressure"], nodes)
+
+    def read(rng, k):
+        u = rng.uniform(alone.min_separation, alone.max_separation)
+        assert alone.separation_at_pressure(alone.pressure(u)) == pytest.approx(u, rel=1e-9, abs=1e-18)
+
+    assert hammer([tabulate, read], threads=3) > 0
