@@ -32,7 +32,7 @@ set(runtime_public core table physics scene fe_export c_api)
 set(allowed_generator ${runtime_public} detail generator)
 set(allowed_topography ${runtime_public} detail generator topography)
 set(allowed_commands ${runtime_public} generator topography)
-set(allowed_python ${runtime_public} topography)
+set(allowed_python ${runtime_public} generator topography)
 set(allowed_white_box ${runtime_public} detail generator topography)
 
 # The private headers tests, benchmarks and fuzzers may use (their CMake targets say so too:
