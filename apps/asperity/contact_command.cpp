@@ -31,6 +31,7 @@ struct Options {
   std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum, datum;
   std::string law, law_range;  // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
   double hardness = not_given, yield_strength = not_given, law_poisson = not_given, law_tolerance = not_given;
+  double work_of_adhesion = not_given, maugis_parameter = not_given;
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
@@ -259,9 +260,11 @@ void check_curve_queries(const Options& options, const std::string& what) {
 int run_contact_law(const Options& options, const CLI::App& command) {
   if (!options.table.empty()) usage("--law tabulates the law's curves itself: give no --table");
   ContactLawKind kind;
-  if (!contact_law_kind_of(options.law.c_str(), kind))
-    usage("--law: '" + quote_text(options.law) +
-          "' is not hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or jackson-green");
+  if (!contact_law_kind_of(options.law.c_str(), kind)) {
+    std::string names;
+    for (ContactLawKind each : contact_law_kinds) names += std::string(names.empty() ? "" : ", ") + contact_law_name(each);
+    usage("--law: '" + quote_text(options.law) + "' is not one of " + names);
+  }
   if (options.law_range.empty()) throw CLI::RequiredError("--law-range (with --law)");
   const std::vector<std::string> range = split(options.law_range, ':');
   if (range.size() != 2) usage("--law-range wants SMIN:SMAX (dimensionless separations), got '" +
@@ -276,6 +279,8 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   if (given(options.hardness)) key("hardness", options.hardness);
   if (given(options.yield_strength)) key("yield_strength", options.yield_strength);
   if (given(options.law_poisson)) key("poisson", options.law_poisson);
+  if (given(options.work_of_adhesion)) key("work_of_adhesion", options.work_of_adhesion);
+  if (given(options.maugis_parameter)) key("maugis_parameter", options.maugis_parameter);
   scene += std::string("distribution = \"") + to_string(surface.distribution) + "\"\n";
   if (surface.distribution == Distribution::weibull) {
     key("shape", surface.shape);
@@ -332,6 +337,19 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                     approximately(data.safety_factor) + " x the largest measured at " +
                     std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
                     approximately(data.solver_tolerance) + ")");
+  if (curves.has_tension()) {
+    if (std::isnan(curves.pull_off_pressure()))
+      note(command, "adhesive curves (approach branch): the pull-off (greatest tension) is not inside their range; "
+                    "--pressure is served from " + number(curves.min_pressure()) + " to " +
+                        number(curves.max_pressure()) + " Pa");
+    else
+      note(command, "adhesive curves (approach branch): pull-off (greatest tension) " +
+                        number(curves.pull_off_pressure()) + " Pa at separation " +
+                        number(curves.pull_off_separation()) +
+                        " m; --pressure is served on the stable branch, up to that separation");
+    if (!options.export_format.empty())
+      usage("--export: adhesive curves carry tension, which a pressure-overclosure card cannot hold");
+  }
   if (!options.export_format.empty()) {
     CardFormat format = CardFormat::csv;
     CardUnits units = CardUnits::si;
@@ -414,8 +432,10 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
 int run_contact(const Options& options, const CLI::App& command) {
   if (!options.law.empty()) return run_contact_law(options, command);
   if (!options.law_range.empty() || given(options.hardness) || given(options.yield_strength) ||
-      given(options.law_poisson) || given(options.law_tolerance))
-    usage("--law-range, --hardness, --yield-strength, --law-poisson and --law-tolerance go with --law");
+      given(options.law_poisson) || given(options.law_tolerance) || given(options.work_of_adhesion) ||
+      given(options.maugis_parameter))
+    usage("--law-range, --hardness, --yield-strength, --law-poisson, --work-of-adhesion, --maugis-parameter and "
+          "--law-tolerance go with --law");
   // A table alone, no surface: it may be a measured surface's or a law scene's (its kind read only
   // then, so that a GW table is not read twice); with a surface, a contact-curves table is refused
   // on opening.
@@ -523,8 +543,8 @@ void add_contact_command(CLI::App& app) {
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
   add_text(*command, "--law", o.law,
-           "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or "
-           "jackson-green, tabulated now on the surface given (docs/contact-laws.md section 8); queries "
+           "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion, "
+           "jackson-green, dmt, jkr or maugis-dugdale (the approach branch), tabulated now on the surface given (docs/contact-laws.md section 8); queries "
            "--separation, --pressure, --sweep separation|pressure, --export")
       ->type_name("NAME")->group("Contact law");
   add_text(*command, "--law-range", o.law_range,
@@ -537,6 +557,12 @@ void add_contact_command(CLI::App& app) {
       ->type_name("PA")->group("Contact law");
   add_number(*command, "--law-poisson", o.law_poisson,
              "with --law chang-etsion-bogy, kogut-etsion or jackson-green: Poisson's ratio of the asperity")
+      ->type_name("X")->group("Contact law");
+  add_number(*command, "--work-of-adhesion", o.work_of_adhesion,
+             "with --law dmt, jkr or maugis-dugdale: work of adhesion [J/m^2] (the approach branch is tabulated)")
+      ->type_name("J/M2")->group("Contact law");
+  add_number(*command, "--maugis-parameter", o.maugis_parameter,
+             "with --law maugis-dugdale: Maugis' parameter lambda > 0 (0: DMT, infinity: JKR)")
       ->type_name("X")->group("Contact law");
   add_number(*command, "--law-tolerance", o.law_tolerance, "with --law: the curves' relative error (default 1e-6)")
       ->type_name("REL")->group("Contact law");
