@@ -364,7 +364,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
     // the stable branch: the first node to stable_end, where the net pressure falls
     const std::vector<double>& keys = impl.minus_net_pressures;
     if (!(-pressure >= keys.front() && -pressure <= keys.back())) return nan;
-    if (keys.size() == 1) return impl.nodes.front();
+    if (keys.size() == 1 || -pressure == keys.back()) return impl.stable_end;
     std::size_t k = static_cast<std::size_t>(std::upper_bound(keys.begin(), keys.end(), -pressure) - keys.begin());
     k = k == 0 ? 0 : std::min(k - 1, keys.size() - 2);
     if (-pressure == keys[k]) return k < impl.stable_nodes ? impl.nodes[k] : impl.stable_end;
