@@ -210,6 +210,17 @@ struct ContactCurves::Impl {
     double p, stiffness;
     net_at(stable_end, p, stiffness);
     minus_net_pressures.push_back(-p);
+    // The inverse needs the net pressure to fall along the branch: a table whose stored
+    // stiffnesses disagree with its pressures (never one the generator wrote) has its stable
+    // branch end at the last node before the net pressure stops falling, and no pull-off
+    for (std::size_t k = 1; k < minus_net_pressures.size(); ++k)
+      if (!(minus_net_pressures[k] > minus_net_pressures[k - 1])) {
+        stable_nodes = k - 1;
+        stable_end = nodes[k - 1];
+        minus_net_pressures.resize(k);
+        pull_off_separation = pull_off_pressure = nan;
+        break;
+      }
   }
 };
 
