@@ -156,14 +156,17 @@ struct ContactCurves::Impl {
     return std::min(std::max(p, data.tensile_pressure.back()), data.tensile_pressure.front());
   }
   // The served net pressure and stiffness in interval i at t (the compressive part alone without tension).
-  void net(const Interval& i, double t, double& pressure, double& stiffness) const noexcept {
+  // `gross`: the parts' sum, the scale of the net's rounding.
+  void net(const Interval& i, double t, double& pressure, double& stiffness, double* gross = nullptr) const noexcept {
     const double p = std::exp(hermite(t, i.y0, i.y1, i.m0, i.m1));
     pressure = clamped(p);
     stiffness = -p * hermite_slope(t, i.y0, i.y1, i.m0, i.m1) * i.inverse_h;
+    if (gross) *gross = pressure;
     if (!tension) return;
     const double q = std::exp(hermite(t, i.z0, i.z1, i.n0, i.n1));
     pressure -= clamped_tension(q);
     stiffness += q * hermite_slope(t, i.z0, i.z1, i.n0, i.n1) * i.inverse_h;
+    if (gross) *gross += clamped_tension(q);
   }
   void net_at(double u, double& pressure, double& stiffness) const noexcept {
     double t;
@@ -210,11 +213,11 @@ struct ContactCurves::Impl {
     double p, stiffness;
     net_at(stable_end, p, stiffness);
     minus_net_pressures.push_back(-p);
-    // The inverse needs the net pressure to fall along the branch: a table whose stored
+    // The inverse needs the net pressure not to rise along the branch: a table whose stored
     // stiffnesses disagree with its pressures (never one the generator wrote) has its stable
     // branch end at the last node before the net pressure stops falling, and no pull-off
     for (std::size_t k = 1; k < minus_net_pressures.size(); ++k)
-      if (!(minus_net_pressures[k] > minus_net_pressures[k - 1])) {
+      if (!(minus_net_pressures[k] >= minus_net_pressures[k - 1])) {
         stable_nodes = k - 1;
         stable_end = nodes[k - 1];
         minus_net_pressures.resize(k);
@@ -349,23 +352,34 @@ ContactCurvesState ContactCurves::at_separation(double separation) const noexcep
 }
 
 namespace {
-// The separation in [lo, hi] where the served net pressure is `pressure` (it falls from lo to hi
-// on the stable branch): Newton on u, kept inside the bracket by bisection
-double solve_net(const ContactCurves::Impl& impl, double pressure, double lo, double hi) noexcept {
-  double u = 0.5 * (lo + hi);
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    double p, k;
-    impl.net_at(u, p, k);
-    const double f = p - pressure;  // falls with u
-    if (f > 0) lo = u;
-    else if (f < 0) hi = u;
-    else return u;
-    double next = k > 0 ? u + f / k : 0.5 * (lo + hi);
+// The separation in [lo, hi] (inside interval `index`) where the served net pressure is
+// `pressure`; it falls from `p_lo` at lo to `p_hi` at hi on the stable branch. Newton in the
+// interval's t from the secant's guess, kept inside the bracket by bisection.
+double solve_net(const ContactCurves::Impl& impl, std::size_t index, double pressure, double lo_u, double hi_u,
+                 double p_lo, double p_hi) noexcept {
+  const Interval& i = impl.intervals[index];
+  double lo = std::max(0.0, (lo_u - i.u0) * i.inverse_h), hi = std::min(1.0, (hi_u - i.u0) * i.inverse_h);
+  double t = p_lo > p_hi ? lo + (hi - lo) * (p_lo - pressure) / (p_lo - p_hi) : 0.5 * (lo + hi);
+  if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    double p, k, gross;
+    impl.net(i, t, p, k, &gross);
+    const double f = p - pressure;  // falls with t
+    // within rounding of the parts (the net is their difference: its own digits end there)
+    if (std::fabs(f) <= 4e-16 * gross) break;
+    if (f > 0) lo = t;
+    else if (f < 0) hi = t;
+    else break;
+    // dp/dt = -k h
+    double next = k > 0 ? t + f * i.inverse_h / k : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - u) <= 4e-16 * std::fabs(u) + 1e-300 || !(hi > lo)) return next;
-    u = next;
+    if (std::fabs(next - t) <= 1e-16 || hi - lo <= 1e-16) {
+      t = next;
+      break;
+    }
+    t = next;
   }
-  return u;
+  return std::min(std::max(i.u0 + t / i.inverse_h, lo_u), hi_u);
 }
 }  // namespace
 
@@ -380,7 +394,7 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
     k = k == 0 ? 0 : std::min(k - 1, keys.size() - 2);
     if (-pressure == keys[k]) return k < impl.stable_nodes ? impl.nodes[k] : impl.stable_end;
     const double lo = impl.nodes[k], hi = k + 1 < impl.stable_nodes ? impl.nodes[k + 1] : impl.stable_end;
-    return solve_net(impl, pressure, lo, hi);
+    return solve_net(impl, k, pressure, lo, hi, -keys[k], -keys[k + 1]);
   }
   if (!(pressure >= impl.data.pressure.back() && pressure <= impl.data.pressure.front())) return nan;
   const double y = std::log(pressure);
