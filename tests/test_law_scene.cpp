@@ -236,8 +236,8 @@ TEST(LawScene, TheInverseServesTheLoadsSeparation) {
 namespace adhesive {
 
 // Summits whose adhesion matters: sigma_s against JKR's separation length
-// delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 = 1.7e-9 m (dgamma = 0.5 J/m^2): Fuller-Tabor's
-// Delta_c = sigma / delta_c about 1.2 (Gaussian), where the pull-off is a tenth of the smooth one
+// delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 = 2.0e-9 m (dgamma = 0.5 J/m^2): Fuller-Tabor's
+// Delta_c = sigma / delta_c = 0.99 (asperity contact --law jkr notes it): adhesion matters
 constexpr double dgamma = 0.5, small_sigma = 2e-9;
 
 SceneLaw adhesive_law(ContactLaw law, Distribution distribution, Side side, double shape, double lo, double hi,

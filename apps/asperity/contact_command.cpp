@@ -295,7 +295,15 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   const Scene parsed = parse_scene(scene, "asperity contact --law");
   if (!given_scale.empty()) note(command, given_scale);
   const SceneLaw& law = parsed.laws.front();
-  if (std::isfinite(law.law.critical_interference))
+  if (is_adhesive(kind)) {
+    // Fuller-Tabor's adhesion parameter: sigma_s over the approach at which one JKR asperity
+    // separates, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (docs/contact-laws.md section 5)
+    const double pi = 3.14159265358979323846, dgamma = law.law.work_of_adhesion, e = law.law.modulus;
+    const double delta_c = 0.75 * std::cbrt(pi * pi * dgamma * dgamma * law.law.radius / (e * e));
+    note(command, std::string(contact_law_name(kind)) + ": the approach (loading) branch; Maugis' length d_s = " +
+                      approximately(law.law.critical_interference) + " m, Fuller-Tabor's adhesion parameter " +
+                      "sigma_s / delta_c = " + approximately(surface.height_scale / delta_c));
+  } else if (std::isfinite(law.law.critical_interference))
     note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
                       " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
                       approximately(plasticity_index(law.law, surface.height_scale)));
@@ -333,7 +341,8 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                     " to " + number(curves.max_separation()) + " m (" + approximately(curves.max_pressure()) + " to " +
                     approximately(curves.min_pressure()) + " Pa); stored error bound (relative): pressure " +
                     approximately(data.max_rel_error[0]) + ", stiffness " + approximately(data.max_rel_error[1]) +
-                    ", area fraction " + approximately(data.max_rel_error[2]) + " (" +
+                    ", area fraction " + approximately(data.max_rel_error[2]) +
+                    (curves.has_tension() ? " (pressure and stiffness relative to the gross, compressive + tensile; " : " (") +
                     approximately(data.safety_factor) + " x the largest measured at " +
                     std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
                     approximately(data.solver_tolerance) + ")");
