@@ -409,13 +409,17 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
       options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size))
     usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
           "with --export");
+  // a law's table counts the summits in contact (a measured surface's has no such column)
+  const bool counted = !data.summit_count.empty();
   std::printf("separation_m,separation_from_mean_summit_m,nominal_pressure_Pa,stiffness_per_area_Pa_per_m,"
-              "area_fraction\n");
+              "area_fraction%s\n", counted ? ",summits_in_contact_per_m2" : "");
   long outside = 0;
   const auto row = [&](const ContactCurvesState& state) {
     if (std::isnan(state.pressure)) ++outside;
-    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.separation - data.mean_summit_height,
+    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g", state.separation, state.separation - data.mean_summit_height,
                 state.pressure, state.stiffness, state.area_fraction);
+    if (counted) std::printf(",%.10g", curves.summit_count(state.separation));
+    std::printf("\n");
   };
   const auto at = [&](const std::string& kind, double value) {
     if (kind == "separation") return curves.at_separation(value);
