@@ -366,6 +366,53 @@ void BM_LawCurvesInversePressure(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_LawCurvesInversePressure);
+
+// An adhesive law's curves (tables/scenes/jkr.toml's: JKR on Gaussian summits, sigma_s = 2 nm,
+// s in [-1, 4], 1e-6): the net of two ln-cubic parts forward at random separations over the
+// range, and the inverse on the stable branch (up to the pull-off) at the pressures of random
+// separations there; compare with BM_LawCurvesForward / BM_LawCurvesInversePressure.
+const ContactCurves& adhesive_curves() {
+  static const ContactCurves curves = [] {
+    SceneLaw law;
+    law.law = jkr_law(1e-4, 1.13e11, 0.5);
+    law.distribution = Distribution::gaussian;
+    law.height_scale = 2e-9;
+    law.summit_radius = 1e-4;
+    law.summit_density = 4e8;
+    law.nominal_area = 1e-4;
+    law.range_min = -1;
+    law.range_max = 4;
+    law.max_rel_error = 1e-6;
+    return ContactCurves(generator::generate_law_curves(law).data);
+  }();
+  return curves;
+}
+// law_separations() (uniform in [0, 4 um]) mapped onto [from, to]
+std::vector<double> separations_over(double from, double to) {
+  std::vector<double> out;
+  for (double u : law_separations()) out.push_back(from + (to - from) * u / 4e-6);
+  return out;
+}
+void BM_LawCurvesAdhesiveForward(benchmark::State& state) {
+  const ContactCurves& curves = adhesive_curves();
+  static const std::vector<double> u = separations_over(curves.min_separation(), curves.max_separation());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_separation(u[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LawCurvesAdhesiveForward);
+void BM_LawCurvesAdhesiveInversePressure(benchmark::State& state) {
+  const ContactCurves& curves = adhesive_curves();
+  static const std::vector<double> pressures = [&] {
+    std::vector<double> out;
+    for (double u : separations_over(curves.min_separation(), curves.stable_branch_end())) out.push_back(curves.pressure(u));
+    return out;
+  }();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(curves.at_pressure(pressures[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LawCurvesAdhesiveInversePressure);
 #endif
 
 // ---- contact curves against separation (a measured surface as a table) ----

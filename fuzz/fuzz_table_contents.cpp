@@ -28,12 +28,15 @@
 namespace {
 
 bool contact_curves = false;  // the kind of the input being crafted
+bool adhesive = false;        // contact curves with a tensile part and a summit count
 
 const std::vector<unsigned char>& base_file() {
   static const std::vector<unsigned char> bytes = asperity::table_file_bytes(asperity::fuzz::tiny_table());
   static const std::vector<unsigned char> curves =
       asperity::contact_curves_file_bytes(asperity::fuzz::tiny_contact_curves());
-  return contact_curves ? curves : bytes;
+  static const std::vector<unsigned char> adhesive_curves =
+      asperity::contact_curves_file_bytes(asperity::fuzz::tiny_adhesive_contact_curves());
+  return contact_curves ? (adhesive ? adhesive_curves : curves) : bytes;
 }
 
 const char* const integral_groups[] = {"/", "weibull_tail", "weibull_bounded", "gaussian_tail"};
@@ -46,7 +49,10 @@ const char* const curves_attributes[] = {"schema", "schema_version", "generator"
                                          "source", "description", "separation_datum", "definition"};
 const char* const curves_datasets[] = {"separation", "pressure", "stiffness", "area_fraction", "max_rel_error",
                                        "measured_rel_error", "check_points", "safety_factor", "solver_tolerance",
-                                       "contact_modulus", "nominal_area", "mean_summit_height", "max_height"};
+                                       "contact_modulus", "nominal_area", "mean_summit_height", "max_height",
+                                       asperity::schema::set_tensile_pressure, asperity::schema::set_tensile_stiffness,
+                                       asperity::schema::set_summit_count,
+                                       asperity::schema::set_summit_count_max_rel_error};
 
 const char* pick_group(FuzzedDataProvider& input) {
   return contact_curves ? input.PickValueInArray(curves_groups) : input.PickValueInArray(integral_groups);
@@ -242,6 +248,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider input(data, size);
   contact_curves = input.ConsumeBool();
+  adhesive = contact_curves && input.ConsumeBool();
   const std::vector<unsigned char> bytes = craft(input);
   if (bytes.empty()) return 0;
   try {

@@ -79,9 +79,49 @@ inline ContactCurvesData tiny_contact_curves() {
   return data;
 }
 
+// The same with an adhesive law's parts (a tensile part crossing the compressive one inside the
+// range: a pull-off) and a summit count.
+inline ContactCurvesData tiny_adhesive_contact_curves() {
+  ContactCurvesData data = tiny_contact_curves();
+  data.source = "contact-law jkr";
+  data.tensile_pressure = {3e7, 2e7, 1.3e7, 9e6, 6e6};
+  data.tensile_stiffness = {1e14, 7e13, 4.5e13, 3e13, 2e13};
+  data.summit_count = {1e9, 5e8, 2e8, 1e8, 5e7};
+  data.summit_count_max_rel_error = 0.02;
+  return data;
+}
+
+// Adhesive curves: inside the range every value is finite, the pull-off (where stated) is the
+// least pressure the inverse serves, the inverse lands on the stable branch; outside, NaN.
+inline double exercise_adhesive(const ContactCurves& curves) {
+  double sum = 0;
+  const double low = curves.min_separation(), high = curves.max_separation(), end = curves.stable_branch_end();
+  if (!(end >= low && end <= high)) __builtin_trap();
+  if (!std::isnan(curves.pull_off_pressure()) && curves.pull_off_pressure() != curves.min_pressure()) __builtin_trap();
+  for (int i = 0; i <= 64; ++i) {
+    const double u = i == 64 ? high : low + (high - low) * i / 64;
+    const ContactCurvesState s = curves.at_separation(u);
+    const ContactCurvesState t = curves.tensile_part(u);
+    if (!(std::isfinite(s.pressure) && std::isfinite(s.stiffness) && s.area_fraction > 0 &&
+          s.area_fraction <= 1.0000000001 && t.pressure > 0 && std::isfinite(t.stiffness)))
+      __builtin_trap();
+    const double count = curves.summit_count(u);
+    if (!(std::isnan(count) || count > 0)) __builtin_trap();
+    const double p = curves.min_pressure() + (curves.max_pressure() - curves.min_pressure()) * i / 64;
+    const double back = curves.separation_at_pressure(p);
+    if (!(back >= low && back <= end)) __builtin_trap();
+    sum += s.pressure + s.stiffness + s.area_fraction + back + t.pressure;
+  }
+  if (!std::isnan(curves.pressure(high + (high - low))) || !std::isnan(curves.pressure(NAN)) ||
+      !std::isnan(curves.summit_count(NAN)))
+    __builtin_trap();
+  return sum;
+}
+
 // Queries contact curves that loaded: inside the range every value is finite and in its
 // bounds, the pressure falls, the inverse lands inside; outside, NaN. A broken promise traps.
 inline double exercise(const ContactCurves& curves) {
+  if (curves.has_tension()) return exercise_adhesive(curves);
   double sum = 0, last = INFINITY;
   const double low = curves.min_separation(), high = curves.max_separation();
   for (int i = 0; i <= 64; ++i) {

@@ -122,19 +122,45 @@ LawMeans law_means(const SceneLaw& scene, double s) {
     }
     return total;
   };
-  out.count = integrate([](double) { return 1.0; });
+  // the fraction in contact in closed form (the quadrature's rounding could make it rise where
+  // it is 1 to rounding): Gaussian z >= s; Weibull tail z >= max(s, 0); bounded z <= -s
+  if (!weibull) out.count = 0.5 * std::erfc(s / std::sqrt(2.0));
+  else if (tail) out.count = std::exp(-std::pow(std::max(s, 0.0), scene.shape));
+  else out.count = -std::expm1(-std::pow(-s, scene.shape));
   out.area = integrate([&](double omega) { return asperity_response(law, omega).area; });
-  out.load = integrate([&](double omega) { return asperity_response(law, omega).load; });
-  out.stiffness = integrate([&](double omega) { return asperity_response(law, omega).stiffness; });
+  const bool adhesive = is_adhesive(law.kind);
+  double compressive = 0, compressive_stiffness = 0;
+  if (adhesive) {
+    compressive = integrate([&](double omega) { return asperity_load_split(law, omega).compressive; });
+    out.tensile_load = integrate([&](double omega) { return asperity_load_split(law, omega).tensile; });
+    compressive_stiffness = integrate([&](double omega) { return asperity_load_split(law, omega).compressive_stiffness; });
+    out.tensile_stiffness = integrate([&](double omega) { return asperity_load_split(law, omega).tensile_stiffness; });
+  } else {
+    compressive = integrate([&](double omega) { return asperity_response(law, omega).load; });
+    compressive_stiffness = integrate([&](double omega) { return asperity_response(law, omega).stiffness; });
+  }
   // where the load jumps at a switch point, the jump moves with s (docs/contact-laws.md section 8)
   const double inf = std::numeric_limits<double>::infinity();
   for (int k = 0; k < points.count; ++k) {
     const double omega = points.interference[k], z = z_of(omega);
     if (!(z > lo && z < hi)) continue;
-    const double jump = asperity_response(law, std::nextafter(omega, inf)).load -
-                        asperity_response(law, std::nextafter(omega, -inf)).load;
-    out.stiffness += jump * density(scene, z) / sigma;
+    const AsperityLoadSplit above = asperity_load_split(law, std::nextafter(omega, inf));
+    const AsperityLoadSplit below = asperity_load_split(law, std::nextafter(omega, -inf));
+    compressive_stiffness += (above.compressive - below.compressive) * density(scene, z) / sigma;
+    out.tensile_stiffness += (above.tensile - below.tensile) * density(scene, z) / sigma;
   }
+  // first contact (omega = 0) moves with s too: an adhesive law's load jumps there from 0 (on
+  // approach an asperity touches at omega = 0 and takes its stable branch's load)
+  if (adhesive) {
+    const double z = z_of(0.0);
+    if (z >= lo && z <= hi) {
+      const AsperityLoadSplit first = asperity_load_split(law, 0.0);
+      compressive_stiffness += first.compressive * density(scene, z) / sigma;
+      out.tensile_stiffness += first.tensile * density(scene, z) / sigma;
+    }
+  }
+  out.load = compressive - out.tensile_load;
+  out.stiffness = compressive_stiffness - out.tensile_stiffness;
   return out;
 }
 
@@ -179,14 +205,25 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
       text << ", H = " << l.hardness << " Pa";
     if (l.kind == ContactLawKind::kogut_etsion || l.kind == ContactLawKind::jackson_green)
       text << ", Y = " << l.yield_strength << " Pa";
-    if (l.kind != ContactLawKind::hertz && l.kind != ContactLawKind::zhao_maietta_chang) text << ", nu = " << l.poisson;
+    if (l.kind != ContactLawKind::hertz && l.kind != ContactLawKind::zhao_maietta_chang && !is_adhesive(l.kind))
+      text << ", nu = " << l.poisson;
     if (l.kind == ContactLawKind::zhao_maietta_chang) text << ", K = " << l.pressure_factor;
-    if (l.kind != ContactLawKind::hertz) text << ", omega_c = " << l.critical_interference << " m";
+    if (is_adhesive(l.kind)) {
+      text << ", work of adhesion = " << l.work_of_adhesion << " J/m^2";
+      if (l.kind == ContactLawKind::maugis_dugdale) text << ", Maugis parameter lambda = " << l.maugis_parameter;
+      text << ", length scale d_s = " << l.critical_interference << " m";
+    } else if (l.kind != ContactLawKind::hertz) {
+      text << ", omega_c = " << l.critical_interference << " m";
+    }
     text << "; summits " << to_string(law.distribution);
     if (law.distribution == Distribution::weibull) text << " a = " << law.shape << " " << to_string(law.side) << " side";
     text << ", sigma_s = " << sigma << " m, R = " << law.summit_radius << " m, density = " << eta
          << " /m^2, A0 = " << law.nominal_area << " m^2; separations s in [" << law.range_min << ", "
          << law.range_max << "] (dimensionless)";
+    if (is_adhesive(l.kind))
+      text << "; the approach (loading) branch: a summit touches at omega = 0 and follows its law's stable branch "
+              "(pressure = compressive - tensile part, negative: tension; the stored pressure and stiffness bounds "
+              "are relative to the gross, compressive + tensile)";
     if (!law.name.empty()) text << "; scene law '" << law.name << "'";
     data.description = text.str();
   }
@@ -205,30 +242,41 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     if (law.side == Side::bounded) data.max_height = 0;
   }
 
+  const bool adhesive = is_adhesive(law.law.kind);
   auto fill = [&]() {
     data.separation.clear();
     data.pressure.clear();
     data.stiffness.clear();
     data.area_fraction.clear();
+    data.tensile_pressure.clear();
+    data.tensile_stiffness.clear();
+    data.summit_count.clear();
     for (double s : nodes) {
       const LawMeans& m = at(s);
-      const double pressure = eta * m.load, area_fraction = eta * m.area;
+      // adhesive laws: `pressure` and `stiffness` hold the compressive parts, the tensile ones their own
+      const double pressure = eta * (m.load + m.tensile_load), area_fraction = eta * m.area;
       if (!(area_fraction <= 1)) {
         std::ostringstream message;
         message << name << ": the real area fraction reaches " << area_fraction << " at s = " << s
                 << ": beyond 1 Greenwood-Williamson does not hold; raise the separation range's lower end";
         throw Error(message.str());
       }
-      if (!(pressure >= schema::min_contact_value)) {
+      if (!(pressure >= schema::min_contact_value) || (adhesive && !(eta * m.tensile_load >= schema::min_contact_value))) {
         std::ostringstream message;
-        message << name << ": the pressure falls to " << pressure << " Pa at s = " << s
+        message << name << ": the pressure" << (adhesive ? " (or its tensile part)" : "") << " falls to " << pressure
+                << " Pa at s = " << s
                 << ", below what a contact-curves table holds (1e-150 Pa); lower the separation range's upper end";
         throw Error(message.str());
       }
       data.separation.push_back(sigma * s);
       data.pressure.push_back(pressure);
-      data.stiffness.push_back(eta * m.stiffness);
+      data.stiffness.push_back(eta * (m.stiffness + m.tensile_stiffness));
       data.area_fraction.push_back(area_fraction);
+      if (adhesive) {
+        data.tensile_pressure.push_back(eta * m.tensile_load);
+        data.tensile_stiffness.push_back(eta * m.tensile_stiffness);
+      }
+      data.summit_count.push_back(eta * m.count);
     }
   };
 
@@ -237,7 +285,11 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     fill();
     const ContactCurves curves(data);
     std::vector<double> halves;
-    double worst[3] = {0, 0, 0};
+    // pressure, stiffness, area, count. With a tensile part (adhesion) the served net pressure
+    // and stiffness and each part are measured relative to the gross (compressive + tensile):
+    // relative to the net, meaningless where it crosses 0; relative to a part, unreachable where
+    // that part is a rounding of the other (DMT's tension where every summit touches already)
+    double worst[4] = {0, 0, 0, 0};
     checks = 0;
     for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
       const double h = nodes[i + 1] - nodes[i];
@@ -245,13 +297,41 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
       for (double fraction : check_fractions) {
         const double s = nodes[i] + fraction * h;
         const LawMeans& m = at(s);
-        const ContactCurvesState served = curves.at_separation(sigma * s);
-        const double truth[3] = {eta * m.load, eta * m.stiffness, eta * m.area};
-        const double value[3] = {served.pressure, served.stiffness, served.area_fraction};
-        for (int k = 0; k < 3; ++k) {
-          const double error = std::fabs(value[k] - truth[k]) / std::fabs(truth[k]);
-          if (!(error <= 0.5 * tolerance)) split = true;
-          else worst[k] = std::max(worst[k], error);
+        const double u = sigma * s;
+        const ContactCurvesState served = curves.at_separation(u);
+        const double count = curves.summit_count(u);
+        // the compressive part as served: the net plus the tensile part
+        double served_tension = 0, served_tension_stiffness = 0;
+        if (adhesive) {
+          const ContactCurvesState part = curves.tensile_part(u);
+          served_tension = part.pressure;
+          served_tension_stiffness = part.stiffness;
+        }
+        struct Check {
+          int bound;
+          double value, truth, scale;
+        };
+        const double pc = eta * (m.load + m.tensile_load), pt = eta * m.tensile_load;
+        const double kc = eta * (m.stiffness + m.tensile_stiffness), kt = eta * m.tensile_stiffness;
+        const double gross_p = pc + pt, gross_k = std::fabs(kc) + std::fabs(kt);
+        const Check list[] = {
+            {0, served.pressure, pc - pt, gross_p},
+            {0, served.pressure + served_tension, pc, gross_p},
+            {0, served_tension, pt, gross_p},
+            {1, served.stiffness, kc - kt, gross_k},
+            {1, served.stiffness + served_tension_stiffness, kc, gross_k},
+            {1, served_tension_stiffness, kt, gross_k},
+            {2, served.area_fraction, eta * m.area, eta * m.area},
+            {3, count, eta * m.count, eta * m.count},
+        };
+        for (const Check& c : list) {
+          const double error = std::fabs(c.value - c.truth) / c.scale;
+          // the count is measured and its bound stored, but does not place nodes: ln count has an
+          // infinite slope at first contact on a Weibull density with a < 1 (-s^a), where the
+          // pressure, stiffness and area are tabulable
+          if (c.bound == 3) worst[3] = std::max(worst[3], std::isnan(error) ? HUGE_VAL : error);
+          else if (!(error <= 0.5 * tolerance)) split = true;
+          else worst[c.bound] = std::max(worst[c.bound], error);
         }
         ++checks;
       }
@@ -273,6 +353,7 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
         data.measured_rel_error[k] = worst[k];
         data.max_rel_error[k] = worst[k] * safety_factor;
       }
+      data.summit_count_max_rel_error = worst[3] * safety_factor;
       data.check_points = checks;
       break;
     }

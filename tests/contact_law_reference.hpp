@@ -50,6 +50,23 @@ struct ContactHistory {
   double deepest_separation = 0;  // dimensionless s at the deepest approach (unloading only)
 };
 
+// Which part of the load (docs/contact-laws.md section 8): the net load, or its compressive
+// part, the Hertz-like term K a^3 / R of the contact radius a = (A/pi)^1/2 (K = (4/3) E*; for
+// Maugis-Dugdale A is the repulsive disc), and the tensile part, compressive - net. For a law
+// without adhesion the compressive part is the load. Made here from the law's area and load
+// alone, not from asperity_load_split (the split the generator uses).
+enum class LoadPart { net, compressive, tensile };
+
+inline double law_load_part(const ContactLaw& law, double omega, LoadPart part) {
+  const AsperityResponse response = asperity_response(law, omega);
+  if (part == LoadPart::net) return response.load;
+  const bool adhesive = law.kind == ContactLawKind::dmt || law.kind == ContactLawKind::jkr ||
+                        law.kind == ContactLawKind::maugis_dugdale;
+  const double a = std::sqrt(response.area / M_PI);
+  const double compressive = adhesive ? (4.0 / 3.0) * law.modulus * a * a * a / law.radius : response.load;
+  return part == LoadPart::compressive ? compressive : compressive - response.load;
+}
+
 // d phi / dz
 inline double summit_density_slope(const SummitHeights& h, double z) {
   if (h.distribution == Distribution::gaussian) return -z * std::exp(-0.5 * z * z) / std::sqrt(2 * M_PI);
@@ -95,8 +112,11 @@ double integrate_piece(const F& f, double w_a, double z_a, double w_b, double z_
 
 // The per-summit mean values at separation s for `law` over `heights` (see the top of the file).
 // `load_only`: the load alone (the others 0), for searches over many separations.
+// `part`: the load and stiffness of that part of the load (compressive or tensile: the stiffness
+// by parts, for Gaussian summits and Weibull shapes > 1 only, else NaN).
 inline RoughSurfaceValues law_integrals(const ContactLaw& law, const SummitHeights& heights, double s,
-                                        ContactHistory history = {}, bool load_only = false) {
+                                        ContactHistory history = {}, bool load_only = false,
+                                        LoadPart part = LoadPart::net) {
   const double sigma = heights.scale, inf = std::numeric_limits<double>::infinity();
   const bool tail = heights.side == Side::tail;
   const double orientation = tail ? 1 : -1;
@@ -165,7 +185,7 @@ inline RoughSurfaceValues law_integrals(const ContactLaw& law, const SummitHeigh
     }
     return total;
   };
-  out.load = integrate([&](double w) { return asperity_response(law, sigma * w).load; });
+  out.load = integrate([&](double w) { return law_load_part(law, sigma * w, part); });
   if (load_only) return out;
   out.count = integrate([](double) { return 1.0; });
   out.area = integrate([&](double w) { return asperity_response(law, sigma * w).area; });
@@ -174,6 +194,14 @@ inline RoughSurfaceValues law_integrals(const ContactLaw& law, const SummitHeigh
   // K = -(dz/ds / sigma) int P(sigma w) phi'(z) dw, the law's edge fixed in w (no jump terms)
   const bool singular_edge = law_edge && (law.kind == ContactLawKind::jkr || law.kind == ContactLawKind::maugis_dugdale) &&
                              (heights.distribution == Distribution::gaussian || heights.shape > 1);
+  if (part != LoadPart::net) {
+    // by parts: the edges fixed in w (first contact on approach) or where the density is 0
+    const bool by_parts_exact = heights.distribution == Distribution::gaussian || heights.shape > 1;
+    out.stiffness = by_parts_exact ? -orientation / sigma * integrate([&](double w) {
+      return law_load_part(law, sigma * w, part);
+    }, true) : std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
   if (singular_edge) {
     out.stiffness = -orientation / sigma * integrate([&](double w) { return asperity_response(law, sigma * w).load; }, true);
     return out;

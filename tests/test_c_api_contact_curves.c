@@ -1,7 +1,9 @@
 /* The C API's contact curves from C (C99): a measured surface's table (made by the fixture
  * cli_exact_table: asperity exact-contact --table) opened, queried, inverted, its card written;
- * the statuses of bad handles, NaN, out-of-range queries and the other kind of table.
- *   test_c_api_contact_curves CONTACT_CURVES_TABLE */
+ * the statuses of bad handles, NaN, out-of-range queries and the other kind of table; an
+ * adhesive law's table (cli_adhesive_scene_generate: JKR): signed pressure, the pull-off, the
+ * summit count, the card refused.
+ *   test_c_api_contact_curves CONTACT_CURVES_TABLE ADHESIVE_TABLE */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,8 +28,8 @@ int main(int argc, char **argv) {
   int i, status;
   size_t length = 0;
   char *card;
-  if (argc != 2) {
-    fprintf(stderr, "usage: test_c_api_contact_curves TABLE\n");
+  if (argc != 3) {
+    fprintf(stderr, "usage: test_c_api_contact_curves TABLE ADHESIVE_TABLE\n");
     return 2;
   }
   status = asperity_contact_curves_load(argv[1], &curves, err, sizeof err);
@@ -72,6 +74,11 @@ int main(int argc, char **argv) {
   CHECK(asperity_contact_curves_get_info(NULL, &info) == ASPERITY_BAD_HANDLE);
   CHECK(isnan(asperity_contact_curves_pressure(NULL, 1e-7)));
   CHECK(isnan(asperity_contact_curves_separation(curves, -1)));
+  /* a measured surface's table: no tension, no count */
+  CHECK(asperity_contact_curves_has_tension(curves) == 0 && asperity_contact_curves_has_tension(NULL) == 0);
+  CHECK(isnan(asperity_contact_curves_pull_off_pressure(curves)) && isnan(asperity_contact_curves_pull_off_separation(curves)));
+  CHECK(isnan(asperity_contact_curves_summit_count(curves, 0.5 * (info.min_separation + info.max_separation))));
+  CHECK(isnan(asperity_contact_curves_summit_count(NULL, 1e-7)) && isnan(asperity_contact_curves_pull_off_pressure(NULL)));
 
   /* the card: its size first, then into a buffer */
   status = asperity_contact_curves_pressure_overclosure_card(curves, info.min_pressure, info.max_pressure, 1e-3,
@@ -91,6 +98,30 @@ int main(int argc, char **argv) {
                                                           sizeof err) == ASPERITY_BAD_NAME);
   asperity_contact_curves_close(curves);
   asperity_contact_curves_close(NULL);
+
+  /* an adhesive law's table: tension, the pull-off, the inverse on the stable branch, the count */
+  status = asperity_contact_curves_load(argv[2], &curves, err, sizeof err);
+  CHECK(status == ASPERITY_OK);
+  if (status == ASPERITY_OK) {
+    double pull_p = asperity_contact_curves_pull_off_pressure(curves);
+    double pull_u = asperity_contact_curves_pull_off_separation(curves);
+    CHECK(asperity_contact_curves_has_tension(curves) == 1);
+    CHECK(asperity_contact_curves_get_info(curves, &info) == ASPERITY_OK);
+    CHECK(pull_p < 0 && info.min_pressure == pull_p && pull_u > info.min_separation && pull_u < info.max_separation);
+    CHECK(asperity_contact_curves_stiffness(curves, pull_u) == asperity_contact_curves_stiffness(curves, pull_u));
+    CHECK(fabs(asperity_contact_curves_pressure(curves, pull_u) - pull_p) <= 1e-12 * fabs(pull_p));
+    CHECK(asperity_contact_curves_pressure(curves, info.max_separation) < 0);
+    CHECK(fabs(asperity_contact_curves_separation(curves, pull_p / 2) - pull_u) > 0 &&
+          asperity_contact_curves_separation(curves, pull_p / 2) < pull_u);
+    CHECK(isnan(asperity_contact_curves_separation(curves, 1.01 * pull_p)));
+    CHECK(asperity_contact_curves_summit_count(curves, info.min_separation) >
+          asperity_contact_curves_summit_count(curves, info.max_separation));
+    CHECK(asperity_contact_curves_summit_count(curves, info.max_separation) > 0);
+    status = asperity_contact_curves_pressure_overclosure_card(curves, pull_p, info.max_pressure, 1e-3, "calculix",
+                                                               "si", NULL, NULL, 0, &length, err, sizeof err);
+    CHECK(status != ASPERITY_OK && strstr(err, "tension") != NULL);
+    asperity_contact_curves_close(curves);
+  }
 
   /* loading: missing, the other kind, NULL */
   CHECK(asperity_contact_curves_load("/nonexistent/curves.h5", &curves, err, sizeof err) == ASPERITY_FILE_MISSING);

@@ -57,6 +57,72 @@ double closed_form_pressure(double u, double power) {
   return 1e8 * std::exp(-u / 0.2e-6 - std::pow(u / 0.5e-6, power));
 }
 
+// Adhesive curves of closed form: p_c = 1e8 exp(-u/a), p_t = 3e7 exp(-u/b), a = 0.2 um, b = 0.4
+// um (ln of each linear: the Hermite interpolants are exact), the net stiffness 0 at
+// u* = ln(A b / (B a)) / (1/a - 1/b); a summit count 1e9 exp(-u/c)
+constexpr double adhesive_a = 0.2e-6, adhesive_b = 0.4e-6;
+ContactCurvesData adhesive_closed_form(int nodes) {
+  ContactCurvesData data = closed_form(nodes, 3, 0.1e-6, 2.1e-6);
+  for (int i = 0; i < nodes; ++i) {
+    const double u = data.separation[i], p = 1e8 * std::exp(-u / adhesive_a), q = 3e7 * std::exp(-u / adhesive_b);
+    data.pressure[i] = p;
+    data.stiffness[i] = p / adhesive_a;
+    data.tensile_pressure.push_back(q);
+    data.tensile_stiffness.push_back(q / adhesive_b);
+    data.summit_count.push_back(1e9 * std::exp(-u / 0.3e-6));
+  }
+  data.summit_count_max_rel_error = 1e-9;
+  return data;
+}
+double adhesive_net(double u) { return 1e8 * std::exp(-u / adhesive_a) - 3e7 * std::exp(-u / adhesive_b); }
+
+TEST(ContactCurvesInterpolant, AdhesiveCurvesServeTheNetAndThePullOff) {
+  const ContactCurves curves(adhesive_closed_form(41));
+  ASSERT_TRUE(curves.has_tension());
+  const double pull_off = std::log(1e8 * adhesive_b / (3e7 * adhesive_a)) / (1 / adhesive_a - 1 / adhesive_b);
+  EXPECT_NEAR(curves.pull_off_separation() / pull_off, 1, 1e-9);
+  EXPECT_NEAR(curves.pull_off_pressure() / adhesive_net(pull_off), 1, 1e-12);
+  EXPECT_LT(curves.pull_off_pressure(), 0);
+  EXPECT_EQ(curves.stable_branch_end(), curves.pull_off_separation());
+  EXPECT_EQ(curves.min_pressure(), curves.pull_off_pressure());
+  EXPECT_NEAR(curves.max_pressure() / adhesive_net(curves.min_separation()), 1, 1e-13);
+  for (int i = 0; i <= 200; ++i) {
+    const double u = curves.min_separation() + (curves.max_separation() - curves.min_separation()) * i / 200;
+    const double gross = 1e8 * std::exp(-u / adhesive_a) + 3e7 * std::exp(-u / adhesive_b);
+    const double gross_k = 1e8 / adhesive_a * std::exp(-u / adhesive_a) + 3e7 / adhesive_b * std::exp(-u / adhesive_b);
+    const double net_k = 1e8 / adhesive_a * std::exp(-u / adhesive_a) - 3e7 / adhesive_b * std::exp(-u / adhesive_b);
+    EXPECT_NEAR(curves.pressure(u), adhesive_net(u), 1e-13 * gross) << u;
+    EXPECT_NEAR(curves.stiffness(u), net_k, 1e-12 * gross_k) << u;
+    EXPECT_NEAR(curves.at_separation(u).pressure, curves.pressure(u), 1e-15 * gross);
+    EXPECT_NEAR(curves.tensile_part(u).pressure, 3e7 * std::exp(-u / adhesive_b), 1e-13 * gross);
+    EXPECT_NEAR(curves.summit_count(u) / (1e9 * std::exp(-u / 0.3e-6)), 1, 1e-13);
+    // the inverse on the stable branch, NaN beyond it
+    const double back = curves.separation_at_pressure(curves.pressure(u));
+    if (u < 0.999 * pull_off) {
+      EXPECT_NEAR(back / u, 1, 1e-9) << u;
+    }
+  }
+  EXPECT_TRUE(std::isnan(curves.separation_at_pressure(curves.pull_off_pressure() * 1.0001)));
+  EXPECT_TRUE(std::isnan(curves.separation_at_pressure(curves.max_pressure() * 1.0001)));
+  EXPECT_EQ(curves.separation_at_pressure(curves.pull_off_pressure()), curves.pull_off_separation());
+  // without tension: the pull-off is NaN, the count NaN where not stored
+  const ContactCurves plain(closed_form(5, 3));
+  EXPECT_FALSE(plain.has_tension());
+  EXPECT_TRUE(std::isnan(plain.pull_off_pressure()));
+  EXPECT_TRUE(std::isnan(plain.pull_off_separation()));
+  EXPECT_TRUE(std::isnan(plain.summit_count(0.5e-6)));
+  EXPECT_EQ(plain.tensile_part(0.5e-6).pressure, 0);
+  // a range that ends before the pull-off: the whole range is the stable branch
+  ContactCurvesData short_range = adhesive_closed_form(41);
+  for (auto* v : {&short_range.separation, &short_range.pressure, &short_range.stiffness, &short_range.area_fraction,
+                  &short_range.tensile_pressure, &short_range.tensile_stiffness, &short_range.summit_count})
+    v->resize(5);
+  const ContactCurves early(short_range);
+  EXPECT_TRUE(std::isnan(early.pull_off_pressure()));
+  EXPECT_EQ(early.stable_branch_end(), early.max_separation());
+  EXPECT_EQ(early.min_pressure(), early.pressure(early.max_separation()));
+}
+
 TEST(ContactCurvesInterpolant, ReproducesACubicLogPressureExactly) {
   const ContactCurves curves(closed_form(5, 3));  // ln p a cubic: Hermite on exact slopes is exact
   EXPECT_EQ(curves.limited_intervals(), 0u);
@@ -184,6 +250,30 @@ TEST(ContactCurvesData, ValidateRefusesWhatTheSchemaForbids) {
   refused([](ContactCurvesData& d) { d.contact_modulus = 0; });
   refused([](ContactCurvesData& d) { d.source.clear(); });
   refused([](ContactCurvesData& d) { d.mean_summit_height = INFINITY; });
+  // the optional tensile part and summit count
+  const ContactCurvesData adhesive = adhesive_closed_form(5);
+  EXPECT_NO_THROW(adhesive.validate("good"));
+  const auto refused_adhesive = [&](auto change) {
+    ContactCurvesData data = adhesive;
+    change(data);
+    EXPECT_THROW(data.validate("bad"), Error);
+    EXPECT_THROW(ContactCurves{data}, Error);
+  };
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_stiffness.clear(); });
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_pressure.pop_back(); d.tensile_stiffness.pop_back(); });
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_pressure[2] = 0; });
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_pressure[2] = NAN; });
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_pressure[3] = 2 * d.tensile_pressure[2]; });
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_stiffness[1] = -1; });
+  refused_adhesive([](ContactCurvesData& d) { d.tensile_stiffness[1] = INFINITY; });
+  refused_adhesive([](ContactCurvesData& d) { d.summit_count.pop_back(); });
+  refused_adhesive([](ContactCurvesData& d) { d.summit_count[4] = 2 * d.summit_count[3]; });
+  refused_adhesive([](ContactCurvesData& d) { d.summit_count[0] = 0; });
+  refused_adhesive([](ContactCurvesData& d) { d.summit_count_max_rel_error = NAN; });
+  // flat tension (every summit in contact: DMT on a Weibull tail below its origin) is taken
+  ContactCurvesData flat = adhesive;
+  for (std::size_t i = 0; i < 3; ++i) flat.tensile_pressure[i] = flat.tensile_pressure[3], flat.tensile_stiffness[i] = 0;
+  EXPECT_NO_THROW(ContactCurves{flat});
 }
 
 // ---- a synthetic measured map, solved ----
@@ -325,6 +415,17 @@ TEST(ExactContactTable, FileRoundTrip) {
   bare.max_height = NAN;
   write_contact_curves_file(bare, path);
   EXPECT_TRUE(std::isnan(read_contact_curves_file(path).mean_summit_height));
+  EXPECT_FALSE(read_contact_curves_file(path).has_tension());
+  EXPECT_TRUE(read_contact_curves_file(path).summit_count.empty());
+  // with the tensile part and the summit count
+  const ContactCurvesData adhesive = adhesive_closed_form(9);
+  write_contact_curves_file(adhesive, path);
+  const ContactCurvesData back = read_contact_curves_file(path);
+  EXPECT_EQ(back.tensile_pressure, adhesive.tensile_pressure);
+  EXPECT_EQ(back.tensile_stiffness, adhesive.tensile_stiffness);
+  EXPECT_EQ(back.summit_count, adhesive.summit_count);
+  EXPECT_EQ(back.summit_count_max_rel_error, adhesive.summit_count_max_rel_error);
+  EXPECT_EQ(contact_curves_file_bytes(back), contact_curves_file_bytes(adhesive));
 }
 
 TEST(ExactContactTable, CardFromTheCurves) {

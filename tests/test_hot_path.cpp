@@ -97,7 +97,42 @@ TEST(HotPath, ContactCurvesQueriesDoNotAllocate) {
   for (double s : inputs) {
     const ContactCurvesState state = copy.at_separation(s);
     sum += curves.pressure(s) + curves.stiffness(s) + curves.area_fraction(s) + state.stiffness +
-           curves.separation_at_pressure(s * 1e14) + copy.at_pressure(s * 1e14).separation;
+           curves.separation_at_pressure(s * 1e14) + copy.at_pressure(s * 1e14).separation + curves.summit_count(s);
+  }
+  EXPECT_EQ(allocations.load() - before, 0);
+  EXPECT_TRUE(std::isnan(sum));
+}
+
+TEST(HotPath, AdhesiveContactCurvesQueriesDoNotAllocate) {
+  // an adhesive law's table's shape: compressive p_c = 1e8 exp(-u/2e-7), tensile p_t = 3e7
+  // exp(-u/4e-7) (net tension beyond u ~ 2.4e-7, the pull-off inside), a summit count
+  ContactCurvesData data;
+  data.source = "test";
+  for (int i = 0; i < 40; ++i) {
+    const double u = 1e-7 * (1 + i), p = 1e8 * std::exp(-u / 2e-7), q = 3e7 * std::exp(-u / 4e-7);
+    data.separation.push_back(u);
+    data.pressure.push_back(p);
+    data.stiffness.push_back(p / 2e-7);
+    data.tensile_pressure.push_back(q);
+    data.tensile_stiffness.push_back(q / 4e-7);
+    data.area_fraction.push_back(0.1 * std::exp(-u / 4e-7));
+    data.summit_count.push_back(1e9 * std::exp(-u / 3e-7));
+  }
+  data.contact_modulus = 1e11;
+  data.nominal_area = 1e-6;
+  const ContactCurves curves(data);
+  ASSERT_TRUE(curves.has_tension());
+  ASSERT_TRUE(curves.pull_off_pressure() < 0);
+  const ContactCurves copy = curves;
+  std::vector<double> inputs = separations();
+  for (double& s : inputs) s = 2e-6 + 2e-6 * std::tanh(s);  // in the range and out of it, NaN, +-inf
+  double sum = 0;
+  const long before = allocations.load();
+  for (double s : inputs) {
+    const ContactCurvesState state = copy.at_separation(s);
+    sum += curves.pressure(s) + curves.stiffness(s) + curves.area_fraction(s) + state.stiffness +
+           curves.summit_count(s) + curves.tensile_part(s).pressure + curves.separation_at_pressure(s * 1e13 - 1e7) +
+           copy.at_pressure(s * 1e13 - 1e7).separation + curves.pull_off_pressure() + curves.pull_off_separation();
   }
   EXPECT_EQ(allocations.load() - before, 0);
   EXPECT_TRUE(std::isnan(sum));

@@ -164,7 +164,28 @@ separation = [0.0, 4.0]
           "'hardness' does not apply to kogut-etsion");
   refused("[[law]]\nlaw = \"kogut-etsion\"\ncontact_modulus = 1.13e11\npoisson = 0.3\n" + surface,
           "has no 'yield_strength'");
-  refused("[[law]]\nlaw = \"dmt\"\ncontact_modulus = 1.13e11\n" + surface, "adhesive laws are not tabulated");
+  refused("[[law]]\nlaw = \"dmt\"\ncontact_modulus = 1.13e11\n" + surface, "has no 'work_of_adhesion'");
+  refused("[[law]]\nlaw = \"maugis-dugdale\"\ncontact_modulus = 1.13e11\nwork_of_adhesion = 0.5\n" + surface,
+          "has no 'maugis_parameter'");
+  refused("[[law]]\nlaw = \"maugis-dugdale\"\ncontact_modulus = 1.13e11\nwork_of_adhesion = 0.5\nmaugis_parameter = 0\n" +
+              surface,
+          "'maugis_parameter' must be positive");
+  refused("[[law]]\nlaw = \"jkr\"\ncontact_modulus = 1.13e11\nwork_of_adhesion = -1\n" + surface,
+          "'work_of_adhesion' must be positive");
+  refused("[[law]]\nlaw = \"jkr\"\ncontact_modulus = 1.13e11\nwork_of_adhesion = 0.5\nmaugis_parameter = 1\n" + surface,
+          "'maugis_parameter' does not apply to jkr");
+  refused("[[law]]\nlaw = \"dmt\"\ncontact_modulus = 1.13e11\nwork_of_adhesion = 0.5\npoisson = 0.3\n" + surface,
+          "'poisson' does not apply to dmt");
+  refused("[[law]]\nlaw = \"kogut-etsion\"\ncontact_modulus = 1.13e11\nyield_strength = 1e9\npoisson = 0.3\n"
+          "work_of_adhesion = 0.5\n" + surface,
+          "'work_of_adhesion' does not apply to kogut-etsion");
+  {
+    const Scene md = parse_scene("[[law]]\nlaw = \"maugis-dugdale\"\ncontact_modulus = 1.13e11\nwork_of_adhesion = 0.5\n"
+                                 "maugis_parameter = 1.5\n" + surface, "md.toml");
+    EXPECT_EQ(md.laws[0].law.kind, ContactLawKind::maugis_dugdale);
+    EXPECT_EQ(md.laws[0].law.maugis_parameter, 1.5);
+    EXPECT_EQ(md.laws[0].law.work_of_adhesion, 0.5);
+  }
   refused("[[law]]\nlaw = \"plastic\"\ncontact_modulus = 1.13e11\n" + surface, "unknown law");
   refused("[[law]]\nlaw = \"hertz\"\ncontact_modulus = -1\n" + surface, "must be positive");
   refused("[[law]]\nlaw = \"hertz\"\ncontact_modulus = 1e11\nmax_rel_error = 1e-12\n" + surface, "at least 1e-10");
@@ -207,6 +228,199 @@ TEST(LawScene, TheInverseServesTheLoadsSeparation) {
   for (double s : {-0.7, 0.3, 1.9, 3.6}) {
     const double pressure = density * test::law_integrals(law.law, heights, s).load;
     EXPECT_NEAR(curves.separation_at_pressure(pressure) / sigma, s, 1e-7) << s;
+  }
+}
+
+
+// ---- Adhesive laws: the approach branch, a compressive and a tensile part ----
+namespace adhesive {
+
+// Summits whose adhesion matters: sigma_s against JKR's separation length
+// delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 = 2.0e-9 m (dgamma = 0.5 J/m^2): Fuller-Tabor's
+// Delta_c = sigma / delta_c = 0.99 (asperity contact --law jkr notes it): adhesion matters
+constexpr double dgamma = 0.5, small_sigma = 2e-9;
+
+SceneLaw adhesive_law(ContactLaw law, Distribution distribution, Side side, double shape, double lo, double hi,
+                      double tolerance) {
+  SceneLaw out = scene_law(law, distribution, side, shape, lo, hi, tolerance);
+  out.height_scale = small_sigma;
+  return out;
+}
+
+// `slow`: the Maugis-Dugdale cases but lambda = 1 on Gaussian summits (each MD evaluation
+// solves for the Dugdale zone; the reference integrates three quantities: minutes)
+std::vector<Case> cases(bool slow) {
+  using D = Distribution;
+  using S = Side;
+  std::vector<Case> out;
+  const std::pair<const char*, ContactLaw> laws[] = {
+      {"dmt", dmt_law(radius, modulus, dgamma)},
+      {"jkr", jkr_law(radius, modulus, dgamma)},
+      {"maugis-dugdale 0.3", maugis_dugdale_law(radius, modulus, dgamma, 0.3)},
+      {"maugis-dugdale 1", maugis_dugdale_law(radius, modulus, dgamma, 1)},
+      {"maugis-dugdale 3", maugis_dugdale_law(radius, modulus, dgamma, 3)},
+  };
+  static std::vector<std::string> labels;
+  labels.clear();
+  labels.reserve(3 * std::size(laws));
+  for (const auto& [name, law] : laws) {
+    const bool md = law.kind == ContactLawKind::maugis_dugdale, fast_md = md && law.maugis_parameter == 1;
+    const bool take[3] = {!md || fast_md ? !slow : slow, md ? slow : !slow, md ? slow : !slow};
+    const SceneLaw on[3] = {adhesive_law(law, D::gaussian, S::tail, 2, -1.0, 4.0, 1e-6),
+                            adhesive_law(law, D::weibull, S::tail, 2, -0.5, 3.0, 1e-6),
+                            adhesive_law(law, D::weibull, S::bounded, 3, -3.0, -0.02, 1e-6)};
+    const char* where[3] = {" gaussian", " weibull tail 2", " weibull bounded 3"};
+    for (int k = 0; k < 3; ++k) {
+      if (!take[k]) continue;
+      labels.push_back(std::string(name) + where[k]);
+      out.push_back({labels.back().c_str(), on[k]});
+    }
+  }
+  return out;
+}
+
+struct Reference {
+  double compressive, tensile, compressive_stiffness, tensile_stiffness, count, area;
+  double net() const { return compressive - tensile; }
+  double net_stiffness() const { return compressive_stiffness - tensile_stiffness; }
+};
+
+Reference reference(const SceneLaw& law, double s) {
+  const test::SummitHeights heights{law.distribution, law.side, law.shape, law.height_scale};
+  const test::RoughSurfaceValues c = test::law_integrals(law.law, heights, s, {}, false, test::LoadPart::compressive);
+  const test::RoughSurfaceValues t = test::law_integrals(law.law, heights, s, {}, false, test::LoadPart::tensile);
+  const double eta = law.summit_density;
+  return {eta * c.load, eta * t.load, eta * c.stiffness, eta * t.stiffness, eta * c.count, eta * c.area};
+}
+
+// The reference's greatest tension on approach: a grid over the range, then golden section on
+// the net pressure (bracketed by the grid's neighbours of its least value)
+std::pair<double, double> reference_pull_off(const SceneLaw& law) {
+  const test::SummitHeights heights{law.distribution, law.side, law.shape, law.height_scale};
+  auto pressure = [&](double s) { return law.summit_density * test::law_integrals(law.law, heights, s, {}, true).load; };
+  const int steps = 200;
+  const double step = (law.range_max - law.range_min) / steps;
+  double best_s = law.range_min, best = pressure(best_s);
+  for (int i = 1; i <= steps; ++i) {
+    const double s = law.range_min + i * step, p = pressure(s);
+    if (p < best) best = p, best_s = s;
+  }
+  double a = std::max(law.range_min, best_s - step), b = std::min(law.range_max, best_s + step);
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 60; ++i) {
+    const double c = b - r * (b - a), d = a + r * (b - a);
+    if (pressure(c) < pressure(d)) b = d; else a = c;
+  }
+  const double s = 0.5 * (a + b);
+  return {s, pressure(s)};
+}
+
+}  // namespace adhesive
+
+// Every adhesive law's served curves against the reference: the net pressure and stiffness
+// within the asked tolerance relative to the gross (compressive + tensile) and within the stored
+// bound, each part within the stored bound (also relative to the gross); the area fraction as before; the
+// summit count within its stored bound; the pull-off against the reference's least pressure
+void check_adhesive_cases(bool slow) {
+  for (const Case& c : adhesive::cases(slow)) {
+    SCOPED_TRACE(c.label);
+    const generator::LawCurvesResult result = generator::generate_law_curves(c.law);
+    const ContactCurves curves(result.data);
+    ASSERT_TRUE(curves.has_tension());
+    const double sigma_s = c.law.height_scale;
+    const ContactCurvesData& data = result.data;
+    double worst[5] = {0, 0, 0, 0, 0};  // net p / gross, net k / gross, area, parts (p and k), count
+    std::vector<double> at = samples(c.law);
+    const double pull_off = curves.pull_off_separation() / sigma_s;
+    if (std::isfinite(pull_off))
+      for (double offset : {-1e-3, -1e-6, 0.0, 1e-6, 1e-3}) at.push_back(pull_off + offset);
+    for (double s : at) {
+      if (!(s >= c.law.range_min && s <= c.law.range_max)) continue;
+      const adhesive::Reference truth = adhesive::reference(c.law, s);
+      const double u = sigma_s * s;
+      const ContactCurvesState served = curves.at_separation(u);
+      const ContactCurvesState tension = curves.tensile_part(u);
+      const double gross_p = truth.compressive + truth.tensile;
+      const double gross_k = std::fabs(truth.compressive_stiffness) + std::fabs(truth.tensile_stiffness);
+      const double errors[3] = {std::fabs(served.pressure - truth.net()) / gross_p,
+                                std::fabs(served.stiffness - truth.net_stiffness()) / gross_k,
+                                std::fabs(served.area_fraction - truth.area) / truth.area};
+      for (int k = 0; k < 3; ++k) {
+        worst[k] = std::max(worst[k], errors[k]);
+        EXPECT_LE(errors[k], c.law.max_rel_error) << "quantity " << k << " at s = " << s;
+        EXPECT_LE(errors[k], data.max_rel_error[k] + 1e-12) << "quantity " << k << " at s = " << s
+                                                            << ": beyond the stored bound";
+      }
+      // each part within the stored bound of its quantity, relative to the gross
+      const double parts[4][4] = {
+          {served.pressure + tension.pressure, truth.compressive, data.max_rel_error[0], gross_p},
+          {tension.pressure, truth.tensile, data.max_rel_error[0], gross_p},
+          {served.stiffness + tension.stiffness, truth.compressive_stiffness, data.max_rel_error[1], gross_k},
+          {tension.stiffness, truth.tensile_stiffness, data.max_rel_error[1], gross_k}};
+      for (const auto& part : parts) {
+        const double error = std::fabs(part[0] - part[1]) / part[3];
+        worst[3] = std::max(worst[3], error);
+        EXPECT_LE(error, part[2] + 1e-12) << "a part at s = " << s << ": " << part[0] << " against " << part[1];
+      }
+      const double count_error = std::fabs(curves.summit_count(u) - truth.count) / truth.count;
+      worst[4] = std::max(worst[4], count_error);
+      EXPECT_LE(count_error, data.summit_count_max_rel_error + 1e-12) << "the count at s = " << s;
+    }
+    // the pull-off: the reference's least net pressure and where
+    const auto [s_ref, p_ref] = adhesive::reference_pull_off(c.law);
+    const bool inside = s_ref > c.law.range_min + 1e-3 && s_ref < c.law.range_max - 1e-3;
+    double pull_p = NAN, pull_s = NAN;
+    if (inside) {
+      ASSERT_TRUE(std::isfinite(curves.pull_off_separation())) << "the reference's pull-off at s = " << s_ref;
+      const adhesive::Reference there = adhesive::reference(c.law, s_ref);
+      pull_p = std::fabs(curves.pull_off_pressure() - p_ref) / (there.compressive + there.tensile);
+      EXPECT_LE(pull_p, data.max_rel_error[0] + 1e-12) << curves.pull_off_pressure() << " Pa against " << p_ref;
+      // where: within the stiffness's bound over the curvature of the net pressure (first order)
+      const double h = 1e-4;
+      const adhesive::Reference left = adhesive::reference(c.law, s_ref - h), right = adhesive::reference(c.law, s_ref + h);
+      const double curvature = std::fabs(right.net_stiffness() - left.net_stiffness()) / (2 * h * sigma_s);
+      const double gross_k = std::fabs(there.compressive_stiffness) + std::fabs(there.tensile_stiffness);
+      pull_s = std::fabs(curves.pull_off_separation() - sigma_s * s_ref);
+      EXPECT_LE(pull_s, 2 * data.max_rel_error[1] * gross_k / curvature + 1e-6 * sigma_s)
+          << "pull-off at s = " << curves.pull_off_separation() / sigma_s << " against " << s_ref;
+      pull_s /= sigma_s;
+      // the inverse serves the stable branch: up to the pull-off, NaN beyond its greatest tension
+      EXPECT_TRUE(std::isnan(curves.separation_at_pressure(1.001 * curves.pull_off_pressure())));
+      const double s_half = 0.5 * (c.law.range_min + s_ref);
+      const double p_half = adhesive::reference(c.law, s_half).net();
+      EXPECT_NEAR(curves.separation_at_pressure(p_half) / sigma_s, s_half, 1e-5) << p_half;
+    } else {
+      EXPECT_TRUE(std::isnan(curves.pull_off_separation()));
+    }
+    std::printf("%-34s nodes %4d  stored p %.2e k %.2e a %.2e n %.2e  against the reference p %.2e k %.2e a %.2e "
+                "parts %.2e n %.2e  pull-off s %.4f (p err %.1e, s err %.1e)\n",
+                c.label, result.nodes, data.max_rel_error[0], data.max_rel_error[1], data.max_rel_error[2],
+                data.summit_count_max_rel_error, worst[0], worst[1], worst[2], worst[3], worst[4], s_ref, pull_p,
+                pull_s);
+  }
+}
+
+TEST(LawScene, AdhesiveLawsCurvesAgainstTheIndependentReference) { check_adhesive_cases(false); }
+// The other Maugis-Dugdale cases (lambda = 0.3, 3 everywhere; 1 on Weibull summits): ctest's
+// test_law_scene_slow (label slow)
+TEST(LawScene, SlowAdhesiveMaugisDugdaleEverywhere) { check_adhesive_cases(true); }
+
+// The summit count of the elastic-plastic tables against the reference, within its stored bound
+TEST(LawScene, TheSummitCountAgainstTheReference) {
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.label);
+    const generator::LawCurvesResult result = generator::generate_law_curves(c.law);
+    const ContactCurves curves(result.data);
+    const test::SummitHeights heights{c.law.distribution, c.law.side, c.law.shape, sigma};
+    double worst = 0;
+    for (double s : samples(c.law)) {
+      const double truth = density * test::law_integrals(c.law.law, heights, s).count;
+      const double error = std::fabs(curves.summit_count(sigma * s) - truth) / truth;
+      worst = std::max(worst, error);
+      EXPECT_LE(error, result.data.summit_count_max_rel_error + 1e-12) << "at s = " << s;
+    }
+    std::printf("%-40s count: stored %.2e, against the reference %.2e\n", c.label,
+                result.data.summit_count_max_rel_error, worst);
   }
 }
 

@@ -270,9 +270,17 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   const RoughSurface surface = surface_from(options, given_scale);
   const SceneLaw law = law_scene(options.law, surface, lo, hi, "asperity contact --law");
   if (!given_scale.empty()) note(command, given_scale);
-  if (std::isfinite(law.law.critical_interference))
-    note(command, std::string(contact_law_name(law.law.kind)) + ": omega_c = " +
-                      approximately(law.law.critical_interference) +
+  const ContactLawKind kind = law.law.kind;
+  if (is_adhesive(kind)) {
+    // Fuller-Tabor's adhesion parameter: sigma_s over the approach at which one JKR asperity
+    // separates, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (docs/contact-laws.md section 5)
+    const double pi = 3.14159265358979323846, dgamma = law.law.work_of_adhesion, e = law.law.modulus;
+    const double delta_c = 0.75 * std::cbrt(pi * pi * dgamma * dgamma * law.law.radius / (e * e));
+    note(command, std::string(contact_law_name(kind)) + ": the approach (loading) branch; Maugis' length d_s = " +
+                      approximately(law.law.critical_interference) + " m, Fuller-Tabor's adhesion parameter " +
+                      "sigma_s / delta_c = " + approximately(surface.height_scale / delta_c));
+  } else if (std::isfinite(law.law.critical_interference))
+    note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
                       " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
                       approximately(plasticity_index(law.law, surface.height_scale)));
   const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity contact --law");
@@ -309,10 +317,24 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                     " to " + number(curves.max_separation()) + " m (" + approximately(curves.max_pressure()) + " to " +
                     approximately(curves.min_pressure()) + " Pa); stored error bound (relative): pressure " +
                     approximately(data.max_rel_error[0]) + ", stiffness " + approximately(data.max_rel_error[1]) +
-                    ", area fraction " + approximately(data.max_rel_error[2]) + " (" +
+                    ", area fraction " + approximately(data.max_rel_error[2]) +
+                    (curves.has_tension() ? " (pressure and stiffness relative to the gross, compressive + tensile; " : " (") +
                     approximately(data.safety_factor) + " x the largest measured at " +
                     std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
                     approximately(data.solver_tolerance) + ")");
+  if (curves.has_tension()) {
+    if (std::isnan(curves.pull_off_pressure()))
+      note(command, "adhesive curves (approach branch): the pull-off (greatest tension) is not inside their range; "
+                    "--pressure is served from " + number(curves.min_pressure()) + " to " +
+                        number(curves.max_pressure()) + " Pa");
+    else
+      note(command, "adhesive curves (approach branch): pull-off (greatest tension) " +
+                        number(curves.pull_off_pressure()) + " Pa at separation " +
+                        number(curves.pull_off_separation()) +
+                        " m; --pressure is served on the stable branch, up to that separation");
+    if (!options.export_format.empty())
+      usage("--export: adhesive curves carry tension, which a pressure-overclosure card cannot hold");
+  }
   if (!options.export_format.empty()) {
     CardFormat format = CardFormat::csv;
     CardUnits units = CardUnits::si;
@@ -363,13 +385,17 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
       options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size))
     usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
           "with --export");
+  // a law's table counts the summits in contact (a measured surface's has no such column)
+  const bool counted = !data.summit_count.empty();
   std::printf("separation_m,separation_from_mean_summit_m,nominal_pressure_Pa,stiffness_per_area_Pa_per_m,"
-              "area_fraction\n");
+              "area_fraction%s\n", counted ? ",summits_in_contact_per_m2" : "");
   long outside = 0;
   const auto row = [&](const ContactCurvesState& state) {
     if (std::isnan(state.pressure)) ++outside;
-    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g\n", state.separation, state.separation - data.mean_summit_height,
+    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g", state.separation, state.separation - data.mean_summit_height,
                 state.pressure, state.stiffness, state.area_fraction);
+    if (counted) std::printf(",%.10g", curves.summit_count(state.separation));
+    std::printf("\n");
   };
   const auto at = [&](const std::string& kind, double value) {
     if (kind == "separation") return curves.at_separation(value);
@@ -504,7 +530,7 @@ void add_contact_command(CLI::App& app) {
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
   add_law_options(*command, o.law,
                   "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, "
-                  "kogut-etsion or jackson-green, tabulated now on the surface given (docs/contact-laws.md section 8); "
+                  "kogut-etsion, jackson-green, dmt, jkr or maugis-dugdale (the approach branch), tabulated now on the surface given (docs/contact-laws.md section 8); "
                   "queries --separation, --pressure, --sweep separation|pressure, --export");
   add_text(*command, "--law-range", o.law_range,
            "with --law: the dimensionless separations s tabulated (origin convention; required)")

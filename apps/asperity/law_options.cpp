@@ -22,6 +22,8 @@ constexpr KeyOption key_options[] = {{"hardness", "--hardness"},
                                      {"yield_strength", "--yield-strength"},
                                      {"poisson", "--law-poisson"},
                                      {"geometric_hardness", "--geometric-hardness"},
+                                     {"work_of_adhesion", "--work-of-adhesion"},
+                                     {"maugis_parameter", "--maugis-parameter"},
                                      {"max_rel_error", "--law-tolerance"}};
 
 // `key` in `text` as a word of its own (not "hardness" in "geometric_hardness")
@@ -51,21 +53,30 @@ void add_law_options(CLI::App& command, LawOptions& o, const std::string& law_de
            "with --law jackson-green: its geometric hardness H_G(a/R), 2005 (the cosine form, default) or 2006 "
            "(the rough-surface paper's exponential form)")
       ->type_name("YEAR")->group(group);
+  add_number(command, "--work-of-adhesion", o.work_of_adhesion,
+             "with --law dmt, jkr or maugis-dugdale: work of adhesion [J/m^2] (the approach branch is tabulated)")
+      ->type_name("J/M2")->group(group);
+  add_number(command, "--maugis-parameter", o.maugis_parameter,
+             "with --law maugis-dugdale: Maugis' parameter lambda > 0 (0: DMT, infinity: JKR)")
+      ->type_name("X")->group(group);
   add_number(command, "--law-tolerance", o.tolerance, "with --law: the curves' relative error (default 1e-6)")
       ->type_name("REL")->group(group);
 }
 
 void check_no_law_options(const LawOptions& o, const std::string& also) {
   if (o.law.empty() && (given(o.hardness) || given(o.yield_strength) || given(o.poisson) || given(o.tolerance) ||
-                        !o.geometric_hardness.empty()))
-    usage(also + "--hardness, --yield-strength, --law-poisson, --geometric-hardness and --law-tolerance go with --law");
+                        !o.geometric_hardness.empty() || given(o.work_of_adhesion) || given(o.maugis_parameter)))
+    usage(also + "--hardness, --yield-strength, --law-poisson, --geometric-hardness, --work-of-adhesion, "
+                 "--maugis-parameter and --law-tolerance go with --law");
 }
 
 ContactLawKind law_kind(const LawOptions& o) {
   ContactLawKind kind;
-  if (!contact_law_kind_of(o.law.c_str(), kind))
-    usage("--law: '" + quote_text(o.law) +
-          "' is not hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion or jackson-green");
+  if (!contact_law_kind_of(o.law.c_str(), kind)) {
+    std::string names;
+    for (ContactLawKind each : contact_law_kinds) names += std::string(names.empty() ? "" : ", ") + contact_law_name(each);
+    usage("--law: '" + quote_text(o.law) + "' is not one of " + names);
+  }
   return kind;
 }
 
@@ -80,6 +91,8 @@ SceneLaw law_scene(const LawOptions& o, const RoughSurface& surface, double s_mi
   if (given(o.hardness)) key("hardness", o.hardness);
   if (given(o.yield_strength)) key("yield_strength", o.yield_strength);
   if (given(o.poisson)) key("poisson", o.poisson);
+  if (given(o.work_of_adhesion)) key("work_of_adhesion", o.work_of_adhesion);
+  if (given(o.maugis_parameter)) key("maugis_parameter", o.maugis_parameter);
   if (!o.geometric_hardness.empty()) {
     if (o.geometric_hardness != "2005" && o.geometric_hardness != "2006")
       usage("--geometric-hardness: '" + quote_text(o.geometric_hardness) + "' is not 2005 or 2006");

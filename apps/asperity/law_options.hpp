@@ -16,13 +16,15 @@ struct LawOptions {
   std::string law;                 // --law NAME (empty: none)
   std::string geometric_hardness;  // --geometric-hardness 2005|2006 (Jackson-Green)
   double hardness = 0.0 / 0.0, yield_strength = 0.0 / 0.0, poisson = 0.0 / 0.0, tolerance = 0.0 / 0.0;
+  double work_of_adhesion = 0.0 / 0.0, maugis_parameter = 0.0 / 0.0;  // dmt, jkr, maugis-dugdale
 };
 
 // The curves' relative error when --law-tolerance is not given.
 inline constexpr double default_law_tolerance = 1e-6;
 
 // --law (described by `law_description`, which says what the command does with it), --hardness,
-// --yield-strength, --law-poisson, --geometric-hardness and --law-tolerance, in the group "Contact law".
+// --yield-strength, --law-poisson, --geometric-hardness, --work-of-adhesion, --maugis-parameter and
+// --law-tolerance, in the group "Contact law".
 void add_law_options(CLI::App& command, LawOptions& options, const std::string& law_description);
 
 // With no --law, the material options are refused ("... go with --law"; `also` names the

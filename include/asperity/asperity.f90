@@ -119,6 +119,8 @@ module asperity
   public :: asperity_contact_curves_pressure, asperity_contact_curves_stiffness, asperity_contact_curves_area_fraction
   public :: asperity_contact_curves_separation, asperity_contact_curves_at_separation
   public :: asperity_contact_curves_at_pressure, asperity_contact_curves_pressure_overclosure_card
+  public :: asperity_contact_curves_summit_count, asperity_contact_curves_has_tension
+  public :: asperity_contact_curves_pull_off_pressure, asperity_contact_curves_pull_off_separation
 
   interface
     ! Loads a table: path c_null_ptr for the default table ($ASPERITY_TABLE if set). Returns
@@ -433,6 +435,35 @@ module asperity
       type(c_ptr), value :: curves
       real(c_double), value :: pressure
       real(c_double) :: asperity_contact_curves_separation
+    end function
+
+    ! summits in contact per m^2 (NaN for a table without the count)
+    function asperity_contact_curves_summit_count(curves, separation) bind(c, name="asperity_contact_curves_summit_count")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double), value :: separation
+      real(c_double) :: asperity_contact_curves_summit_count
+    end function
+
+    ! adhesive curves: 1 with a tensile part (signed pressure), else 0
+    function asperity_contact_curves_has_tension(curves) bind(c, name="asperity_contact_curves_has_tension")
+      import :: c_ptr, c_int
+      type(c_ptr), value :: curves
+      integer(c_int) :: asperity_contact_curves_has_tension
+    end function
+
+    ! the greatest tension (Pa, < 0) and where (m); NaN without tension or outside the range
+    function asperity_contact_curves_pull_off_pressure(curves) bind(c, name="asperity_contact_curves_pull_off_pressure")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double) :: asperity_contact_curves_pull_off_pressure
+    end function
+
+    function asperity_contact_curves_pull_off_separation(curves) &
+        bind(c, name="asperity_contact_curves_pull_off_separation")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double) :: asperity_contact_curves_pull_off_separation
     end function
 
     function asperity_contact_curves_at_separation(curves, separation, out) &

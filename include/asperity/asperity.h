@@ -247,7 +247,8 @@ typedef struct asperity_contact_curves_state {
 /* What a contact-curves table states about itself. */
 typedef struct asperity_contact_curves_info {
   double min_separation, max_separation; /* m: the range served */
-  double min_pressure, max_pressure;     /* Pa: the pressures at its ends */
+  double min_pressure, max_pressure;     /* Pa: the pressures the inverse serves (adhesive curves:
+                                            from the pull-off's, negative, up; see below) */
   double max_rel_error[3];               /* the stored bound (relative): pressure, stiffness, area fraction */
   double measured_rel_error[3];          /* the largest measured between the nodes (bound = this x safety_factor) */
   double safety_factor;
@@ -268,8 +269,20 @@ int asperity_contact_curves_get_info(const asperity_contact_curves *curves, aspe
 double asperity_contact_curves_pressure(const asperity_contact_curves *curves, double separation);
 double asperity_contact_curves_stiffness(const asperity_contact_curves *curves, double separation);
 double asperity_contact_curves_area_fraction(const asperity_contact_curves *curves, double separation);
-/* The separation where the served pressure is `pressure` (the inverse). */
+/* The separation where the served pressure is `pressure` (the inverse; adhesive curves: on the
+ * stable branch, up to the pull-off separation). */
 double asperity_contact_curves_separation(const asperity_contact_curves *curves, double pressure);
+/* Summits in contact per m^2 of nominal area (a law's table; NaN for a table without the count,
+ * such as a measured surface's exact contact, a NULL handle or outside the range). */
+double asperity_contact_curves_summit_count(const asperity_contact_curves *curves, double separation);
+/* Adhesive curves (an adhesive law's table, docs/contact-laws.md section 8): 1 if the curves have
+ * a tensile part (the pressure served is then signed, negative: tension; the stored pressure and
+ * stiffness bounds are relative to the gross compressive + tensile), else 0 (also for NULL).
+ * The pull-off: the greatest tension (Pa, < 0) and the separation where it is reached (m); NaN
+ * without tension, for NULL, or where the pull-off is not inside the range served. */
+int asperity_contact_curves_has_tension(const asperity_contact_curves *curves);
+double asperity_contact_curves_pull_off_pressure(const asperity_contact_curves *curves);
+double asperity_contact_curves_pull_off_separation(const asperity_contact_curves *curves);
 /* All four at a separation, or at a pressure. Return ASPERITY_OK, ASPERITY_BAD_HANDLE (NULL),
  * ASPERITY_BAD_SEPARATION (NaN input) or ASPERITY_OUTSIDE_RANGE (outside the range served: NaN
  * outputs). */

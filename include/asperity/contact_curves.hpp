@@ -18,6 +18,14 @@
 // limited_intervals() says how many); the stiffness is -p d(ln p)/du of that interpolant, so it
 // equals the node's at a node; ln a by Steffen's monotone cubic (1990). At the nodes the served
 // values are the stored ones to rounding; between them within the stored max_rel_error.
+//
+// Adhesive curves (a table with a tensile part: ContactCurvesData::has_tension) serve the net
+// pressure p_c - p_t (negative: tension) and stiffness k_c - k_t, each part interpolated like
+// the pressure above; the stored bound is then relative to the gross p_c + p_t (k_c + k_t), so
+// near the net pressure's zero crossing a relative error of the net means nothing. The inverse
+// serves the stable branch only: from the first node up to the pull-off (where the net
+// stiffness first falls to 0: the greatest tension), or the last node if the curves end before
+// it; beyond it, NaN. The summit count, where stored, by Steffen's cubic in ln like the area.
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -45,8 +53,19 @@ class ContactCurves {
   // The range served: the first and last node's separations, and their pressures.
   double min_separation() const noexcept;
   double max_separation() const noexcept;
-  double min_pressure() const noexcept;  // at max_separation()
-  double max_pressure() const noexcept;  // at min_separation()
+  // The pressures the inverse serves: adhesive curves from the net pressure at
+  // stable_branch_end() (the greatest tension where the pull-off is in the range) to the net
+  // pressure at min_separation(); otherwise at max_separation() and min_separation().
+  double min_pressure() const noexcept;
+  double max_pressure() const noexcept;
+  // Adhesive curves (a tensile part stored); pull_off_pressure() is the greatest tension (< 0 Pa)
+  // and pull_off_separation() where (the net stiffness 0), both NaN where the curves have no
+  // tension or the pull-off is not inside their range. stable_branch_end(): the last separation
+  // the inverse serves (max_separation() without tension).
+  bool has_tension() const noexcept;
+  double pull_off_pressure() const noexcept;
+  double pull_off_separation() const noexcept;
+  double stable_branch_end() const noexcept;
   // Intervals whose Hermite slopes were limited to keep ln p monotone (0 for smooth data).
   std::size_t limited_intervals() const noexcept;
 
@@ -54,9 +73,17 @@ class ContactCurves {
   double pressure(double separation) const noexcept;
   double stiffness(double separation) const noexcept;
   double area_fraction(double separation) const noexcept;
+  // The tensile part alone: p_t [Pa] and k_t = -dp_t/du [Pa/m] as served (0 and 0 for curves
+  // without tension; NaN outside the range); its area_fraction is NaN. The compressive part is
+  // the net plus it.
+  ContactCurvesState tensile_part(double separation) const noexcept;
+  // Summits in contact per m^2 of nominal area; NaN where the table stores no count (a measured
+  // surface's exact contact) or outside the range.
+  double summit_count(double separation) const noexcept;
   ContactCurvesState at_separation(double separation) const noexcept;
   // The separation where the served pressure is `pressure` (the inverse of pressure(), to a few
-  // ulp); NaN outside [min_pressure(), max_pressure()] or for NaN.
+  // ulp; adhesive curves: on the stable branch); NaN outside [min_pressure(), max_pressure()] or
+  // for NaN.
   double separation_at_pressure(double pressure) const noexcept;
   ContactCurvesState at_pressure(double pressure) const noexcept;
 

@@ -36,6 +36,17 @@ struct ContactCurvesData {
   // datum of the GW curves and of the FE cards) and the highest point (first contact).
   double mean_summit_height = 0.0 / 0.0;
   double max_height = 0.0 / 0.0;
+  // Optional, both or neither (an adhesive law's curves; table_schema.hpp): the tensile part of
+  // the pressure [Pa] (> 0, never rising) and its stiffness -dp_t/du [Pa/m] (>= 0). Then
+  // `pressure` and `stiffness` are the compressive parts, the net pressure is pressure -
+  // tensile_pressure, and max_rel_error[0], [1] are relative to the gross pressure and stiffness.
+  std::vector<double> tensile_pressure, tensile_stiffness;
+  // Optional (empty: not known): summits in contact per m^2 of nominal area (> 0, never rising),
+  // and its stored relative bound.
+  std::vector<double> summit_count;
+  double summit_count_max_rel_error = 0;
+
+  bool has_tension() const noexcept { return !tensile_pressure.empty(); }
 
   // Throws Error (naming `context`) for sizes, order, values or text beyond table_schema.hpp's
   // limits: what the reader refuses and the writer never writes.

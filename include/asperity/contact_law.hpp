@@ -26,6 +26,12 @@ enum class ContactLawKind {
   maugis_dugdale,      // Maugis-Dugdale 1992 through the Maugis parameter lambda (DMT .. JKR)
 };
 
+// Every law, in the order messages list them.
+inline constexpr ContactLawKind contact_law_kinds[] = {
+    ContactLawKind::hertz,         ContactLawKind::chang_etsion_bogy, ContactLawKind::zhao_maietta_chang,
+    ContactLawKind::kogut_etsion,  ContactLawKind::jackson_green,     ContactLawKind::dmt,
+    ContactLawKind::jkr,           ContactLawKind::maugis_dugdale};
+
 // The name used in files and messages ("hertz", "chang-etsion-bogy", "zhao-maietta-chang",
 // "kogut-etsion", "jackson-green", "dmt", "jkr", "maugis-dugdale").
 const char* contact_law_name(ContactLawKind kind) noexcept;
@@ -97,6 +103,23 @@ ContactLaw maugis_dugdale_law(double radius, double modulus, double work_of_adhe
 // between the lowest interference and 0 is the stable (fixed-grips) branch an asperity follows
 // while it is pulled off after contact; the caller decides which asperities are in contact.
 AsperityResponse asperity_response(const ContactLaw& law, double interference) noexcept;
+
+// The load split into a compressive and a tensile part, P = compressive - tensile, each >= 0,
+// with their derivatives in omega: the Hertz-like term K a^3 / R of the contact radius a
+// (K = (4/3) E*) and the adhesive term. DMT: Hertz, and 2 pi dgamma R; JKR: K a^3/R and
+// sqrt(8 pi dgamma E* a^3); Maugis-Dugdale: K a^3/R and the Dugdale zone's
+// pi dgamma R lambda A^2 (t + m^2 atan t) (A, t, m as in maugis_dugdale_point below);
+// every other law: (P, 0). On each law's stable branch both parts grow with omega, so that a
+// rough surface's mean of each is positive and monotone in the separation (what a contact-curves
+// table stores of an adhesive law: docs/contact-laws.md section 8). Zeros out of contact, NaN for
+// a NaN omega or a bad law, like asperity_response.
+struct AsperityLoadSplit {
+  double compressive = 0, tensile = 0;                      // [N]
+  double compressive_stiffness = 0, tensile_stiffness = 0;  // d/domega [N/m]
+};
+AsperityLoadSplit asperity_load_split(const ContactLaw& law, double interference) noexcept;
+// Whether the law's load has a tensile part (DMT, JKR, Maugis-Dugdale).
+bool is_adhesive(ContactLawKind kind) noexcept;
 
 // The omegas where the formula changes (KE: omega_c, 6 omega_c, 110 omega_c; JG: 1.9 omega_c;
 // CEB: omega_c; ZMC: omega_1, 54 omega_1; DMT: 0, where the load jumps; JKR, MD: none inside

@@ -75,8 +75,8 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
 // The same card from contact curves against separation (a measured surface's table,
 // contact_curves.hpp): the law is the curves' served pressure, overclosure from the mean summit
 // height (ContactCurvesData::mean_summit_height; without one only the origin and zero-pressure
-// datums), origin: the separation's datum. Throws Error as above, and for a pressure range
-// beyond the one the curves serve.
+// datums), origin: the separation's datum. Throws Error as above, for a pressure range
+// beyond the one the curves serve, and for adhesive curves (tension: ContactCurves::has_tension).
 PressureOverclosureTable tabulate_pressure_overclosure(const ContactCurves& curves, double pressure_min,
                                                        double pressure_max, double tolerance,
                                                        OverclosureDatum datum = OverclosureDatum::mean_summit,

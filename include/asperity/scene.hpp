@@ -21,13 +21,17 @@
 //
 //   [[law]]
 //   name = "steel pad"              # optional
-//   law = "kogut-etsion"            # hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion, jackson-green
+//   law = "kogut-etsion"            # hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion, jackson-green,
+//                                   # dmt, jkr, maugis-dugdale (contact_law.hpp's names)
 //   contact_modulus = 1.15e11       # E* [Pa] (every law)
 //   yield_strength = 1.0e9          # Y [Pa]: kogut-etsion, jackson-green
 //   hardness = 2.0e9                # H [Pa]: chang-etsion-bogy, zhao-maietta-chang
 //   poisson = 0.3                   # nu: chang-etsion-bogy, kogut-etsion, jackson-green
 //   pressure_factor = 0.6           # zhao-maietta-chang's K (optional, 0.6)
 //   geometric_hardness = "2005"     # jackson-green's H_G: "2005" (cosine, default) or "2006"
+//   work_of_adhesion = 0.5          # dgamma [J/m^2]: dmt, jkr, maugis-dugdale (the approach branch
+//                                   # is tabulated: contact-curves with a tensile part)
+//   maugis_parameter = 1.0          # lambda > 0: maugis-dugdale
 //   distribution = "gaussian"       # summit heights: as a [[curve]]'s (shape, side)
 //   height_scale = 1e-6             # sigma_s [m]
 //   summit_radius = 1e-4            # R [m]

@@ -58,10 +58,20 @@
 //                            residual), contact_modulus [1] Pa, nominal_area [1] m^2
 //       mean_summit_height [1], max_height [1]  optional: m above the separation's datum (the
 //                            GW curves' datum; first contact)
+//       tensile_pressure [N], tensile_stiffness [N]  optional, together (an adhesive contact law's
+//                            curves): the tensile part p_t of the pressure, > 0, never
+//                            rising, and its k_t = -dp_t/du, >= 0. Then `pressure` and
+//                            `stiffness` hold the compressive part p_c, k_c; the pressure served is
+//                            p_c - p_t (negative: tension), the stiffness k_c - k_t, and
+//                            max_rel_error[0], [1] bound the served error relative to the gross
+//                            p_c + p_t and k_c + k_t. Absent: p_t = 0 (every other table)
+//       summit_count    [N]  optional: summits in contact per m^2 of nominal area, > 0, never rising
+//       summit_count_max_rel_error [1]  with summit_count: its stored bound (relative)
 //   Served between the first and last node (outside: NaN); between nodes by a cubic Hermite in
 //   ln p with the stored stiffness as slope (-k/p), limited to stay monotone (Fritsch-Carlson),
 //   and by Steffen's monotone cubic in ln(area fraction); the stiffness is -p d(ln p)/du of the
-//   interpolant.
+//   interpolant. The tensile part like the pressure (ln p_t by cubic Hermite, slopes -k_t/p_t),
+//   the summit count like the area fraction (Steffen in ln).
 #pragma once
 #include "asperity/segment_kind.hpp"
 #include <cstddef>
@@ -137,6 +147,10 @@ inline constexpr const char* set_contact_modulus = "contact_modulus";
 inline constexpr const char* set_nominal_area = "nominal_area";
 inline constexpr const char* set_mean_summit_height = "mean_summit_height";
 inline constexpr const char* set_max_height = "max_height";
+inline constexpr const char* set_tensile_pressure = "tensile_pressure";
+inline constexpr const char* set_tensile_stiffness = "tensile_stiffness";
+inline constexpr const char* set_summit_count = "summit_count";
+inline constexpr const char* set_summit_count_max_rel_error = "summit_count_max_rel_error";
 // What a reader accepts: bounds that keep every served quantity and its logarithm's slope
 // finite, far beyond a physical surface's (separations of micrometres, pressures of kPa to GPa).
 inline constexpr int min_contact_curve_nodes = 3, max_contact_curve_nodes = 65536;
@@ -152,7 +166,12 @@ inline constexpr const char* contact_curves_definition =
     "node (NaN outside): ln p by cubic Hermite with slope -k/p at the nodes (Fritsch-Carlson limited\n"
     "to stay monotone), k = -p d(ln p)/du of that interpolant, ln a by Steffen's monotone cubic.\n"
     "max_rel_error: the measured largest relative error of the served values against independent\n"
-    "solves between the nodes (measured_rel_error) times safety_factor.";
+    "solves between the nodes (measured_rel_error) times safety_factor.\n"
+    "Optional tensile_pressure p_t and tensile_stiffness k_t (adhesion): pressure and stiffness are\n"
+    "then the compressive parts p_c, k_c; served p = p_c - p_t (negative: tension), k = k_c - k_t,\n"
+    "ln p_t like ln p_c; the pressure and stiffness bounds are relative to p_c + p_t and k_c + k_t.\n"
+    "Optional summit_count: summits in contact per m^2 [1/m^2], ln by Steffen's cubic, bounded by\n"
+    "summit_count_max_rel_error.";
 
 inline constexpr const char* conventions =
     "Greenwood-Williamson asperity integrals, see docs/model.md of the asperity project.\n"

@@ -782,11 +782,21 @@ void bind(py::module_& m) {
           },
           "separation"_a, "The real contact area over the nominal area at separations [m].")
       .def(
+          "summit_count",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return map_scalar(x.object, "separation", [&](double v) { return curves.summit_count(v); });
+          },
+          "separation"_a,
+          "Summits in contact per m^2 of nominal area at separations [m] (a law's table; NaN for a table without\n"
+          "the count, such as a measured surface's exact contact).")
+      .def(
           "separation_at_pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
             return map_scalar(x.object, "pressure", [&](double v) { return curves.separation_at_pressure(v); });
           },
-          "pressure"_a, "The separation [m] where the served pressure is `pressure` [Pa] (the inverse); NaN outside the range.")
+          "pressure"_a,
+          "The separation [m] where the served pressure is `pressure` [Pa] (the inverse; adhesive curves: on the\n"
+          "stable branch, up to pull_off_separation); NaN outside the range.")
       .def(
           "pressure_overclosure_card",
           [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,
@@ -810,8 +820,18 @@ void bind(py::module_& m) {
           "beyond the curves' or a bad tolerance.")
       .def_property_readonly("min_separation", &ContactCurves::min_separation)
       .def_property_readonly("max_separation", &ContactCurves::max_separation)
-      .def_property_readonly("min_pressure", &ContactCurves::min_pressure, "At max_separation [Pa].")
+      .def_property_readonly("min_pressure", &ContactCurves::min_pressure,
+                             "The least pressure the inverse serves [Pa]: at max_separation (adhesive curves: the\n"
+                             "pull-off's, or at the stable branch's end).")
       .def_property_readonly("max_pressure", &ContactCurves::max_pressure, "At min_separation [Pa].")
+      .def_property_readonly("has_tension", &ContactCurves::has_tension,
+                             "Adhesive curves (an adhesive law's table): the pressure served is signed (negative:\n"
+                             "tension), the stored pressure and stiffness bounds relative to the gross.")
+      .def_property_readonly("pull_off_pressure", &ContactCurves::pull_off_pressure,
+                             "Adhesive curves: the greatest tension [Pa, < 0]; NaN without tension or where it is\n"
+                             "not inside the range.")
+      .def_property_readonly("pull_off_separation", &ContactCurves::pull_off_separation,
+                             "Adhesive curves: the separation [m] of the greatest tension (the net stiffness 0).")
       .def_property_readonly("limited_intervals", &ContactCurves::limited_intervals,
                              "Intervals whose Hermite slopes were limited to keep ln p monotone.")
       .def_property_readonly(
@@ -853,9 +873,17 @@ void bind(py::module_& m) {
             nodes["pressure"] = py::array_t<double>(d.pressure.size(), d.pressure.data());
             nodes["stiffness"] = py::array_t<double>(d.stiffness.size(), d.stiffness.data());
             nodes["area_fraction"] = py::array_t<double>(d.area_fraction.size(), d.area_fraction.data());
+            if (d.has_tension()) {
+              nodes["tensile_pressure"] = py::array_t<double>(d.tensile_pressure.size(), d.tensile_pressure.data());
+              nodes["tensile_stiffness"] = py::array_t<double>(d.tensile_stiffness.size(), d.tensile_stiffness.data());
+            }
+            if (!d.summit_count.empty())
+              nodes["summit_count"] = py::array_t<double>(d.summit_count.size(), d.summit_count.data());
             return nodes;
           },
-          "The table's nodes: arrays separation, pressure, stiffness, area_fraction (copies).")
+          "The table's nodes: arrays separation, pressure, stiffness, area_fraction (copies); where stored,\n"
+          "tensile_pressure and tensile_stiffness (adhesive curves: pressure and stiffness are then the\n"
+          "compressive parts) and summit_count.")
       .def("__copy__", [](const ContactCurves& c) { return c; })
       .def("__deepcopy__", [](const ContactCurves& c, py::dict) { return c; }, "memo"_a)
       .def("__repr__", [](const ContactCurves& c) {

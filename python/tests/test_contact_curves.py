@@ -94,3 +94,47 @@ def test_errors(tmp_path, written):
     damaged.write_bytes(bytes(data))
     with pytest.raises(asperity.Error, match="SHA-256"):
         asperity.ContactCurves(damaged)
+
+
+@pytest.fixture(scope="module")
+def adhesive(tmp_path_factory):
+    """An adhesive law's table (tables/scenes/jkr.toml, JKR on the approach branch), by tablegen."""
+    import os
+    import subprocess
+    tablegen = os.environ.get("ASPERITY_TABLEGEN")
+    if not tablegen:
+        pytest.skip("ASPERITY_TABLEGEN is not set (ctest sets it)")
+    path = tmp_path_factory.mktemp("adhesive") / "jkr.h5"
+    scene = Path(__file__).resolve().parents[2] / "tables" / "scenes" / "jkr.toml"
+    subprocess.run([tablegen, "--scene", str(scene), "--out", str(path)], check=True, capture_output=True)
+    return asperity.ContactCurves(path)
+
+
+def test_adhesive_curves(adhesive):
+    curves = adhesive
+    assert curves.has_tension
+    pull_p, pull_u = curves.pull_off_pressure, curves.pull_off_separation
+    assert pull_p < 0 and curves.min_separation < pull_u < curves.max_separation
+    assert curves.min_pressure == pull_p
+    assert curves.pressure(pull_u) == pytest.approx(pull_p, rel=1e-12)
+    assert curves.pressure(curves.max_separation) < 0
+    # the inverse on the stable branch, NaN beyond the greatest tension
+    u = curves.separation_at_pressure(pull_p / 2)
+    assert u < pull_u and curves.pressure(u) == pytest.approx(pull_p / 2, rel=1e-9)
+    assert math.isnan(curves.separation_at_pressure(1.01 * pull_p))
+    separations = np.linspace(curves.min_separation, curves.max_separation, 7)
+    counts = curves.summit_count(separations)
+    assert np.all(counts > 0) and np.all(np.diff(counts) < 0)
+    nodes = curves.nodes
+    assert set(nodes) >= {"tensile_pressure", "tensile_stiffness", "summit_count"}
+    assert np.allclose(nodes["pressure"] - nodes["tensile_pressure"], curves.pressure(nodes["separation"]), rtol=0,
+                       atol=1e-12 * np.max(nodes["pressure"]))
+    with pytest.raises(asperity.Error, match="tension"):
+        curves.pressure_overclosure_card(pull_p, curves.max_pressure)
+
+
+def test_measured_curves_have_no_tension_nor_count(written):
+    curves = asperity.ContactCurves(written[0])
+    assert not curves.has_tension
+    assert math.isnan(curves.pull_off_pressure) and math.isnan(curves.pull_off_separation)
+    assert math.isnan(curves.summit_count(curves.min_separation))

@@ -513,6 +513,18 @@ double asperity_contact_curves_area_fraction(const asperity_contact_curves* curv
 double asperity_contact_curves_separation(const asperity_contact_curves* curves, double pressure) {
   return curves ? curves->curves.separation_at_pressure(pressure) : not_a_number;
 }
+double asperity_contact_curves_summit_count(const asperity_contact_curves* curves, double separation) {
+  return curves ? curves->curves.summit_count(separation) : not_a_number;
+}
+int asperity_contact_curves_has_tension(const asperity_contact_curves* curves) {
+  return curves && curves->curves.has_tension() ? 1 : 0;
+}
+double asperity_contact_curves_pull_off_pressure(const asperity_contact_curves* curves) {
+  return curves ? curves->curves.pull_off_pressure() : not_a_number;
+}
+double asperity_contact_curves_pull_off_separation(const asperity_contact_curves* curves) {
+  return curves ? curves->curves.pull_off_separation() : not_a_number;
+}
 
 namespace {
 int curves_state(const asperity::ContactCurvesState& state, double input, asperity_contact_curves_state* out) {

@@ -223,10 +223,7 @@ const char* contact_law_name(ContactLawKind kind) noexcept {
 
 bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept {
   if (!name) return false;
-  for (ContactLawKind candidate :
-       {ContactLawKind::hertz, ContactLawKind::chang_etsion_bogy, ContactLawKind::zhao_maietta_chang,
-        ContactLawKind::kogut_etsion, ContactLawKind::jackson_green, ContactLawKind::dmt, ContactLawKind::jkr,
-        ContactLawKind::maugis_dugdale}) {
+  for (ContactLawKind candidate : contact_law_kinds) {
     const char *a = name, *b = contact_law_name(candidate);
     while (*a && *a == *b) ++a, ++b;
     if (*a == 0 && *b == 0) {
@@ -440,6 +437,41 @@ AsperityResponse asperity_response(const ContactLaw& law, double w) noexcept {
     }
   }
   return bad;
+}
+
+bool is_adhesive(ContactLawKind kind) noexcept {
+  return kind == ContactLawKind::dmt || kind == ContactLawKind::jkr || kind == ContactLawKind::maugis_dugdale;
+}
+
+AsperityLoadSplit asperity_load_split(const ContactLaw& law, double w) noexcept {
+  const AsperityResponse response = asperity_response(law, w);
+  if (std::isnan(response.load)) return {nan, nan, nan, nan};
+  // out of contact (an adhesive law's lowest interference is where its contact ends): zeros
+  if (!is_adhesive(law.kind) || w < law.lowest_interference) return {response.load, 0, response.stiffness, 0};
+  if (w == inf) return {inf, inf, inf, inf};
+  const double pc = law.critical_load, kc = law.critical_load / law.critical_interference;
+  switch (law.kind) {
+    case ContactLawKind::dmt: {
+      const double tension = 2 * pi * law.work_of_adhesion * law.radius;
+      return {response.load + tension, tension, response.stiffness, 0};
+    }
+    case ContactLawKind::jkr: {
+      // Pbar = A^3 - sqrt(6) A^3/2, x = A^1/2; dD/dA = 2 A - sqrt(2/3) A^-1/2
+      const double x = jkr_root(w / law.critical_interference), a = x * x;
+      const double dd_da = 2 * a - std::sqrt(2.0 / 3.0) / x;
+      return {pc * a * a * a, pc * std::sqrt(6.0) * a * x, kc * 3 * a * a / dd_da,
+              kc * 1.5 * std::sqrt(6.0) * x / dd_da};
+    }
+    case ContactLawKind::maugis_dugdale: {
+      const double t = md_parameter_at(law.maugis_parameter, law.md_turning, w / law.critical_interference);
+      if (std::isnan(t)) return {nan, nan, nan, nan};
+      const MdState st = md_state(law.maugis_parameter, t);
+      const double compressive = st.a * st.a * st.a, dcompressive = 3 * st.a * st.a * st.da / st.dd;
+      return {pc * compressive, pc * (compressive - st.p), kc * dcompressive, kc * (dcompressive - st.dp / st.dd)};
+    }
+    default: break;
+  }
+  return {nan, nan, nan, nan};
 }
 
 SwitchPoints switch_points(const ContactLaw& law) noexcept {

@@ -285,6 +285,8 @@ PressureOverclosureTable tabulate_pressure_overclosure(const ContactModel& model
 PressureOverclosureTable tabulate_pressure_overclosure(const ContactCurves& curves, double pressure_min,
                                                        double pressure_max, double tolerance, OverclosureDatum datum,
                                                        std::size_t max_points) {
+  if (curves.has_tension())
+    throw Error("adhesive contact curves carry tension, which a pressure-overclosure card cannot hold");
   const double summit = curves.data().mean_summit_height;
   if (std::isnan(summit) && datum == OverclosureDatum::mean_summit)
     throw Error("the contact curves state no mean summit height: give the overclosure datum origin or zero-pressure");

@@ -270,7 +270,7 @@ SceneLaw read_law(const toml::value& table, double default_tolerance) {
   if (!table.is_table()) fail_at(table, where + " is not a table", "here");
   check_keys(table,
              {"name", "law", "contact_modulus", "yield_strength", "hardness", "poisson", "pressure_factor",
-              "geometric_hardness", "distribution", "shape", "side", "height_scale", "summit_radius", "summit_density",
+              "geometric_hardness", "work_of_adhesion", "maugis_parameter", "distribution", "shape", "side", "height_scale", "summit_radius", "summit_density",
               "nominal_area", "separation", "max_rel_error"},
              where);
   SceneLaw out;
@@ -290,16 +290,12 @@ SceneLaw read_law(const toml::value& table, double default_tolerance) {
   if (const toml::value* name = entry_of(table, "name")) out.name = name_text(*name);
   const toml::value& law_name = required("law");
   ContactLawKind kind;
-  if (!contact_law_kind_of(text(law_name, "law").c_str(), kind))
-    fail_at(law_name,
-            "law must be \"hertz\", \"chang-etsion-bogy\", \"zhao-maietta-chang\", \"kogut-etsion\" or "
-            "\"jackson-green\"",
-            "unknown law");
-  if (kind == ContactLawKind::dmt || kind == ContactLawKind::jkr || kind == ContactLawKind::maugis_dugdale)
-    fail_at(law_name,
-            "adhesive laws are not tabulated as scenes: their rough-surface pressure changes sign, and the "
-            "contact-curves table serves ln p (docs/contact-laws.md section 8)",
-            "not tabulated");
+  if (!contact_law_kind_of(text(law_name, "law").c_str(), kind)) {
+    std::string names;
+    for (ContactLawKind each : contact_law_kinds)
+      names += std::string(names.empty() ? "" : ", ") + "\"" + contact_law_name(each) + "\"";
+    fail_at(law_name, "law must be one of " + names, "unknown law");
+  }
   read_heights(table, where, out.distribution, out.side, out.shape);
   out.height_scale = positive("height_scale");
   out.summit_radius = positive("summit_radius");
@@ -321,6 +317,8 @@ SceneLaw read_law(const toml::value& table, double default_tolerance) {
   refuse("poisson", takes_poisson);
   refuse("pressure_factor", kind == ContactLawKind::zhao_maietta_chang);
   refuse("geometric_hardness", kind == ContactLawKind::jackson_green);
+  refuse("work_of_adhesion", is_adhesive(kind));
+  refuse("maugis_parameter", kind == ContactLawKind::maugis_dugdale);
   const double r = out.summit_radius;
   double poisson = 0;
   if (takes_poisson) {
@@ -353,7 +351,11 @@ SceneLaw read_law(const toml::value& table, double default_tolerance) {
       out.law = jackson_green_law(r, modulus, positive("yield_strength"), poisson, hardness);
       break;
     }
-    default: break;
+    case ContactLawKind::dmt: out.law = dmt_law(r, modulus, positive("work_of_adhesion")); break;
+    case ContactLawKind::jkr: out.law = jkr_law(r, modulus, positive("work_of_adhesion")); break;
+    case ContactLawKind::maugis_dugdale:
+      out.law = maugis_dugdale_law(r, modulus, positive("work_of_adhesion"), positive("maugis_parameter"));
+      break;
   }
   if (!std::isfinite(out.law.lowest_interference))
     fail_at(law_name, "the law's parameters give no finite critical interference (not physical?)", "here");

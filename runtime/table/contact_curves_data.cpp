@@ -36,6 +36,34 @@ void ContactCurvesData::validate(const std::string& context) const {
     if (!(area_fraction[i] >= schema::min_contact_value && area_fraction[i] <= 1))
       fail("an area fraction is not in (0, 1]" + at);
   }
+  if (tensile_pressure.size() != tensile_stiffness.size())
+    fail("tensile_pressure and tensile_stiffness come together (both or neither)");
+  if (!tensile_pressure.empty()) {
+    if (tensile_pressure.size() != n) fail("tensile_pressure and tensile_stiffness must have one value per node");
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string at = " at node " + std::to_string(i);
+      if (!in_range(tensile_pressure[i])) fail("a tensile pressure is not positive and finite (or beyond the limits)" + at);
+      // 0 where every summit is in contact already and the tension no longer grows (DMT on a
+      // Weibull tail below its origin)
+      if (!(tensile_stiffness[i] == 0 || in_range(tensile_stiffness[i])))
+        fail("a tensile stiffness is not >= 0 and finite (or beyond the limits)" + at);
+      if (i > 0 && !(tensile_pressure[i] <= tensile_pressure[i - 1]))
+        fail("the tensile pressure must never rise with the separation between nodes " + std::to_string(i - 1) +
+             " and " + std::to_string(i));
+    }
+  }
+  if (!summit_count.empty()) {
+    if (summit_count.size() != n) fail("summit_count must have one value per node");
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string at = " at node " + std::to_string(i);
+      if (!in_range(summit_count[i])) fail("a summit count is not positive and finite (or beyond the limits)" + at);
+      if (i > 0 && !(summit_count[i] <= summit_count[i - 1]))
+        fail("the summit count must never rise with the separation between nodes " + std::to_string(i - 1) + " and " +
+             std::to_string(i));
+    }
+    if (!(summit_count_max_rel_error >= 0 && summit_count_max_rel_error <= schema::max_contact_rel_error))
+      fail("the summit count's error bound is not finite and >= 0 (or beyond 1e3)");
+  }
   const double span = separation[n - 1] - separation[0];
   for (std::size_t i = 1; i < n; ++i) {
     const std::string at = " between nodes " + std::to_string(i - 1) + " and " + std::to_string(i);

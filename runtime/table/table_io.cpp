@@ -325,8 +325,8 @@ ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::
   data.description = *in_group.text_attribute(g, schema::attr_description, true);
   data.separation_datum = *in_group.text_attribute(g, schema::attr_separation_datum, true);
   const hsize_t nodes = in_group.length(g, schema::set_separation, schema::max_contact_curve_nodes);
-  // four values a node, bounded against the file's size before they are read
-  if (4.0 * static_cast<double>(nodes) * sizeof(double) > schema::max_expansion * static_cast<double>(size))
+  // up to seven values a node, bounded against the file's size before they are read
+  if (7.0 * static_cast<double>(nodes) * sizeof(double) > schema::max_expansion * static_cast<double>(size))
     in_group.invalid("it claims " + std::to_string(nodes) + " nodes, more than a table of " + std::to_string(size) +
                      " bytes may hold");
   data.separation = in_group.doubles(g, schema::set_separation, {nodes});
@@ -348,6 +348,18 @@ ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::
     data.mean_summit_height = scalar(in_group, g, schema::set_mean_summit_height);
   if (H5Lexists(g, schema::set_max_height, H5P_DEFAULT) > 0)
     data.max_height = scalar(in_group, g, schema::set_max_height);
+  const bool tensile = H5Lexists(g, schema::set_tensile_pressure, H5P_DEFAULT) > 0;
+  if (tensile != (H5Lexists(g, schema::set_tensile_stiffness, H5P_DEFAULT) > 0))
+    in_group.invalid(std::string("'") + schema::set_tensile_pressure + "' and '" + schema::set_tensile_stiffness +
+                     "' come together (both or neither)");
+  if (tensile) {
+    data.tensile_pressure = in_group.doubles(g, schema::set_tensile_pressure, {nodes});
+    data.tensile_stiffness = in_group.doubles(g, schema::set_tensile_stiffness, {nodes});
+  }
+  if (H5Lexists(g, schema::set_summit_count, H5P_DEFAULT) > 0) {
+    data.summit_count = in_group.doubles(g, schema::set_summit_count, {nodes});
+    data.summit_count_max_rel_error = scalar(in_group, g, schema::set_summit_count_max_rel_error);
+  }
   data.validate("table '" + name + "'");
   return data;
 }

@@ -151,6 +151,14 @@ void write_contact_curves_contents(hid_t file, const ContactCurvesData& data) {
   doubles(schema::set_nominal_area, &data.nominal_area, 1);
   if (!std::isnan(data.mean_summit_height)) doubles(schema::set_mean_summit_height, &data.mean_summit_height, 1);
   if (!std::isnan(data.max_height)) doubles(schema::set_max_height, &data.max_height, 1);
+  if (data.has_tension()) {
+    doubles(schema::set_tensile_pressure, data.tensile_pressure.data(), nodes);
+    doubles(schema::set_tensile_stiffness, data.tensile_stiffness.data(), nodes);
+  }
+  if (!data.summit_count.empty()) {
+    doubles(schema::set_summit_count, data.summit_count.data(), nodes);
+    doubles(schema::set_summit_count_max_rel_error, &data.summit_count_max_rel_error, 1);
+  }
 }
 
 // The file's bytes: HDF5 in memory with the user block, `write` filling it, the header sealed.

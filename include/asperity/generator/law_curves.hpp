@@ -20,9 +20,13 @@
 namespace asperity::generator {
 
 // The per-summit means at dimensionless separation s (origin convention): count (the fraction
-// of summits in contact), area [m^2], load [N], stiffness -d load / d(sigma_s s) [N/m].
+// of summits in contact), area [m^2], load [N], stiffness -d load / d(sigma_s s) [N/m], and the
+// load's tensile part with its stiffness (asperity_load_split: the compressive part is load +
+// tensile_load; 0 for a law without adhesion). Adhesive laws on approach (loading): the summits
+// with omega >= 0, each on its law's stable branch (docs/contact-laws.md section 8).
 struct LawMeans {
   double count = 0, area = 0, load = 0, stiffness = 0;
+  double tensile_load = 0, tensile_stiffness = 0;
 };
 LawMeans law_means(const SceneLaw& law, double s);
 
