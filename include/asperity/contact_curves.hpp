@@ -9,7 +9,8 @@
 // separation or pressure, or one outside the range served (the first to the last node: nothing
 // is extrapolated). A query finds its interval through a directory of equal bins over the range
 // (four an interval: O(1) for nodes about evenly spread, a bisection among a bin's intervals
-// otherwise), then evaluates a cubic and an exp per quantity; the inverse bisects the nodes'
+// otherwise), then evaluates the interval's cubics (ln of each quantity, written as the contact
+// kernel's record: one 4-lane call gives every exp); the inverse bisects the nodes'
 // pressures and solves the cubic by safeguarded Newton.
 //
 // Interpolation (fixed by the format, so that the stored bound is the bound of what is served):

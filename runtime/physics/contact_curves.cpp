@@ -30,8 +30,8 @@ struct HermiteCubic {
 // The served cubics of an interval are written as the contact kernel's record (kernels.hpp: rows
 // of the coefficients of t^j, four lanes of log2 X), so that one call of the kernel (one 4-lane
 // vector on x86: the polynomials and their exps at once, as contact_at's) gives every quantity
-// of a query: 17.9 ns for at_separation with a cubic and a scalar exp per quantity, 11.3 ns with
-// the kernel (bench_lookup BM_LawCurvesForward). The kernel's outputs, in its order:
+// of a query (faster than a cubic and a scalar exp per quantity: bench_lookup BM_LawCurvesForward,
+// docs/contact-laws.md section 8). The kernel's outputs, in its order:
 enum Output : int { compressive = 0, tensile = 1, area = 2, count = 3 };
 // the record's lane that comes out as `output`
 constexpr int record_lane(int output) noexcept {
