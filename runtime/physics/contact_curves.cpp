@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "asperity/error.hpp"
-#include "../core/kernel/kernels.hpp"
+#include "asperity/detail/contact_kernel.hpp"
+#include "asperity/detail/fast_math.hpp"
 
 namespace asperity {
 
@@ -156,7 +157,7 @@ struct ContactCurves::Impl {
   std::vector<Interval> intervals;
   std::vector<double> record_storage;         // the records, from a 64-byte boundary inside it
   const double* records = nullptr;
-  void (*contact4)(const double* record, double t, double* log2s, double* values) noexcept = nullptr;
+  detail::Contact4 contact4 = nullptr;
   std::size_t limited = 0;
   Directory by_separation, by_pressure;
   bool tension = false, count = false;
@@ -311,7 +312,7 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
   constexpr long double log2_e = 1.44269504088896340735992468100189214L;
   impl->minus_log2_pressures.push_back(-static_cast<double>(log2_e * static_cast<long double>(log_pressure[n - 1])));
   impl->records = records;
-  impl->contact4 = detail::kernels_for(InstructionSet::automatic).contact4;
+  impl->contact4 = detail::best_contact4();
   impl->by_separation.build(impl->nodes);
   impl->by_pressure.build(impl->minus_log2_pressures);
   impl->data = std::move(data);

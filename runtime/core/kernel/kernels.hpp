@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "asperity/contact_scales.hpp"
+#include "asperity/detail/contact_kernel.hpp"
 #include "asperity/detail/contact_ratio.hpp"
 #include "asperity/detail/curve_data.hpp"
 #include "asperity/detail/fast_grid.hpp"
@@ -20,10 +21,7 @@ namespace asperity::detail {
 
 inline constexpr int batch_block = 256;
 
-// The contact records (curve_data.hpp's CurveLookup::contact_records): per interval, six rows
-// (the coefficient of y^j, j = 0..5) of four lanes, log2 X of orders 0, 1, 3/2, 1/2 (the state's
-// order: count, area, load, stiffness, so that the products need no permutation and the
-// stiffness/load ratio is within the upper half), from a 64-byte boundary (three cache lines).
+// The contact records: asperity/detail/contact_kernel.hpp (their one definition).
 // In base 2 the exp's reduction is an addition, two exact subtractions and a product by ln 2,
 // instead of a multiply-add, a subtraction and two multiply-adds for ln 2 in two parts: 3
 // cycles off the lookup's chain (faster in bench_lookup BM_ContactAllFourScales and
@@ -33,10 +31,6 @@ inline constexpr int batch_block = 256;
 // |ln X| more rounding than the grid's own quintic in double (against its exact value,
 // test_kernels ContactRecordsAgainstTheExactQuintic: 3.1e-16 (1 + |ln X|) at most, 2.2e-16 for
 // the ln X quintic).
-inline constexpr int contact_record_size = 4 * fast_stride;  // doubles: [coefficient][lane]
-// each lane's twice_order: the served combination's (contact_scales.hpp), in its quantities' order
-inline constexpr int contact_lane_orders[4] = {served_combination.twice_order[0], served_combination.twice_order[1],
-                                               served_combination.twice_order[2], served_combination.twice_order[3]};
 
 // One interval's record from the grid's ln X coefficients of orders 0, 1/2, 1, 3/2
 // (twice_order k: ln_orders[k] points at the interval's fast_stride coefficients)

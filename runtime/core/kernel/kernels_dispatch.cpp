@@ -51,5 +51,7 @@ const Kernels& kernels_for(InstructionSet isa) noexcept {
   }
 }
 
+Contact4 best_contact4() noexcept { return kernels_for(InstructionSet::automatic).contact4; }
+
 }  // namespace detail
 }  // namespace asperity
