@@ -103,6 +103,63 @@ TEST(LawContact, KogutEtsionAgainstTheReferenceOnEachFit) {
   }
 }
 
+TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
+  // JKR asperities (the approach branch) on the Gaussian fit: the same positive pressures on the
+  // stable branch, and the pull-off, each against the reference quadrature of the net load. A
+  // work of adhesion of 0.5 J/m^2 on this hard surface leaves no measurable tension (adhesion
+  // parameter ~100: stated, no pull-off); 200 J/m^2 stands in for a softer pair (parameter ~2)
+  const t::SurfaceAnalysis& a = analysis();
+  {
+    asperity::cli::LawOptions options;
+    options.law = "jkr";
+    options.work_of_adhesion = 0.5;
+    const t::LawSceneMaker weak = [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
+      return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
+    };
+    const t::LawContact law = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", weak);
+    ASSERT_TRUE(law.served) << law.note;
+    EXPECT_GT(law.adhesion_parameter, 20);
+    EXPECT_TRUE(std::isnan(law.pull_off_pressure));
+    ASSERT_FALSE(law.warnings.empty());
+    EXPECT_NE(law.warnings.back().find("no pull-off"), std::string::npos);
+  }
+  const double e = 1e11, dgamma = 200;
+  asperity::cli::LawOptions options;
+  options.law = "jkr";
+  options.work_of_adhesion = dgamma;
+  const t::LawSceneMaker jkr = [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
+    return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
+  };
+  const t::LawContact law = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", jkr);
+  ASSERT_TRUE(law.served) << law.note;
+  EXPECT_TRUE(law.adhesive);
+  EXPECT_LT(law.adhesion_parameter, 5);
+  const asperity::ContactLaw exact_law = asperity::jkr_law(a.summits.radius, e, dgamma);
+  EXPECT_DOUBLE_EQ(law.adhesion_parameter, asperity::adhesion_parameter(exact_law, law.summit_height_sd));
+  EXPECT_TRUE(std::isnan(law.plasticity_index));
+  asperity::test::SummitHeights heights;
+  heights.distribution = law.surface.distribution;
+  heights.scale = law.surface.height_scale;
+  const double density = law.surface.summit_density, mean_summit = law.at_pressures[0].separation -
+                                                                   law.at_pressures[0].mean_separation;
+  const auto net_pressure = [&](double separation) {
+    return density * asperity::test::law_integrals(exact_law, heights, separation / heights.scale).load;
+  };
+  for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+    const asperity::PhysicalState& state = law.at_pressures[k];
+    EXPECT_LT(relative(net_pressure(state.separation), state.pressure), 1e-6) << state.pressure << " Pa";
+    EXPECT_EQ(state.pressure, a.contact->pressures[k]);
+    EXPECT_GT(state.count, 0);  // the law tables' summit count
+  }
+  // the pull-off: a tension, the least net pressure of the reference near it
+  ASSERT_TRUE(std::isfinite(law.pull_off_pressure));
+  EXPECT_LT(law.pull_off_pressure, 0);
+  const double u = law.pull_off_mean_separation + mean_summit, p0 = net_pressure(u);
+  EXPECT_LT(std::fabs(p0 - law.pull_off_pressure), 1e-6 * std::fabs(law.pull_off_pressure));
+  for (double offset : {-1e-2, -1e-3, 1e-3, 1e-2})
+    EXPECT_GE(net_pressure(u + offset * heights.scale), p0 - 1e-9 * std::fabs(p0)) << offset;
+}
+
 TEST(LawContact, RefusalsAndLimits) {
   const t::SurfaceAnalysis& a = analysis();
   // the material, from the scene's checks: before any curve

@@ -38,7 +38,7 @@ PhysicalState law_state(const ContactCurves& curves, double p, double area) {
   PhysicalState state{};
   state.separation = s.separation;
   state.mean_separation = s.separation - curves.data().mean_summit_height;
-  state.count = NAN;  // not tabulated (the table kind has no column for it)
+  state.count = curves.summit_count(s.separation) * area;  // NaN: a table without the count
   state.area_fraction = s.area_fraction;
   state.real_area = s.area_fraction * area;
   state.pressure = p;
@@ -84,7 +84,15 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   if (law.law.hardness > 0) out.hardness = law.law.hardness;
   out.gw_plasticity_index =
       greenwood_williamson_plasticity_index(out.contact_modulus, out.hardness, out.summit_height_sd, out.summit_radius);
-  if (std::isfinite(out.gw_plasticity_index))
+  out.adhesive = is_adhesive(law.law.kind);
+  if (out.adhesive) {
+    out.adhesion_parameter = adhesion_parameter(law.law, out.summit_height_sd);
+    out.adhesion_length = law.law.critical_interference;
+    out.regime = "adhesive (" + out.law + ", the approach branch): Fuller-Tabor's adhesion parameter sigma_s/delta_c = " +
+                 g(out.adhesion_parameter) +
+                 " (Fuller & Tabor 1975: the larger, the less of the smooth surfaces' adhesion survives the roughness; "
+                 "docs/contact-laws.md section 5)";
+  } else if (std::isfinite(out.gw_plasticity_index))
     out.regime = regime_text(out.gw_plasticity_index, "GW's psi");
   else if (std::isfinite(out.plasticity_index))
     out.regime = regime_text(out.plasticity_index, "no hardness for GW's psi (" + out.law +
@@ -103,6 +111,21 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
       s_hi = bounded ? s_hi + std::min(step, -s_hi / 2) : s_hi + step;
     step = 0.02 * std::max(s_hi - s_lo, 0.05);
     for (int k = 0; k < 80 && !(pressure(s_lo) > p_max * (1 + 1e-3)) && s_lo > -1e3; ++k, step *= 1.5) s_lo -= step;
+    if (out.adhesive) {
+      // on past the greatest tension: the net pressure falls below 0 and rises back towards it
+      // (only while the pressure stays within a table's range: where the tension shows only
+      // among pressures that small, the roughness has removed the adhesion, and no pull-off is given)
+      double step = 0.02 * std::max(s_hi - s_lo, 0.05), previous = pressure(s_hi);
+      for (int k = 0; k < 80; ++k, step *= 1.3) {
+        const double next_s = bounded ? s_hi + std::min(step, -s_hi / 2) : s_hi + step;
+        if (!(next_s < 1e3)) break;
+        const double next = pressure(next_s);
+        if (!(std::fabs(next) > 1e-140)) break;
+        s_hi = next_s;
+        if (previous < 0 && next > previous) break;
+        previous = next;
+      }
+    }
     out.separation_min = std::max(s_lo, -1e3);
     out.separation_max = s_hi;
     if (!(pressure(out.separation_min) > p_max) || !(pressure(out.separation_max) < p_min))
@@ -116,6 +139,13 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
     const double area = comparison.nominal_area;
     for (double p : curve_pressures(comparison)) out.curve.push_back(law_state(curves, p, area));
     for (double p : comparison.pressures) out.at_pressures.push_back(law_state(curves, p, area));
+    if (out.adhesive) {
+      out.pull_off_pressure = curves.pull_off_pressure();
+      out.pull_off_mean_separation = curves.pull_off_separation() - curves.data().mean_summit_height;
+      if (!std::isfinite(out.pull_off_pressure))
+        out.warnings.push_back("the tension of the law's curves has no greatest value while their pressures stay above "
+                               "1e-140 Pa: no pull-off reported (the roughness leaves no measurable adhesion)");
+    }
     out.served = true;
     std::ostringstream note;
     note.precision(2);

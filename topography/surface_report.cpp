@@ -474,6 +474,15 @@ std::string analysis_json(const SurfaceAnalysis& a) {
             {"psi_gw_definition", "(E*/H)(sigma_s/R)^1/2 (Greenwood-Williamson 1966; H: the law's hardness, "
                                   "Kogut-Etsion's 2.8 Y)"},
             {"regime", law.regime}}},
+          {"adhesion",
+           law.adhesive ? ordered_json{{"adhesion_parameter", number(law.adhesion_parameter)},
+                                       {"adhesion_parameter_definition",
+                                        "sigma_s / delta_c, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (Fuller-Tabor 1975)"},
+                                       {"length_scale_m", number(law.adhesion_length)},
+                                       {"branch", "approach (loading)"},
+                                       {"pull_off_pressure_Pa", number(law.pull_off_pressure)},
+                                       {"pull_off_mean_separation_m", number(law.pull_off_mean_separation)}}
+                        : ordered_json(nullptr)},
           {"served", law.served},
           {"note", law.note},
           {"separation_range", {number(law.separation_min), number(law.separation_max)}},
@@ -537,8 +546,13 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
   if (a.law) {
     const LawContact& law = *a.law;
     out << "  law " << law.law << " on the " << law.model << " fit (" << law.model_reason << "): sigma_s " << g(law.summit_height_sd)
-        << " m, R " << g(law.summit_radius) << " m, omega_c " << g(law.critical_interference) << " m, psi = (sigma_s/omega_c)^1/2 "
-        << g(law.plasticity_index, 3) << ", GW's psi = (E*/H)(sigma_s/R)^1/2 " << g(law.gw_plasticity_index, 3) << "\n";
+        << " m, R " << g(law.summit_radius) << " m, ";
+    if (law.adhesive)
+      out << "length scale " << g(law.adhesion_length) << " m, adhesion parameter sigma_s/delta_c " << g(law.adhesion_parameter, 3)
+          << ", pull-off " << g(law.pull_off_pressure) << " Pa at mean separation " << g(law.pull_off_mean_separation) << " m\n";
+    else
+      out << "omega_c " << g(law.critical_interference) << " m, psi = (sigma_s/omega_c)^1/2 " << g(law.plasticity_index, 3)
+          << ", GW's psi = (E*/H)(sigma_s/R)^1/2 " << g(law.gw_plasticity_index, 3) << "\n";
     out << "  " << law.regime << "\n";
     const ContactComparison& c = *a.contact;
     for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
@@ -743,6 +757,12 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
       md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
       md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
       md << "| the law's source range | " << (std::isfinite(law.valid_up_to) ? "ω up to " + g(law.valid_up_to) + " m" : "every ω") << " |\n";
+      if (law.adhesive) {
+        md << "| adhesion parameter σs/δc (Fuller–Tabor 1975) | " << g(law.adhesion_parameter, 3) << " |\n";
+        md << "| the law's length scale | " << g(law.adhesion_length) << " m |\n";
+        md << "| pull-off: greatest tension of the approach branch | " << g(law.pull_off_pressure) << " Pa at mean separation "
+           << g(law.pull_off_mean_separation) << " m |\n";
+      }
       md << "| its curves | " << law.note << " |\n\n**" << law.regime << ".**\n";
       if (law.served) {
         md << "\n| nominal pressure [Pa] | mean separation, elastic [m] | under the law [m] | law − elastic [m] | area "

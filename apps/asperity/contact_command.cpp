@@ -272,13 +272,9 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   if (!given_scale.empty()) note(command, given_scale);
   const ContactLawKind kind = law.law.kind;
   if (is_adhesive(kind)) {
-    // Fuller-Tabor's adhesion parameter: sigma_s over the approach at which one JKR asperity
-    // separates, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (docs/contact-laws.md section 5)
-    const double pi = 3.14159265358979323846, dgamma = law.law.work_of_adhesion, e = law.law.modulus;
-    const double delta_c = 0.75 * std::cbrt(pi * pi * dgamma * dgamma * law.law.radius / (e * e));
     note(command, std::string(contact_law_name(kind)) + ": the approach (loading) branch; Maugis' length d_s = " +
                       approximately(law.law.critical_interference) + " m, Fuller-Tabor's adhesion parameter " +
-                      "sigma_s / delta_c = " + approximately(surface.height_scale / delta_c));
+                      "sigma_s / delta_c = " + approximately(adhesion_parameter(law.law, surface.height_scale)));
   } else if (std::isfinite(law.law.critical_interference))
     note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
                       " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +

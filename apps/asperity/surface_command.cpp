@@ -107,11 +107,6 @@ int run_surface(const Options& o) {
           "E* [Pa] or --e1 --nu1 --e2 --nu2");
   check_no_law_options(o.law);
   if (!o.law.law.empty()) {
-    // the report compares laws at positive pressures along curves that fall: an adhesive law's
-    // net pressure changes sign (asperity contact --law serves it, with its pull-off)
-    if (is_adhesive(law_kind(o.law)))
-      usage("--law " + o.law.law + ": adhesive laws are not compared in the surface report (their pressure changes "
-            "sign); tabulate one with asperity contact --law on the summits the report gives");
     // the law and its material checked now, as a scene on a stand-in surface, before the analysis
     RoughSurface stand_in;
     stand_in.distribution = Distribution::gaussian;

@@ -133,6 +133,11 @@ double plasticity_index(const ContactLaw& law, double summit_scale) noexcept;
 // Greenwood-Williamson's psi = (E*/H) sqrt(sigma_s / R).
 double greenwood_williamson_plasticity_index(double modulus, double hardness, double summit_scale,
                                              double radius) noexcept;
+// Fuller & Tabor's (1975) adhesion parameter sigma_s / delta_c for an adhesive law (DMT, JKR,
+// MD), delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^(1/3) the approach at which one JKR asperity
+// separates under fixed grips: the larger, the less of the smooth surfaces' adhesion survives the
+// roughness (docs/contact-laws.md section 5). NaN for a law without adhesion.
+double adhesion_parameter(const ContactLaw& law, double summit_scale) noexcept;
 
 // Maugis-Dugdale in its dimensionless form (Maugis 1992; Johnson & Greenwood 1997): lengths
 // a = A a_s, a_s = (pi dgamma R^2 / K)^(1/3); interference omega = D d_s, d_s = a_s^2 / R;

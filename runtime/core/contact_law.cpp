@@ -509,4 +509,11 @@ double greenwood_williamson_plasticity_index(double modulus, double hardness, do
   return modulus / hardness * std::sqrt(summit_scale / radius);
 }
 
+double adhesion_parameter(const ContactLaw& law, double summit_scale) noexcept {
+  if (!is_adhesive(law.kind) || !positive(summit_scale) || !positive(law.work_of_adhesion)) return nan;
+  const double dgamma = law.work_of_adhesion, e = law.modulus;
+  const double delta_c = 0.75 * std::cbrt(pi * pi * dgamma * dgamma * law.radius / (e * e));
+  return summit_scale / delta_c;
+}
+
 }  // namespace asperity

@@ -17,7 +17,10 @@
 // and radius; the comparison's nominal area and E*), over the separations where the law's
 // pressure covers the comparison's pressure range, and served as contact curves (ContactCurves).
 // Where they cannot be tabulated there (an area fraction beyond 1, interferences past the law's
-// source), the plasticity index is still given and the reason stated.
+// source), the plasticity index is still given and the reason stated. An adhesive law's curves
+// (their approach branch) are compared at the same positive pressures on their stable branch,
+// and tabulated on past the pull-off, which is reported with Fuller-Tabor's adhesion parameter
+// instead of a plasticity index.
 #pragma once
 #include <functional>
 #include <string>
@@ -52,6 +55,13 @@ struct LawContact {
   double gw_plasticity_index = 0.0 / 0.0;    // (E*/H)(sigma_s/R)^1/2
   double valid_up_to = 0;          // the largest interference the law's source supports [m] (inf: every one)
   std::string regime;              // what psi says, in words, naming the definition
+  // an adhesive law (DMT, JKR, Maugis-Dugdale; the approach branch): Fuller-Tabor's adhesion
+  // parameter sigma_s / delta_c (asperity::adhesion_parameter), the law's length scale (Maugis'
+  // d_s), and the pull-off of its curves: the greatest tension [Pa] and where (mean separation
+  // from the fit's mean summit height [m]); NaN where not adhesive or not served
+  bool adhesive = false;
+  double adhesion_parameter = 0.0 / 0.0, adhesion_length = 0.0 / 0.0;
+  double pull_off_pressure = 0.0 / 0.0, pull_off_mean_separation = 0.0 / 0.0;
   // the curves
   bool served = false;
   std::string note;                // the table made (nodes, stored error bound) or why there are none
