@@ -196,9 +196,12 @@ def gil_pause_during(call):
 def test_large_arrays_release_the_gil(weibull2):
     separations = np.linspace(-2.0, 20.0, 6_000_000)
     assert gil_pause_during(lambda: weibull2.value(3, separations)) < 0.5
-    # the check itself tells a call holding the GIL (py::vectorize does) from one releasing it
+    # the check itself tells a call holding the GIL (py::vectorize does) from one releasing it.
+    # A holding call's pause falls short of its whole duration only when the worker, back from
+    # the call, waits for the GIL to stamp its end (two busy cores, sanitizers): the best of three
+    # measurements is the instrument's reading.
     shapes = np.full(3_000_000, 2.0)
-    assert gil_pause_during(lambda: asperity.weibull_mean(shapes)) > 0.9
+    assert max(gil_pause_during(lambda: asperity.weibull_mean(shapes)) for _ in range(3)) > 0.9
 
 
 # ---- values against closed forms (docs/model.md section 5) ----
