@@ -431,4 +431,34 @@ TEST(TopographyReport, TheLawInEveryOutput) {
   EXPECT_EQ(t::analysis_json(analysis()).find("\"law\""), std::string::npos);
   EXPECT_EQ(read_text(plain + "/report.md").find("contact law"), std::string::npos);
 }
+
+// An adhesive law is elastic: its report has the adhesion rows and no hardness, ω_c or plasticity
+// index (they used to print "nan"); no number of either report is "nan".
+TEST(TopographyReport, AnAdhesiveLawReportsItsAdhesionNotPlasticity) {
+  asperity::cli::LawOptions jkr;
+  jkr.law = "jkr";
+  jkr.work_of_adhesion = 0.5;
+  const t::SurfaceAnalysis adhesive =
+      small_analysis(1, 0, [jkr](const asperity::RoughSurface& surface, double s_min, double s_max) {
+        return asperity::cli::law_scene(jkr, surface, s_min, s_max, "test");
+      });
+  ASSERT_TRUE(adhesive.law.has_value());
+  ASSERT_TRUE(adhesive.law->served) << adhesive.law->note;
+  const std::string dir = folder("adhesive-law");
+  t::write_report(adhesive, dir);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("### Under the contact law: jkr"), std::string::npos);
+  EXPECT_NE(md.find("| adhesion parameter σs/δc (Fuller–Tabor 1975) |"), std::string::npos);
+  EXPECT_NE(md.find("| pull-off: greatest tension of the approach branch |"), std::string::npos);
+  EXPECT_EQ(md.find("ω_c"), std::string::npos);
+  EXPECT_EQ(md.find("| H (GW's ψ) |"), std::string::npos);
+  EXPECT_EQ(md.find("nan"), std::string::npos) << md;
+
+  const std::string plastic = folder("law-md");
+  t::write_report(law_analysis(), plastic);
+  const std::string ke = read_text(plastic + "/report.md");
+  EXPECT_NE(ke.find("| ω_c (the law's, at R) |"), std::string::npos);
+  EXPECT_EQ(ke.find("adhesion parameter"), std::string::npos);
+  EXPECT_EQ(ke.find("nan"), std::string::npos) << ke;
+}
 #endif

@@ -549,7 +549,9 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
         << " m, R " << g(law.summit_radius) << " m, ";
     if (law.adhesive)
       out << "length scale " << g(law.adhesion_length) << " m, adhesion parameter sigma_s/delta_c " << g(law.adhesion_parameter, 3)
-          << ", pull-off " << g(law.pull_off_pressure) << " Pa at mean separation " << g(law.pull_off_mean_separation) << " m\n";
+          << (std::isfinite(law.pull_off_pressure) ? ", pull-off " + g(law.pull_off_pressure) + " Pa at mean separation " +
+                                                          g(law.pull_off_mean_separation) + " m\n"
+                                                    : std::string(", no measurable pull-off\n"));
     else
       out << "omega_c " << g(law.critical_interference) << " m, psi = (sigma_s/omega_c)^1/2 " << g(law.plasticity_index, 3)
           << ", GW's psi = (E*/H)(sigma_s/R)^1/2 " << g(law.gw_plasticity_index, 3) << "\n";
@@ -752,16 +754,21 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
       md << "| σs: standard deviation of the measured summit heights | " << g(law.summit_height_sd) << " m |\n";
       md << "| R: the measured summit radius | " << g(law.summit_radius) << " m |\n";
       md << "| E* | " << g(law.contact_modulus) << " Pa |\n";
-      md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
-      md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";
-      md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
-      md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
+      if (!law.adhesive) {  // an adhesive law is elastic: no hardness, no ω_c, no plasticity index
+        md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
+        md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";
+        md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
+        md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
+      }
       md << "| the law's source range | " << (std::isfinite(law.valid_up_to) ? "ω up to " + g(law.valid_up_to) + " m" : "every ω") << " |\n";
       if (law.adhesive) {
         md << "| adhesion parameter σs/δc (Fuller–Tabor 1975) | " << g(law.adhesion_parameter, 3) << " |\n";
         md << "| the law's length scale | " << g(law.adhesion_length) << " m |\n";
-        md << "| pull-off: greatest tension of the approach branch | " << g(law.pull_off_pressure) << " Pa at mean separation "
-           << g(law.pull_off_mean_separation) << " m |\n";
+        md << "| pull-off: greatest tension of the approach branch | "
+           << (std::isfinite(law.pull_off_pressure)
+                   ? g(law.pull_off_pressure) + " Pa at mean separation " + g(law.pull_off_mean_separation) + " m"
+                   : std::string("none measurable (see the warning below)"))
+           << " |\n";
       }
       md << "| its curves | " << law.note << " |\n\n**" << law.regime << ".**\n";
       if (law.served) {

@@ -131,17 +131,19 @@ int generate_law_scene(const Options& options, const Scene& scene, std::chrono::
   if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
   write_contact_curves_file(result.data, options.out);
   const ContactCurvesData& data = result.data;
-  std::printf("%-18s %-8s %-8s %7s %-20s %9s %28s %6s %8s\n", "law", "dist", "side", "shape", "separations", "asked",
-              "achieved p / k / a", "nodes", "evals");
-  char range[64], achieved[64];
+  std::printf("%-18s %-8s %-8s %7s %-20s %9s %36s %6s %8s\n", "law", "dist", "side", "shape", "separations", "asked",
+              "achieved p / k / a / count", "nodes", "evals");
+  char range[64], achieved[80];
   std::snprintf(range, sizeof range, "[%.4g, %.4g]", law.range_min, law.range_max);
-  std::snprintf(achieved, sizeof achieved, "%.2g / %.2g / %.2g", data.max_rel_error[0], data.max_rel_error[1],
-                data.max_rel_error[2]);
-  std::printf("%-18s %-8s %-8s %7.4g %-20s %9.2g %28s %6d %8d\n", contact_law_name(law.law.kind),
+  std::snprintf(achieved, sizeof achieved, "%.2g / %.2g / %.2g / %.2g", data.max_rel_error[0], data.max_rel_error[1],
+                data.max_rel_error[2], data.summit_count_max_rel_error);
+  std::printf("%-18s %-8s %-8s %7.4g %-20s %9.2g %36s %6d %8d\n", contact_law_name(law.law.kind),
               to_string(law.distribution), to_string(law.side), law.shape, range, law.max_rel_error, achieved,
               result.nodes, result.evaluations);
-  std::printf("wrote %s: a contact-curves table, %d nodes, %.2f s\n", options.out.c_str(), result.nodes,
-              seconds_since(start));
+  // an adhesive law's bounds on p and k are relative to the gross (compressive + tensile) values
+  std::printf("wrote %s: a contact-curves table%s, %d nodes, %.2f s\n", options.out.c_str(),
+              data.has_tension() ? " with a tensile part (the approach branch; p and k bounds relative to the gross)" : "",
+              result.nodes, seconds_since(start));
   return cli::exit_success;
 }
 
