@@ -14,6 +14,7 @@
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
+#include "asperity/inverse.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/persson.hpp"
 #include "asperity/surface.hpp"
@@ -151,6 +152,47 @@ TEST(ContactModel, InversesRoundTripAcrossTheRange) {
     const PhysicalState none = model.at_load(0);
     if (c.surface.side == Side::bounded) EXPECT_EQ(none.separation, 0.0);
     else EXPECT_EQ(none.separation, INFINITY);
+  }
+}
+
+// The inverse where it is weakest. On the Weibull tail side the density starts at s = 0 as
+// z^(a-1): ln X_n is not smooth there, and one Newton step from the table left errors up to 5.6e-5
+// in s (a = 0.5, the area) before those intervals iterated. On the bounded side near first
+// contact X_n ~ |s|^(n+a) falls past 1e-300 within |s| ~ 1e-150: the inverse there solves in ln|s|
+// (a linear step from 1e-167 toward 1e-250 used to land past first contact, at s ~ +1e-165).
+// Round trips: ln X_n within 1e-13 (1 + |ln X_n|), what the inverse promises (inverse.hpp), and s
+// to what ln X_n resolves (the forward curve is flat within ~2e-12 of s = 0).
+TEST(InverseCurve, RoundTripsWhereTheDensityStartsAndNearFirstContact) {
+  for (double shape : {0.5, 0.7, 1.0, 1.5, 2.0, 3.0}) {
+    const Curve tail = table().curve(Distribution::weibull, Side::tail, shape);
+    const Curve bounded = table().curve(Distribution::weibull, Side::bounded, shape);
+    for (int twice_order : {2, 3}) {
+      const InverseCurve tail_inverse(tail, twice_order), bounded_inverse(bounded, twice_order);
+      double worst_log = 0, worst_s = 0;
+      std::vector<double> separations;
+      for (int i = -2000; i <= 2000; ++i) separations.push_back(i * 1.5e-4);  // dense across s = 0
+      for (double e = -13; e <= 0.5; e += 0.0625) separations.push_back(std::pow(10.0, e)), separations.push_back(-std::pow(10.0, e));
+      for (double s : separations) {
+        const double y = tail.log_value(twice_order, s), back = tail_inverse.separation_at_log(y);
+        worst_log = std::max(worst_log, std::fabs(tail.log_value(twice_order, back) - y) / (1 + std::fabs(y)));
+        worst_s = std::max(worst_s, std::fabs(back - s) / (1 + std::fabs(s)));
+      }
+      EXPECT_LT(worst_log, 1e-13) << "tail a=" << shape << " twice order " << twice_order;
+      EXPECT_LT(worst_s, 4e-12) << "tail a=" << shape << " twice order " << twice_order;
+
+      double worst_bounded_log = 0, worst_relative = 0;
+      for (double e = -299; e <= 0.5; e += 0.37) {  // from first contact's neighbourhood to s = -3
+        const double s = -std::pow(10.0, e);
+        const double y = bounded.log_value(twice_order, s), back = bounded_inverse.separation_at_log(y);
+        ASSERT_LT(back, 0) << "bounded a=" << shape << " s=" << s << ": past first contact";
+        worst_bounded_log =
+            std::max(worst_bounded_log, std::fabs(bounded.log_value(twice_order, back) - y) / (1 + std::fabs(y)));
+        worst_relative = std::max(worst_relative, std::fabs(back / s - 1));
+      }
+      EXPECT_LT(worst_bounded_log, 1e-13) << "bounded a=" << shape << " twice order " << twice_order;
+      // ln X_n ~ (n + a) ln|s| + c: s relative to what ln X_n ~ -1000 resolves there
+      EXPECT_LT(worst_relative, 1e-11) << "bounded a=" << shape << " twice order " << twice_order;
+    }
   }
 }
 

@@ -571,7 +571,8 @@ void bind(py::module_& m) {
 
   py::class_<InverseCurve>(m, "InverseCurve",
                            "The separation where X_n takes a value (n = twice_order/2 > 1/2): a tabulated inverse "
-                           "and one Newton step on the curve, to the curve's accuracy.")
+                           "and one Newton step on the curve (iterated where one is not enough: the Weibull tail side near "
+                           "s = 0), ln X_n within 1e-13 (1 + |ln X_n|) of the value.")
       .def(py::init([](const Curve& curve, const OrderName& order) { return InverseCurve(curve, twice_order_of(order)); }),
            "curve"_a, "twice_order"_a,
            "The curve must hold twice_order and twice_order - 2 (asperity.Error otherwise); twice_order 2..5 or\n"

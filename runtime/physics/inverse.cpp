@@ -12,6 +12,11 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double y_step = 0.125;         // knots in y = ln X_n (cubic Hermite error ~ h^4 s''''/384)
 constexpr double lowest_value = -690;    // ln 1e-300: below it the bisection path
+// An interval whose single Newton step leaves ln X_n off the value by more than this (relative
+// to 1 + |ln X_n|; a tenth of the tables' error, 1e-12) iterates to convergence instead. Tighter
+// would take in the tables' own joins (steps of ~1e-13 in ln X_n between segments, which no
+// iteration removes) and spend a second lookup there.
+constexpr double accepted_miss = 1e-13;
 }  // namespace
 
 // s in [lo, hi] where ln X_n(s) = log_value (ln X_n falls as s grows; lo may be -inf-ish
@@ -63,6 +68,57 @@ InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(curve),
     knots_[2 * k + 1] = step / slope;  // ds/dy times the step
     previous = separation;
   }
+  // One Newton step squares the table step's error where ln X_n is smooth. Where it is not (the
+  // Weibull tail side at s = 0: the density z^(a-1) starts there, so X_n's derivatives past the
+  // order n + a are infinite) the step leaves errors up to 1e-5 in s (a = 0.5). Such intervals
+  // are found here, each sampled at three points (ln X_n at the step against the value), and
+  // their queries iterate to convergence (converge: safeguarded Newton); the others keep one step.
+  // They lie around one point (s = 0): the iterated intervals are kept as one span, their hull,
+  // so the query tests two integers beside the step's own.
+  int first = intervals_, last = -1;
+  for (int k = 0; k < intervals_; ++k)
+    for (int j = 1; j < 4; ++j) {
+      const double x = j / 4.0, y = y_lo_ + (k + x) / inv_step_;
+      const double miss = curve_.log_value(twice_order_, newton(hermite(k, x), y)) - y;
+      if (!(std::fabs(miss) <= accepted_miss * (1 + std::fabs(y)))) {
+        first = std::min(first, k), last = std::max(last, k);
+        break;
+      }
+    }
+  converge_first_ = first;
+  converge_count_ = static_cast<unsigned>(std::max(0, last - first + 1));
+}
+
+double InverseCurve::hermite(int interval, double x) const noexcept {
+  const double s0 = knots_[2 * interval], d0 = knots_[2 * interval + 1];
+  const double s1 = knots_[2 * interval + 2], d1 = knots_[2 * interval + 3];
+  const double c2 = 3 * (s1 - s0) - 2 * d0 - d1, c3 = 2 * (s0 - s1) + d0 + d1;
+  return s0 + x * (d0 + x * (c2 + x * c3));
+}
+
+// The root of ln X_n(s) = log_value in [lo, hi] from a start inside: Newton, kept inside the
+// bracket that each step's sign narrows (bisection when a step leaves it), until ln X_n matches
+// the value to its rounding or a step no longer moves s beyond rounding.
+double InverseCurve::converge(double separation, double log_value, double lo, double hi) const noexcept {
+  if (!(separation >= lo && separation <= hi)) separation = 0.5 * (lo + hi);
+  for (int i = 0; i < 60; ++i) {
+    double logs[3];
+    curve_.log_values(separation, twice_order_ - 2, twice_order_, logs);
+    const double excess = logs[2] - log_value;
+    if (excess == 0 || std::isnan(excess)) return separation;
+    if (excess > 0) lo = separation;  // ln X_n falls as s grows: the root lies beyond
+    else hi = separation;
+    const double slope = -0.5 * twice_order_ * std::exp(logs[0] - logs[2]);
+    double next = separation - excess / slope;
+    if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
+    // within ln X_n's own rounding of the value: this last step is the polish
+    if (std::fabs(excess) <= 4 * std::numeric_limits<double>::epsilon() * (1 + std::fabs(log_value))) return next;
+    if (std::fabs(next - separation) <= 2 * std::numeric_limits<double>::epsilon() * std::fabs(separation) ||
+        next == lo || next == hi)
+      return next;
+    separation = next;
+  }
+  return separation;
 }
 
 double InverseCurve::newton(double separation, double log_value) const noexcept {
@@ -107,8 +163,30 @@ double InverseCurve::untabulated(double log_value) const noexcept {
       hi = std::min(lo + (hi - lo) * 2, range_max);
     if (hi >= range_max && !(curve_.log_value(twice_order_, hi) <= log_value))  // stopped by the range
       return at_range_end(hi, log_value);
+    if (curve_.side() == Side::bounded && hi < 0) return solve_near_first_contact(log_value, lo, hi);
   }
   return solve(log_value, lo, hi);
+}
+
+// Near a bounded side's first contact ln X_n ~ (n + a) ln|s| + c over hundreds of decades of s
+// (lo ~ -1e-150 to hi = -1e-300): TOMS 748 in s itself ends its iterations with the bracket
+// still decades wide, so the root is found in u = ln(-s), where ln X_n is nearly linear.
+double InverseCurve::solve_near_first_contact(double log_value, double lo, double hi) const noexcept {
+  auto excess = [&](double u) { return curve_.log_value(twice_order_, -std::exp(u)) - log_value; };
+  const double u_lo = std::log(-hi), u_hi = std::log(-lo);  // ln X_n grows with u
+  const double at_lo = excess(u_lo), at_hi = excess(u_hi);
+  if (!(at_lo <= 0)) return hi;  // below what hi reaches: first contact to its rounding
+  if (!(at_hi >= 0)) return lo;
+  if (at_lo == 0) return hi;
+  if (at_hi == 0) return lo;
+  boost::uintmax_t iterations = 200;
+  try {
+    const auto bracket = boost::math::tools::toms748_solve(excess, u_lo, u_hi, at_lo, at_hi,
+                                                           boost::math::tools::eps_tolerance<double>(50), iterations);
+    return -std::exp(0.5 * (bracket.first + bracket.second));
+  } catch (...) {
+    return -std::exp(0.5 * (u_lo + u_hi));
+  }
 }
 
 double InverseCurve::separation_at_log(double log_value) const noexcept {
@@ -120,18 +198,19 @@ double InverseCurve::separation_at_log(double log_value) const noexcept {
     // beyond what the curve serves (a scene table's range): NaN, as its lookups there
     const double bracketed = untabulated(log_value);
     if (std::isnan(bracketed)) return nan;
-    const double separation = newton(bracketed, log_value);
+    // TOMS 748's root is polished by one Newton step, unless the step crosses zero: near a
+    // bounded side's first contact ln X_n ~ (n + a) ln|s|, and a step in s from 1e-167 toward
+    // 1e-250 lands past first contact
+    const double polished = newton(bracketed, log_value);
+    const double separation = (polished < 0) == (bracketed < 0) ? polished : bracketed;
     return curve_.serves(separation) ? separation : nan;
   }
   double position = (log_value - y_lo_) * inv_step_;
   int interval = static_cast<int>(position);
   if (interval > intervals_ - 1) interval = intervals_ - 1;
-  const double x = position - interval;
-  const double s0 = knots_[2 * interval], d0 = knots_[2 * interval + 1];
-  const double s1 = knots_[2 * interval + 2], d1 = knots_[2 * interval + 3];
-  // cubic Hermite in x
-  const double c2 = 3 * (s1 - s0) - 2 * d0 - d1, c3 = 2 * (s0 - s1) + d0 + d1;
-  const double guess = s0 + x * (d0 + x * (c2 + x * c3));
+  const double guess = hermite(interval, position - interval);
+  if (static_cast<unsigned>(interval - converge_first_) < converge_count_)
+    return converge(guess, log_value, knots_[2 * interval + 2], knots_[2 * interval]);
   return newton(guess, log_value);
 }
 
