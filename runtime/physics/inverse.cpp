@@ -70,7 +70,7 @@ InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(curve),
   }
   // One Newton step squares the table step's error where ln X_n is smooth. Where it is not (the
   // Weibull tail side at s = 0: the density z^(a-1) starts there, so X_n's derivatives past the
-  // order n + a are infinite) the step leaves errors up to 1e-5 in s (a = 0.5). Such intervals
+  // order n + a are infinite) the step left errors up to 6e-5 in s (a = 0.5). Such intervals
   // are found here, each sampled at three points (ln X_n at the step against the value), and
   // their queries iterate to convergence (converge: safeguarded Newton); the others keep one step.
   // They lie around one point (s = 0): the iterated intervals are kept as one span, their hull,
