@@ -17,6 +17,20 @@ constexpr double lowest_value = -690;    // ln 1e-300: below it the bisection pa
 // would take in the tables' own joins (steps of ~1e-13 in ln X_n between segments, which no
 // iteration removes) and spend a second lookup there.
 constexpr double accepted_miss = 1e-13;
+
+// TOMS 748 (Boost.Math) on [a, b], f(a) and f(b) of opposite signs, to 50 bits: the final
+// bracket's midpoint. Boost reports a bracket it cannot keep by exception; [a, b]'s midpoint then.
+template <class Function>
+double toms748_midpoint(Function f, double a, double b, double f_a, double f_b) noexcept {
+  boost::uintmax_t iterations = 200;
+  try {
+    const auto bracket =
+        boost::math::tools::toms748_solve(f, a, b, f_a, f_b, boost::math::tools::eps_tolerance<double>(50), iterations);
+    return 0.5 * (bracket.first + bracket.second);
+  } catch (...) {
+    return 0.5 * (a + b);
+  }
+}
 }  // namespace
 
 // s in [lo, hi] where ln X_n(s) = log_value (ln X_n falls as s grows; lo may be -inf-ish
@@ -28,14 +42,7 @@ double InverseCurve::solve(double log_value, double lo, double hi) const noexcep
   if (!(at_hi <= 0)) return hi;
   if (at_lo == 0) return lo;
   if (at_hi == 0) return hi;
-  boost::uintmax_t iterations = 200;
-  try {
-    const auto bracket = boost::math::tools::toms748_solve(excess, lo, hi, at_lo, at_hi,
-                                                           boost::math::tools::eps_tolerance<double>(50), iterations);
-    return 0.5 * (bracket.first + bracket.second);
-  } catch (...) {  // Boost reports a bracket it cannot keep by exception; the midpoint then
-    return 0.5 * (lo + hi);
-  }
+  return toms748_midpoint(excess, lo, hi, at_lo, at_hi);
 }
 
 InverseCurve::InverseCurve(const Curve& curve, int twice_order) : curve_(curve), twice_order_(twice_order) {
@@ -179,14 +186,7 @@ double InverseCurve::solve_near_first_contact(double log_value, double lo, doubl
   if (!(at_hi >= 0)) return lo;
   if (at_lo == 0) return hi;
   if (at_hi == 0) return lo;
-  boost::uintmax_t iterations = 200;
-  try {
-    const auto bracket = boost::math::tools::toms748_solve(excess, u_lo, u_hi, at_lo, at_hi,
-                                                           boost::math::tools::eps_tolerance<double>(50), iterations);
-    return -std::exp(0.5 * (bracket.first + bracket.second));
-  } catch (...) {
-    return -std::exp(0.5 * (u_lo + u_hi));
-  }
+  return -std::exp(toms748_midpoint(excess, u_lo, u_hi, at_lo, at_hi));
 }
 
 double InverseCurve::separation_at_log(double log_value) const noexcept {
