@@ -10,8 +10,9 @@
 // Accuracy: the returned s reproduces ln X_n(s) = target within 1e-13 (1 + |target|), a tenth of
 // the curve's own error, wherever the curve is continuous; where the curve itself steps by its
 // rounding (between its segments, within ~1e-12 of s = 0), to that step (round-trip tested,
-// densely around s = 0 and near first contact). Cost: about one forward lookup of two orders plus the table step
-// (bench_lookup: BM_Inverse*); a few lookups in the iterated intervals.
+// densely around s = 0 and near first contact).
+// Cost: about one forward lookup of two orders plus the table step (bench_lookup: BM_Inverse*);
+// a few lookups in the iterated intervals.
 // Outside the tabulated values (the far tail below ~1e-300, deep all-touching contact, a bounded
 // side near first contact) the table step is replaced by Boost.Math's TOMS 748 root finder on
 // the curve (slower, rare). An inverse holds its curve (a shared handle): it may be copied and
