@@ -22,7 +22,8 @@ set(ASPERITY_RUNTIME_HEADERS
   contact_law.hpp        # single-asperity contact laws (Hertz, CEB, ZMC, KE, JG, DMT, JKR, MD)
   scene.hpp scene_curves.hpp
   pressure_overclosure.hpp          # FE export: CalculiX/Abaqus pressure-overclosure cards
-  number_text.hpp)                  # the one strict number reader and writer
+  number_text.hpp                   # the one strict number reader and writer
+  interrupt.hpp output.hpp)         # stopping long work; the one output policy (every file written)
 set(ASPERITY_GENERATOR_HEADERS
   generator/quadrature.hpp generator/chain_ode.hpp generator/generate.hpp generator/scene_table.hpp
   generator/law_curves.hpp)

@@ -56,7 +56,7 @@ struct ContactCurvesData {
 // The whole file's bytes (validated first; throws Error).
 std::vector<unsigned char> contact_curves_file_bytes(const ContactCurvesData& data);
 // Written with the atomic replace of every table (a crash never leaves half a file).
-void write_contact_curves_file(const ContactCurvesData& data, const std::string& path);
+void write_contact_curves_file(const ContactCurvesData& data, const std::string& path, bool overwrite = false);
 
 // Reads and validates a contact-curves table. Throws TableFileError (table_file.hpp): the
 // statuses of every table file, other_schema for a table of another kind.

@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <string>
 
+#include "asperity/interrupt.hpp"
+
 namespace asperity {
 
 // Throws asperity::Error (and leaves the target as it was, with no temporary file behind) if
@@ -15,7 +17,7 @@ namespace asperity {
 // whose process is gone, untouched for 10 minutes.
 void replace_file(const std::string& path, const void* data, std::size_t size);
 
-// The temporary-file name prefix in the target's directory (".tablegen-").
-inline constexpr const char* temporary_prefix = ".tablegen-";
+// The temporary-file name prefix in the target's directory (the output policy's).
+inline constexpr const char* temporary_prefix = ".asperity-";
 
 }  // namespace asperity

@@ -11,7 +11,7 @@
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
 #include "hdf5_handle.hpp"
-#include "replace_file.hpp"
+#include "asperity/output.hpp"
 
 namespace asperity {
 namespace {
@@ -204,9 +204,10 @@ std::vector<unsigned char> table_file_bytes(const TableData& table) {
   return sealed_file_bytes([&](hid_t file) { write_contents(file, table); });
 }
 
-void write_table_file(const TableData& table, const std::string& path) {
+void write_table_file(const TableData& table, const std::string& path, bool overwrite) {
   const std::vector<unsigned char> bytes = table_file_bytes(table);
-  replace_file(path, bytes.data(), bytes.size());
+  write_output_file(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()}, output_kinds::gw_table,
+                    overwrite);
 }
 
 std::vector<unsigned char> contact_curves_file_bytes(const ContactCurvesData& data) {
@@ -214,9 +215,27 @@ std::vector<unsigned char> contact_curves_file_bytes(const ContactCurvesData& da
   return sealed_file_bytes([&](hid_t file) { write_contact_curves_contents(file, data); });
 }
 
-void write_contact_curves_file(const ContactCurvesData& data, const std::string& path) {
+void write_contact_curves_file(const ContactCurvesData& data, const std::string& path, bool overwrite) {
   const std::vector<unsigned char> bytes = contact_curves_file_bytes(data);
-  replace_file(path, bytes.data(), bytes.size());
+  write_output_file(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()},
+                    output_kinds::contact_curves_table, overwrite);
 }
+
+// The table kinds of the output policy: a table file of ours, intact, of that kind.
+namespace output_kinds {
+namespace {
+bool is_table_of(const std::string& path, TableKind kind) {
+  try {
+    return read_table_kind(path) == kind;
+  } catch (const Error&) {
+    return false;
+  }
+}
+bool is_gw_table(const std::string& path) { return is_table_of(path, TableKind::integrals); }
+bool is_contact_curves_table(const std::string& path) { return is_table_of(path, TableKind::contact_curves); }
+}  // namespace
+const OutputKind gw_table{"a table of Greenwood-Williamson integrals", is_gw_table};
+const OutputKind contact_curves_table{"a contact-curves table", is_contact_curves_table};
+}  // namespace output_kinds
 
 }  // namespace asperity

@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include "asperity/interrupt.hpp"
+
 namespace asperity::detail {
 
 // Runs job(i) for every i < count on up to `threads` threads (0 or less: the hardware's), the
@@ -17,7 +19,8 @@ namespace asperity::detail {
 // the same results when each job writes only its own output. A thread the system refuses (a
 // memory or process limit: `--threads 4096`) is not an error: the threads that did start do its
 // share. The first exception a job throws stops the hand-out and is rethrown once every thread
-// has stopped.
+// has stopped. The workers see the caller's InterruptScope (asperity/interrupt.hpp), and each
+// job starts with poll_interrupt(): a stop asked ends the hand-out like an exception.
 template <class Job>
 void parallel_for(std::size_t count, int threads, Job&& job) {
   if (count == 0) return;
@@ -26,11 +29,14 @@ void parallel_for(std::size_t count, int threads, Job&& job) {
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  InterruptScope::State* const interrupt = current_interrupt_state();
   const auto worker = [&] {
+    const InheritInterrupt inherit(interrupt);
     for (;;) {
       const std::size_t index = next.fetch_add(1);
       if (index >= count) return;
       try {
+        poll_interrupt();
         job(index);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
