@@ -4,6 +4,9 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <new>
+#include <sstream>
 #include <string>
 
 #include "asperity/error.hpp"
@@ -109,9 +112,53 @@ void require_finite(double value, const char* what) {
   if (!std::isfinite(value)) throw Error(std::string("quadrature failed: ") + what);
 }
 
+// A failure inside Boost.Math (or an allocation) while X_m(s) of a curve is integrated, as an
+// Error naming the curve, the order and the separation. Called in a catch block.
+[[noreturn]] void throw_quadrature_failure(const char* what, const CurveId& curve, double order, double separation) {
+  std::string cause;
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    cause = "memory ran out";
+  } catch (const std::exception& error) {
+    cause = std::string("Boost.Math: ") + error.what();
+  }
+  std::ostringstream message;
+  message << "quadrature failed: " << what << " of order " << order << " of the " << to_string(curve.distribution);
+  if (curve.distribution == Distribution::weibull) message << " shape " << curve.shape;
+  message << " " << to_string(curve.side) << " curve at separation s = " << separation << " (" << cause
+          << "); the generator integrates Weibull shapes 0.3 to 50 and the Gaussian at |s| up to 1e6";
+  throw Error(message.str());
+}
+
+double log_integral_unchecked(const CurveId& curve, double order, double separation);
+double log_slope_minus_half_unchecked(const CurveId& curve, double separation);
+
 }  // namespace
 
+// Boost.Math's errors (and an allocation's) named by the curve and separation
 double log_integral(const CurveId& curve, double order, double separation) {
+  try {
+    return log_integral_unchecked(curve, order, separation);
+  } catch (const Error&) {
+    throw;
+  } catch (...) {
+    throw_quadrature_failure("ln X", curve, order, separation);
+  }
+}
+
+double log_slope_minus_half(const CurveId& curve, double separation) {
+  try {
+    return log_slope_minus_half_unchecked(curve, separation);
+  } catch (const Error&) {
+    throw;
+  } catch (...) {
+    throw_quadrature_failure("d ln X / ds", curve, -0.5, separation);
+  }
+}
+
+namespace {
+double log_integral_unchecked(const CurveId& curve, double order, double separation) {
   double result = 0;
   // On the tail side X_n(s) moves from X_n(0) by terms c s and c |s|^(n + a), n + a > 0: below
   // |s| = 1e-200 that is far below rounding, and the scaled integrands lose their scale there.
@@ -164,7 +211,7 @@ double log_integral(const CurveId& curve, double order, double separation) {
   return result;
 }
 
-double log_slope_minus_half(const CurveId& curve, double separation) {
+double log_slope_minus_half_unchecked(const CurveId& curve, double separation) {
   constexpr double order = -0.5;
   double slope = 0;
   if (curve.distribution == Distribution::gaussian) {
@@ -240,5 +287,6 @@ double log_slope_minus_half(const CurveId& curve, double separation) {
   require_finite(slope, "log_slope_minus_half");
   return slope;
 }
+}  // namespace
 
 }  // namespace asperity::generator

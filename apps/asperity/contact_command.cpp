@@ -102,6 +102,8 @@ RoughSurface surface_from(const Options& options, std::string& given_scale) {
     usage("give the height scale once: --sigma (Weibull: its scale; Gaussian: the rms summit height) or --rms");
   if (!given(options.radius)) throw CLI::RequiredError("--radius");
   if (given(options.density) == given(options.count)) usage("give the summit density once: --density or --count");
+  // (named here: the surface's own check would name the Weibull scale it converts to)
+  if (given(options.rms) && !(options.rms > 0)) usage("--rms must be a positive length [m], got " + number(options.rms));
   surface.summit_radius = options.radius;
   if (given(options.density)) surface.summit_density = options.density;
   else if (!(options.count > 0)) usage("--count must be positive, got " + number(options.count));
@@ -163,6 +165,39 @@ PhysicalState query(const ContactModel& model, const std::string& kind, double v
   if (kind == "load") return model.at_load(value);
   if (kind == "pressure") return model.at_pressure(value);
   return model.at_real_area(value);
+}
+
+// A load, pressure or real area asked of a Greenwood-Williamson surface: positive (at 0 or below
+// there is no contact, which no finite separation answers: the tail side's is infinite).
+void require_positive_query(const char* name, double value, const char* unit) {
+  if (given(value) && !(value > 0))
+    usage(std::string(name) + " must be positive, got " + number(value) + " " + unit +
+          " (no contact: no finite separation carries it)");
+}
+
+const char* query_unit(const std::string& kind) {
+  return kind == "separation" ? "m" : kind == "load" ? "N" : kind == "pressure" ? "Pa" : "m^2";
+}
+
+// The range the model answers (a scene table's: outside, NaN), in the unit of a `kind` query
+std::string model_range(const ContactModel& model, const std::string& kind) {
+  const double area = model.surface().nominal_area;
+  if (kind == "separation")
+    return "separations " + number(model.min_separation()) + " to " + number(model.max_separation()) + " m" +
+           (model.surface().side == Side::bounded ? " (and from 0 on: no contact)" : "");
+  if (kind == "load") return "loads " + number(model.min_load()) + " to " + number(model.max_load()) + " N";
+  if (kind == "pressure")
+    return "nominal pressures " + number(model.min_load() / area) + " to " + number(model.max_load() / area) + " Pa";
+  return "real areas " + number(model.min_real_area()) + " to " + number(model.max_real_area()) + " m^2";
+}
+
+// A query the model answers NaN (outside a scene table's range): refused with the range it covers
+void check_answered(const ContactModel& model, const std::string& option, const std::string& kind, double value,
+                    const PhysicalState& state) {
+  if (!std::isnan(state.load) || std::isnan(value)) return;
+  throw Error(option + " " + number(value) + " " + query_unit(kind) +
+              " is outside the range the table serves for this surface: " + model_range(model, kind) +
+              " (a scene table serves its scene's range: a full table, such as the default, serves every one)");
 }
 
 // the CSV's columns: the physical state's fields (physical_state_fields.hpp), in their order
@@ -385,9 +420,7 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
   const bool counted = !data.summit_count.empty();
   std::printf("separation_m,separation_from_mean_summit_m,nominal_pressure_Pa,stiffness_per_area_Pa_per_m,"
               "area_fraction%s\n", counted ? ",summits_in_contact_per_m2" : "");
-  long outside = 0;
   const auto row = [&](const ContactCurvesState& state) {
-    if (std::isnan(state.pressure)) ++outside;
     std::printf("%.10g,%.10g,%.10g,%.10g,%.10g", state.separation, state.separation - data.mean_summit_height,
                 state.pressure, state.stiffness, state.area_fraction);
     if (counted) std::printf(",%.10g", curves.summit_count(state.separation));
@@ -400,17 +433,32 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
     if (std::isnan(state.separation)) state.stiffness = state.area_fraction = NAN;
     return state;
   };
+  // every query checked before any row is written: one outside the range served is refused whole
+  // (nothing is extrapolated), with the range in its unit
+  const auto check = [&](const std::string& option, const std::string& kind, double value) {
+    const bool separation = kind == "separation";
+    const double lo = separation ? curves.min_separation() : curves.min_pressure();
+    const double hi = separation ? curves.max_separation() : curves.max_pressure();
+    const ContactCurvesState state = at(kind, value);
+    if (value >= lo && value <= hi && !std::isnan(separation ? state.pressure : state.separation)) return;
+    throw Error(option + " " + number(value) + (separation ? " m" : " Pa") +
+                " is outside the range the contact curves serve (nothing is extrapolated): " +
+                (separation ? "separations " : "nominal pressures ") + number(lo) + " to " + number(hi) +
+                (separation ? " m" : " Pa") +
+                (curves.has_tension() && !separation ? " (the stable branch, up to the pull-off)" : ""));
+  };
   if (!options.sweep.empty()) {
+    for (long k = 0; k < sweep.count; ++k)
+      check("--sweep " + sweep.kind + " (query " + std::to_string(k + 1) + " of " + std::to_string(sweep.count) + ")",
+            sweep.kind, sweep_value(sweep, k));
     for (long k = 0; k < sweep.count; ++k) row(at(sweep.kind, sweep_value(sweep, k)));
   } else if (given(options.separation)) {
+    check("--separation", "separation", options.separation);
     row(at("separation", options.separation));
   } else {
+    check("--pressure", "pressure", options.pressure);
     row(at("pressure", options.pressure));
   }
-  if (outside > 0)
-    warn(command, std::to_string(outside) + " of the queries lie outside the curves' range (their values are nan): " +
-                      "separations " + number(curves.min_separation()) + " to " + number(curves.max_separation()) +
-                      " m, pressures " + number(curves.min_pressure()) + " to " + number(curves.max_pressure()) + " Pa");
   return exit_success;
 }
 
@@ -460,14 +508,38 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!mean_plane && given(options.mean_summit_height))
     usage("--mean-summit-height goes with --datum mean-plane (or --overclosure-datum mean-plane)");
   if (mean_plane) separation_datum = SeparationDatum::mean_plane;
+  require_positive_query("--load", options.load, "N");
+  require_positive_query("--pressure", options.pressure, "Pa");
+  require_positive_query("--real-area", options.real_area, "m^2");
   Sweep sweep;
   if (!options.sweep.empty()) sweep = sweep_from(options.sweep);
 
   const Table table = open_table(options.table);
   const ContactModel model(table, surface, separation_datum, options.mean_summit_height);
   for (const std::string& line : implausible_values(surface)) warn(command, line);
+  if (mean_plane)
+    for (const std::string& line : implausible_mean_summit_height(surface, options.mean_summit_height))
+      warn(command, line);
   if (!given_scale.empty()) note(command, given_scale);
   if (!options.export_format.empty()) return export_law(options, model, command, format, units, datum);
+
+  // every query answered before any row is written: one outside the range is refused whole
+  std::string kind = "real-area", option = "--real-area";
+  double value = options.real_area;
+  if (given(options.separation)) kind = "separation", option = "--separation", value = options.separation;
+  else if (given(options.load)) kind = "load", option = "--load", value = options.load;
+  else if (given(options.pressure)) kind = "pressure", option = "--pressure", value = options.pressure;
+  PhysicalState single{};
+  if (!options.sweep.empty()) {
+    for (long k = 0; k < sweep.count; ++k) {
+      const double at = sweep_value(sweep, k);
+      check_answered(model, "--sweep " + sweep.kind + " (query " + std::to_string(k + 1) + " of " +
+                                std::to_string(sweep.count) + ")", sweep.kind, at, query(model, sweep.kind, at));
+    }
+  } else {
+    single = query(model, kind, value);
+    check_answered(model, option, kind, value, single);
+  }
 
   note(command, "separation_m (and --separation, --sweep separation): " +
                     describe_separation_datum(separation_datum, options.mean_summit_height) +
@@ -480,14 +552,8 @@ int run_contact(const Options& options, const CLI::App& command) {
   };
   if (!options.sweep.empty()) {
     for (long k = 0; k < sweep.count; ++k) row(query(model, sweep.kind, sweep_value(sweep, k)));
-  } else if (given(options.separation)) {
-    row(model.at_separation(options.separation));
-  } else if (given(options.load)) {
-    row(model.at_load(options.load));
-  } else if (given(options.pressure)) {
-    row(model.at_pressure(options.pressure));
   } else {
-    row(model.at_real_area(options.real_area));
+    row(single);
   }
   warn_past_gw(command, largest_fraction);
   return exit_success;
@@ -592,7 +658,9 @@ void add_contact_command(CLI::App& app) {
       "A measured surface: --table FILE of contact curves (asperity exact-contact --table) is the surface\n"
       "itself (no --dist ...): --separation (from the table's datum, the map's mean plane), --pressure,\n"
       "--sweep separation|pressure or --export; CSV separation_m, separation_from_mean_summit_m,\n"
-      "nominal_pressure_Pa, stiffness_per_area_Pa_per_m, area_fraction; nan outside the range served.\n" +
+      "nominal_pressure_Pa, stiffness_per_area_Pa_per_m, area_fraction. A query outside the range a table\n"
+      "serves (a contact-curves table's, or a scene table's for a surface) is refused with that range.\n"
+      "--load, --pressure and --real-area of a surface (--dist) must be positive.\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
   set_action(*command, [options, self] { return run_contact(*options, *self); });

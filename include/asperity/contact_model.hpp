@@ -94,6 +94,20 @@ class ContactModel {
     return datum_offset_ == 0 ? separation / surface_.height_scale : separation / surface_.height_scale + datum_offset_;
   }
 
+  // The range the model answers (a scene table's; everything for a full table's curves):
+  // separations [m, the model's datum] from min_separation() to max_separation() (-inf to +inf
+  // for a full table), and on the bounded side every separation at or past first contact (no
+  // contact); the loads [N] and real areas [m^2] at those ends (0 to +inf for a full table).
+  // Outside it every answer is NaN; `answers_separation` says where (false for NaN). The command
+  // refuses such a query with this range, Python warns (asperity.OutOfRangeWarning).
+  double min_separation() const noexcept;
+  double max_separation() const noexcept;
+  double min_load() const noexcept;
+  double max_load() const noexcept;
+  double min_real_area() const noexcept;
+  double max_real_area() const noexcept;
+  bool answers_separation(double separation) const noexcept;
+
  private:
   PhysicalState state_at_dimensionless(double s) const noexcept;
   PhysicalState no_contact() const noexcept;

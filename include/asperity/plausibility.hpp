@@ -34,4 +34,11 @@ inline constexpr double plausible_nominal_area_max = 100;                // m^2
 // finite, <= 0) are validate()'s to report: none here.
 std::vector<std::string> implausible_values(const RoughSurface& surface);
 
+// The mean-plane datum's mean summit height above the mean plane [m] (separation_datum.hpp):
+// one line if it is implausible, none otherwise. Summits are the surface's local maxima, their
+// mean height stands above the mean plane: below it (negative) is most likely a sign slip; a
+// length outside the height scale's bounds above (0.1 nm .. 1 mm) a unit slip. NaN (not given)
+// or not finite: none (the datum's own check refuses it).
+std::vector<std::string> implausible_mean_summit_height(const RoughSurface& surface, double mean_summit_height);
+
 }  // namespace asperity

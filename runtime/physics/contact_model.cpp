@@ -209,4 +209,26 @@ PhysicalState ContactModel::at_real_area(double real_area) const noexcept {
   return state_at_dimensionless(area_inverse_.separation_at_log(std::log(real_area) - std::log(scales_.area)));
 }
 
+// The range: the curve's served separations (a scene table's), as the model's physical ones
+double ContactModel::min_separation() const noexcept { return physical(curve_.served_min_separation()); }
+double ContactModel::max_separation() const noexcept { return physical(curve_.served_max_separation()); }
+// (the states at the ends in s itself: a round trip through the physical separation could
+// round past the range)
+double ContactModel::min_load() const noexcept {
+  return state_at_dimensionless(curve_.served_max_separation()).load;
+}
+double ContactModel::max_load() const noexcept {
+  return state_at_dimensionless(curve_.served_min_separation()).load;
+}
+double ContactModel::min_real_area() const noexcept {
+  return state_at_dimensionless(curve_.served_max_separation()).real_area;
+}
+double ContactModel::max_real_area() const noexcept {
+  return state_at_dimensionless(curve_.served_min_separation()).real_area;
+}
+bool ContactModel::answers_separation(double separation) const noexcept {
+  const double s = dimensionless(separation);
+  return curve_.has_order(orders::load) && !std::isnan(s) && (std::isinf(s) || curve_.serves(s));
+}
+
 }  // namespace asperity

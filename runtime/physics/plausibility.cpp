@@ -71,4 +71,18 @@ std::vector<std::string> implausible_values(const RoughSurface& surface) {
   return out;
 }
 
+std::vector<std::string> implausible_mean_summit_height(const RoughSurface& surface, double mean_summit_height) {
+  std::vector<std::string> out;
+  if (!std::isfinite(mean_summit_height)) return out;
+  if (mean_summit_height < 0) {
+    out.push_back("mean summit height " + g(mean_summit_height) +
+                  " m above the mean plane is implausible (below it: summits, the surface's local maxima, stand "
+                  "above the mean plane, typically by about the height scale sigma_s, " + g(surface.height_scale) +
+                  " m here): is its sign right?");
+    return out;
+  }
+  check_length(out, "mean summit height", mean_summit_height, plausible_height_scale);
+  return out;
+}
+
 }  // namespace asperity
