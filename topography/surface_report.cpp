@@ -12,7 +12,6 @@
 
 #include "asperity/error.hpp"
 #include "reader_support.hpp"
-#include "report_directory.hpp"
 #include "svg_plot.hpp"
 
 namespace asperity::topography {
@@ -571,14 +570,26 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
   return out.str();
 }
 
-ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& directory) {
-  // every file a report of this schema can hold (and the PNGs of earlier versions)
-  const std::vector<std::string> names = {"report.md",   "report.json", "summits.csv", "curves.csv", "fits.svg",
-                                          "contact.svg", "law.svg",     "fits.png",    "contact.png"};
-  detail::ReportDirectory folder(directory);
-  folder.remove_stale_temporaries(names);
+OutputPlan report_plan(const std::string& directory, const std::string& input, bool overwrite) {
+  OutputPlan plan(overwrite);
+  if (!input.empty()) plan.input(input);
+  std::vector<FolderEntry> entries;
+  for (const char* name : report_file_names) entries.push_back({name, &output_kinds::report_file});
+  plan.folder("report folder", directory, std::move(entries));
+  plan.check();
+  return plan;
+}
+
+ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& directory, bool overwrite) {
+  // the report's files: staged, renamed into place together; a file of an earlier report that
+  // this one does not write is removed (only if it is a report file of ours)
+  OutputTransaction folder(report_plan(directory, a.map.source, overwrite));
+  const auto write = [&](const char* name, const std::string& bytes) {
+    folder.stage(directory, name, bytes);
+    return (std::filesystem::path(directory) / name).string();
+  };
   ReportOutcome outcome;
-  outcome.files.push_back(folder.write("report.json", analysis_json(a)));
+  outcome.files.push_back(write("report.json", analysis_json(a)));
 
   std::ostringstream summits;
   summits << "i,j,x_m,y_m,height_m,mean_curvature_per_m,kappa1_per_m,kappa2_per_m\n";
@@ -586,7 +597,7 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   for (const Summit& s : a.summits.list)
     summits << s.i << ',' << s.j << ',' << static_cast<double>(s.i) * a.map.dx << ',' << static_cast<double>(s.j) * a.map.dy
             << ',' << s.height << ',' << s.mean_curvature << ',' << s.kappa1 << ',' << s.kappa2 << '\n';
-  outcome.files.push_back(folder.write("summits.csv", summits.str()));
+  outcome.files.push_back(write("summits.csv", summits.str()));
 
   if (a.contact) {
     std::ostringstream curves;
@@ -604,14 +615,14 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
         curves << "law:" << a.law->law << ',' << s.pressure << ',' << s.load << ',' << s.mean_separation << ','
                << s.separation << ',' << s.area_fraction << ',' << s.real_area << ',' << s.stiffness << ','
                << s.stiffness / a.contact->nominal_area << ',' << s.stiffness_over_load << ',' << s.count << '\n';
-    outcome.files.push_back(folder.write("curves.csv", curves.str()));
+    outcome.files.push_back(write("curves.csv", curves.str()));
   }
 
   // plots, drawn here (svg_plot.hpp): nothing is run
   if (!a.noise_floor.reached) {
-    outcome.files.push_back(folder.write("fits.svg", fits_svg(a)));
-    if (a.contact) outcome.files.push_back(folder.write("contact.svg", contact_svg(a)));
-    if (a.contact && a.law && a.law->served) outcome.files.push_back(folder.write("law.svg", law_svg(a)));
+    outcome.files.push_back(write("fits.svg", fits_svg(a)));
+    if (a.contact) outcome.files.push_back(write("contact.svg", contact_svg(a)));
+    if (a.contact && a.law && a.law->served) outcome.files.push_back(write("law.svg", law_svg(a)));
     outcome.plots = true;
   } else {
     outcome.plot_note = "no plots: " + a.noise_floor.text;
@@ -789,15 +800,8 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   }
   }  // not at the noise floor
   if (!outcome.plots) md << "\n_" << outcome.plot_note << "._\n";
-  outcome.files.insert(outcome.files.begin(), folder.write("report.md", md.str()));
-  // what an earlier run wrote and this one did not
-  for (const std::string& name : names) {
-    bool written = false;
-    for (const std::string& file : outcome.files)
-      written = written || std::filesystem::path(file).filename() == name;
-    if (!written) folder.remove(name);
-  }
-  folder.finish();
+  outcome.files.insert(outcome.files.begin(), write("report.md", md.str()));
+  folder.commit();
   return outcome;
 }
 

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/output.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/exact_contact_table.hpp"
@@ -38,7 +38,7 @@ struct Options {
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
          tolerance = not_given, table_safety = not_given, face_size = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
-  bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false;
+  bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false, overwrite = false;
 };
 
 bool given(double value) { return !std::isnan(value); }
@@ -127,24 +127,54 @@ Steps steps_from(const Options& o) {
 }
 
 // A field as a 16-bit binary PGM (P5), black at 0 and white at `top`; rows in the map's order
-// (the first row, y = 0, at the top); NaN (a missing point) black.
-void write_pgm(const std::string& path, const std::vector<double>& field, std::size_t nx, std::size_t ny, double top) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error("cannot write " + quote_text(path, 4096));
-  out << "P5\n" << nx << " " << ny << "\n65535\n";
-  std::vector<unsigned char> row(2 * nx);
-  for (std::size_t j = 0; j < ny; ++j) {
+// (the first row, y = 0, at the top); NaN (a missing point) black. The comment line marks it as
+// ours (the output policy replaces only images of ours).
+std::string pgm_bytes(const std::vector<double>& field, std::size_t nx, std::size_t ny, double top,
+                      const std::string& what) {
+  std::string bytes = "P5\n# asperity exact-contact " + what + "\n" + std::to_string(nx) + " " + std::to_string(ny) +
+                      "\n65535\n";
+  bytes.reserve(bytes.size() + 2 * nx * ny);
+  for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) {
       const double v = field[j * nx + i];
       const double level = std::isnan(v) || !(top > 0) ? 0.0 : std::clamp(v / top, 0.0, 1.0);
       const auto value = static_cast<std::uint16_t>(std::lround(level * 65535));
-      row[2 * i] = static_cast<unsigned char>(value >> 8);
-      row[2 * i + 1] = static_cast<unsigned char>(value & 0xff);
+      bytes += static_cast<char>(value >> 8);
+      bytes += static_cast<char>(value & 0xff);
     }
-    out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size()));
+  return bytes;
+}
+
+std::string field_name(std::size_t step, const char* field) {
+  return "step-" + std::to_string(step + 1) + "-" + field + ".pgm";
+}
+
+// The run's outputs, checked before the map is read (docs/reliability.md, "Outputs"): nothing
+// is solved for outputs that cannot be written.
+OutputPlan output_plan(const Options& o, std::size_t steps) {
+  OutputPlan plan(o.overwrite);
+  plan.input(o.file);
+  if (!o.fields.empty()) {
+    std::vector<FolderEntry> images;
+    for (std::size_t k = 0; k < steps; ++k)
+      for (const char* field : {"pressure", "gap"}) images.push_back({field_name(k, field), &output_kinds::field_image});
+    plan.folder("--fields", o.fields, std::move(images));
   }
-  out.close();
-  if (!out) throw Error("writing " + quote_text(path, 4096) + " failed");
+  if (!o.card.empty()) plan.file("--card", o.card, output_kinds::card);
+  if (!o.table.empty()) plan.file("--table", o.table, output_kinds::contact_curves_table);
+  plan.check();
+  return plan;
+}
+
+void stage_fields(OutputTransaction& outputs, const Options& o, const topo::ExactContact& solver,
+                  const topo::HeightMap& map, std::size_t step, double max_pressure) {
+  const std::vector<double> pressure = solver.pressure_field(), gap = solver.gap_field();
+  double top_gap = 0;
+  for (double g : gap)
+    if (g > top_gap) top_gap = g;
+  const std::string label = "step " + std::to_string(step + 1);
+  outputs.stage(o.fields, field_name(step, "pressure"), pgm_bytes(pressure, map.nx, map.ny, max_pressure, label + " pressure"));
+  outputs.stage(o.fields, field_name(step, "gap"), pgm_bytes(gap, map.nx, map.ny, top_gap, label + " gap"));
 }
 
 std::string csv_row(const topo::ContactStep& s) {
@@ -181,6 +211,106 @@ nlohmann::json step_json(const topo::ContactStep& s) {
           {"stiffness_iterations", s.stiffness_iterations},
           {"stiffness_residual", value(s.stiffness_residual)}};
 }
+
+// The contact-curves table of the solved nodes (with the solves between them that measure its
+// error), staged; returns the line that says what it states.
+std::string stage_table(OutputTransaction& outputs, const Options& o, topo::ExactContact& solver,
+                        const topo::HeightMap& map, const std::vector<topo::ContactStep>& results,
+                        const std::vector<double>& pressures, const topo::ExactContactOptions& options) {
+  const std::string boundary = topo::contact_boundary_name(options.boundary);
+  const std::string kernel = topo::contact_kernel_name(options.kernel);
+  std::ostringstream description, generator_options;
+  description << "the exact elastic contact of a measured surface with a flat (boundary elements, " << boundary
+              << " boundary, " << kernel << " kernel, " << topo::contact_solver_name(options.solver)
+              << " solver, E* " << format_double(options.contact_modulus) << " Pa, tolerance "
+              << format_double(options.tolerance) << ")\nmap: " << map.source << " (" << map.nx << " x " << map.ny
+              << " points, dx " << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
+              << (o.no_level ? "" : ", leveled") << ")";
+  generator_options << "nodes at pressures [Pa]:";
+  for (double p : pressures) generator_options << " " << format_double(p);
+  generator_options << "; checks at their neighbours' geometric means";
+  const topo::ExactContactTable table = topo::measure_exact_contact_table(
+      solver, results, description.str(), generator_options.str(),
+      given(o.table_safety) ? o.table_safety : topo::default_table_safety_factor);
+  const std::vector<unsigned char> bytes = contact_curves_file_bytes(table.data);
+  outputs.stage(o.table, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  std::ostringstream line;
+  line << "table " << printable_path(o.table) << ": " << table.nodes.size() << " nodes, separations "
+       << format_double(table.data.separation.front()) << " to " << format_double(table.data.separation.back())
+       << " m; measured at " << table.checks.size() << " solves between them, largest relative errors: pressure "
+       << table.data.measured_rel_error[0] << ", stiffness " << table.data.measured_rel_error[1]
+       << ", area fraction " << table.data.measured_rel_error[2] << " (stored bounds " << table.data.safety_factor
+       << " times these)";
+  if (table.limited_intervals > 0)
+    line << "; " << table.limited_intervals << " intervals limited to keep the pressure monotone";
+  return line.str();
+}
+
+// The pressure-overclosure card of the solved curve, staged (warnings on standard error).
+void stage_card(OutputTransaction& outputs, const Options& o, const CLI::App& command, const topo::ExactContact& solver,
+                const topo::HeightMap& map, const std::vector<topo::ContactStep>& results,
+                const topo::ExactContactOptions& options, CardFormat card_format, CardUnits card_units,
+                OverclosureDatum card_datum) {
+  const std::string boundary = topo::contact_boundary_name(options.boundary);
+  const std::string kernel = topo::contact_kernel_name(options.kernel);
+  // overclosure in the card's datum: -(mean gap) from the map's mean plane, shifted
+  const double summit = solver.mean_summit_height();
+  if (card_datum == OverclosureDatum::mean_summit && !std::isfinite(summit))
+    throw Error("the map has no summits: the card's datum (the mean summit height) does not exist; give "
+                "--overclosure-datum mean-plane or zero-pressure");
+  const double shift = card_datum == OverclosureDatum::mean_summit   ? summit
+                       : card_datum == OverclosureDatum::zero_pressure ? solver.max_height()
+                                                                       : 0.0;
+  std::vector<PressureOverclosurePoint> points;
+  points.push_back({0.0, shift - solver.max_height()});  // first contact
+  std::vector<topo::ContactStep> sorted = results;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const topo::ContactStep& a, const topo::ContactStep& b) { return a.pressure < b.pressure; });
+  for (const topo::ContactStep& s : sorted) {
+    const double overclosure = card_datum == OverclosureDatum::mean_summit ? -s.separation_from_mean_summit
+                                                                           : shift - s.mean_gap;
+    if (s.pressure > 0 && overclosure > points.back().overclosure) points.push_back({s.pressure, overclosure});
+  }
+  const TabulatedCard card = tabulate_points(points, card_max_points(o.max_points, card_format), card_datum,
+                                             shift - summit);  // the flat at the mean summit height
+  std::ostringstream description, notes;
+  description << "asperity " ASPERITY_VERSION_STRING ": the exact elastic contact of a measured surface with a flat\n"
+              << "(boundary elements, " << boundary << " boundary, " << kernel << " kernel, E* "
+              << format_double(options.contact_modulus) << " Pa)\n"
+              << "map: " << map.source << " (" << map.nx << " x " << map.ny << " points)";
+  notes << "points: " << points.size() - 1 << " solutions of the contact problem (relative residual at most "
+        << options.tolerance << ");\n"
+        << "  the card interpolates linearly between them: give as many pressures as the analysis needs\n"
+        << "first point: zero pressure at first contact (the flat at the map's highest point)";
+  std::ostringstream out;
+  write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str());
+  outputs.stage(o.card, out.str());
+  if (card.points.size() < card.given_points)
+    warn(command, "the card keeps " + std::to_string(card.points.size()) + " of the curve's " +
+                      std::to_string(card.given_points) + " points (--max-points " +
+                      std::to_string(card.max_points) + "): linear interpolation between its rows is within " +
+                      format_double(card.tolerance) + " of the points dropped (relative, in pressure)");
+  if (card_format == CardFormat::calculix) {
+    // the card's pressure at a clearance: its linear interpolation (zero before the first point)
+    const std::vector<PressureOverclosurePoint>& rows = card.points;
+    const auto pressure_at = [&rows](double clearance) {
+      const double h = -clearance;
+      if (!(h > rows.front().overclosure)) return 0.0;
+      for (std::size_t i = 1; i < rows.size(); ++i)
+        if (h <= rows[i].overclosure)
+          return rows[i - 1].pressure + (h - rows[i - 1].overclosure) / (rows[i].overclosure - rows[i - 1].overclosure) *
+                                            (rows[i].pressure - rows[i - 1].pressure);
+      return rows.back().pressure;
+    };
+    check_spring_cutoff(command, -rows.front().overclosure, o.face_size, pressure_at,
+                        "use --overclosure-datum zero-pressure (and start the model with the surfaces touching) "
+                        "or larger faces");
+  }
+}
+
+void print_results(const Options& o, const topo::HeightMap& map, const topo::ExactContact& solver,
+                   const topo::ExactContactOptions& options, bool by_pressure,
+                   const std::vector<topo::ContactStep>& results);
 
 int run_exact_contact(const Options& o, const CLI::App& command) {
   const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
@@ -228,6 +358,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
       usage("--table-safety must be from 1 to 1000");
   }
 
+  const OutputPlan plan = output_plan(o, steps.values.size());  // before any work
   topo::HeightMap map = topo::read_height_map(o.file, read_options(o));
   if (!o.no_level) topo::subtract_plane(map, topo::fit_plane(map));
 
@@ -249,110 +380,37 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
       note(command, line.str());
     };
   topo::ExactContact solver(map, options);
+  OutputTransaction outputs(plan);  // each output staged; renamed into place only when all are done
 
   std::vector<topo::ContactStep> results;
   for (step_index = 0; step_index < steps.values.size(); ++step_index) {
     step_start = clock::now();
     const double value = steps.values[step_index];
     results.push_back(steps.by_pressure ? solver.at_pressure(value) : solver.at_mean_gap(value));
-    if (!o.fields.empty()) {
-      const std::string stem = o.fields + "/step-" + std::to_string(step_index + 1);
-      const std::vector<double> pressure = solver.pressure_field(), gap = solver.gap_field();
-      double top_gap = 0;
-      for (double g : gap)
-        if (g > top_gap) top_gap = g;
-      write_pgm(stem + "-pressure.pgm", pressure, map.nx, map.ny, results.back().max_pressure);
-      write_pgm(stem + "-gap.pgm", gap, map.nx, map.ny, top_gap);
-    }
+    if (!o.fields.empty()) stage_fields(outputs, o, solver, map, step_index, results.back().max_pressure);
   }
 
-  const std::string boundary = topo::contact_boundary_name(options.boundary);
-  const std::string kernel = topo::contact_kernel_name(options.kernel);
+  std::string table_note;
   if (!o.table.empty()) {
-    std::ostringstream description, generator_options;
-    description << "the exact elastic contact of a measured surface with a flat (boundary elements, " << boundary
-                << " boundary, " << kernel << " kernel, " << topo::contact_solver_name(options.solver)
-                << " solver, E* " << format_double(modulus) << " Pa, tolerance " << format_double(options.tolerance)
-                << ")\nmap: " << map.source << " (" << map.nx << " x " << map.ny << " points, dx "
-                << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
-                << (o.no_level ? "" : ", leveled") << ")";
-    generator_options << "nodes at pressures [Pa]:";
-    for (double p : steps.values) generator_options << " " << format_double(p);
-    generator_options << "; checks at their neighbours' geometric means";
     step_index = steps.values.size();  // the checks: no step number in the progress lines
     step_start = clock::now();
-    const topo::ExactContactTable table = topo::measure_exact_contact_table(
-        solver, results, description.str(), generator_options.str(),
-        given(o.table_safety) ? o.table_safety : topo::default_table_safety_factor);
-    write_contact_curves_file(table.data, o.table);
-    std::ostringstream line;
-    line << "table " << o.table << ": " << table.nodes.size() << " nodes, separations " << format_double(table.data.separation.front())
-         << " to " << format_double(table.data.separation.back()) << " m; measured at " << table.checks.size()
-         << " solves between them, largest relative errors: pressure " << table.data.measured_rel_error[0]
-         << ", stiffness " << table.data.measured_rel_error[1] << ", area fraction "
-         << table.data.measured_rel_error[2] << " (stored bounds " << table.data.safety_factor << " times these)";
-    if (table.limited_intervals > 0)
-      line << "; " << table.limited_intervals << " intervals limited to keep the pressure monotone";
-    note(command, line.str());  // what the table states, not progress: also with --quiet
+    table_note = stage_table(outputs, o, solver, map, results, steps.values, options);
   }
-  if (!o.card.empty()) {
-    // overclosure in the card's datum: -(mean gap) from the map's mean plane, shifted
-    const double summit = solver.mean_summit_height();
-    if (card_datum == OverclosureDatum::mean_summit && !std::isfinite(summit))
-      throw Error("the map has no summits: the card's datum (the mean summit height) does not exist; give "
-                  "--overclosure-datum mean-plane or zero-pressure");
-    const double shift = card_datum == OverclosureDatum::mean_summit   ? summit
-                         : card_datum == OverclosureDatum::zero_pressure ? solver.max_height()
-                                                                         : 0.0;
-    std::vector<PressureOverclosurePoint> points;
-    points.push_back({0.0, shift - solver.max_height()});  // first contact
-    std::vector<topo::ContactStep> sorted = results;
-    std::sort(sorted.begin(), sorted.end(),
-              [](const topo::ContactStep& a, const topo::ContactStep& b) { return a.pressure < b.pressure; });
-    for (const topo::ContactStep& s : sorted) {
-      const double overclosure = card_datum == OverclosureDatum::mean_summit ? -s.separation_from_mean_summit
-                                                                             : shift - s.mean_gap;
-      if (s.pressure > 0 && overclosure > points.back().overclosure) points.push_back({s.pressure, overclosure});
-    }
-    const TabulatedCard card = tabulate_points(points, card_max_points(o.max_points, card_format), card_datum,
-                                               shift - summit);  // the flat at the mean summit height
-    std::ostringstream description, notes;
-    description << "asperity " ASPERITY_VERSION_STRING ": the exact elastic contact of a measured surface with a flat\n"
-                << "(boundary elements, " << boundary << " boundary, " << kernel << " kernel, E* "
-                << format_double(modulus) << " Pa)\n"
-                << "map: " << map.source << " (" << map.nx << " x " << map.ny << " points)";
-    notes << "points: " << points.size() - 1 << " solutions of the contact problem (relative residual at most "
-          << options.tolerance << ");\n"
-          << "  the card interpolates linearly between them: give as many pressures as the analysis needs\n"
-          << "first point: zero pressure at first contact (the flat at the map's highest point)";
-    std::ofstream out(o.card);
-    if (!out) throw Error("cannot write " + quote_text(o.card, 4096));
-    write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str());
-    out.close();
-    if (!out) throw Error("writing " + quote_text(o.card, 4096) + " failed");
-    if (card.points.size() < card.given_points)
-      warn(command, "the card keeps " + std::to_string(card.points.size()) + " of the curve's " +
-                        std::to_string(card.given_points) + " points (--max-points " +
-                        std::to_string(card.max_points) + "): linear interpolation between its rows is within " +
-                        format_double(card.tolerance) + " of the points dropped (relative, in pressure)");
-    if (card_format == CardFormat::calculix) {
-      // the card's pressure at a clearance: its linear interpolation (zero before the first point)
-      const std::vector<PressureOverclosurePoint>& rows = card.points;
-      const auto pressure_at = [&rows](double clearance) {
-        const double h = -clearance;
-        if (!(h > rows.front().overclosure)) return 0.0;
-        for (std::size_t i = 1; i < rows.size(); ++i)
-          if (h <= rows[i].overclosure)
-            return rows[i - 1].pressure + (h - rows[i - 1].overclosure) / (rows[i].overclosure - rows[i - 1].overclosure) *
-                                              (rows[i].pressure - rows[i - 1].pressure);
-        return rows.back().pressure;
-      };
-      check_spring_cutoff(command, -rows.front().overclosure, o.face_size, pressure_at,
-                          "use --overclosure-datum zero-pressure (and start the model with the surfaces touching) "
-                          "or larger faces");
-    }
-  }
+  if (!o.card.empty()) stage_card(outputs, o, command, solver, map, results, options, card_format, card_units, card_datum);
+  outputs.commit();
+  if (!table_note.empty()) note(command, table_note);  // what the table states, not progress: also with --quiet
 
+  print_results(o, map, solver, options, steps.by_pressure, results);
+  return exit_success;
+}
+
+// The results on standard output: JSON, or '#' lines saying what was solved and a CSV row a step.
+void print_results(const Options& o, const topo::HeightMap& map, const topo::ExactContact& solver,
+                   const topo::ExactContactOptions& options, bool by_pressure,
+                   const std::vector<topo::ContactStep>& results) {
+  const std::string boundary = topo::contact_boundary_name(options.boundary);
+  const std::string kernel = topo::contact_kernel_name(options.kernel);
+  const double modulus = options.contact_modulus;
   if (o.json) {
     nlohmann::json steps_json = nlohmann::json::array();
     for (const topo::ContactStep& s : results) steps_json.push_back(step_json(s));
@@ -379,7 +437,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
           {"algorithm", topo::contact_solver_name(options.solver)},
           {"coarse_start", options.coarse_start},
           {"tolerance", options.tolerance},
-          {"driven_by", steps.by_pressure ? "pressure" : "mean_gap"}}},
+          {"driven_by", by_pressure ? "pressure" : "mean_gap"}}},
         {"steps", steps_json}};
     std::cout << document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
   } else {
@@ -396,7 +454,6 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
                  "max_pressure_Pa,iterations,solves,residual,stiffness_iterations,stiffness_residual\n";
     for (const topo::ContactStep& s : results) std::cout << csv_row(s);
   }
-  return exit_success;
 }
 
 }  // namespace
@@ -476,6 +533,10 @@ void add_exact_contact_command(CLI::App& app) {
            "its nodes (ascending, at least 3), and one more solve between each two measures the error of the "
            "curves as served (asperity contact --table FILE serves it)")
       ->type_name("FILE")->group(output);
+  command->add_flag("--overwrite", o.overwrite,
+                    "replace an output file that is not asperity's of that kind (a table, card or field image "
+                    "of this command is replaced without it); an input is never written over")
+      ->group(output);
   add_number(*command, "--table-safety", o.table_safety,
              "with --table: the stored error bound is the measured one times this (default 2)")
       ->type_name("FACTOR")->group(output);

@@ -34,7 +34,7 @@ struct Options {
          confidence = not_given;
   long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
   double exact_tolerance = not_given;
-  bool json = false, no_level = false, no_height_fit = false, exact = false, no_persson = false;
+  bool json = false, no_level = false, no_height_fit = false, exact = false, no_persson = false, overwrite = false;
   LawOptions law;  // a contact law beside the elastic curves (law_options.hpp)
 };
 
@@ -121,6 +121,8 @@ int run_surface(const Options& o) {
   if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
   if (!o.loads.empty()) loads = positive_numbers(o.loads, "--load");
 
+  // the report folder checked before any work (the output policy: docs/reliability.md)
+  if (!o.report.empty()) topo::report_plan(o.report, o.file, o.overwrite);
   topo::HeightMap map = topo::read_height_map(o.file, options.read);
   if (contact) {
     topo::ContactOptions curves;
@@ -184,7 +186,7 @@ int run_surface(const Options& o) {
   if (printed && terminal) std::fputc('\n', stderr);
   std::cout << (o.json ? topo::analysis_json(analysis) : topo::analysis_summary(analysis));
   if (!o.report.empty()) {
-    const topo::ReportOutcome outcome = topo::write_report(analysis, o.report);
+    const topo::ReportOutcome outcome = topo::write_report(analysis, o.report, o.overwrite);
     if (!o.json) std::cout << "  report: " << outcome.files.front() << " (" << outcome.files.size() << " files)\n";
   }
   // statistics only: what was asked beyond them (summits, fits, curves) does not exist
@@ -283,6 +285,10 @@ void add_surface_command(CLI::App& app) {
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
       ->type_name("DIR")->group(output);
   command->add_flag("--json", o.json, "write the JSON (schema asperity-surface/2) instead of the summary")
+      ->group(output);
+  command->add_flag("--overwrite", o.overwrite,
+                    "with --report: replace files in DIR that are not asperity's report files (a report's own files "
+                    "are replaced without it); the map is never written over")
       ->group(output);
   command->footer(
       "Output: a summary on standard output (or the JSON with --json): the map and how it was read,\n"

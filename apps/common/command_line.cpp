@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/interrupt.hpp"
+#include "asperity/output.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/table_schema.hpp"
 #include "asperity/number_text.hpp"
@@ -74,6 +76,7 @@ void add_version_flag(CLI::App& app, std::function<int()> print, const std::stri
 
 int run(CLI::App& app, int argc, const char* const* argv) {
   int status = exit_success;
+  install_output_signal_cleanup();  // the first Ctrl-C unwinds (outputs removed), a second exits
   try {
     app.parse(argc, argv);
   } catch (const ActionExit& exit) {
@@ -97,6 +100,12 @@ int run(CLI::App& app, int argc, const char* const* argv) {
     }
     std::fprintf(stderr, "%s: %s\nRun '%s --help' for the usage.\n", name.c_str(), terminal_text(message).c_str(),
                  name.c_str());
+    status = exit_failure;
+  } catch (const Interrupted&) {
+    std::fprintf(stderr, "%s: interrupted; no output was written\n", selected_name(app).c_str());
+    status = exit_interrupted;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "%s: out of memory (std::bad_alloc); no output was written\n", selected_name(app).c_str());
     status = exit_failure;
   } catch (const std::exception& error) {
     // messages quote files' bytes: nothing of them may reach the terminal as a control sequence

@@ -16,10 +16,12 @@ namespace asperity::cli {
 inline constexpr int exit_success = 0;
 inline constexpr int exit_bad_rows = 1;  // eval: some rows refused (named on stderr), the others written
 inline constexpr int exit_failure = 2;   // bad usage, input, table or output
+inline constexpr int exit_interrupted = 130;  // SIGINT/SIGTERM: stopped, nothing half-written left
 inline constexpr const char* exit_status_help =
     "Exit status: 0 done; 1 some input rows refused (eval: each named on standard error, the\n"
     "others written); 2 bad usage, a bad or missing input or table, or output that could not be\n"
-    "written.";
+    "written; 130 stopped by Ctrl-C or SIGTERM (no output left half-written; a second signal stops\n"
+    "at once).";
 
 // Sets what a (sub)command does once its options are read: `action` returns the exit status.
 // An exception from it is reported as "<program> <command>: <what>" with exit status 2; a

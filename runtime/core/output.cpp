@@ -6,6 +6,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -268,6 +269,7 @@ std::string folder_problem(const std::string& path, bool& made_later) {
     return "";
   }
   const int error = errno;
+  if (error == ENOTDIR) return "cannot be made: a part of its path is not a directory";
   if (error != ENOENT) return "cannot be examined: " + reason(error);
   // the nearest folder above that exists must take a new one
   fs::path above = fs::path(path).lexically_normal().parent_path();
@@ -288,17 +290,24 @@ std::string folder_problem(const std::string& path, bool& made_later) {
 void OutputPlan::check() const {
   std::vector<std::string> problems;
   std::map<std::string, std::string> claimed;  // file key -> the output that names it
+  // false when the path is already claimed or is an input (its one problem said)
   const auto claim = [&](const std::string& option, const std::string& path) {
     const std::string key = file_key(path);
     const auto [at, fresh] = claimed.emplace(key, option + " " + printable_path(path));
-    if (!fresh) problems.push_back(option + " " + printable_path(path) + ": the same file as " + at->second);
+    if (!fresh) {
+      problems.push_back(option + " " + printable_path(path) + ": the same file as " + at->second);
+      return false;
+    }
     for (const std::string& input : inputs_)
-      if (file_key(input) == key || same_file(input, path))
+      if (file_key(input) == key || same_file(input, path)) {
         problems.push_back(option + " " + printable_path(path) + ": is an input of this run (" +
                            printable_path(input) + "); it is never written over");
+        return false;
+      }
+    return true;
   };
   for (const Output& output : files_) {
-    claim(output.option, output.path);
+    if (!claim(output.option, output.path)) continue;
     const std::string problem = problem_at(output.path, *output.kind, overwrite_, false);
     if (!problem.empty()) problems.push_back(output.option + " " + printable_path(output.path) + ": " + problem);
   }
@@ -311,7 +320,7 @@ void OutputPlan::check() const {
     }
     for (const FolderEntry& entry : folder.entries) {
       const std::string path = (fs::path(folder.path) / entry.name).string();
-      claim(folder.option, path);
+      if (!claim(folder.option, path)) continue;
       const std::string entry_problem = problem_at(path, *entry.kind, overwrite_, made_later);
       if (!entry_problem.empty())
         problems.push_back(folder.option + " " + printable_path(folder.path) + ": " + printable_path(entry.name) + " " +
@@ -325,6 +334,42 @@ void OutputPlan::check() const {
 }
 
 // ---- the transaction ----
+
+namespace {
+// An exclusive lock on FOLDER/.asperity.lock: a regular file of ours (O_NOFOLLOW: a planted link
+// is refused; O_NONBLOCK: a planted FIFO does not hang the open).
+class FolderLock {
+ public:
+  FolderLock(int directory, const std::string& folder) {
+    fd_ = ::openat(directory, ".asperity.lock", O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+    struct stat status {};
+    if (fd_ < 0 || ::fstat(fd_, &status) != 0 || !S_ISREG(status.st_mode)) {
+      const int error = fd_ < 0 ? errno : EINVAL;
+      if (fd_ >= 0) ::close(fd_);
+      fd_ = -1;
+      throw Error(printable_path(folder) + "/.asperity.lock: cannot lock the folder (not a regular file?): " +
+                  reason(error));
+    }
+    while (::flock(fd_, LOCK_EX) != 0)
+      if (errno != EINTR) {
+        const int error = errno;
+        ::close(fd_);
+        fd_ = -1;
+        throw Error(printable_path(folder) + ": cannot lock the folder: " + reason(error));
+      }
+  }
+  FolderLock(FolderLock&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+  FolderLock& operator=(FolderLock&&) = delete;
+  ~FolderLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+
+ private:
+  int fd_ = -1;
+};
+}  // namespace
 
 struct OutputTransaction::Impl {
   struct Staged {
@@ -451,6 +496,10 @@ void OutputTransaction::stage(const std::string& folder, const std::string& name
 std::vector<std::string> OutputTransaction::commit() {
   Impl& t = *impl_;
   check_interrupt_now();
+  // one run's files at a time in a folder: each folder's lock held while its files are renamed
+  std::vector<FolderLock> locks;
+  for (const OutputPlan::Folder& folder : t.plan.folders_)
+    if (t.directories.count(folder.path)) locks.emplace_back(t.directories.at(folder.path), folder.path);
   std::vector<std::string> written;
   for (Impl::Staged& file : t.staged) {
     // what is at the name now: a directory, FIFO or device planted since the check is refused
@@ -464,18 +513,19 @@ std::vector<std::string> OutputTransaction::commit() {
     written.push_back(file.path);
   }
   t.committed = true;
-  // the files an earlier run of ours left that this one does not write: removed if they are ours
-  for (const OutputPlan::Folder& folder : t.plan.folders_)
-    for (const FolderEntry& old : folder.stale) {
-      if (std::any_of(folder.entries.begin(), folder.entries.end(),
-                      [&](const FolderEntry& entry) { return entry.name == old.name; }))
-        continue;
+  // a folder's files of ours that this run did not write (an earlier run's): removed
+  for (const OutputPlan::Folder& folder : t.plan.folders_) {
+    std::vector<FolderEntry> candidates = folder.entries;
+    candidates.insert(candidates.end(), folder.stale.begin(), folder.stale.end());
+    for (const FolderEntry& old : candidates) {
       const std::string path = (fs::path(folder.path) / old.name).string();
+      if (std::find(written.begin(), written.end(), path) != written.end()) continue;
       struct stat status {};
       if (::lstat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode) && old.kind->recognise &&
-          old.kind->recognise(path))
-        ::unlink(path.c_str());
+          old.kind->recognise(path) && ::unlink(path.c_str()) != 0)
+        throw Error(printable_path(path) + ": cannot remove the earlier run's file: " + reason(errno));
     }
+  }
   for (const auto& [folder, fd] : t.directories)
     if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS)
       throw Error("'" + printable_path(folder) + "' was written, but syncing it failed: " + reason(errno));

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "asperity/output.hpp"
+
 #include "asperity/topography/analysis.hpp"
 
 namespace asperity::topography {
@@ -18,10 +20,20 @@ struct ReportOutcome {
   std::string plot_note;           // why there are no plots (a map at its noise floor)
 };
 
-// Writes the report folder as tables are written (each file replaced atomically, no link
-// followed, no special file opened, one run at a time, an earlier run's files not left beside
-// this one's; docs/reliability.md). Creates the folder if needed; throws asperity::Error naming
-// the file on a write error (a full disk), leaving each file the old or the new one, whole.
-ReportOutcome write_report(const SurfaceAnalysis& analysis, const std::string& directory);
+// Every file a report can hold, in the folder's order.
+inline constexpr const char* report_file_names[] = {"report.md",   "report.json", "summits.csv", "curves.csv",
+                                                    "fits.svg",    "contact.svg", "law.svg"};
+
+// The report folder's outputs under the output policy (asperity/output.hpp), checked: call it
+// before the analysis, so that nothing is computed for a folder that cannot take the report (a
+// file of the user's where a report file goes, a link, a FIFO; `input` is never written over).
+OutputPlan report_plan(const std::string& directory, const std::string& input, bool overwrite = false);
+
+// Writes the report folder under the output policy: the files staged and renamed into place
+// together, no link followed, no special file opened, a file of the user's never replaced
+// (unless `overwrite`), an earlier report's files that this one does not write removed (only
+// report files of ours). Creates the folder if needed; throws asperity::Error naming the file
+// on a write error (a full disk), leaving the folder as it was.
+ReportOutcome write_report(const SurfaceAnalysis& analysis, const std::string& directory, bool overwrite = false);
 
 }  // namespace asperity::topography
