@@ -1,8 +1,12 @@
 #include "asperity/generator/law_curves.hpp"
 
+#include <boost/math/policies/error_handling.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <new>
+#include <stdexcept>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -11,6 +15,8 @@
 #include "asperity/contact_curves.hpp"
 #include "asperity/error.hpp"
 #include "asperity/integrals.hpp"
+#include "asperity/number_text.hpp"
+#include "asperity/plausibility.hpp"
 #include "asperity/table_schema.hpp"
 
 namespace asperity::generator {
@@ -52,9 +58,97 @@ void mass_cuts(const SceneLaw& law, double from, std::vector<double>& cuts) {
   }
 }
 
+// The ranges the laws' curves are computed over (checked at their corners, docs/reliability.md):
+// E* as plausibility.hpp's, H/E* and Y/E* (below, omega_c = R (pi K H / 2 E*)^2 underflows; the
+// laws' formulas divide by it), Maugis' lambda (beyond, Maugis-Dugdale is JKR: --law jkr)
+constexpr double material_ratio_min = 1e-6, material_ratio_max = 10;
+constexpr double maugis_parameter_max = 1e6;
+
+// The inputs of a law scene a failed quadrature points at: each parameter outside the range
+// above, with its value and that range; where none is, every parameter of the law and surface.
+std::string law_inputs_at_fault(const SceneLaw& scene) {
+  const ContactLaw& law = scene.law;
+  std::ostringstream out;
+  const auto outside = [&](const std::string& what, double value, const char* unit, double lo, double hi,
+                           const std::string& note = "") {
+    if (value >= lo && value <= hi) return;
+    const std::string units = *unit ? std::string(" ") + unit : "";
+    out << (out.tellp() > 0 ? "; " : "") << what << " " << value << units << " is outside " << lo << " to " << hi
+        << units << note;
+  };
+  const double modulus = law.modulus;
+  outside("the contact modulus E*", modulus, "Pa", plausible_contact_modulus.min, plausible_contact_modulus.max);
+  const bool hardness = law.kind == ContactLawKind::chang_etsion_bogy || law.kind == ContactLawKind::zhao_maietta_chang;
+  const bool yield = law.kind == ContactLawKind::kogut_etsion || law.kind == ContactLawKind::jackson_green;
+  if (hardness || yield) {
+    const double material = hardness ? law.hardness : law.yield_strength;
+    outside(hardness ? "the hardness H" : "the yield strength Y", material, "Pa", material_ratio_min * modulus,
+            material_ratio_max * modulus,
+            std::string(" (") + (hardness ? "H/E* " : "Y/E* ") + format_double(material_ratio_min) + " to " +
+                format_double(material_ratio_max) + " with E* " + format_double(modulus) + " Pa)");
+    if (!(law.critical_interference > 0))
+      out << (out.tellp() > 0 ? "; " : "") << "the critical interference omega_c it gives is "
+          << law.critical_interference << " m (the law divides by it)";
+  }
+  if (law.kind == ContactLawKind::maugis_dugdale)
+    outside("Maugis' parameter lambda", law.maugis_parameter, "", 0, maugis_parameter_max,
+            " (beyond, Maugis-Dugdale is JKR: law jkr)");
+  outside("the height scale sigma_s", scene.height_scale, "m", plausible_height_scale.min, plausible_height_scale.max);
+  outside("the summit radius R", scene.summit_radius, "m", plausible_summit_radius.min, plausible_summit_radius.max);
+  if (out.tellp() > 0) return out.str();
+  out << "none of its inputs is outside the ranges tested (E* " << plausible_contact_modulus.min << " to "
+      << plausible_contact_modulus.max << " Pa, H/E* and Y/E* " << material_ratio_min << " to " << material_ratio_max
+      << ", sigma_s and R plausible): the law's parameters are E* " << modulus << " Pa";
+  if (hardness) out << ", H " << law.hardness << " Pa";
+  if (yield) out << ", Y " << law.yield_strength << " Pa";
+  if (is_adhesive(law.kind)) out << ", work of adhesion " << law.work_of_adhesion << " J/m^2";
+  if (law.kind == ContactLawKind::maugis_dugdale) out << ", lambda " << law.maugis_parameter;
+  out << ", sigma_s " << scene.height_scale << " m, R " << scene.summit_radius << " m";
+  return out.str();
+}
+
+// A failure inside Boost.Math (or an allocation) while the law's means at s are integrated,
+// as an Error naming the law, s, what failed and the inputs at fault. Called in a catch block.
+[[noreturn]] void throw_law_failure(const SceneLaw& scene, double s) {
+  std::string what;
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    what = "memory ran out";
+  } catch (const boost::math::evaluation_error&) {
+    what = "the quadrature over the summit heights met a law response that is not a finite number";
+  } catch (const std::domain_error&) {
+    what = "a function of the law was evaluated outside its domain";
+  } catch (const std::overflow_error&) {
+    what = "a value of the law overflowed";
+  } catch (const std::exception& error) {
+    what = error.what();
+  }
+  std::ostringstream message;
+  message << (scene.name.empty() ? std::string("the law") : "law '" + scene.name + "'") << " ("
+          << contact_law_name(scene.law.kind) << "): its curves cannot be computed at s = " << s << ": " << what
+          << ": " << law_inputs_at_fault(scene);
+  throw Error(message.str());
+}
+
+LawMeans integrate_law_means(const SceneLaw& scene, double s);
+
 }  // namespace
 
+// Boost.Math's errors (and an allocation's) named by the law's inputs; asperity::Error (and
+// Interrupted) as they are
 LawMeans law_means(const SceneLaw& scene, double s) {
+  try {
+    return integrate_law_means(scene, s);
+  } catch (const Error&) {
+    throw;
+  } catch (...) {
+    throw_law_failure(scene, s);
+  }
+}
+
+namespace {
+LawMeans integrate_law_means(const SceneLaw& scene, double s) {
   static thread_local boost::math::quadrature::tanh_sinh<double> finite;
   const ContactLaw& law = scene.law;
   const double sigma = scene.height_scale;
@@ -163,6 +257,7 @@ LawMeans law_means(const SceneLaw& scene, double s) {
   out.stiffness = compressive_stiffness - out.tensile_stiffness;
   return out;
 }
+}  // namespace
 
 LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options) {
   const double sigma = law.height_scale, eta = law.summit_density;
