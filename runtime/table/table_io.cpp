@@ -1,8 +1,11 @@
 // Reading a table file. The whole file is read with plain reads (regular_file.hpp: a FIFO,
 // directory or device is refused before a byte is read), its integrity header checked (table_file.hpp), and only
-// the checked bytes are given to HDF5, from memory. Then every object is checked before it is
-// read: each attribute scalar and of its type class, each dataset of its exact datatype and of
-// the dimensions the segment layout implies, every size bounded before anything is allocated.
+// the checked bytes are given to HDF5, from memory. Anything in them that would make HDF5 read
+// another file (an external link, external storage, ...: hdf5_confinement.hpp) is refused
+// before any of it is read, and every object is opened through access lists that forbid it
+// too. Then every object is checked before it is read: each attribute scalar and of its type
+// class, each dataset of its exact datatype and of the dimensions the segment layout implies,
+// every size bounded before anything is allocated.
 // Every failure is a TableFileError naming the file, with its status.
 #include <hdf5.h>
 
@@ -17,6 +20,7 @@
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
+#include "hdf5_confinement.hpp"
 #include "hdf5_handle.hpp"
 #include "asperity/detail/regular_file.hpp"
 
@@ -35,11 +39,22 @@ std::mutex& hdf5_mutex() {
   throw TableFileError(status, "table '" + name + "': " + what);
 }
 
-// Reads one verified HDF5 file image; every method checks before it reads.
+// Reads one verified HDF5 file image; every method checks before it reads. Its objects are
+// opened through the confined access lists (hdf5_confinement.hpp).
 class Reader {
  public:
-  explicit Reader(std::string name) : name_(std::move(name)) {}
+  Reader(std::string name, const detail::ConfinedAccess& access) : name_(std::move(name)), access_(&access) {}
   [[noreturn]] void invalid(const std::string& what) const { fail(TableFileStatus::invalid, name_, what); }
+  // The same image, its errors naming a group: "table 'x' group 'y'".
+  Reader in_group(const std::string& group) const { return Reader(name_ + "' group '" + group, *access_); }
+
+  bool has_link(hid_t group, const char* name) const { return H5Lexists(group, name, access_->datasets.get()) > 0; }
+
+  Hdf5Handle open_group(hid_t file, const char* name) const {
+    Hdf5Handle group = detail::hdf5_group(H5Gopen2(file, name, access_->groups.get()));
+    if (!group.ok()) invalid(std::string("'") + name + "' is not a group");
+    return group;
+  }
 
   std::optional<std::string> text_attribute(hid_t object, const char* name, bool required) const {
     const Hdf5Handle attribute = open_scalar_attribute(object, name, required);
@@ -98,8 +113,8 @@ class Reader {
   }
 
   Hdf5Handle open_dataset(hid_t group, const char* name) const {
-    if (H5Lexists(group, name, H5P_DEFAULT) <= 0) invalid(std::string("missing dataset '") + name + "'");
-    Hdf5Handle set = detail::hdf5_dataset(H5Dopen2(group, name, H5P_DEFAULT));
+    if (!has_link(group, name)) invalid(std::string("missing dataset '") + name + "'");
+    Hdf5Handle set = detail::hdf5_dataset(H5Dopen2(group, name, access_->datasets.get()));
     if (!set.ok()) invalid(std::string("'") + name + "' is not a dataset");
     return set;
   }
@@ -186,24 +201,39 @@ class Reader {
   }
 
   std::string name_;
+  const detail::ConfinedAccess* access_;
+};
+
+// A checked table open in HDF5, and the access lists its objects are opened through.
+struct OpenImage {
+  detail::ConfinedAccess access;
+  Hdf5Handle file;
 };
 
 // HDF5's core driver on a copy of the checked bytes (the caller holds hdf5_mutex()); the name
 // only identifies the image (it must not be an existing file, and must differ between images
-// open at once).
-Hdf5Handle open_image(const unsigned char* bytes, std::size_t size, const Reader& reader) {
+// open at once). Every reader opens its table here: a file that points outside itself is
+// refused here, before any of it is read.
+OpenImage open_image(const unsigned char* bytes, std::size_t size, const std::string& name) {
   static unsigned long images = 0;
   const std::string image_name = "/dev/null/asperity-table-image-" + std::to_string(++images);
-  Hdf5Handle file;
+  std::optional<detail::ConfinedAccess> access = detail::confined_access();
+  if (!access) fail(TableFileStatus::invalid, name, "HDF5 cannot make its access properties");
+  OpenImage image{std::move(*access), {}};
   {
-    const Hdf5Handle access = detail::hdf5_properties(H5Pcreate(H5P_FILE_ACCESS));
-    if (!access.ok() || H5Pset_fapl_core(access.get(), 1 << 20, false) < 0 ||
-        H5Pset_file_image(access.get(), const_cast<unsigned char*>(bytes), size) < 0)
-      reader.invalid("HDF5 cannot take the file image");
-    file = detail::hdf5_file(H5Fopen(image_name.c_str(), H5F_ACC_RDONLY, access.get()));
+    const Hdf5Handle file_access = detail::hdf5_properties(H5Pcreate(H5P_FILE_ACCESS));
+    if (!file_access.ok() || H5Pset_fapl_core(file_access.get(), 1 << 20, false) < 0 ||
+        H5Pset_file_image(file_access.get(), const_cast<unsigned char*>(bytes), size) < 0)
+      fail(TableFileStatus::invalid, name, "HDF5 cannot take the file image");
+    image.file = detail::hdf5_file(H5Fopen(image_name.c_str(), H5F_ACC_RDONLY, file_access.get()));
   }
-  if (!file.ok()) reader.invalid("its header is intact but HDF5 cannot open what follows");
-  return file;
+  if (!image.file.ok()) fail(TableFileStatus::invalid, name, "its header is intact but HDF5 cannot open what follows");
+  if (const std::optional<std::string> indirection =
+          detail::find_indirection(image.file.get(), image.access.datasets.get()))
+    fail(TableFileStatus::invalid, name,
+         *indirection + ": a table is one self-contained file (its integrity header covers only its own bytes), "
+                        "refused before HDF5 follows it");
+  return image;
 }
 
 // The schema, its version and the table's kind, from the root attributes.
@@ -234,8 +264,9 @@ TableKind read_kind(hid_t file, const Reader& reader, const std::string& name) {
 TableData read_verified(const unsigned char* bytes, std::size_t size, const std::string& name) {
   std::lock_guard<std::mutex> lock(hdf5_mutex());
   const detail::QuietHdf5Errors quiet;
-  Reader reader(name);
-  const Hdf5Handle file = open_image(bytes, size, reader);
+  const OpenImage image = open_image(bytes, size, name);
+  const Hdf5Handle& file = image.file;
+  const Reader reader(name, image.access);
   const TableKind kind = read_kind(file.get(), reader, name);
   if (kind != TableKind::integrals) wrong_kind(name, kind);
 
@@ -251,10 +282,9 @@ TableData read_verified(const unsigned char* bytes, std::size_t size, const std:
   double values_in_memory = 0;
   for (const auto& group_id : groups) {
     const std::string group_name = std::string(to_string(group_id.distribution)) + "_" + to_string(group_id.side);
-    if (H5Lexists(file.get(), group_name.c_str(), H5P_DEFAULT) <= 0) continue;
-    const Hdf5Handle group = detail::hdf5_group(H5Gopen2(file.get(), group_name.c_str(), H5P_DEFAULT));
-    if (!group.ok()) reader.invalid("'" + group_name + "' is not a group");
-    const Reader in_group(name + "' group '" + group_name);
+    if (!reader.has_link(file.get(), group_name.c_str())) continue;
+    const Hdf5Handle group = reader.open_group(file.get(), group_name.c_str());
+    const Reader in_group = reader.in_group(group_name);
     const hid_t g = group.get();
     CurveSet set;
     set.distribution = group_id.distribution;
@@ -288,8 +318,7 @@ TableData read_verified(const unsigned char* bytes, std::size_t size, const std:
     set.knots = in_group.doubles(g, schema::set_knots, {shapes, hsize_t(order_count), total_knots, 3});
     set.max_rel_error = in_group.doubles(g, schema::set_max_rel_error, {shapes, hsize_t(order_count)});
     // optional, together (scene tables): the lookup grid's tolerance and range per curve
-    if (H5Lexists(g, schema::set_grid_tolerance, H5P_DEFAULT) > 0 ||
-        H5Lexists(g, schema::set_grid_separations, H5P_DEFAULT) > 0) {
+    if (in_group.has_link(g, schema::set_grid_tolerance) || in_group.has_link(g, schema::set_grid_separations)) {
       set.grid_tolerance = in_group.doubles(g, schema::set_grid_tolerance, {shapes});
       set.grid_separations = in_group.doubles(g, schema::set_grid_separations, {shapes, 2});
     }
@@ -308,18 +337,18 @@ double scalar(const Reader& reader, hid_t group, const char* name) {
 ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::size_t size, const std::string& name) {
   std::lock_guard<std::mutex> lock(hdf5_mutex());
   const detail::QuietHdf5Errors quiet;
-  Reader reader(name);
-  const Hdf5Handle file = open_image(bytes, size, reader);
+  const OpenImage image = open_image(bytes, size, name);
+  const Hdf5Handle& file = image.file;
+  const Reader reader(name, image.access);
   const TableKind kind = read_kind(file.get(), reader, name);
   if (kind != TableKind::contact_curves) wrong_kind(name, kind);
   ContactCurvesData data;
   data.generator = *reader.text_attribute(file.get(), schema::attr_generator, true);
   data.generator_options = *reader.text_attribute(file.get(), schema::attr_generator_options, true);
-  if (H5Lexists(file.get(), schema::group_contact_curves, H5P_DEFAULT) <= 0)
+  if (!reader.has_link(file.get(), schema::group_contact_curves))
     reader.invalid(std::string("missing group '") + schema::group_contact_curves + "'");
-  const Hdf5Handle group = detail::hdf5_group(H5Gopen2(file.get(), schema::group_contact_curves, H5P_DEFAULT));
-  if (!group.ok()) reader.invalid(std::string("'") + schema::group_contact_curves + "' is not a group");
-  const Reader in_group(name + "' group '" + schema::group_contact_curves);
+  const Hdf5Handle group = reader.open_group(file.get(), schema::group_contact_curves);
+  const Reader in_group = reader.in_group(schema::group_contact_curves);
   const hid_t g = group.get();
   data.source = *in_group.text_attribute(g, schema::attr_source, true);
   data.description = *in_group.text_attribute(g, schema::attr_description, true);
@@ -344,19 +373,19 @@ ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::
   data.solver_tolerance = scalar(in_group, g, schema::set_solver_tolerance);
   data.contact_modulus = scalar(in_group, g, schema::set_contact_modulus);
   data.nominal_area = scalar(in_group, g, schema::set_nominal_area);
-  if (H5Lexists(g, schema::set_mean_summit_height, H5P_DEFAULT) > 0)
+  if (in_group.has_link(g, schema::set_mean_summit_height))
     data.mean_summit_height = scalar(in_group, g, schema::set_mean_summit_height);
-  if (H5Lexists(g, schema::set_max_height, H5P_DEFAULT) > 0)
+  if (in_group.has_link(g, schema::set_max_height))
     data.max_height = scalar(in_group, g, schema::set_max_height);
-  const bool tensile = H5Lexists(g, schema::set_tensile_pressure, H5P_DEFAULT) > 0;
-  if (tensile != (H5Lexists(g, schema::set_tensile_stiffness, H5P_DEFAULT) > 0))
+  const bool tensile = in_group.has_link(g, schema::set_tensile_pressure);
+  if (tensile != in_group.has_link(g, schema::set_tensile_stiffness))
     in_group.invalid(std::string("'") + schema::set_tensile_pressure + "' and '" + schema::set_tensile_stiffness +
                      "' come together (both or neither)");
   if (tensile) {
     data.tensile_pressure = in_group.doubles(g, schema::set_tensile_pressure, {nodes});
     data.tensile_stiffness = in_group.doubles(g, schema::set_tensile_stiffness, {nodes});
   }
-  if (H5Lexists(g, schema::set_summit_count, H5P_DEFAULT) > 0) {
+  if (in_group.has_link(g, schema::set_summit_count)) {
     data.summit_count = in_group.doubles(g, schema::set_summit_count, {nodes});
     data.summit_count_max_rel_error = scalar(in_group, g, schema::set_summit_count_max_rel_error);
   }
@@ -429,9 +458,8 @@ TableKind read_table_kind(const std::string& path) {
   verify_table_bytes(data, bytes.size(), path);
   std::lock_guard<std::mutex> lock(hdf5_mutex());
   const detail::QuietHdf5Errors quiet;
-  const Reader reader(path);
-  const Hdf5Handle file = open_image(data, bytes.size(), reader);
-  return read_kind(file.get(), reader, path);
+  const OpenImage image = open_image(data, bytes.size(), path);
+  return read_kind(image.file.get(), Reader(path, image.access), path);
 }
 
 }  // namespace asperity
