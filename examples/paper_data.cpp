@@ -10,10 +10,11 @@
 // -(dP/dt)/P = (3/2) c_a X_1/2 / X_3/2, in those rms units.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "asperity/output.hpp"
 #include "asperity/table.hpp"
 
 namespace {
@@ -32,7 +33,7 @@ double mean(const Family& family) { return family.distribution == Distribution::
 
 // One row per separation: t, the origin-convention s, A/A0^g, P/P0^g, stiffness/load.
 void write_curves(const Table& table, const std::vector<Family>& families, const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "family,side,shape,t,s,area,load,stiffness_over_load\n";
   out.precision(12);
   for (const Family& family : families) {
@@ -55,6 +56,7 @@ void write_curves(const Table& table, const std::vector<Family>& families, const
           << 1.5 * c * std::exp(logs[1] - logs[3]) << "\n";
     }
   }
+  asperity::write_output_file(path, out.str(), asperity::output_kinds::any_file);  // the one output policy
 }
 
 }  // namespace
@@ -79,7 +81,7 @@ int main(int argc, char** argv) {
   write_curves(table, bounded, dir + "/paper_bounded.csv");
 
   // Claims: name, t or parameter, engine value, the paper's approximation.
-  std::ofstream claims(dir + "/paper_claims.csv");
+  std::ostringstream claims;
   claims.precision(12);
   claims << "claim,at,engine,paper\n";
   const Curve gaussian = table.curve(Distribution::gaussian, Side::tail, 2);
@@ -129,6 +131,7 @@ int main(int argc, char** argv) {
              << (1.5 + shape) / std::fabs(t) << "\n";
     }
   }
+  asperity::write_output_file(dir + "/paper_claims.csv", claims.str(), asperity::output_kinds::any_file);
   std::printf("wrote %s/paper_tail.csv, paper_bounded.csv, paper_claims.csv\n", dir.c_str());
   return 0;
 }

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "asperity/output.hpp"
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/units.hpp"
 #include "input_file.hpp"
@@ -114,7 +115,7 @@ HeightMap read_gsf(const std::string& path, const ReadOptions& options) {
   return map;
 }
 
-void write_gsf(const HeightMap& map, const std::string& path) {
+void write_gsf(const HeightMap& map, const std::string& path, bool overwrite) {
   std::ostringstream header;
   header.precision(17);
   header << magic << "XRes = " << map.nx << "\nYRes = " << map.ny << "\nXReal = " << map.width()
@@ -128,11 +129,8 @@ void write_gsf(const HeightMap& map, const std::string& path) {
     std::memcpy(&bits, &value, 4);
     for (int b = 0; b < 4; ++b) data[4 * k + b] = static_cast<unsigned char>(bits >> (8 * b));
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
-  out.close();
-  if (!out) throw Error(path + ": write error");
+  text.append(reinterpret_cast<const char*>(data.data()), data.size());
+  write_output_file(path, text, output_kinds::gsf_height_map, overwrite);
 }
 
 }  // namespace asperity::topography

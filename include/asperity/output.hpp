@@ -46,6 +46,7 @@ extern const OutputKind field_image;         // exact-contact --fields: a 16-bit
 extern const OutputKind report_file;         // a surface report's file (report.json, .md, .csv, .svg)
 extern const OutputKind results_csv;         // asperity CSV results (batch rows, sweeps)
 extern const OutputKind results_json;        // asperity JSON results
+extern const OutputKind gsf_height_map;      // a height map as a Gwyddion simple field (write_gsf)
 extern const OutputKind lock;                // a lock file of ours (empty)
 extern const OutputKind any_file;            // any regular file the user names (tablegen --out)
 }  // namespace output_kinds

@@ -140,6 +140,7 @@ namespace {
 std::string problem_at(const std::string& path, const OutputKind& kind, bool overwrite, bool folder_made_later) {
   const SplitPath parts = split(path);
   if (path.empty()) return "no output file named";
+  if (path.find('\0') != std::string::npos) return "the name has a NUL character (the system would stop there)";
   if (parts.base.empty() || parts.base == "." || parts.base == "..")
     return "names a directory, not a file";
   if (parts.base.size() > NAME_MAX)
@@ -229,6 +230,7 @@ bool is_results_json(const std::string& path) {
   const std::string head = read_output_head(path);
   return starts_with(head, "{") && head.find("\"schema\": \"asperity-") != std::string::npos;
 }
+bool is_gsf(const std::string& path) { return starts_with(read_output_head(path), "Gwyddion Simple Field 1.0\n"); }
 bool is_lock(const std::string& path) { return read_output_head(path).empty(); }
 bool is_any_file(const std::string&) { return true; }
 }  // namespace
@@ -238,6 +240,7 @@ const OutputKind field_image{"a field image (PGM)", is_field_image};
 const OutputKind report_file{"a surface report's file", is_report_file};
 const OutputKind results_csv{"asperity's CSV results", is_results_csv};
 const OutputKind results_json{"asperity's JSON results", is_results_json};
+const OutputKind gsf_height_map{"a Gwyddion simple field", is_gsf};
 const OutputKind lock{"a lock file (empty)", is_lock};
 const OutputKind any_file{"a file", is_any_file};
 }  // namespace output_kinds
@@ -262,6 +265,7 @@ namespace {
 std::string folder_problem(const std::string& path, bool& made_later) {
   made_later = false;
   if (path.empty()) return "no folder named";
+  if (path.find('\0') != std::string::npos) return "the name has a NUL character (the system would stop there)";
   struct stat status {};
   if (::stat(path.c_str(), &status) == 0) {
     if (!S_ISDIR(status.st_mode)) return "is not a directory";

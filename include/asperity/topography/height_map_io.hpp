@@ -47,7 +47,9 @@ HeightMap read_xyz(const std::string& path, const ReadOptions& options = {});
 // "x3p", "gsf", "ascii-matrix" (or "matrix"), "xyz" (or "csv"), "auto"; false for anything else.
 bool parse_height_map_format(const std::string& name, HeightMapFormat& out);
 
-// Writes a height map as .gsf (float32: heights lose digits beyond ~7). Throws on a write error.
-void write_gsf(const HeightMap& map, const std::string& path);
+// Writes a height map as .gsf (float32: heights lose digits beyond ~7) under the output policy
+// (asperity/output.hpp: a file that is not a .gsf of ours replaced only with `overwrite`). Throws
+// on a write error.
+void write_gsf(const HeightMap& map, const std::string& path, bool overwrite = false);
 
 }  // namespace asperity::topography
