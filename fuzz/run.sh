@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 build_dir="${BUILD_DIR:-build-fuzz}"
-targets="fuzz_table_file fuzz_table_contents fuzz_scene fuzz_eval_csv fuzz_x3p fuzz_gsf fuzz_ascii_matrix fuzz_xyz"
+targets="fuzz_table_file fuzz_table_contents fuzz_output_policy fuzz_scene fuzz_eval_csv fuzz_x3p fuzz_gsf fuzz_ascii_matrix fuzz_xyz"
 
 # Clang 14 and its libFuzzer runtime (Debian), installed if missing.
 packages="clang-14 libclang-rt-14-dev"

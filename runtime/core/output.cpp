@@ -316,6 +316,7 @@ void OutputPlan::check() const {
     if (!problem.empty()) problems.push_back(output.option + " " + printable_path(output.path) + ": " + problem);
   }
   for (const Folder& folder : folders_) {
+    if (!claim(folder.option, folder.path)) continue;  // a folder where another output is a file
     bool made_later = false;
     const std::string problem = folder_problem(folder.path, made_later);
     if (!problem.empty()) {
