@@ -138,3 +138,44 @@ def test_measured_curves_have_no_tension_nor_count(written):
     assert not curves.has_tension
     assert math.isnan(curves.pull_off_pressure) and math.isnan(curves.pull_off_separation)
     assert math.isnan(curves.summit_count(curves.min_separation))
+
+
+def _link_group_elsewhere(table, group, other, scaled=None):
+    """`group` of the table moved to the plain HDF5 file `other` (`scaled`: a dataset and a factor), an
+    external link to it in its place, and the integrity header sealed again over the edit: the
+    crafted table of issue 37. Written with PyTables (Debian's python3-tables; h5py is not there)."""
+    tables = pytest.importorskip("tables")
+    import hashlib
+    import struct
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # PyTables on files it did not write
+        with tables.open_file(str(table), "r") as source, tables.open_file(str(other), "w") as target:
+            source.copy_node("/" + group, newparent=target.root, recursive=True)
+        if scaled:
+            with tables.open_file(str(other), "a") as target:
+                dataset = target.get_node(f"/{group}/{scaled[0]}")
+                dataset[...] = dataset[...] * scaled[1]
+        with tables.open_file(str(table), "a") as crafted:
+            crafted.remove_node("/" + group, recursive=True)
+            crafted.create_external_link("/", group, f"{other}:/{group}")
+    data = bytearray(Path(table).read_bytes())  # the header: table_schema.hpp
+    payload = bytes(data[512:])
+    data[24:32] = struct.pack("<Q", len(payload))
+    data[32:64] = hashlib.sha256(payload).digest()
+    Path(table).write_bytes(bytes(data))
+
+
+def test_a_table_pointing_into_another_file_is_refused(tmp_path, written):
+    curves = tmp_path / "linked-curves.h5"
+    curves.write_bytes(Path(written[0]).read_bytes())
+    _link_group_elsewhere(curves, "contact_curves", tmp_path / "other-curves.h5", ("pressure", 1000))
+    with pytest.raises(asperity.Error, match="'contact_curves' is an external link to object '/contact_curves'"):
+        asperity.ContactCurves(curves)
+    with pytest.raises(asperity.Error, match="'contact_curves' is an external link"):
+        asperity.ContactCurves.open(curves)
+    integrals = tmp_path / "linked-integrals.h5"
+    integrals.write_bytes(Path(asperity.Table.default_path()).read_bytes())
+    _link_group_elsewhere(integrals, "weibull_tail", tmp_path / "other-integrals.h5")
+    with pytest.raises(asperity.Error, match="'weibull_tail' is an external link to object '/weibull_tail'"):
+        asperity.Table.open(integrals)
