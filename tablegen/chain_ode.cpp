@@ -8,6 +8,7 @@
 
 #include "asperity/asymptotic.hpp"
 #include "asperity/error.hpp"
+#include "asperity/interrupt.hpp"
 
 namespace asperity::generator {
 namespace {
@@ -69,6 +70,7 @@ struct ChainSystem {
   CurveId curve;
   SegmentMap map;
   void operator()(const State& h, State& rate, double u) const {
+    poll_interrupt();  // each step's quadratures take microseconds; a curve, seconds
     double separation, ds_du, d2s_du2;
     map.s_of_u(u, separation, ds_du, d2s_du2);
     std::array<double, order_count> offset_rate{};
@@ -136,6 +138,7 @@ void fill_reciprocal(const CurveId& curve, const SegmentMap& map, int knots, dou
     knot[2] = 2 * sign * n * mean / scale;
   }
   for (int j = 1; j < knots; ++j) {
+    poll_interrupt();
     const double u = knot_u(map, knots, j);
     double separation, ds_du, d2s_du2;
     map.s_of_u(u, separation, ds_du, d2s_du2);

@@ -11,6 +11,7 @@
 
 #include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
+#include "asperity/interrupt.hpp"
 #include "asperity/table_schema.hpp"
 #include "asperity/generator/quadrature.hpp"
 
@@ -129,6 +130,7 @@ std::vector<double> measure_curve_error(const Curve& curve, const std::vector<Se
   const CurveId id{curve.distribution(), curve.side(), curve.shape()};
   std::vector<double> worst(order_count, 0.0);
   for (double separation : check_separations(curve, layout, check_stride)) {
+    poll_interrupt();  // a quadrature per order
     if (curve.side() == Side::bounded && separation >= 0) continue;  // 0 exactly: nothing to measure
     for (int k = 0; k < order_count; ++k) {
       if (!curve.has_order(k)) continue;

@@ -15,6 +15,7 @@
 #include "asperity/contact_curves.hpp"
 #include "asperity/error.hpp"
 #include "asperity/integrals.hpp"
+#include "asperity/interrupt.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/plausibility.hpp"
 #include "asperity/table_schema.hpp"
@@ -203,6 +204,7 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s) {
   auto integrate = [&](auto quantity) {
     double total = 0;
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      poll_interrupt();  // a quadrature of an adhesive law's response takes milliseconds
       const double a = cuts[i], b = cuts[i + 1];
       if (!(b > a)) continue;
       // x from a; the complement from b given exactly, so that an end's distance is exact
@@ -259,7 +261,8 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s) {
 }
 }  // namespace
 
-LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options) {
+LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options,
+                                    const std::function<void(const LawCurvesProgress&)>& progress) {
   const double sigma = law.height_scale, eta = law.summit_density;
   const double tolerance = law.max_rel_error;
   const std::string name = law.name.empty() ? std::string("the law") : "law '" + law.name + "'";
@@ -375,8 +378,9 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     }
   };
 
-  int checks = 0;
+  int checks = 0, pass = 0;
   for (;;) {
+    ++pass;
     fill();
     const ContactCurves curves(data);
     std::vector<double> halves;
@@ -442,6 +446,9 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
         throw Error(message.str());
       }
       if (split) halves.push_back(nodes[i] + 0.5 * h);
+      if (progress)
+        progress({pass, static_cast<int>(nodes.size()), static_cast<int>(i + 1), static_cast<int>(nodes.size() - 1),
+                  static_cast<int>(exact.size())});
     }
     if (halves.empty()) {
       for (int k = 0; k < 3; ++k) {

@@ -18,6 +18,8 @@
 #include "asperity/error.hpp"
 #include "asperity/generator/chain_ode.hpp"
 #include "asperity/generator/quadrature.hpp"
+#include "asperity/interrupt.hpp"
+#include "asperity/number_text.hpp"
 
 namespace asperity::generator {
 
@@ -237,6 +239,7 @@ std::vector<double> verify(const Group& group, const Shape& shape, const std::ve
   requirement_error.assign(shape.requirements.size(), 0.0);
   std::mt19937_64 rng(97);
   for (double separation : check_points(shape, layout, maps, rng)) {
+    poll_interrupt();  // a quadrature per order
     std::size_t segment = 0;
     while (segment + 1 < maps.size() && separation > maps[segment].s_hi) ++segment;
     for (int twice_order = 0; twice_order < order_count; ++twice_order) {
@@ -300,7 +303,14 @@ std::vector<SegmentSpec> split_for_range(const std::vector<SegmentSpec>& layout,
 
 }  // namespace
 
-SceneResult generate_scene_table(const Scene& scene, int threads) {
+SceneResult generate_scene_table(const Scene& scene, int threads,
+                                 const std::function<void(const std::string&)>& progress) {
+  std::mutex progress_mutex;
+  auto report = [&](const std::string& step) {
+    if (!progress) return;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    progress(step);
+  };
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   SceneResult result;
   // Resolve the ranges and group the curves by (distribution, side) and exact shape.
@@ -356,10 +366,19 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
       const std::vector<SegmentSpec> fine_layout = scale_knot_density(base, density);
       int total_knots = 0;
       for (const SegmentSpec& spec : fine_layout) total_knots += spec.knots;
+      std::ostringstream step;
+      step << to_string(group.distribution) << " " << to_string(group.side) << ", " << group.shapes.size()
+           << " shape(s): ";
+      const std::string group_name = step.str();
+      report(group_name + "integrating at knot density " + format_double(density) + " (" +
+             std::to_string(total_knots) + " knots a curve)");
       parallel_for(group.shapes.size(), threads, [&](std::size_t i) {
         group.shapes[i].fine = integrate_curve({group.distribution, group.side, group.shapes[i].shape}, fine_layout,
                                                ChainOptions{});
+        report(group_name + "shape " + format_double(group.shapes[i].shape) + " integrated");
       });
+      report(group_name + "thinning the knots, segment by segment (" + std::to_string(fine_layout.size()) +
+             " segments)");
       // The coarsest thinning per segment that every shape's requirements accept.
       std::vector<int> factors(fine_layout.size(), 1);
       for (std::size_t segment = 0; segment < fine_layout.size(); ++segment) {
@@ -370,6 +389,7 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
         while (intervals % (factor * 2) == 0 && intervals / (factor * 2) >= 2) factor *= 2;
         // Half the (strictest) tolerance at the dropped knots: the check that follows looks between them.
         for (; factor > 1; factor /= 2) {
+          poll_interrupt();
           double worst = 0;
           for (const Shape& shape : group.shapes) {
             const auto maps = SegmentMap::resolve(fine_layout, group.distribution, group.side, shape.shape);
@@ -389,6 +409,8 @@ SceneResult generate_scene_table(const Scene& scene, int threads) {
         std::vector<std::vector<double>> thinned(group.shapes.size()), errors(group.shapes.size()),
             requirement_errors(group.shapes.size());
         std::vector<std::vector<char>> shape_failed(group.shapes.size(), std::vector<char>(layout.size(), 0));
+        report(group_name + "checking the thinned curves against the quadrature (pass " + std::to_string(attempt + 1) +
+               ")");
         parallel_for(group.shapes.size(), threads, [&](std::size_t i) {
           thinned[i] = thin(group.shapes[i].fine, fine_layout, factors);
           errors[i] = verify(group, group.shapes[i], layout, thinned[i], shape_failed[i], requirement_errors[i]);

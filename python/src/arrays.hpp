@@ -90,6 +90,21 @@ inline py::type_error not_numbers(const char* name, const std::string& what) {
   return py::type_error(std::string(name) + " must be a number or an array of numbers, not " + what);
 }
 
+// Why a float64 copy of `any` could not be made: ensure() clears numpy's error, so numpy is asked
+// again and its own is raised (MemoryError naming the size, for a broadcast of 2^36 elements);
+// else a MemoryError naming the size here.
+inline py::error_already_set copy_failed(const py::array& any, const char* name) {
+  try {
+    py::module_::import("numpy").attr("ascontiguousarray")(any, py::arg("dtype") = "float64");
+  } catch (py::error_already_set& numpy_error) {
+    return std::move(numpy_error);
+  }
+  const std::string message = std::string(name) + ": no float64 copy of an array of " + std::to_string(any.size()) +
+                              " elements (" + std::to_string(any.size() / 131072) + " MiB) could be made";
+  PyErr_SetString(PyExc_MemoryError, message.c_str());
+  return py::error_already_set();
+}
+
 // The argument as a C-contiguous float64 array (a copy only if needed). Numbers only: bool, int,
 // unsigned and float arrays and scalars, and objects with __float__ (fractions.Fraction,
 // decimal.Decimal), as float() takes them. TypeError for anything else: None (numpy would make
@@ -104,7 +119,7 @@ inline DoubleArray as_double_array(py::handle input, const char* name) {
   const char kind = any.dtype().kind();
   if (kind == 'b' || kind == 'i' || kind == 'u' || kind == 'f') {
     DoubleArray array = DoubleArray::ensure(any);
-    if (!array) throw py::error_already_set();
+    if (!array) throw copy_failed(any, name);
     return array;
   }
   if (kind != 'O') throw not_numbers(name, "an array of dtype " + std::string(py::str(any.dtype())));

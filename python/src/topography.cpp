@@ -40,6 +40,7 @@
 #include "asperity/topography/synthetic.hpp"
 #include "asperity/topography/units.hpp"
 #include "bindings.hpp"
+#include "interrupt.hpp"
 #include "paths.hpp"
 
 namespace asperity::python {
@@ -47,12 +48,12 @@ namespace {
 namespace topo = asperity::topography;
 using namespace pybind11::literals;
 
-// Runs function() without the GIL. What it reads must be its own (captured by value when the
-// lambda is made, with the GIL held), never an object another Python thread can change.
+// Runs function() without the GIL, stopped by Ctrl-C (interrupt.hpp). What it reads must be its
+// own (captured by value when the lambda is made, with the GIL held), never an object another
+// Python thread can change.
 template <class Function>
 auto without_gil(Function&& function) {
-  py::gil_scoped_release unlocked;
-  return function();
+  return interruptible(std::forward<Function>(function));
 }
 
 // A size from Python: an int (or anything with __index__) from 0 to the largest std::size_t.
@@ -803,17 +804,19 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def(
           "at_pressure",
           [](ExactContactHandle& h, double pressure) {
-            py::gil_scoped_release unlocked;
-            std::lock_guard<std::mutex> guard(h.lock);
-            return h.solver.at_pressure(pressure);
+            return without_gil([&] {
+              std::lock_guard<std::mutex> guard(h.lock);
+              return h.solver.at_pressure(pressure);
+            });
           },
           "pressure"_a, "The contact at a mean nominal pressure [Pa] >= 0.")
       .def(
           "at_mean_gap",
           [](ExactContactHandle& h, double mean_gap) {
-            py::gil_scoped_release unlocked;
-            std::lock_guard<std::mutex> guard(h.lock);
-            return h.solver.at_mean_gap(mean_gap);
+            return without_gil([&] {
+              std::lock_guard<std::mutex> guard(h.lock);
+              return h.solver.at_mean_gap(mean_gap);
+            });
           },
           "mean_gap"_a, "The contact at a mean gap [m] > 0 (the separation from the mean plane).")
       .def(
@@ -822,8 +825,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
              const std::string& description) {
             const std::string file = to_path(path.object);
             topo::ExactContactTable table;
-            {
-              py::gil_scoped_release unlocked;
+            without_gil([&] {
               std::lock_guard<std::mutex> guard(h.lock);
               for (std::size_t i = 1; i < pressures.size(); ++i)
                 if (!(pressures[i] > pressures[i - 1])) throw Error("write_table needs the pressures in ascending order");
@@ -834,7 +836,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
               for (double pressure : pressures) options << " " << pressure;
               table = topo::measure_exact_contact_table(h.solver, nodes, description, options.str(), safety_factor);
               write_contact_curves_file(table.data, file);
-            }
+            });
             py::list nodes;
             for (const topo::ContactStep& step : table.nodes) nodes.append(step);
             return nodes;
@@ -846,24 +848,20 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def(
           "pressure_field",
           [](ExactContactHandle& h) {
-            std::vector<double> field;
-            {
-              py::gil_scoped_release unlocked;
+            const std::vector<double> field = without_gil([&] {
               std::lock_guard<std::mutex> guard(h.lock);
-              field = h.solver.pressure_field();
-            }
+              return h.solver.pressure_field();
+            });
             return grid_array(field, h.solver.nx(), h.solver.ny());
           },
           "The last solution's pressure [Pa] as a (ny, nx) array (0 off contact).")
       .def(
           "gap_field",
           [](ExactContactHandle& h) {
-            std::vector<double> field;
-            {
-              py::gil_scoped_release unlocked;
+            const std::vector<double> field = without_gil([&] {
               std::lock_guard<std::mutex> guard(h.lock);
-              field = h.solver.gap_field();
-            }
+              return h.solver.gap_field();
+            });
             return grid_array(field, h.solver.nx(), h.solver.ny());
           },
           "The last solution's gap [m] as a (ny, nx) array (0 in contact, NaN at missing points).")

@@ -12,6 +12,7 @@
 // curves (the table's own interpolation) miss by more than half the tolerance is halved, until
 // none does. The stored bound is the largest midpoint error times 2.
 #pragma once
+#include <functional>
 #include <string>
 
 #include "asperity/contact_curves_data.hpp"
@@ -36,8 +37,17 @@ struct LawCurvesResult {
   int evaluations = 0;  // exact evaluations (nodes and midpoints)
 };
 
+// Where a tabulation is, for a progress report: the pass (each halves the intervals that miss),
+// its nodes, the intervals of this pass checked so far, the exact evaluations made.
+struct LawCurvesProgress {
+  int pass = 0, nodes = 0, checked = 0, intervals = 0, evaluations = 0;
+};
+
 // Throws asperity::Error where the curves cannot be tabulated (an area fraction beyond 1 or a
-// pressure below the format's range inside the asked separations, too many nodes).
-LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options = "");
+// pressure below the format's range inside the asked separations, too many nodes), Interrupted
+// when its InterruptScope asks (asperity/interrupt.hpp). progress, if given, is called on this
+// thread after every interval checked (cheap to call: the caller decides what to show and when).
+LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options = "",
+                                    const std::function<void(const LawCurvesProgress&)>& progress = {});
 
 }  // namespace asperity::generator

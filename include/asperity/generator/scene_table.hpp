@@ -9,6 +9,7 @@
 // at points across each curve's range; a segment that fails is refined and the check
 // repeated, and if even the fine layout fails the fine density is doubled.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,11 @@ struct SceneResult {
 };
 
 // Throws asperity::Error when a curve cannot meet its tolerance or the memory budget.
-SceneResult generate_scene_table(const Scene& scene, int threads = 0);
+// progress, if given, is told each step as it starts ("Weibull tail, 3 shapes: integrating at knot
+// density 1", "... shape 1.5 integrated"); called from any of the run's threads, one at a time.
+// Interrupted when the caller's InterruptScope asks (asperity/interrupt.hpp).
+SceneResult generate_scene_table(const Scene& scene, int threads = 0,
+                                 const std::function<void(const std::string&)>& progress = {});
 
 // The separation where X_3/2 = load (dimensionless), by root finding on the quadrature.
 double separation_at_load(Distribution distribution, Side side, double shape, double load);

@@ -3,6 +3,8 @@
 #pragma once
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
 #include <exception>
 #include <mutex>
@@ -30,11 +32,14 @@ void parallel_for(std::size_t count, int threads, Job&& job) {
   std::exception_ptr failure;
   std::mutex failure_mutex;
   InterruptScope::State* const interrupt = current_interrupt_state();
+  std::size_t running = 0;  // pool threads not yet out of their loop (under finished_mutex)
+  std::mutex finished_mutex;
+  std::condition_variable finished;
   const auto worker = [&] {
     const InheritInterrupt inherit(interrupt);
     for (;;) {
       const std::size_t index = next.fetch_add(1);
-      if (index >= count) return;
+      if (index >= count) break;
       try {
         poll_interrupt();
         job(index);
@@ -42,18 +47,49 @@ void parallel_for(std::size_t count, int threads, Job&& job) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
         next.store(count);
-        return;
+        break;
       }
     }
+  };
+  const auto pool_worker = [&] {
+    worker();
+    {
+      std::lock_guard<std::mutex> lock(finished_mutex);
+      --running;
+    }
+    finished.notify_all();
   };
   std::vector<std::thread> pool;
   try {
     pool.reserve(wanted - 1);
-    for (std::size_t t = 1; t < wanted; ++t) pool.emplace_back(worker);
+    for (std::size_t t = 1; t < wanted; ++t) {
+      {
+        std::lock_guard<std::mutex> lock(finished_mutex);
+        ++running;
+      }
+      try {
+        pool.emplace_back(pool_worker);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(finished_mutex);
+        --running;
+        throw;
+      }
+    }
   } catch (const std::system_error&) {  // no more threads: those started and this one suffice
   } catch (const std::bad_alloc&) {
   }
   worker();
+  // Only the scope's own thread may ask its check: while the pool finishes its last jobs, this
+  // thread keeps asking, so that a stop reaches them (their next poll) within the check's interval.
+  if (interrupt) {
+    std::unique_lock<std::mutex> lock(finished_mutex);
+    while (!finished.wait_for(lock, std::chrono::milliseconds(5), [&] { return running == 0; })) {
+      lock.unlock();
+      const bool stop = interrupt_requested();  // sets the flag the pool's next poll reads
+      lock.lock();
+      if (stop) break;
+    }
+  }
   for (std::thread& thread : pool) thread.join();
   if (failure) std::rethrow_exception(failure);
 }
