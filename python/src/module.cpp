@@ -23,6 +23,7 @@
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "asperity/instruction_set.hpp"
+#include "asperity/interrupt.hpp"
 #include "asperity/inverse.hpp"
 #include "asperity/integrals.hpp"
 #include "asperity/persson.hpp"
@@ -172,6 +173,8 @@ void bind(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);
+    } catch (const Interrupted&) {  // a stop asked (interrupt.hpp): the signal handler's exception
+      if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     } catch (const Error& error) {
       const char* message = error.what();
       PyObject* text = PyUnicode_DecodeUTF8(message, static_cast<Py_ssize_t>(std::strlen(message)), "backslashreplace");
@@ -959,6 +962,7 @@ void bind(py::module_& m) {
   // ---- measured surfaces (asperity/topography/*.hpp): the submodule asperity.topography ----
   bind_topography(m, physical_state_type);
   bind_law_curves(m);
+  bind_output(m);
 }
 
 }  // namespace asperity::python
