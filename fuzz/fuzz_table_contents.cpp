@@ -4,15 +4,22 @@
 // changed, objects deleted); the result is sealed with a valid header and read. What this
 // reaches is what a crafted file can express in well-formed HDF5: the reader's own checks,
 // which must refuse it with a message or give a table whose lookups hold, in bounded memory.
+// Last, the input may point the table outside itself (issue 37): an object replaced by an
+// external, soft or user-defined link, a dataset by one with external storage, a virtual one or
+// one filtered by a plugin, each aimed at a real file beside it. A table holding one of these
+// must be refused: one that opens traps.
 // (HDF5's parser on malformed bytes is outside: see docs/reliability.md.) The input's first
 // choice picks the table's kind: Greenwood-Williamson integrals, or contact curves against
 // separation (whose served values must then hold their promises: tiny_table.hpp's exercise).
 #include <fuzzer/FuzzedDataProvider.h>
 #include <hdf5.h>
+#include <stdlib.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -201,8 +208,144 @@ void delete_object(hid_t group, FuzzedDataProvider& input) {
   }
 }
 
+// ---- indirections: what would make HDF5 read another file ----
+
+const std::string& elsewhere();
+
+void remove_elsewhere() {
+  std::remove((elsewhere() + "/other.h5").c_str());
+  std::remove((elsewhere() + "/raw.bin").c_str());
+  std::remove(elsewhere().c_str());
+}
+
+// A directory of files an indirection may point to (made once, removed at exit): "other.h5", a
+// plain HDF5 copy of each base table's groups (so a link to "/contact_curves" or "/weibull_tail"
+// resolves there), and "raw.bin", a megabyte of doubles for external storage.
+const std::string& elsewhere() {
+  static const std::string directory = [] {
+    char name[] = "/tmp/fuzz-table-elsewhere-XXXXXX";
+    const std::string made = mkdtemp(name) ? name : "/tmp/fuzz-table-elsewhere";
+    const hid_t other = H5Fcreate((made + "/other.h5").c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    for (const bool curves : {false, true}) {
+      contact_curves = curves;
+      const std::vector<unsigned char>& base = base_file();
+      const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+      H5Pset_fapl_core(access, 1 << 16, false);
+      H5Pset_file_image(access, const_cast<unsigned char*>(base.data()), base.size());
+      const hid_t file = H5Fopen(curves ? "/dev/null/fuzz-base-curves" : "/dev/null/fuzz-base", H5F_ACC_RDONLY, access);
+      for (const char* group : curves ? std::vector<const char*>{"contact_curves"}
+                                      : std::vector<const char*>{"weibull_tail", "weibull_bounded", "gaussian_tail"})
+        H5Ocopy(file, group, other, group, H5P_DEFAULT, H5P_DEFAULT);
+      H5Fclose(file);
+      H5Pclose(access);
+    }
+    contact_curves = false;
+    H5Fclose(other);
+    const std::vector<double> raw(1 << 17, 0.25);
+    if (FILE* file = std::fopen((made + "/raw.bin").c_str(), "wb")) {
+      std::fwrite(raw.data(), sizeof(double), raw.size(), file);
+      std::fclose(file);
+    }
+    return made;
+  }();
+  return directory;
+}
+
+// A user-defined link class (registered in this process, so HDF5 would traverse it): opens an
+// object of the same file by the path it stores.
+hid_t open_by_path(const char*, hid_t group, const void* path, std::size_t, hid_t access, hid_t) {
+  return H5Oopen(group, static_cast<const char*>(path), access);
+}
+constexpr H5L_type_t by_path_link = static_cast<H5L_type_t>(H5L_TYPE_UD_MIN + 37);
+
+// The path an indirection names: a real file beside the table, or a relative name (resolved
+// against the working directory), or one that is not there.
+std::string other_path(FuzzedDataProvider& input, const char* real) {
+  switch (input.ConsumeIntegralInRange<int>(0, 2)) {
+    case 0: return elsewhere() + "/" + real;
+    case 1: return real;
+    default: return elsewhere() + "/missing";
+  }
+}
+
+// A dataset of `group` replaced by one of its own dimensions whose creation `configure` sets.
+bool replace_with(hid_t group, const char* name, const std::function<bool(hid_t create, hid_t space)>& configure,
+                  bool write_chunk = false) {
+  const hid_t old = H5Dopen2(group, name, H5P_DEFAULT);
+  if (old < 0) return false;
+  const hid_t space = H5Dget_space(old);
+  H5Dclose(old);
+  H5Ldelete(group, name, H5P_DEFAULT);
+  const hssize_t points = H5Sget_simple_extent_npoints(space);
+  const hid_t create = H5Pcreate(H5P_DATASET_CREATE);
+  bool made = points > 0 && points <= 200000 && configure(create, space);  // bounded: a chunk is written whole
+  const hid_t set = made ? H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, create, H5P_DEFAULT) : -1;
+  made = set >= 0;
+  if (made && write_chunk) {  // one chunk of the whole, written as if the filters had run
+    const std::vector<double> values(static_cast<std::size_t>(points), 0.5);
+    const std::vector<hsize_t> offset(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)), 0);
+    made = H5Dwrite_chunk(set, H5P_DEFAULT, 0, offset.data(), values.size() * sizeof(double), values.data()) >= 0;
+  }
+  if (set >= 0) H5Dclose(set);
+  H5Pclose(create);
+  H5Sclose(space);
+  return made;
+}
+
+// Points the table outside itself at `name` of `group`; whether it did.
+bool indirect(hid_t file, const char* group_name, FuzzedDataProvider& input) {
+  const hid_t group = H5Gopen2(file, group_name, H5P_DEFAULT);
+  if (group < 0) return false;
+  const bool whole_group = group_name == std::string("/") && input.ConsumeBool();
+  const char* name = whole_group ? (contact_curves ? "contact_curves" : "weibull_tail") : pick_dataset(input);
+  bool made = false;
+  if (H5Lexists(group, name, H5P_DEFAULT) > 0) {
+    const std::string path = "/" + std::string(group_name == std::string("/") ? "" : std::string(group_name) + "/") + name;
+    switch (input.ConsumeIntegralInRange<int>(0, 5)) {
+      case 0:  // an external link to the same path in another file
+        H5Ldelete(group, name, H5P_DEFAULT);
+        made = H5Lcreate_external(other_path(input, "other.h5").c_str(), path.c_str(), group, name, H5P_DEFAULT,
+                                  H5P_DEFAULT) >= 0;
+        break;
+      case 1:  // a soft link to the object, moved (or to nothing)
+        made = H5Lmove(group, name, file, "/moved", H5P_DEFAULT, H5P_DEFAULT) >= 0 &&
+               H5Lcreate_soft(input.ConsumeBool() ? "/moved" : "/nowhere", group, name, H5P_DEFAULT, H5P_DEFAULT) >= 0;
+        break;
+      case 2:  // a user-defined link to the object, moved
+        made = H5Lmove(group, name, file, "/moved", H5P_DEFAULT, H5P_DEFAULT) >= 0 &&
+               H5Lcreate_ud(group, name, by_path_link, "/moved", 7, H5P_DEFAULT, H5P_DEFAULT) >= 0;
+        break;
+      case 3:  // external storage
+        made = replace_with(group, name, [&](hid_t create, hid_t) {
+          return H5Pset_external(create, other_path(input, "raw.bin").c_str(), 0, H5F_UNLIMITED) >= 0;
+        });
+        break;
+      case 4:  // a virtual dataset of the same path in another file
+        made = replace_with(group, name, [&](hid_t create, hid_t space) {
+          return H5Pset_virtual(create, space, other_path(input, "other.h5").c_str(), path.c_str(), space) >= 0;
+        });
+        break;
+      default:  // a filter HDF5 would load from a plugin library
+        made = replace_with(
+            group, name,
+            [&](hid_t create, hid_t space) {
+              std::vector<hsize_t> chunk(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
+              H5Sget_simple_extent_dims(space, chunk.data(), nullptr);
+              return H5Pset_chunk(create, static_cast<int>(chunk.size()), chunk.data()) >= 0 &&
+                     H5Pset_filter(create, input.ConsumeIntegralInRange<H5Z_filter_t>(256, 65535), H5Z_FLAG_OPTIONAL,
+                                   0, nullptr) >= 0;
+            },
+            true);
+        break;
+    }
+  }
+  H5Gclose(group);
+  return made;
+}
+
 // The crafted file's bytes: the base table edited, an HDF5 image, a valid header before it.
-std::vector<unsigned char> craft(FuzzedDataProvider& input) {
+// `indirection`: whether it points outside itself (then it must be refused).
+std::vector<unsigned char> craft(FuzzedDataProvider& input, bool& indirection) {
   static unsigned long serial = 0;
   const std::vector<unsigned char>& base = base_file();
   const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
@@ -226,6 +369,8 @@ std::vector<unsigned char> craft(FuzzedDataProvider& input) {
     }
     H5Oclose(group);
   }
+  // last, so that no later edit takes it out
+  indirection = input.ConsumeBool() && indirect(file, pick_group(input), input);
   H5Fflush(file, H5F_SCOPE_GLOBAL);
   const ssize_t size = H5Fget_file_image(file, nullptr, 0);
   if (size > 0) {
@@ -242,6 +387,11 @@ std::vector<unsigned char> craft(FuzzedDataProvider& input) {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // the harness's own edits fail often, quietly
   base_file();
+  elsewhere();
+  std::atexit(remove_elsewhere);
+  const H5L_class_t by_path = {H5L_LINK_CLASS_T_VERS, by_path_link, "by path", nullptr, nullptr, nullptr,
+                               open_by_path, nullptr, nullptr};
+  H5Lregister(&by_path);
   return 0;
 }
 
@@ -249,17 +399,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FuzzedDataProvider input(data, size);
   contact_curves = input.ConsumeBool();
   adhesive = contact_curves && input.ConsumeBool();
-  const std::vector<unsigned char> bytes = craft(input);
+  bool indirection = false;
+  const std::vector<unsigned char> bytes = craft(input, indirection);
   if (bytes.empty()) return 0;
   try {
     if (contact_curves) {
       const asperity::ContactCurves curves(asperity::read_contact_curves_bytes(bytes.data(), bytes.size(), "crafted"));
+      if (indirection) __builtin_trap();  // served what another file holds
       asperity::fuzz::exercise(curves);
     } else {
       const asperity::Table table(asperity::read_table_bytes(bytes.data(), bytes.size(), "crafted"));
+      if (indirection) __builtin_trap();
       asperity::fuzz::exercise(table);
     }
-  } catch (const asperity::Error&) {
+  } catch (const asperity::Error& error) {
+    // refused as pointing outside, not for a reason found later
+    if (indirection && !std::strstr(error.what(), "a table is one self-contained file")) __builtin_trap();
   }
   return 0;
 }
