@@ -21,7 +21,8 @@ Many files -- a production line's parts -- go through asperity.batch on a Dask c
 table and each surface's JSON, resuming after an interruption (needs python3-distributed):
 
     from asperity import batch
-    rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)   # results/surfaces.csv
+    if __name__ == "__main__":  # in a script: its worker processes import it again
+        rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)   # results/surfaces.csv
 
 The common figures -- separation, real area and stiffness against load, one model or several
 compared -- are drawn by asperity.plot (matplotlib, imported only when it draws):

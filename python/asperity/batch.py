@@ -7,13 +7,15 @@ table -- a row per surface: statistics, fits, verdict, contact ratios -- plus ea
 document (schema asperity-surface/2):
 
     from asperity import batch
-    rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)
-    # results/surfaces.csv (the table), results/<name>.json (each surface's analysis)
+    if __name__ == "__main__":  # required in a script: the worker processes import it again
+        rows = batch.analyse_files(paths, "results", contact_modulus=1.1e11)
+        # results/surfaces.csv (the table), results/<name>.json (each surface's analysis)
 
 A run can be interrupted at any point and started again: a surface whose JSON was finished with
 the same options (and asperity version) is not analysed again, and nothing half-written is ever
-taken for a result. Every file is written atomically (a temporary file in the same folder, then a
-rename); a surface's <name>.done marker, written after its JSON, records the options' fingerprint,
+taken for a result. Every file is written through the library's output policy (a temporary file in
+the same folder, then a rename; never through a planted link, never over a file of another kind); a
+surface's <name>.done marker, written after its JSON, records the options' fingerprint,
 the JSON's SHA-256 and the input file's size and modification time, and is what makes it finished.
 A file that cannot be analysed gives a row with status "failed" and the error, not a failed batch.
 
@@ -34,6 +36,7 @@ import time
 __all__ = ["COLUMNS", "analyse_files", "options_fingerprint", "output_name", "read_table", "row_from_json"]
 
 _SCHEMA = "asperity-surface/2"
+_DONE_SCHEMA = "asperity-batch-done/1"  # a surface's <name>.done marker
 _MODELS = ("gaussian", "weibull_tail", "weibull_bounded")
 _SAMPLES = ("summit_heights", "heights")
 # the contact models whose stiffness is compared with GW summed over the measured summits
@@ -168,23 +171,16 @@ def output_name(path) -> str:
     return f"{stem}-{hashlib.sha256(absolute).hexdigest()[:10]}"
 
 
+# what a run of an earlier version left when interrupted (this one writes through the library's output
+# policy, whose temporaries it removes itself)
 _TEMPORARY = re.compile(r"^\..+\.tmp-[0-9a-f]{16}$")
 
 
-def _write_atomically(directory, name, data: bytes):
-    temporary = os.path.join(directory, f".{name}.tmp-{os.urandom(8).hex()}")
-    try:
-        with open(temporary, "wb") as out:
-            out.write(data)
-            out.flush()
-            os.fsync(out.fileno())
-        os.replace(temporary, os.path.join(directory, name))
-    except BaseException:
-        try:
-            os.unlink(temporary)
-        except OSError:
-            pass
-        raise
+def _write_file(directory, name, data: bytes, kind):
+    """data as directory/name through the library's output policy (asperity/output.hpp): a temporary in
+    the folder renamed into place, never through a planted link, never over a file of another kind."""
+    from ._asperity import _output
+    _output.write_file(os.path.join(directory, name), data, kind)
 
 
 def _remove(path):
@@ -203,22 +199,69 @@ def _source_stat(path):
 
 
 class _Lock:
-    """One run at a time per output folder (an advisory lock on <output_dir>/.batch.lock)."""
+    """One run at a time per output folder (an exclusive lock on <output_dir>/.batch.lock, opened only
+    inside the folder and never through a link)."""
 
     def __init__(self, directory):
-        self.file = open(os.path.join(directory, ".batch.lock"), "a+b")
-        try:
-            import fcntl
-        except ImportError:  # not POSIX: no lock
-            return
-        try:
-            fcntl.flock(self.file.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            self.file.close()
-            raise RuntimeError(f"another run is writing into {os.fsdecode(directory)}") from None
+        from ._asperity import _output
+        self.fd = _output.lock_folder(directory, ".batch.lock")
+        if self.fd < 0:
+            raise RuntimeError(f"another run is writing into {os.fsdecode(directory)}")
 
     def release(self):
-        self.file.close()
+        if self.fd >= 0:
+            os.close(self.fd)
+            self.fd = -1
+
+
+# ---- a script without the main guard ----
+
+_NO_GUARD = ("asperity.batch.analyse_files was called {where} without `if __name__ == \"__main__\":`. Its worker "
+             "processes start by importing the main script again (multiprocessing's spawn), so each worker would "
+             "start the batch again, and Dask would restart them forever. Put the call under "
+             "`if __name__ == \"__main__\":` (docs/surfaces.md).")
+
+
+def _in_main_guard(path, line):
+    """Whether line of the script at path lies inside an `if __name__ == "__main__":` block (None if the
+    script cannot be read)."""
+    import ast
+    try:
+        with open(path, "rb") as f:
+            tree = ast.parse(f.read())
+    except (OSError, SyntaxError, ValueError):
+        return None
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.If) or not isinstance(node.test, ast.Compare):
+            continue
+        sides = [node.test.left] + node.test.comparators
+        names = {n.id for n in sides if isinstance(n, ast.Name)}
+        texts = {n.value for n in sides if isinstance(n, ast.Constant)}
+        if "__name__" in names and "__main__" in texts and node.body:
+            if node.body[0].lineno <= line <= (node.body[-1].end_lineno or node.body[-1].lineno):
+                return True
+    return False
+
+
+def _refuse_unguarded_main(processes, scheduler):
+    """Fails at once where worker processes would re-run the batch: in a worker importing the main
+    script again (its __main__ is __mp_main__), or in a script calling the batch at its top level
+    outside the main guard (checked in its source) while the batch starts a LocalCluster of processes."""
+    main = sys.modules.get("__main__")
+    if getattr(main, "__name__", None) == "__mp_main__":
+        raise RuntimeError(_NO_GUARD.format(where="while a worker process imported the main script"))
+    if scheduler is not None or not processes:
+        return
+    script = getattr(main, "__file__", None)
+    frame = sys._getframe(2)
+    while frame is not None:
+        if frame.f_code.co_name == "<module>" and frame.f_globals.get("__name__") == "__main__":
+            if script and os.path.abspath(frame.f_code.co_filename) == os.path.abspath(script) and \
+                    _in_main_guard(script, frame.f_lineno) is False:
+                raise RuntimeError(_NO_GUARD.format(
+                    where=f"at the top level of the script {script} (line {frame.f_lineno})"))
+            return
+        frame = frame.f_back
 
 
 # ---- one surface (on a worker) ----
@@ -462,6 +505,7 @@ def analyse_files(paths, output_dir, options=None, *, bootstrap=None, seed=None,
     "analysed", "resumed" (finished by an earlier run) or "failed" (error holds the message; no
     JSON). Raises TypeError or asperity.Error for bad options, RuntimeError if another run holds
     output_dir, OSError if output_dir cannot be written; a file's own failure is only its row."""
+    _refuse_unguarded_main(processes, scheduler)
     plain = _plain_options(options, bootstrap=bootstrap, seed=seed, confidence=confidence,
                            significance=significance, contact_modulus=contact_modulus, pressures=pressures,
                            nominal_area=nominal_area, table_path=table_path, analysis_threads=analysis_threads)
@@ -490,8 +534,8 @@ def analyse_files(paths, output_dir, options=None, *, bootstrap=None, seed=None,
             _run(to_do, sources, names, rows, plain, directory, fingerprint, report, scheduler=scheduler,
                  n_workers=n_workers, threads_per_worker=threads_per_worker, processes=processes)
         report.finish()
-        _write_atomically(directory, "surfaces.csv",
-                          _csv_text(rows, _columns(rows)).encode("utf-8", errors="backslashreplace"))
+        _write_file(directory, "surfaces.csv",
+                    _csv_text(rows, _columns(rows)).encode("utf-8", errors="backslashreplace"), "results_csv")
     finally:
         lock.release()
     return rows
@@ -551,9 +595,14 @@ def _store(directory, name, source, fingerprint, result):
         return _failed_row(source, name, f"the analysis's JSON is not readable: {type(exc).__name__}: {exc}",
                            result["seconds"])
     row["seconds"] = result["seconds"]
-    _write_atomically(directory, name + ".json", data)
-    done = {"source": source, "fingerprint": fingerprint, "json_sha256": hashlib.sha256(data).hexdigest(),
-            "source_stat": result["source_stat"], "seconds": result["seconds"],
-            "finished": time.strftime("%Y-%m-%dT%H:%M:%S%z")}
-    _write_atomically(directory, name + ".done", (json.dumps(done, indent=1) + "\n").encode())
+    from . import Error
+    try:
+        _write_file(directory, name + ".json", data, "results_json")
+    except Error as exc:  # a file of another kind in the way (the policy never replaces it)
+        return _failed_row(source, name, f"Error: {exc}", result["seconds"])
+    # the schema first: the marker is recognised as asperity's JSON results (the output policy)
+    done = {"schema": _DONE_SCHEMA, "source": source, "fingerprint": fingerprint,
+            "json_sha256": hashlib.sha256(data).hexdigest(), "source_stat": result["source_stat"],
+            "seconds": result["seconds"], "finished": time.strftime("%Y-%m-%dT%H:%M:%S%z")}
+    _write_file(directory, name + ".done", (json.dumps(done, indent=1) + "\n").encode(), "results_json")
     return row

@@ -404,6 +404,72 @@ def test_one_run_per_folder(tmp_path):
     assert (tmp_path / "surfaces.csv").read_text().startswith("source,name,status,error,")
 
 
+def test_a_planted_link_at_the_lock_creates_nothing_outside(tmp_path):
+    out, outside = tmp_path / "results", tmp_path / "elsewhere"
+    out.mkdir()
+    outside.mkdir()
+    (out / ".batch.lock").symlink_to(outside / "planted")
+    with pytest.raises(asperity.Error, match=r"\.batch\.lock.*symbolic link"):
+        batch.analyse_files([], out, progress=False)
+    assert list(outside.iterdir()) == [] and sorted(p.name for p in out.iterdir()) == [".batch.lock"]
+
+
+def test_the_results_are_written_through_the_output_policy(tmp_path):
+    out, outside = tmp_path / "results", tmp_path / "elsewhere"
+    out.mkdir()
+    outside.mkdir()
+    (outside / "kept.csv").write_text("someone's table\n")
+    (out / "surfaces.csv").symlink_to(outside / "kept.csv")  # a planted link: never written through
+    with pytest.raises(asperity.Error, match="surfaces.csv"):
+        batch.analyse_files([], out, progress=False)
+    assert (outside / "kept.csv").read_text() == "someone's table\n"
+    (out / "surfaces.csv").unlink()
+    (out / "surfaces.csv").write_text("not a table of ours\n")  # a file of another kind: not replaced
+    with pytest.raises(asperity.Error, match="surfaces.csv"):
+        batch.analyse_files([], out, progress=False)
+    assert (out / "surfaces.csv").read_text() == "not a table of ours\n"
+    source = Path(batch.__file__).read_text()
+    assert not re.search(r"open\([^)]*[\"'][wax]b?\+?[\"']", source), "a file opened for writing by batch.py itself"
+
+
+NO_GUARD_SCRIPT = """
+from asperity import batch
+batch.analyse_files([{path!r}], {out!r}, bootstrap=49, n_workers=1, progress=False)
+"""
+
+
+def test_a_script_without_the_main_guard_fails_at_once(tmp_path):
+    # the batch at a script's top level: Dask's spawned workers import the script again, and each
+    # would start the batch again (restarted forever, no row, no error): refused before any cluster
+    script = tmp_path / "no_guard.py"
+    body = NO_GUARD_SCRIPT.format(path=str(tmp_path / "missing.gsf"), out=str(tmp_path / "out"))
+    script.write_text(body)
+    started = time.monotonic()
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=60,
+                          env=os.environ.copy())
+    assert done.returncode != 0 and time.monotonic() - started < 30
+    assert 'if __name__ == "__main__":' in done.stderr and "no_guard.py (line 3)" in done.stderr
+    assert not (tmp_path / "out").exists()
+    # under the guard (here in a function called there) the same call runs: a row for the missing file
+    script.write_text("def main():" + body.replace("\n", "\n    ") + "\nif __name__ == '__main__':\n    main()\n")
+    done = subprocess.run([sys.executable, "-W", "ignore", str(script)], capture_output=True, text=True, timeout=120,
+                          env=os.environ.copy())
+    assert done.returncode == 0, done.stderr
+    assert [row["status"] for row in batch.read_table(tmp_path / "out" / "surfaces.csv")] == ["failed"]
+
+
+def test_a_worker_importing_the_main_script_fails_at_once(tmp_path):
+    # what a spawned worker sees when it imports a script that runs the batch: its __main__ is
+    # __mp_main__ (whatever the parent could not see in the script's source)
+    code = ("import sys; sys.modules['__main__'].__name__ = '__mp_main__'\n"
+            "from asperity import batch\n"
+            f"batch.analyse_files([], {str(tmp_path / 'out')!r}, progress=False)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60,
+                          env=os.environ.copy())
+    assert done.returncode != 0 and "while a worker process imported the main script" in done.stderr
+    assert 'if __name__ == "__main__":' in done.stderr and not (tmp_path / "out").exists()
+
+
 def test_row_from_json_refuses_another_schema():
     with pytest.raises(ValueError, match="asperity-surface/2"):
         batch.row_from_json('{"schema": "asperity-surface/1"}')

@@ -121,3 +121,51 @@ def test_law_curves_reports_progress_and_its_exception_stops_it():
     assert time.monotonic() - started < 3
     with pytest.raises(TypeError, match="progress must be a callable"):
         asperity.law_curves("hertz", **dict(GAUSSIAN, max_rel_error=1e-6), progress=1)
+
+
+def maugis_dugdale_scene(path, max_rel_error):
+    keys = dict(MAUGIS_DUGDALE, max_rel_error=max_rel_error)
+    lines = ["[[law]]", 'law = "maugis-dugdale"']
+    lines += [f"{k} = [{v[0]}, {v[1]}]" if isinstance(v, tuple) else f'{k} = "{v}"' if isinstance(v, str)
+              else f"{k} = {v!r}" for k, v in keys.items()]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def tablegen():
+    command = os.environ.get("ASPERITY_TABLEGEN")
+    if not command:
+        pytest.skip("ASPERITY_TABLEGEN is not set (ctest sets it)")
+    return command
+
+
+def test_tablegen_reports_a_law_scenes_progress(tmp_path):
+    import subprocess
+    scene = maugis_dugdale_scene(tmp_path / "md.toml", 1e-4)  # seconds
+    done = subprocess.run([tablegen(), "--scene", str(scene), "--out", str(tmp_path / "md.h5")], capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    lines = [line for line in done.stderr.splitlines() if "maugis-dugdale: pass " in line]
+    assert lines, done.stderr
+    assert all(" nodes, interval " in line and line.endswith(" s") for line in lines)
+
+
+def test_tablegen_stops_at_sigint_and_leaves_nothing(tmp_path):
+    import subprocess
+    out = tmp_path / "out"
+    out.mkdir()
+    scene = maugis_dugdale_scene(tmp_path / "md.toml", 1e-10)  # many minutes
+    process = subprocess.Popen([tablegen(), "--scene", str(scene), "--out", str(out / "md.h5")],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        time.sleep(1.0)
+        assert process.poll() is None, process.communicate()
+        sent = time.monotonic()
+        process.send_signal(signal.SIGINT)
+        process.wait(timeout=10)
+        assert time.monotonic() - sent < ANSWER
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.wait()
+    assert process.returncode != 0 and list(out.iterdir()) == []
