@@ -8,11 +8,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "asperity/contact_curves_data.hpp"
@@ -120,14 +123,74 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// A scene's progress on standard error: the step the generator is at, shown when it changes (at
+// most a line a second) and at least every 5 s while it lasts, with the time elapsed, so that a
+// log shows which curve a long run is on and that it is alive.
+class ProgressLine {
+ public:
+  ProgressLine(bool enabled, std::chrono::steady_clock::time_point start) : enabled_(enabled), start_(start) {
+    if (enabled_) ticker_ = std::thread([this] { tick(); });
+  }
+  ~ProgressLine() {
+    if (!enabled_) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_one();
+    ticker_.join();
+  }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  // From any thread.
+  void set(std::string step) {
+    if (!enabled_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    step_ = std::move(step);
+    if (std::chrono::steady_clock::now() - shown_ >= std::chrono::seconds(1)) show();
+  }
+
+ private:
+  void tick() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(500), [this] { return done_; }))
+      if (!step_.empty() && std::chrono::steady_clock::now() - shown_ >= std::chrono::seconds(5)) show();
+  }
+  void show() {  // the mutex held
+    shown_ = std::chrono::steady_clock::now();
+    std::fprintf(stderr, "tablegen: %s, %.0f s\n", step_.c_str(), std::chrono::duration<double>(shown_ - start_).count());
+    std::fflush(stderr);
+  }
+  const bool enabled_;
+  const std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point shown_{};
+  std::string step_;
+  bool done_ = false;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::thread ticker_;
+};
+
 // A law scene: the law's rough-surface curves as a contact-curves table
 int generate_law_scene(const Options& options, const Scene& scene, std::chrono::steady_clock::time_point start) {
   const SceneLaw& law = scene.laws.front();
   if (!options.quiet)
     std::fprintf(stderr, "tablegen: scene %s: the %s law's curves\n", quote_text(options.scene, 200).c_str(),
                  contact_law_name(law.law.kind));
-  const generator::LawCurvesResult result =
-      generator::generate_law_curves(law, "--scene " + quote_text(options.scene, 200));
+  generator::LawCurvesResult result;
+  {
+    ProgressLine line(!options.quiet, start);
+    const std::string law_name = contact_law_name(law.law.kind);
+    result = generator::generate_law_curves(law, "--scene " + quote_text(options.scene, 200),
+                                            [&](const generator::LawCurvesProgress& at) {
+                                              line.set(law_name + ": pass " + std::to_string(at.pass) + ", " +
+                                                       std::to_string(at.nodes) + " nodes, interval " +
+                                                       std::to_string(at.checked) + "/" + std::to_string(at.intervals) +
+                                                       " checked, " + std::to_string(at.evaluations) +
+                                                       " exact evaluations");
+                                            });
+  }
   if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
   write_contact_curves_file(result.data, options.out);
   const ContactCurvesData& data = result.data;
@@ -154,7 +217,11 @@ int generate_scene(const Options& options, int threads) {
   check_scene(scene);
   if (!options.quiet)
     std::fprintf(stderr, "tablegen: scene %s: %zu curves\n", quote_text(options.scene, 200).c_str(), scene.curves.size());
-  const generator::SceneResult result = generator::generate_scene_table(scene, threads);
+  generator::SceneResult result;
+  {
+    ProgressLine line(!options.quiet, start);
+    result = generator::generate_scene_table(scene, threads, [&](const std::string& step) { line.set(step); });
+  }
   if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
   write_table_file(result.table, options.out);
   std::printf("%-16s %-8s %-8s %7s %-14s %-24s %9s %9s %6s %8s\n", "curve", "dist", "side", "shape", "orders",
@@ -289,7 +356,8 @@ int main(int argc, char** argv) {
   cli::add_whole_number(app, "--threads", o.threads, 1, 4096, "worker threads (default: all cores)");
   app.add_flag("--quiet", o.quiet, "no progress on standard error (errors are still reported)");
   app.footer(
-      "Progress goes to standard error: a bar on a terminal, else a line per tenth of the curves.\n"
+      "Progress goes to standard error: a bar on a terminal, else a line per tenth of the curves; a scene's\n"
+      "step (which curve, shape or pass) when it changes and at least every 5 s, with the time elapsed.\n"
       "Exit status: 0 written; 2 bad usage, a bad scene file, a generation that fails its checks, or a\n"
       "file that could not be written.");
   cli::set_action(app, [options] { return generate(*options); });
