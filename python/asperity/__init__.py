@@ -33,7 +33,9 @@ Orders are twice_order (0..5) or the quantity's name: curve.value("load", s) is 
 Arrays of any shape go through the library's vectorized batch path (no Python loop; the GIL
 is released for large arrays); numbers give floats. Errors raise asperity.Error with the
 library's message; a ContactModel past Greenwood-Williamson's validity (real area above
-gw_area_fraction_limit of the nominal area) warns with asperity.AreaFractionWarning. The names
+gw_area_fraction_limit of the nominal area) warns with asperity.AreaFractionWarning; a query
+outside the range a table serves (a scene table's, contact curves') is NaN with an
+asperity.OutOfRangeWarning naming the range. The names
 mirror the C++ API (include/asperity/*.hpp). Two surface types: RoughSurface (formerly
 PhysicalSurface) is a physical surface in SI units for ContactModel; SurfaceScales (formerly
 Surface) is the four scales N, R, sigma_s, E* the lower-level contact_at multiplies a curve by.
@@ -55,6 +57,7 @@ from ._asperity import (  # noqa: F401
     ImplausibleValueWarning,
     InstructionSet,
     InverseCurve,
+    OutOfRangeWarning,
     PerssonLaw,
     PhysicalState,
     PhysicalSurface,
@@ -106,7 +109,7 @@ from . import plot  # noqa: E402,F401 (pure Python; imports matplotlib only when
 __all__ = [
     "ImplausibleValueWarning", "implausible_values",
     "ALL_ORDERS", "ORDER_COUNT", "AreaFractionWarning", "ContactCurves", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
-    "Distribution", "Error", "InstructionSet", "InverseCurve", "PerssonLaw", "PhysicalState",
+    "Distribution", "Error", "InstructionSet", "InverseCurve", "OutOfRangeWarning", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",
     "batch", "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",
     "gaussian_surface_from_moments", "gw_area_fraction_limit", "height_scale_from_rms", "law_curves", "nominal_pressure_from_load", "order_of", "origin_from_standardized",

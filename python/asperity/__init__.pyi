@@ -24,6 +24,10 @@ class Error(RuntimeError):
 class AreaFractionWarning(UserWarning):
     """Warned where a ContactModel's real area passes gw_area_fraction_limit of the nominal area."""
 
+class OutOfRangeWarning(UserWarning):
+    """Warned where a query lies outside the range a table serves (a ContactModel on a scene table,
+    ContactCurves) and is answered NaN; the message names how many and the range, in the query's unit."""
+
 gw_area_fraction_limit: float
 
 class Distribution(enum.Enum):
@@ -261,7 +265,9 @@ class ContactModel:
     """Contact of a flat with a RoughSurface, forward and inverse, SI units. Separations from the
     model's datum: 'origin' (the default: the Weibull origin, the Gaussian's mean), 'mean-summit'
     or 'mean-plane' (with mean_summit_height, the mean summit height above the mean plane [m]). Warns
-    AreaFractionWarning past gw_area_fraction_limit."""
+    AreaFractionWarning past gw_area_fraction_limit, OutOfRangeWarning for a query outside a scene
+    table's range (answered NaN), ImplausibleValueWarning for a unit slip or a mean summit height
+    below the mean plane."""
     def __init__(self, table: Table, surface: RoughSurface, datum: str = "origin",
                  mean_summit_height: Optional[float] = None) -> None: ...
     @property

@@ -26,6 +26,7 @@
 #include "asperity/interrupt.hpp"
 #include "asperity/inverse.hpp"
 #include "asperity/integrals.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/persson.hpp"
 #include "asperity/plausibility.hpp"
 #include "asperity/pressure_overclosure.hpp"
@@ -120,15 +121,47 @@ void warn_past_gw(double area_fraction) {
   if (PyErr_WarnEx(area_fraction_warning, text, 1) < 0) throw py::error_already_set();
 }
 
+// asperity.OutOfRangeWarning (a UserWarning), made once at import.
+PyObject* out_of_range_warning = nullptr;
+
+// Queries outside the range a table serves (a scene table's, contact curves') are answered NaN,
+// as the C++ API answers them; where the command refuses them, Python warns once per call,
+// naming how many and the range in the query's unit. Raises if warnings are errors.
+void warn_out_of_range(std::size_t outside, std::size_t total, const char* what, const std::string& range) {
+  if (outside == 0) return;
+  const std::string text = std::to_string(outside) + " of " + std::to_string(total) + " " + what +
+                           " outside the range the table serves (answered NaN): " + range;
+  if (PyErr_WarnEx(out_of_range_warning, text.c_str(), 1) < 0) throw py::error_already_set();
+}
+
+std::string g(double value) { return format_double(value); }
+
+// The range a model answers (a scene table's), in the unit of a query of `kind`
+std::string model_range(const ContactModel& model, const std::string& kind) {
+  const double area = model.surface().nominal_area;
+  if (kind == "separation")
+    return "separations " + g(model.min_separation()) + " to " + g(model.max_separation()) + " m" +
+           (model.surface().side == Side::bounded ? " (and from 0 on: no contact)" : "");
+  if (kind == "load") return "loads " + g(model.min_load()) + " to " + g(model.max_load()) + " N";
+  if (kind == "pressure") return "nominal pressures " + g(model.min_load() / area) + " to " + g(model.max_load() / area) + " Pa";
+  return "real areas " + g(model.min_real_area()) + " to " + g(model.max_real_area()) + " m^2";
+}
+
 template <class Answer>
-PhysicalStateRecord physical_states(py::handle input, const char* name, Answer answer) {
+PhysicalStateRecord physical_states(py::handle input, const char* name, const ContactModel& model, Answer answer) {
   double largest_fraction = 0;  // NaN never counts
+  std::size_t total = 0, outside = 0;  // queries, and those answered NaN (outside a scene table's range)
   constexpr std::size_t fields = physical_state_field_count;
   PhysicalStateRecord record{make_record(physical_state_type, map_records<fields>(input, name, [&](double x, double** out, std::size_t i) {
     const PhysicalState state = answer(x);
     if (state.area_fraction > largest_fraction) largest_fraction = state.area_fraction;
+    ++total;
+    outside += std::isnan(state.load) && !std::isnan(x);
     for (std::size_t k = 0; k < fields; ++k) out[k][i] = state.*physical_state_members[k];
   }))};
+  const std::string kind = std::strcmp(name, "real_area") == 0 ? "real-area" : name;
+  const std::string plural = kind == "real-area" ? "real areas" : std::string(name) + "s";
+  if (outside > 0) warn_out_of_range(outside, total, plural.c_str(), model_range(model, kind));
   warn_past_gw(largest_fraction);
   return record;
 }
@@ -141,6 +174,21 @@ FloatOrArray map_scalar(py::handle input, const char* name, Function function) {
         for (std::size_t i = 0; i < n; ++i) out[i] = function(in[i]);
       },
       function);
+}
+
+// map_scalar for contact curves: values of x outside [lo, hi] (NaN aside) counted and warned
+template <class Function>
+FloatOrArray map_served(py::handle input, const char* name, double lo, double hi, const char* unit, Function function) {
+  std::size_t total = 0, outside = 0;
+  FloatOrArray answer = map_scalar(input, name, [&](double x) {
+    ++total;
+    outside += !std::isnan(x) && !(x >= lo && x <= hi);
+    return function(x);
+  });
+  if (outside > 0)
+    warn_out_of_range(outside, total, (std::string(name) + "s").c_str(),
+                      std::string(name) + "s " + g(lo) + " to " + g(hi) + " " + unit);
+  return answer;
 }
 
 std::string describe(const Curve& curve) {
@@ -192,6 +240,16 @@ void bind(py::module_& m) {
       PyExc_UserWarning, nullptr);
   if (!area_fraction_warning) throw py::error_already_set();
   m.attr("AreaFractionWarning") = py::reinterpret_borrow<py::object>(area_fraction_warning);  // the module keeps it
+  out_of_range_warning = PyErr_NewExceptionWithDoc(
+      "asperity.OutOfRangeWarning",
+      "Warned (warnings.warn) where a query lies outside the range a table serves and is answered NaN: a\n"
+      "ContactModel on a scene table (its scene's separations, and the loads, pressures and real areas there) or\n"
+      "ContactCurves (a contact-curves table: a law's or a measured surface's). The message names how many and\n"
+      "the range, in the query's unit; the command asperity contact refuses such a query.\n"
+      "warnings.simplefilter('error', asperity.OutOfRangeWarning) makes it an exception.",
+      PyExc_UserWarning, nullptr);
+  if (!out_of_range_warning) throw py::error_already_set();
+  m.attr("OutOfRangeWarning") = py::reinterpret_borrow<py::object>(out_of_range_warning);
   m.attr("gw_area_fraction_limit") = gw_area_fraction_limit;
   m.attr("Error").attr("__doc__") =
       "An error of the asperity library (a missing or bad table or scene, a shape outside the table, a bad "
@@ -627,6 +685,8 @@ void bind(py::module_& m) {
                                 mean_summit_height.value_or(std::numeric_limits<double>::quiet_NaN()));
              for (const std::string& line : implausible_values(surface))
                if (PyErr_WarnEx(implausible_warning, line.c_str(), 1) != 0) throw py::error_already_set();
+             for (const std::string& line : implausible_mean_summit_height(surface, model.mean_summit_height()))
+               if (PyErr_WarnEx(implausible_warning, line.c_str(), 1) != 0) throw py::error_already_set();
              return model;
            }),
            "table"_a, "surface"_a, "datum"_a = separation_datum_name(default_separation_datum),
@@ -658,14 +718,29 @@ void bind(py::module_& m) {
               throw py::value_error("unknown quantity '" + quantity +
                                     "': expected 'count', 'real-area', 'area-fraction', 'load', 'pressure' or "
                                     "'stiffness'");
-            return map_batch(
+            // outside a scene table's range (answered NaN) counted first (the answer may overwrite
+            // the input); a full table's model serves every separation: no pass
+            const bool everywhere = model.min_separation() == -HUGE_VAL && model.max_separation() == HUGE_VAL;
+            std::size_t total = 0, outside = 0;
+            const auto count = [&](const double* in, std::size_t n) {
+              total += n;
+              if (!everywhere)
+                for (std::size_t i = 0; i < n; ++i) outside += !std::isnan(in[i]) && !model.answers_separation(in[i]);
+            };
+            FloatOrArray answer = map_batch(
                 separation.object, "separation", out.object,
-                [&](const double* in, double* result, std::size_t n) { model.at_separations(q, in, result, n); },
+                [&](const double* in, double* result, std::size_t n) {
+                  count(in, n);
+                  model.at_separations(q, in, result, n);
+                },
                 [&](double x) {
+                  count(&x, 1);
                   double y;
                   model.at_separations(q, &x, &y, 1);
                   return y;
                 });
+            warn_out_of_range(outside, total, "separations", model_range(model, "separation"));
+            return answer;
           },
           "quantity"_a, "separation"_a, py::kw_only(), "out"_a = py::none(),
           "One quantity ('count', 'real-area', 'area-fraction', 'load', 'pressure', 'stiffness') at separations\n"
@@ -687,25 +762,25 @@ void bind(py::module_& m) {
       .def(
           "at_separation",
           [](const ContactModel& model, const ArrayLike& separation) {
-            return physical_states(separation.object, "separation", [&](double d) { return model.at_separation(d); });
+            return physical_states(separation.object, "separation", model, [&](double d) { return model.at_separation(d); });
           },
           "separation"_a, "The PhysicalState at separations d [m] from the model's datum (a number or an array).")
       .def(
           "at_load",
           [](const ContactModel& model, const ArrayLike& load) {
-            return physical_states(load.object, "load", [&](double p) { return model.at_load(p); });
+            return physical_states(load.object, "load", model, [&](double p) { return model.at_load(p); });
           },
           "load"_a, "The PhysicalState carrying loads P [N]; P <= 0 is no contact.")
       .def(
           "at_pressure",
           [](const ContactModel& model, const ArrayLike& pressure) {
-            return physical_states(pressure.object, "pressure", [&](double p) { return model.at_pressure(p); });
+            return physical_states(pressure.object, "pressure", model, [&](double p) { return model.at_pressure(p); });
           },
           "pressure"_a, "The PhysicalState at nominal pressures P/A0 [Pa].")
       .def(
           "at_real_area",
           [](const ContactModel& model, const ArrayLike& area) {
-            return physical_states(area.object, "real_area", [&](double a) { return model.at_real_area(a); });
+            return physical_states(area.object, "real_area", model, [&](double a) { return model.at_real_area(a); });
           },
           "real_area"_a, "The PhysicalState with real contact areas A [m^2].")
       .def_property_readonly("surface", &ContactModel::surface, py::return_value_policy::copy,
@@ -751,7 +826,8 @@ void bind(py::module_& m) {
                             "Contact curves against separation, served: a measured surface's exact contact tabulated\n"
                             "(asperity exact-contact --table; docs/exact-contact.md). Separation [m] from the table's\n"
                             "datum (separation_datum: a map's mean plane), nominal pressure [Pa], stiffness -dp/du\n"
-                            "[Pa/m], real area fraction; NaN outside the range served (the first to the last node).\n"
+                            "[Pa/m], real area fraction; NaN outside the range served (the first to the last node), with an\n"
+                            "asperity.OutOfRangeWarning naming that range (the command refuses such a query).\n"
                             "Immutable: one object may serve many threads.")
       .def(py::init([](const PathName& path) { return ContactCurves::open(to_path(path.object)); }), "path"_a,
            "Opens and validates a contact-curves table (HDF5); raises asperity.Error naming the file and the problem.")
@@ -770,25 +846,29 @@ void bind(py::module_& m) {
       .def(
           "pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_scalar(x.object, "separation", [&](double v) { return curves.pressure(v); });
+            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
+                              [&](double v) { return curves.pressure(v); });
           },
           "separation"_a, "The nominal pressure [Pa] at separations [m] (float or array).")
       .def(
           "stiffness",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_scalar(x.object, "separation", [&](double v) { return curves.stiffness(v); });
+            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
+                              [&](double v) { return curves.stiffness(v); });
           },
           "separation"_a, "The stiffness per area -dp/du [Pa/m] at separations [m].")
       .def(
           "area_fraction",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_scalar(x.object, "separation", [&](double v) { return curves.area_fraction(v); });
+            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
+                              [&](double v) { return curves.area_fraction(v); });
           },
           "separation"_a, "The real contact area over the nominal area at separations [m].")
       .def(
           "summit_count",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_scalar(x.object, "separation", [&](double v) { return curves.summit_count(v); });
+            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
+                              [&](double v) { return curves.summit_count(v); });
           },
           "separation"_a,
           "Summits in contact per m^2 of nominal area at separations [m] (a law's table; NaN for a table without\n"
@@ -796,11 +876,12 @@ void bind(py::module_& m) {
       .def(
           "separation_at_pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_scalar(x.object, "pressure", [&](double v) { return curves.separation_at_pressure(v); });
+            return map_served(x.object, "pressure", curves.min_pressure(), curves.max_pressure(), "Pa",
+                              [&](double v) { return curves.separation_at_pressure(v); });
           },
           "pressure"_a,
           "The separation [m] where the served pressure is `pressure` [Pa] (the inverse; adhesive curves: on the\n"
-          "stable branch, up to pull_off_separation); NaN outside the range.")
+          "stable branch, up to pull_off_separation); NaN outside the range (asperity.OutOfRangeWarning).")
       .def(
           "pressure_overclosure_card",
           [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,

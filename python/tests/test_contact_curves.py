@@ -4,6 +4,7 @@ then served: the nodes to rounding, fresh solves between them within the stored 
 inverse, arrays, the card, and the errors of a missing file or a table of the other kind."""
 import copy
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -65,9 +66,18 @@ def test_arrays_inverse_and_range(written):
     assert p.shape == (101,) and np.all(np.diff(p) < 0)
     assert np.allclose(curves.separation_at_pressure(p), u, rtol=0, atol=1e-12 * (u[-1] - u[0]))
     assert np.all(curves.stiffness(u) > 0) and np.all(np.diff(curves.area_fraction(u)) <= 0)
-    assert math.isnan(curves.pressure(curves.max_separation * 2))
-    assert math.isnan(curves.pressure(float("nan")))
-    assert math.isnan(curves.separation_at_pressure(1e9))
+    # outside the range served: NaN with asperity.OutOfRangeWarning naming the range (issue 37)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 1 separations outside the range the table serves "
+                                                        r"\(answered NaN\): separations [0-9.e-]+ to [0-9.e-]+ m"):
+        assert math.isnan(curves.pressure(curves.max_separation * 2))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", asperity.OutOfRangeWarning)
+        assert math.isnan(curves.pressure(float("nan")))  # NaN in: not a range question
+        curves.stiffness(u)  # inside: silent
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 1 pressures .*: pressures [0-9.e+]+ to [0-9.e+]+ Pa"):
+        assert math.isnan(curves.separation_at_pressure(1e9))
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"2 of 3 separations"):
+        assert np.isnan(curves.area_fraction(np.array([0.0, u[5], 1.0]))[[0, 2]]).all()
     assert isinstance(curves.pressure(float(u[3])), float)
 
 
@@ -121,7 +131,8 @@ def test_adhesive_curves(adhesive):
     # the inverse on the stable branch, NaN beyond the greatest tension
     u = curves.separation_at_pressure(pull_p / 2)
     assert u < pull_u and curves.pressure(u) == pytest.approx(pull_p / 2, rel=1e-9)
-    assert math.isnan(curves.separation_at_pressure(1.01 * pull_p))
+    with pytest.warns(asperity.OutOfRangeWarning, match="pressures"):
+        assert math.isnan(curves.separation_at_pressure(1.01 * pull_p))
     separations = np.linspace(curves.min_separation, curves.max_separation, 7)
     counts = curves.summit_count(separations)
     assert np.all(counts > 0) and np.all(np.diff(counts) < 0)

@@ -116,3 +116,58 @@ def test_the_card_takes_the_datum_names(table):
         asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, overclosure_datum="mean-plane")
     with pytest.raises(ValueError, match="unknown overclosure_datum"):
         plane.pressure_overclosure_card(1e3, 1e8, overclosure_datum="plane")
+
+
+def test_an_implausible_datum_height_warns_one_line(table):
+    with pytest.warns(asperity.ImplausibleValueWarning) as caught:
+        asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=-1.0)
+    assert [str(w.message) for w in caught] == [
+        "mean summit height -1 m above the mean plane is implausible (below it: summits, the surface's local "
+        "maxima, stand above the mean plane, typically by about the height scale sigma_s, 1e-06 m here): is its "
+        "sign right?"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=1e-6)  # plausible: silent
+
+
+@pytest.fixture(scope="module")
+def bearing_model(tmp_path_factory):
+    """A model on a scene table (tables/scenes/bearing.toml: s from -2 to -1e-6, bounded side), by tablegen."""
+    import os
+    import subprocess
+    from pathlib import Path
+    tablegen = os.environ.get("ASPERITY_TABLEGEN")
+    if not tablegen:
+        pytest.skip("ASPERITY_TABLEGEN is not set (ctest sets it)")
+    path = tmp_path_factory.mktemp("scene") / "bearing.h5"
+    scene = Path(__file__).resolve().parents[2] / "tables" / "scenes" / "bearing.toml"
+    subprocess.run([tablegen, "--scene", str(scene), "--out", str(path)], check=True, capture_output=True)
+    surface = asperity.RoughSurface("weibull", "bounded", shape=1.73, height_scale=1e-6, summit_radius=1e-4,
+                                    summit_density=1e10, nominal_area=1e-4, contact_modulus=1e11)
+    return asperity.ContactModel(asperity.Table.open(str(path)), surface)
+
+
+def test_a_query_outside_a_scene_tables_range_warns(bearing_model):
+    # NaN plus asperity.OutOfRangeWarning naming how many and the range in the query's unit (the
+    # command refuses such a query)
+    model = bearing_model
+    assert issubclass(asperity.OutOfRangeWarning, UserWarning)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 3 separations outside the range the table serves "
+                                                        r"\(answered NaN\): separations -2e-06 to -1e-12 m") as caught:
+        state = model.at_separation(np.array([-5e-6, -1e-6, 1e-7]))
+    assert caught[0].filename == __file__
+    assert math.isnan(state.load[0]) and state.load[1] > 0 and state.load[2] == 0
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 1 loads .*: loads [0-9.e+-]+ to [0-9.e+-]+ N"):
+        assert math.isnan(model.at_load(1e9).load)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 1 pressures .*: nominal pressures [0-9.e+-]+ to [0-9.e+-]+ Pa"):
+        assert math.isnan(model.at_pressure(1e13).load)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 1 real areas .*: real areas [0-9.e+-]+ to [0-9.e+-]+ m\^2"):
+        assert math.isnan(model.at_real_area(1.0).load)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"2 of 4 separations"):
+        out = model.at_separations("load", np.array([-5e-6, -1e-6, -1e-13, np.nan]))
+    assert np.isnan(out[[0, 2, 3]]).all() and out[1] > 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", asperity.OutOfRangeWarning)
+        model.at_separation(-2e-7)  # inside: silent
+        model.at_separations("load", np.full(5000, -1e-6))
+        model.at_load(np.nan)  # NaN in, NaN out: not a range question

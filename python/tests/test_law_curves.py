@@ -111,3 +111,20 @@ def test_plasticity_index_of_the_example():
     curves = asperity.law_curves("kogut-etsion", **KE)
     assert "omega_c" in curves.description or "5.04" in curves.description
     assert math.isfinite(curves.min_pressure) and curves.min_pressure > 0
+
+
+def test_absurd_materials_are_named_not_boosts_message():
+    # a yield strength that makes omega_c underflow to 0 (issue 37): the input and the range that
+    # works, never Boost.Math's "tanh_sinh ... narrow the bounds"
+    with pytest.raises(asperity.Error, match=r"the yield strength Y 1e-300 Pa is outside 113000 to 1.13e\+12 Pa") as caught:
+        asperity.law_curves("kogut-etsion", **dict(KE, yield_strength=1e-300))
+    assert "tanh_sinh" not in str(caught.value) and "narrow the bounds" not in str(caught.value)
+    with pytest.raises(asperity.Error, match=r"the contact modulus E\* 1e\+300 Pa is outside 1e\+06 to 1e\+13 Pa"):
+        asperity.law_curves("kogut-etsion", **dict(KE, contact_modulus=1e300))
+
+
+def test_a_query_outside_the_curves_warns():
+    curves = asperity.law_curves("kogut-etsion", **KE)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 1 pressures outside the range the table serves "
+                                                        r"\(answered NaN\): pressures [0-9.e+]+ to [0-9.e+]+ Pa"):
+        assert math.isnan(curves.separation_at_pressure(-5.0))
