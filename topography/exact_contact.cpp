@@ -501,6 +501,7 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   // carry pressure); k = j * sx + i.
   const std::size_t nx = nx_, sx = sx_;
   for (int iteration = 0;; ++iteration) {
+    poll_interrupt();  // an iteration of a large map takes up to a second: Ctrl-C (asperity/interrupt.hpp)
     apply(p, u);
     const auto placed = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
       double sum = 0, contact = 0;
@@ -695,6 +696,7 @@ void ExactContact::stiffness_of(ContactStep& step) {
   const double norm = std::sqrt(static_cast<double>(step.contact_points));
   int iteration = 0;
   for (;; ++iteration) {
+    poll_interrupt();
     const double residual = std::sqrt(squares) / norm;
     report("stiffness", iteration, residual, step.contact_points);
     if (residual <= options_.tolerance) {
