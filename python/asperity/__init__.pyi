@@ -2,7 +2,7 @@
 # exactly what the module holds.
 import enum
 import os
-from typing import Dict, List, Literal, NamedTuple, Optional, Sequence, Tuple, TypeAlias, Union, overload
+from typing import Callable, Dict, List, Literal, NamedTuple, Optional, Sequence, Tuple, TypeAlias, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -449,7 +449,9 @@ def quantity_twice_order(quantity: str) -> int: ...
 Surface: TypeAlias = SurfaceScales
 PhysicalSurface: TypeAlias = RoughSurface
 
-def law_curves(law: str, **keys: Union[float, str, Sequence[float]]) -> ContactCurves:
-    """A contact law's rough-surface curves, tabulated now (the keywords are a [[law]] scene's keys)."""
+def law_curves(law: str, *, progress: Optional[Callable[[Dict[str, float]], object]] = None,
+               **keys: Union[float, str, Sequence[float]]) -> ContactCurves:
+    """A contact law's rough-surface curves, tabulated now (the keywords are a [[law]] scene's keys;
+    progress: called at most once a second with a dict; Ctrl-C stops it)."""
     ...
 def tabulate_law_scene(text: str) -> ContactCurves: ...
