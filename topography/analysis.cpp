@@ -7,6 +7,7 @@
 #include <random>
 
 #include "asperity/error.hpp"
+#include "asperity/interrupt.hpp"
 #include "asperity/topography/summit_contact.hpp"
 #include "asperity/topography/surface_tests.hpp"
 
@@ -69,6 +70,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
 
   std::vector<std::pair<std::size_t, Summits>> coarse_summits;  // factor > 1: the contact's dependence
   for (std::size_t factor : options.sampling_factors) {
+    poll_interrupt();  // each factor: summits of a map (Ctrl-C, asperity/interrupt.hpp)
     if (factor < 1) continue;
     const HeightMap coarse = factor == 1 ? map : decimated(map, factor);
     if (coarse.nx <= 2 * static_cast<std::size_t>(options.summits.window) + 2 ||
