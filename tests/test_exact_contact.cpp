@@ -3,16 +3,23 @@
 // (full-contact pressure p* = pi E* g / lambda, the partial-contact area, peak pressure, mean gap
 // and stiffness), and a self-affine surface's area-load slope against the published range.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/table_schema.hpp"
 #include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/exact_contact_table.hpp"
 #include "asperity/topography/self_affine.hpp"
 
 namespace {
@@ -376,6 +383,211 @@ TEST(ExactContactSolver, MissingPointsNeverTouch) {
   const ContactStep step = solver.at_mean_gap(0.5 * solver.rms_height());
   EXPECT_GT(step.solves, 1);  // the mean over the valid points is not the approach: searched
   EXPECT_NEAR(step.mean_gap, 0.5 * solver.rms_height(), 10 * options.tolerance * solver.rms_height());
+}
+
+// ---- inputs answered or refused before any iteration (issue 37) ----
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const asperity::Error& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+// The full-contact pressure from one FFT is Westergaard's p* = pi E* g / lambda; above it the
+// step is the closed form (no iteration), below it the solve leaves a gap.
+TEST(ExactContactRange, FullContactPressureIsWestergaards) {
+  const double modulus = 1e11, wavelength = 1e-3, amplitude = 1e-6;
+  const double full = pi * modulus * amplitude / wavelength;
+  for (ContactKernel kernel : {ContactKernel::fourier, ContactKernel::love}) {
+    SCOPED_TRACE(contact_kernel_name(kernel));
+    ExactContactOptions options;
+    options.contact_modulus = modulus;
+    options.kernel = kernel;
+    ExactContact solver(wavy(128, wavelength, amplitude), options);
+    // Love's pixel-constant pressure: (q dx)^2 / 24 = 1e-4 away at 128 points per wavelength
+    EXPECT_NEAR(solver.pressure_range().full_contact / full, 1, kernel == ContactKernel::fourier ? 1e-12 : 2e-4);
+    const ContactStep above = solver.at_pressure(1.001 * solver.pressure_range().full_contact);
+    EXPECT_EQ(above.area_fraction, 1.0);
+    EXPECT_EQ(above.iterations, 0);
+    EXPECT_TRUE(std::isinf(above.stiffness));
+    const ContactStep below = solver.at_pressure(0.99 * solver.pressure_range().full_contact);
+    EXPECT_LT(below.area_fraction, 1.0);
+    EXPECT_GT(below.iterations, 0);
+  }
+}
+
+// On a rough periodic map the closed form continues the iterated solution: just below full
+// contact the solve's pressure field is the closed form's within the solve's own accuracy.
+TEST(ExactContactRange, FullContactClosedFormContinuesTheSolve) {
+  ExactContactOptions options;
+  options.contact_modulus = 1e11;
+  options.tolerance = 1e-10;
+  ExactContact solver(rough_map(64, 0.5, 5), options);
+  const double full = solver.pressure_range().full_contact;
+  ASSERT_TRUE(std::isfinite(full) && full > 0);
+  const ContactStep nearly = solver.at_pressure(full * (1 - 1e-6));
+  EXPECT_GE(nearly.area_fraction, 1 - 3.0 / (64 * 64));
+  const std::vector<double> solved = solver.pressure_field();
+  const ContactStep flat = solver.at_pressure(full * (1 + 1e-6));
+  EXPECT_EQ(flat.contact_points, 64u * 64u);
+  EXPECT_EQ(flat.mean_gap, 0.0);
+  const std::vector<double> closed = solver.pressure_field();
+  double worst = 0;
+  for (std::size_t k = 0; k < closed.size(); ++k) worst = std::max(worst, std::fabs(closed[k] - solved[k]));
+  EXPECT_LT(worst, 1e-4 * flat.max_pressure);
+  for (double gap : solver.gap_field()) EXPECT_EQ(gap, 0.0);
+}
+
+// p/E* out of range, or below one node: refused at once, with the bound; a periodic map pressed
+// flat at any pressure answered in closed form.
+TEST(ExactContactRange, HopelessPressuresRefusedBeforeIterating) {
+  const HeightMap map = rough_map(64, 0.5, 7);
+  int iterations = 0;
+  ExactContactOptions options;
+  options.contact_modulus = 1e11;
+  options.boundary = ContactBoundary::padded;
+  options.progress = [&iterations](const ContactProgress&) { ++iterations; };
+  ExactContact padded(map, options);
+  const ContactPressureRange range = padded.pressure_range();
+  EXPECT_TRUE(std::isinf(range.full_contact));  // no closed form when padded
+  std::string message = error_of([&] { padded.at_pressure(1e30); });
+  EXPECT_NE(message.find("beyond the solver's numerical range"), std::string::npos) << message;
+  EXPECT_NE(message.find(" Pa (p/E* 1e+19) is beyond"), std::string::npos) << message;
+  message = error_of([&] { padded.at_pressure(1e-300); });
+  EXPECT_NE(message.find("below one node of contact"), std::string::npos) << message;
+  EXPECT_NE(message.find("ask for at least"), std::string::npos) << message;
+  EXPECT_EQ(iterations, 0);
+  EXPECT_THROW(padded.check_pressure(2 * range.numerical_limit), asperity::Error);
+  EXPECT_NO_THROW(padded.check_pressure(std::sqrt(range.one_node * range.numerical_limit)));
+  // a modulus a thousandth of a pascal: p/E* = 1e9
+  options.contact_modulus = 1e-3;
+  ExactContact soft(map, options);
+  message = error_of([&] { soft.at_pressure(1e6); });
+  EXPECT_NE(message.find("p/E* 1e+09"), std::string::npos) << message;
+  EXPECT_EQ(iterations, 0);
+  options.boundary = ContactBoundary::periodic;
+  ExactContact periodic(map, options);
+  const ContactStep flat = periodic.at_pressure(1e6);
+  EXPECT_EQ(flat.area_fraction, 1.0);
+  EXPECT_EQ(iterations, 0);
+}
+
+TEST(ExactContactMemory, RefusedBeyondTheLimitBeforeAllocating) {
+  const HeightMap map = rough_map(128, 0.5, 1);
+  ExactContactOptions options;
+  options.contact_modulus = 1e11;
+  options.boundary = ContactBoundary::padded;
+  const std::size_t padded = exact_contact_memory(128, 128, options);
+  options.boundary = ContactBoundary::periodic;
+  const std::size_t periodic = exact_contact_memory(128, 128, options);
+  EXPECT_GT(padded, 2 * periodic);  // the solve grid four times the map's (the coarse start's levels too)
+  EXPECT_GT(periodic, 128u * 128u * 77u);
+  options.max_memory = 1000000;
+  const std::string message = error_of([&] { ExactContact solver(map, options); });
+  EXPECT_NE(message.find("(128 x 128 points) needs about " + memory_text(periodic) + ", more than the 1 MB allowed"),
+            std::string::npos)
+      << message;
+  options.max_memory = periodic;
+  ExactContact fits(map, options);
+  EXPECT_EQ(fits.memory_estimate(), periodic);
+  // a map past the address space: the estimate saturates instead of wrapping
+  EXPECT_EQ(exact_contact_memory(std::size_t{1} << 40, std::size_t{1} << 40, options),
+            std::numeric_limits<std::size_t>::max());
+}
+
+// Running out of memory is an asperity::Error naming the map and the estimate, not a bare
+// std::bad_alloc: in a child whose address space ends 16 MB past what it has mapped.
+TEST(ExactContactMemory, OutOfMemoryNamesTheMapAndTheEstimate) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "an address-space limit is incompatible with the sanitizers' shadow memory";
+#else
+  const HeightMap map = rough_map(512, 0.5, 2);  // padded: a 1024 x 1024 solve grid, about 130 MB
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    double mapped_kb = 0;
+    while (std::getline(status, line))
+      if (line.rfind("VmSize:", 0) == 0) mapped_kb = std::stod(line.substr(7));
+    struct rlimit limit {};
+    limit.rlim_cur = limit.rlim_max = static_cast<rlim_t>(mapped_kb * 1024 + 16e6);
+    if (::setrlimit(RLIMIT_AS, &limit) != 0) std::_Exit(3);
+    ExactContactOptions options;
+    options.contact_modulus = 1e11;
+    options.boundary = ContactBoundary::padded;
+    options.threads = 1;
+    try {
+      ExactContact solver(map, options);
+      std::_Exit(4);  // it fitted
+    } catch (const asperity::Error& error) {
+      const std::string message = error.what();
+      std::_Exit(message.find("out of memory setting up the exact contact of 'self-affine' ") == 0 &&
+                         message.find("(512 x 512 points, padded to a 1024 x 1024 solve grid): it needs about " +
+                                      memory_text(exact_contact_memory(512, 512, options))) != std::string::npos
+                     ? 0
+                     : 5);
+    } catch (...) {
+      std::_Exit(6);  // a bare std::bad_alloc
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+#endif
+}
+
+TEST(ExactContactMemory, SizesAsTheCommandsTakeThem) {
+  std::size_t bytes = 0;
+  ASSERT_TRUE(parse_memory_size("1M", bytes));
+  EXPECT_EQ(bytes, 1000000u);
+  ASSERT_TRUE(parse_memory_size("512MiB", bytes));
+  EXPECT_EQ(bytes, 512u << 20);
+  ASSERT_TRUE(parse_memory_size("2.5G", bytes));
+  EXPECT_EQ(bytes, 2500000000u);
+  ASSERT_TRUE(parse_memory_size("4096", bytes));
+  EXPECT_EQ(bytes, 4096u);
+  for (const char* bad : {"", "0", "-1M", "1X", "M", "1 M", "nan", "inf", "1e30T"}) EXPECT_FALSE(parse_memory_size(bad, bytes)) << bad;
+  EXPECT_EQ(memory_text(999), "999 bytes");
+  EXPECT_EQ(memory_text(1000000), "1 MB");
+  EXPECT_EQ(memory_text(23100000000), "23.1 GB");
+  EXPECT_NE(error_of([] { memory_limit_option("lots", "--max-memory"); }).find("--max-memory: 'lots' is not a memory size"),
+            std::string::npos);
+  EXPECT_GT(memory_limit_option("", "--max-memory"), 0u);  // /proc/meminfo's MemAvailable, or less
+}
+
+// Every limit of the table's text known before the first solve: 10,000 nodes (the command's most)
+// fit generator_options, and text past the limit is refused before the checks are solved.
+TEST(ExactContactTableText, GeneratorOptionsFitForTenThousandNodes) {
+  std::vector<double> pressures;
+  for (int k = 0; k < 10000; ++k) pressures.push_back(1e5 * std::pow(10.0, 3.0 * k / 9999));
+  EXPECT_NO_THROW(check_exact_contact_table_nodes(pressures));
+  const std::string many = exact_contact_table_generator_options(std::string(1000, 'x'), pressures);
+  EXPECT_LE(many.size(), asperity::schema::max_text_bytes);
+  EXPECT_NE(many.find("10000 nodes at pressures from 1e+05 to 1e+08 Pa"), std::string::npos) << many.substr(0, 1200);
+  const std::string few = exact_contact_table_generator_options("", {1e6, 2e6, 4e6});
+  EXPECT_EQ(few, "nodes at pressures [Pa]: 1e+06 2e+06 4e+06; checks at their neighbours' geometric means");
+  EXPECT_THROW(check_exact_contact_table_nodes({1e6, 2e6}), asperity::Error);
+  EXPECT_THROW(check_exact_contact_table_nodes({1e6, 3e6, 2e6}), asperity::Error);
+  EXPECT_THROW(check_exact_contact_table_nodes(std::vector<double>(70000, 1.0)), asperity::Error);
+
+  int iterations = 0;
+  ExactContactOptions options;
+  options.contact_modulus = 1e11;
+  options.progress = [&iterations](const ContactProgress&) { ++iterations; };
+  ExactContact solver(wavy(64, 1e-3, 1e-6), options);
+  std::vector<ContactStep> nodes;
+  for (double p : {1e4, 1e5, 1e6}) nodes.push_back(solver.at_pressure(p));
+  const int after_nodes = iterations;
+  const std::string message = error_of([&] {
+    measure_exact_contact_table(solver, nodes, "a map", std::string(asperity::schema::max_text_bytes + 1, 'x'));
+  });
+  EXPECT_NE(message.find("generator_options would hold 60001 bytes"), std::string::npos) << message;
+  EXPECT_EQ(iterations, after_nodes);  // no check solved
 }
 
 TEST(ExactContactClusters, FourNeighboursWrappedWhenPeriodic) {

@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include <zip.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -255,6 +256,32 @@ TEST(TopographyIo, AsciiMatrixBadFilesAndMissingPoints) {
   write_bytes(path, "# Width: 3 nm\n# Height: 3 nm\n# Value units: nm\n1 2 3\n4 5 6\n");
   expect_error([&] { t::read_ascii_matrix(path, tiny); }, "more than 4 points");
   expect_error([&] { t::read_height_map(scratch("no-such-file.txt")); }, "no such file");
+}
+
+// The OS's reason, not "no such file", for a path that exists but cannot be followed (issue 37)
+TEST(TopographyIo, UnfollowablePathsNamedAsTheSystemNamesThem) {
+  const std::string loop = scratch("loop.txt");
+  fs::remove(loop);
+  fs::create_symlink(loop, loop);  // a link to itself: ELOOP
+  std::string message;
+  try {
+    t::read_height_map(loop);
+  } catch (const asperity::Error& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find(std::strerror(ELOOP)), std::string::npos) << message;
+  EXPECT_EQ(message.find("no such file"), std::string::npos) << message;
+  const std::string file = scratch("plain-file.txt");
+  write_bytes(file, "1 2\n3 4\n");
+  message.clear();
+  try {
+    t::read_height_map(file + "/map.txt");  // a file where a folder should be: ENOTDIR
+  } catch (const asperity::Error& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find(std::strerror(ENOTDIR)), std::string::npos) << message;
+  EXPECT_EQ(message.find("no such file"), std::string::npos) << message;
+  fs::remove(loop);
 }
 
 TEST(TopographyIo, XyzGridAndBadFiles) {

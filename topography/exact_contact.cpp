@@ -3,14 +3,21 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <limits>
+#include <new>
 #include <numeric>
 #include <sstream>
 #include <thread>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/topography/summits.hpp"
 #include "fft.hpp"
 
@@ -128,7 +135,151 @@ const char* contact_solver_name(ContactSolver solver) {
   return solver == ContactSolver::preconditioned ? "preconditioned" : "polonsky-keer";
 }
 
-ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& options) : options_(options) {
+std::size_t exact_contact_memory(std::size_t nx, std::size_t ny, const ExactContactOptions& options) {
+  // in doubles: a size past SIZE_MAX saturates instead of wrapping
+  const double factor = options.boundary == ContactBoundary::padded ? 2 : 1;
+  const double map_points = static_cast<double>(nx) * static_cast<double>(ny);
+  const double sx = factor * static_cast<double>(nx), sy = factor * static_cast<double>(ny);
+  const double solve_points = sx * sy, half_points = sy * (std::floor(sx / 2) + 1);
+  // 8 arrays of doubles and the mask; the spectrum (complex) and the kernel (real) on half the grid
+  double bytes = solve_points * (8 * sizeof(double) + 1) + half_points * (sizeof(std::complex<double>) + sizeof(double));
+  if (options.kernel == ContactKernel::love && options.boundary == ContactBoundary::padded)
+    bytes += solve_points * sizeof(double);  // the real-space coefficients, while the kernel is made
+  // the map's grid: the centred copy, the summit search's marks and missing-point counts, at most
+  // a summit in four points; each step's contact mask and cluster labels
+  bytes += map_points * (sizeof(double) + 1 + sizeof(std::size_t) + sizeof(Summit) / 4.0 + 1 + sizeof(std::size_t));
+  // the transforms' per-thread rows and columns
+  const double threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  bytes += threads * (sx + sy) * sizeof(std::complex<double>);
+  double total = bytes;
+  if (options.coarse_start && nx >= 2 * coarse_start_points && ny >= 2 * coarse_start_points) {
+    ExactContactOptions coarse = options;
+    coarse.stiffness = false;
+    const std::size_t cx = (nx + 1) / 2, cy = (ny + 1) / 2;
+    total += static_cast<double>(cx) * static_cast<double>(cy) * sizeof(double) +  // the coarsened map
+             static_cast<double>(exact_contact_memory(cx, cy, coarse));
+  }
+  const double most = static_cast<double>(std::numeric_limits<std::size_t>::max());
+  return total >= most ? std::numeric_limits<std::size_t>::max() : static_cast<std::size_t>(total);
+}
+
+std::string memory_text(std::size_t bytes) {
+  if (bytes < 1000) return std::to_string(bytes) + " bytes";
+  const char* units[] = {"kB", "MB", "GB", "TB", "PB", "EB"};
+  double value = static_cast<double>(bytes) / 1000;
+  int unit = 0;
+  while (value >= 999.5 && unit < 5) {
+    value /= 1000;
+    ++unit;
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %s", value, units[unit]);
+  return text;
+}
+
+namespace {
+
+// The first number after `key` in a text file of "key value" lines (/proc's), or -1.
+double number_after(const char* path, const std::string& key) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.compare(0, key.size(), key) == 0) {
+      double value = 0;
+      std::istringstream rest(line.substr(key.size()));
+      if (rest >> value) return value;
+    }
+  return -1;
+}
+
+// A cgroup v2 file of this process's group: its number, or -1 ("max", absent, unreadable).
+double cgroup_number(const std::string& name) {
+  std::ifstream groups("/proc/self/cgroup");
+  std::string line;
+  while (std::getline(groups, line))
+    if (line.compare(0, 3, "0::") == 0) {
+      std::ifstream in("/sys/fs/cgroup" + line.substr(3) + "/" + name);
+      double value = 0;
+      if (in >> value) return value;
+    }
+  return -1;
+}
+
+}  // namespace
+
+std::size_t available_memory() {
+  double least = INFINITY;
+  const auto take = [&least](double bytes) {
+    if (bytes >= 0) least = std::min(least, bytes);
+  };
+  const double available_kb = number_after("/proc/meminfo", "MemAvailable:");
+  if (available_kb >= 0) {
+    take(available_kb * 1024);
+  } else {
+    const long pages = ::sysconf(_SC_AVPHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0) take(static_cast<double>(pages) * static_cast<double>(page));
+  }
+  // an address-space or data limit (ulimit -v, -d) less what this process has mapped already
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    take(static_cast<double>(limit.rlim_cur) - 1024 * std::max(0.0, number_after("/proc/self/status", "VmSize:")));
+  if (::getrlimit(RLIMIT_DATA, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    take(static_cast<double>(limit.rlim_cur) - 1024 * std::max(0.0, number_after("/proc/self/status", "VmData:")));
+  const double group_limit = cgroup_number("memory.max");
+  if (group_limit >= 0) take(group_limit - std::max(0.0, cgroup_number("memory.current")));
+  if (!std::isfinite(least)) return 0;
+  return static_cast<std::size_t>(std::max(least, 0.0));
+}
+
+std::size_t memory_limit_option(const std::string& text, const std::string& option) {
+  if (text.empty()) return available_memory();
+  std::size_t bytes = 0;
+  if (!parse_memory_size(text, bytes))
+    throw Error(option + ": '" + quote_text(text) + "' is not a memory size (a positive number with an optional unit: "
+                "1000000, 500k, 1M, 2.5G, 512MiB, 4GiB)");
+  return bytes;
+}
+
+bool parse_memory_size(const std::string& text, std::size_t& bytes) {
+  double value = 0;
+  const std::size_t used = read_double_prefix(text, value);
+  if (used == 0 || !(value > 0) || !std::isfinite(value)) return false;
+  const std::string unit = text.substr(used);
+  static const struct {
+    const char* name;
+    double factor;
+  } units[] = {{"", 1},      {"B", 1},       {"k", 1e3},     {"K", 1e3},     {"kB", 1e3},           {"KB", 1e3},
+               {"M", 1e6},   {"MB", 1e6},    {"G", 1e9},     {"GB", 1e9},    {"T", 1e12},           {"TB", 1e12},
+               {"KiB", 1024.0}, {"MiB", 1048576.0}, {"GiB", 1073741824.0}, {"TiB", 1099511627776.0}};
+  for (const auto& u : units)
+    if (unit == u.name) {
+      const double total = std::round(value * u.factor);
+      if (!(total >= 1 && total < static_cast<double>(std::numeric_limits<std::size_t>::max()))) return false;
+      bytes = static_cast<std::size_t>(total);
+      return true;
+    }
+  return false;
+}
+
+namespace {
+
+// "FILE (NX x NY points, padded to a 2NX x 2NY solve grid)": the map in messages.
+std::string map_in_words(const std::string& source, std::size_t nx, std::size_t ny, ContactBoundary boundary) {
+  std::string text = "'" + quote_text(source, 4096) + "' (" + std::to_string(nx) + " x " + std::to_string(ny) + " points";
+  if (boundary == ContactBoundary::padded)
+    text += ", padded to a " + std::to_string(2 * nx) + " x " + std::to_string(2 * ny) + " solve grid";
+  return text + ")";
+}
+
+std::string smaller_map_advice(ContactBoundary boundary) {
+  return std::string("crop or decimate the map (half the points each way needs a quarter of the memory)") +
+         (boundary == ContactBoundary::padded ? ", or solve it with the periodic boundary (a quarter of the padded grid)"
+                                              : "");
+}
+
+}  // namespace
+
+ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& options) try : options_(options) {
   map.validate();
   const double modulus = options.contact_modulus;
   if (!(std::isfinite(modulus) && modulus > 0)) throw Error("the contact modulus must be finite and positive");
@@ -151,6 +302,11 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
                 " points");
   sx_ = nx_ * factor;
   sy_ = ny_ * factor;
+  memory_ = exact_contact_memory(nx_, ny_, options);
+  if (options.max_memory > 0 && memory_ > options.max_memory)
+    throw Error("the exact contact of " + map_in_words(map.source, nx_, ny_, options.boundary) + " needs about " +
+                memory_text(memory_) + ", more than the " + memory_text(options.max_memory) +
+                " allowed (--max-memory, max_memory): " + smaller_map_advice(options.boundary) + ", or allow more");
   nominal_area_ = map.width() * map.length();
 
   double sum = 0;
@@ -359,12 +515,24 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
         else if (std::strcmp(reported.stage, "gap") == 0) relabelled.stage = "coarse gap";
         progress(relabelled);
       };
+    coarse_options.max_memory = 0;  // counted in this map's estimate
     try {
       coarse_ = std::make_unique<ExactContact>(coarse, coarse_options);
     } catch (const Error&) {
       // a coarse map the solver refuses (its heights all equal, its pixels too large): no coarse start
     }
   }
+  find_pressure_range();
+} catch (const std::bad_alloc&) {
+  // the members are gone here: the figures from the arguments
+  throw Error("out of memory setting up the exact contact of " + map_in_words(map.source, map.nx, map.ny, options.boundary) +
+              ": it needs about " + memory_text(exact_contact_memory(map.nx, map.ny, options)) +
+              " and the system gave less: " + smaller_map_advice(options.boundary));
+}
+
+void ExactContact::out_of_memory(const std::string& doing) const {
+  throw Error("out of memory " + doing + " on the " + std::to_string(nx_) + " x " + std::to_string(ny_) +
+              " map (the solver needs about " + memory_text(memory_) + "): " + smaller_map_advice(options_.boundary));
 }
 
 // The 2-D transform in three parts that the threads share: rows to spectra, then each block of
@@ -796,9 +964,80 @@ void ExactContact::start_from_coarse() {
     }
 }
 
-ContactStep ExactContact::at_pressure(double pressure) {
+// K[h]: the pressure that flattens the map less its mean, the heights through the inverse of the
+// solver's own kernel (the mean left out, as G leaves it).
+void ExactContact::stiffness_times_heights(std::vector<double>& out) {
+  const std::size_t half = sx_ / 2 + 1;
+  detail::forward_2d(heights_.data(), spectrum_.data(), sy_, sx_);
+  for (std::size_t k = 0; k < sy_ * half; ++k) spectrum_[k] *= kernel_[k] > 0 ? 1 / kernel_[k] : 0.0;
+  in_parallel(threads_, half, [&](std::size_t first, std::size_t count) {
+    detail::transform_columns(spectrum_.data(), sy_, half, first, count, false);
+  });
+  detail::inverse_rows(spectrum_.data(), out.data(), sy_, sx_);
+}
+
+void ExactContact::find_pressure_range() {
+  const double map_points = static_cast<double>(nx_ * ny_);
+  const double resolved = options_.tolerance * rms_;
+  range_.one_node = self_compliance_ > 0 ? resolved / (self_compliance_ * map_points) : 0.0;
+  double compliance = 0;
+  for (double g : kernel_)
+    if (std::isfinite(g)) compliance = std::max(compliance, std::fabs(g));
+  compliance = std::max(compliance, std::fabs(self_compliance_));
+  largest_compliance_ = compliance;
+  range_.numerical_limit = resolved / (32 * std::numeric_limits<double>::epsilon() * compliance);
+  range_.full_contact = INFINITY;
+  if (options_.boundary == ContactBoundary::periodic && valid_points_ == nx_ * ny_) {
+    stiffness_times_heights(work_);
+    double least = INFINITY;
+    for (std::size_t k = 0; k < nx_ * ny_; ++k) least = std::min(least, work_[k]);
+    range_.full_contact = std::max(-least, 0.0);
+    std::fill(work_.begin(), work_.end(), 0.0);
+  }
+}
+
+void ExactContact::check_pressure(double pressure) const {
   if (!(std::isfinite(pressure) && pressure >= 0))
     throw Error("the mean pressure must be finite and non-negative, got " + number(pressure));
+  if (pressure == 0 || pressure > range_.full_contact) return;
+  const double modulus = options_.contact_modulus;
+  const std::string asked = "the mean pressure " + number(pressure) + " Pa (p/E* " + number(pressure / modulus) + ")";
+  if (pressure < range_.one_node)
+    throw Error(asked + " is below one node of contact: the whole load on the map's highest point would deflect it by " +
+                number(self_compliance_ * pressure * static_cast<double>(nx_ * ny_)) +
+                " m, less than the solve resolves (the tolerance times the rms height, " +
+                number(options_.tolerance * rms_) +
+                " m), so the answer would be the undeformed map resting on its highest point; ask for at least " +
+                number(range_.one_node) + " Pa (p/E* " + number(range_.one_node / modulus) +
+                "), check the modulus E* [Pa], or give a smaller tolerance");
+  if (pressure > range_.numerical_limit)
+    throw Error(asked + " is beyond the solver's numerical range: its displacements (about " +
+                number(pressure * largest_compliance_) +
+                " m) round by more than the tolerance resolves, and the solve could not converge; at most " +
+                number(range_.numerical_limit) + " Pa (p/E* " + number(range_.numerical_limit / modulus) +
+                ") can. Check the modulus E* [Pa] and the pressure's unit; a map pressed flat (full contact) is "
+                "answered in closed form with the periodic boundary on a map without missing points");
+}
+
+// Every point in contact: the flattened map's pressure p + K[h] (> 0 above range_.full_contact),
+// its displacement the heights (G K h = h, the mean left out), the flat at the mean plane.
+ContactStep ExactContact::full_contact(double pressure) {
+  stiffness_times_heights(work_);
+  for (std::size_t k = 0; k < pressure_.size(); ++k) {
+    pressure_[k] = pressure + work_[k];
+    displacement_[k] = heights_[k];
+  }
+  Solve exact;
+  exact.approach = approach_ = 0;
+  ContactStep step = describe(exact);
+  step.pressure = pressure;
+  step.load = pressure * nominal_area_;
+  if (options_.stiffness) stiffness_of(step);
+  return step;
+}
+
+ContactStep ExactContact::at_pressure(double pressure) {
+  check_pressure(pressure);
   if (pressure == 0) {
     std::fill(pressure_.begin(), pressure_.end(), 0.0);
     std::fill(displacement_.begin(), displacement_.end(), 0.0);
@@ -806,8 +1045,25 @@ ContactStep ExactContact::at_pressure(double pressure) {
     none.approach = approach_ = max_height_;
     return describe(none);
   }
+  try {
+    return pressure > range_.full_contact ? full_contact(pressure) : solve_pressure(pressure);
+  } catch (const std::bad_alloc&) {
+    out_of_memory("solving at " + number(pressure) + " Pa");
+  }
+}
+
+ContactStep ExactContact::solve_pressure(double pressure) {
   int coarse_iterations = 0;
+  bool coarse_answers = false;
   if (coarse_) {
+    try {
+      coarse_->check_pressure(pressure);
+      coarse_answers = true;
+    } catch (const Error&) {
+      // outside the coarse map's range (its nodes are larger): this step starts from the last solution
+    }
+  }
+  if (coarse_answers) {
     try {
       const ContactStep coarse = coarse_->at_pressure(pressure);
       coarse_iterations = coarse.iterations + coarse.coarse_iterations;
@@ -830,6 +1086,14 @@ ContactStep ExactContact::at_pressure(double pressure) {
 ContactStep ExactContact::at_mean_gap(double mean_gap) {
   if (!(std::isfinite(mean_gap) && mean_gap > 0))
     throw Error("the mean gap must be finite and positive, got " + number(mean_gap));
+  try {
+    return solve_mean_gap(mean_gap);
+  } catch (const std::bad_alloc&) {
+    out_of_memory("solving at a mean gap of " + number(mean_gap) + " m");
+  }
+}
+
+ContactStep ExactContact::solve_mean_gap(double mean_gap) {
   if (mean_gap >= max_height_) {
     std::fill(pressure_.begin(), pressure_.end(), 0.0);
     std::fill(displacement_.begin(), displacement_.end(), 0.0);

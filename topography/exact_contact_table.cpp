@@ -6,6 +6,8 @@
 
 #include "asperity/contact_curves.hpp"
 #include "asperity/error.hpp"
+#include "asperity/number_text.hpp"
+#include "asperity/table_schema.hpp"
 
 namespace asperity::topography {
 namespace {
@@ -18,11 +20,50 @@ std::string at_pressure(double pressure) {
   return text.str();
 }
 
+void check_text(const std::string& text, const char* name) {
+  if (text.size() > schema::max_text_bytes)
+    throw Error(std::string("the table's ") + name + " would hold " + std::to_string(text.size()) +
+                " bytes, more than a table's text may have (" + std::to_string(schema::max_text_bytes) + ")");
+}
+
 }  // namespace
+
+void check_exact_contact_table_nodes(const std::vector<double>& pressures) {
+  const std::size_t n = pressures.size();
+  if (n < static_cast<std::size_t>(schema::min_contact_curve_nodes) ||
+      n > static_cast<std::size_t>(schema::max_contact_curve_nodes))
+    throw Error("a contact-curves table needs " + std::to_string(schema::min_contact_curve_nodes) + " to " +
+                std::to_string(schema::max_contact_curve_nodes) + " nodes, not " + std::to_string(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(std::isfinite(pressures[i]) && pressures[i] > 0))
+      throw Error("a contact-curves table needs its nodes at positive finite pressures, not " +
+                  format_double(pressures[i]) + " Pa (node " + std::to_string(i + 1) + ")");
+    if (i > 0 && !(pressures[i] > pressures[i - 1]))
+      throw Error("a contact-curves table needs its nodes' pressures in ascending order: " +
+                  format_double(pressures[i]) + " Pa follows " + format_double(pressures[i - 1]) + " Pa");
+  }
+}
+
+std::string exact_contact_table_generator_options(const std::string& prefix, const std::vector<double>& pressures) {
+  const std::string checks = "; checks at their neighbours' geometric means";
+  std::string listed = prefix + "nodes at pressures [Pa]:";
+  for (double p : pressures) {
+    listed += " " + format_double(p);
+    if (listed.size() > schema::max_text_bytes / 4) break;
+  }
+  if (listed.size() <= schema::max_text_bytes / 4) return listed + checks;
+  // too many to list: the pressure dataset holds them, exactly
+  return prefix + std::to_string(pressures.size()) + " nodes at pressures from " +
+         format_double(pressures.empty() ? 0.0 : pressures.front()) + " to " +
+         format_double(pressures.empty() ? 0.0 : pressures.back()) +
+         " Pa (each one in the table's pressure dataset)" + checks;
+}
 
 ExactContactTable measure_exact_contact_table(ExactContact& solver, const std::vector<ContactStep>& nodes,
                                               const std::string& description, const std::string& generator_options,
                                               double safety_factor) {
+  check_text(description, "description");  // before the checks' solves, not after them
+  check_text(generator_options, "generator_options");
   if (nodes.size() < 3) throw Error("a contact-curves table needs at least 3 nodes");
   for (std::size_t i = 0; i < nodes.size(); ++i)
     if (!(std::isfinite(nodes[i].pressure) && nodes[i].pressure > 0) ||

@@ -17,7 +17,9 @@ InputFile::InputFile(const std::string& path, std::uint64_t max_bytes) : path_(p
   fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
   if (fd_ < 0) {
     const int error = errno;
-    if (error == ENOENT || error == ENOTDIR) fail(path, "cannot open (no such file)");
+    // only ENOENT is "no such file": a symbolic-link loop (ELOOP), a file where a folder should
+    // be (ENOTDIR) and the rest are named as the system names them
+    if (error == ENOENT) fail(path, "cannot open (no such file)");
     fail(path, std::string("cannot open: ") + std::strerror(error));
   }
   struct stat status {};

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -38,6 +39,7 @@ struct Options {
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
          tolerance = not_given, table_safety = not_given, face_size = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
+  std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
   bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false, overwrite = false;
 };
 
@@ -226,9 +228,7 @@ std::string stage_table(OutputTransaction& outputs, const Options& o, topo::Exac
               << format_double(options.tolerance) << ")\nmap: " << map.source << " (" << map.nx << " x " << map.ny
               << " points, dx " << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
               << (o.no_level ? "" : ", leveled") << ")";
-  generator_options << "nodes at pressures [Pa]:";
-  for (double p : pressures) generator_options << " " << format_double(p);
-  generator_options << "; checks at their neighbours' geometric means";
+  generator_options << topo::exact_contact_table_generator_options("", pressures);  // within the text limit
   const topo::ExactContactTable table = topo::measure_exact_contact_table(
       solver, results, description.str(), generator_options.str(),
       given(o.table_safety) ? o.table_safety : topo::default_table_safety_factor);
@@ -331,6 +331,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   }
   options.max_iterations = static_cast<int>(o.max_iterations);
   options.stiffness = !o.no_stiffness;
+  options.max_memory = topo::memory_limit_option(o.max_memory, "--max-memory");
   CardFormat card_format = CardFormat::calculix;
   CardUnits card_units = CardUnits::si;
   if (!o.card_format.empty() && !parse_card_format(o.card_format, card_format))
@@ -353,6 +354,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
     if (steps.values.size() < 3) usage("--table needs at least 3 pressures");
     for (std::size_t i = 1; i < steps.values.size(); ++i)
       if (!(steps.values[i] > steps.values[i - 1])) usage("--table needs the pressures in ascending order");
+    topo::check_exact_contact_table_nodes(steps.values);
     if (o.no_stiffness) usage("--table needs the stiffness: leave out --no-stiffness");
     if (given(o.table_safety) && !(o.table_safety >= 1 && o.table_safety <= 1000))
       usage("--table-safety must be from 1 to 1000");
@@ -380,6 +382,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
       note(command, line.str());
     };
   topo::ExactContact solver(map, options);
+  if (steps.by_pressure) for (double p : steps.values) solver.check_pressure(p);  // every step, before the first solve
   OutputTransaction outputs(plan);  // each output staged; renamed into place only when all are done
 
   std::vector<topo::ContactStep> results;
@@ -517,6 +520,7 @@ void add_exact_contact_command(CLI::App& app) {
                    "per solve; beyond them the command fails (default 20000)")
       ->group(solver);
   command->add_flag("--no-stiffness", o.no_stiffness, "skip the incremental solve (stiffness 0)")->group(solver);
+  add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(solver);
   command->add_flag("--quiet", o.quiet, "no progress on standard error")->group(solver);
   const char* output = "Output";
   command->add_flag("--json", o.json, "write JSON (schema asperity-exact-contact/1) instead of CSV")->group(output);
@@ -569,7 +573,14 @@ void add_exact_contact_command(CLI::App& app) {
       "not converge is an error. Progress goes to standard error once a solve runs for 2 s.\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
-  set_action(*command, [options, self] { return run_exact_contact(*options, *self); });
+  set_action(*command, [options, self] {
+    try {
+      return run_exact_contact(*options, *self);
+    } catch (const std::bad_alloc&) {  // the solver's own are asperity::Errors with its figures
+      throw Error("out of memory running on '" + quote_text(options->file, 4096) +
+                  "' (the map, or the outputs): give a smaller map, or see --max-memory");
+    }
+  });
 }
 
 }  // namespace asperity::cli

@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <new>
+#include <optional>
+#include <thread>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +18,7 @@
 #include "asperity/surface.hpp"
 #include "asperity/topography/surface_formats.hpp"
 #include "asperity/topography/analysis.hpp"
+#include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
@@ -34,6 +38,7 @@ struct Options {
          confidence = not_given;
   long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
   double exact_tolerance = not_given;
+  std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
   bool json = false, no_level = false, no_height_fit = false, exact = false, no_persson = false, overwrite = false;
   LawOptions law;  // a contact law beside the elastic curves (law_options.hpp)
 };
@@ -80,6 +85,68 @@ topo::ReadOptions read_options(const Options& o) {
   return read;
 }
 
+// What the analysis of a map needs [bytes], from the peak resident memory measured on the
+// maps of tests/data/surfaces (docs/reliability.md, "Memory"): 13 MB for the process, 78 bytes a
+// point for the statistics, summits and fits; with an ensemble 205 bytes a point and 106 more a
+// thread (the surrogates' padded transforms); with contact curves 80 MB (the scene tables they
+// generate); with --exact the solver's own estimate.
+struct SurfaceMemory {
+  std::size_t total = 0, ensemble = 0, exact = 0;
+  int threads = 1;
+};
+
+SurfaceMemory surface_memory(const topo::HeightMap& map, const topo::AnalysisOptions& options) {
+  SurfaceMemory memory;
+  const double points = static_cast<double>(map.nx) * static_cast<double>(map.ny);
+  const int bootstrap = options.assessment.bootstrap;
+  memory.threads = options.assessment.threads > 0 ? options.assessment.threads
+                                                  : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  memory.threads = std::max(1, std::min(memory.threads, bootstrap));
+  double total = 13e6 + 78 * points;
+  if (bootstrap > 0) {
+    const double ensemble = points * (205 + 106.0 * memory.threads);
+    memory.ensemble = static_cast<std::size_t>(std::min(ensemble, 1e18));
+    total += ensemble;
+  }
+  if (options.contact) total += 80e6;
+  if (options.contact && options.contact->exact) {
+    topo::ExactContactOptions exact;
+    exact.boundary = options.contact->exact_boundary;
+    exact.kernel = options.contact->exact_kernel;
+    exact.threads = options.contact->threads;
+    memory.exact = topo::exact_contact_memory(map.nx, map.ny, exact);
+    total += static_cast<double>(memory.exact);
+  }
+  memory.total = static_cast<std::size_t>(std::min(total, 1.8e19));
+  return memory;
+}
+
+std::string memory_in_words(const topo::HeightMap& map, const SurfaceMemory& memory) {
+  std::string text = "the analysis of '" + quote_text(map.source, 4096) + "' (" + std::to_string(map.nx) + " x " +
+                     std::to_string(map.ny) + " points) needs about " + topo::memory_text(memory.total);
+  if (memory.ensemble > 0 || memory.exact > 0) {
+    text += " (";
+    if (memory.ensemble > 0)
+      text += "the surrogate surfaces on " + std::to_string(memory.threads) + " threads " + topo::memory_text(memory.ensemble);
+    if (memory.exact > 0) text += std::string(memory.ensemble > 0 ? ", " : "") + "the exact contact " + topo::memory_text(memory.exact);
+    text += ")";
+  }
+  return text;
+}
+
+const char* const less_memory_advice =
+    "crop or decimate the map (half the points each way needs a quarter of the memory), fewer --threads, --ensemble 0, "
+    "or --exact-boundary periodic";
+
+// analysis_summary prints the map's source as it is: its control bytes must not reach the terminal
+std::string summary_text(topo::SurfaceAnalysis& analysis) {
+  const std::string source = analysis.map.source;
+  analysis.map.source = terminal_text(quote_text(source, 4096));
+  std::string text = topo::analysis_summary(analysis);
+  analysis.map.source = source;
+  return text;
+}
+
 int run_surface(const Options& o) {
   topo::AnalysisOptions options;
   options.read = read_options(o);
@@ -121,6 +188,7 @@ int run_surface(const Options& o) {
   if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
   if (!o.loads.empty()) loads = positive_numbers(o.loads, "--load");
 
+  const std::size_t memory_limit = topo::memory_limit_option(o.max_memory, "--max-memory");
   // the report folder checked before any work (the output policy: docs/reliability.md)
   if (!o.report.empty()) topo::report_plan(o.report, o.file, o.overwrite);
   topo::HeightMap map = topo::read_height_map(o.file, options.read);
@@ -182,12 +250,25 @@ int run_surface(const Options& o) {
                  terminal ? "\r" : "", done, total, left, terminal ? "  " : "\n");
     printed = true;
   };
-  const topo::SurfaceAnalysis analysis = topo::analyse_height_map(std::move(map), options);
+  const SurfaceMemory memory = surface_memory(map, options);
+  if (memory_limit > 0 && memory.total > memory_limit)
+    throw Error(memory_in_words(map, memory) + ", more than the " + topo::memory_text(memory_limit) +
+                " allowed (--max-memory): " + less_memory_advice + ", or allow more");
+  const std::string in_words = memory_in_words(map, memory);
+  std::optional<topo::SurfaceAnalysis> analysed;
+  try {
+    analysed = topo::analyse_height_map(std::move(map), options);
+  } catch (const std::bad_alloc&) {
+    throw Error("out of memory: " + in_words + " and the system gave less: " + less_memory_advice);
+  }
+  topo::SurfaceAnalysis& analysis = *analysed;
   if (printed && terminal) std::fputc('\n', stderr);
-  std::cout << (o.json ? topo::analysis_json(analysis) : topo::analysis_summary(analysis));
+  std::cout << (o.json ? topo::analysis_json(analysis) : summary_text(analysis));
   if (!o.report.empty()) {
     const topo::ReportOutcome outcome = topo::write_report(analysis, o.report, o.overwrite);
-    if (!o.json) std::cout << "  report: " << outcome.files.front() << " (" << outcome.files.size() << " files)\n";
+    if (!o.json)
+      std::cout << "  report: " << terminal_text(quote_text(outcome.files.front(), 4096)) << " (" << outcome.files.size()
+                << " files)\n";
   }
   // statistics only: what was asked beyond them (summits, fits, curves) does not exist
   if (analysis.noise_floor.reached) throw Error(quote_text(analysis.map.source, 4096) + ": " + analysis.noise_floor.text);
@@ -242,6 +323,7 @@ void add_surface_command(CLI::App& app) {
                    "for the ensemble and the scene tables (default 0: all cores; fewer if the system refuses more)")
       ->group(analysis);
   command->add_flag("--no-height-fit", o.no_height_fit, "fit the summit heights only")->group(analysis);
+  add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(analysis);
   const char* contact = "Contact curves (SI units)";
   add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (plane strain): gives the contact curves")
       ->type_name("PA")->group(contact);
@@ -306,7 +388,13 @@ void add_surface_command(CLI::App& app) {
       "the pressures of interest (the report's law.svg; curves.csv rows law:NAME).\n" +
       std::string(exit_status_help));
   CLI::App* self = command;
-  set_action(*command, [options, self] { return run_surface(*options); });
+  set_action(*command, [options, self] {
+    try {
+      return run_surface(*options);
+    } catch (const std::bad_alloc&) {  // the analysis's own name its estimate
+      throw Error("out of memory reading '" + quote_text(options->file, 4096) + "': give a smaller map");
+    }
+  });
 }
 
 }  // namespace asperity::cli

@@ -91,7 +91,43 @@ struct ExactContactOptions {
   bool stiffness = true;       // solve the incremental problem at every step
   int threads = 0;             // that share each FFT (0: every core; 1 to 1024)
   std::function<void(const ContactProgress&)> progress;  // may be empty
+  // Bytes the solver may allocate (exact_contact_memory below); 0: no limit. A map whose
+  // estimate exceeds it is refused before anything is allocated.
+  std::size_t max_memory = 0;
 };
+
+// What one solver of an nx x ny map needs [bytes], counted from its arrays: on the solve grid
+// (the map's, or four times it padded) 8 arrays of doubles, a mask, the kernel and one complex
+// spectrum of half the grid (about 77 bytes a point; the padded Love kernel's coefficients 8 more
+// while they are made), on the map's grid a centred copy, the summits and, in each step, the
+// contact mask and the clusters' labels (about 26 bytes a point); and the coarse start's levels
+// (a third more). Throws nothing; saturates at SIZE_MAX.
+std::size_t exact_contact_memory(std::size_t nx, std::size_t ny, const ExactContactOptions& options);
+
+// Memory as text for messages: "1.2 GB", "340 MB", "12 kB", "512 bytes" (SI prefixes).
+std::string memory_text(std::size_t bytes);
+
+// The memory this process may still take [bytes]: the smallest of MemAvailable in
+// /proc/meminfo (else sysconf's available pages), the address-space and data limits
+// (RLIMIT_AS, RLIMIT_DATA) less what is mapped, and a cgroup v2 memory.max less memory.current.
+// 0 when none of them can be read.
+std::size_t available_memory();
+
+// A memory size as the commands take it: a whole or decimal number with an optional unit, k K M
+// G T (powers of 1000) or KiB MiB GiB TiB (powers of 1024), B or nothing for bytes: "1M",
+// "512MiB", "2.5G", "1000000". False for anything else (or a size beyond SIZE_MAX, or 0).
+bool parse_memory_size(const std::string& text, std::size_t& bytes);
+
+// A command's --max-memory: the size `text` gives (parse_memory_size), or when it is empty the
+// memory available now (available_memory(); 0, no limit, when nothing can be read). Throws
+// asperity::Error naming `option` for a text that is not a size.
+std::size_t memory_limit_option(const std::string& text, const std::string& option);
+
+// The --max-memory option's help: one text for asperity exact-contact and asperity surface.
+inline constexpr const char* max_memory_help =
+    "refuse a map whose analysis is estimated to need more memory than this, before allocating it: a size with "
+    "its unit, 1M 500MB 2G (powers of 1000) or 512MiB 4GiB (powers of 1024) (default: the memory available now, "
+    "MemAvailable in /proc/meminfo, less under a ulimit -v or -d or a cgroup memory.max)";
 
 // One load step. Pressures are nominal: load over the map's area nx dx ny dy.
 struct ContactStep {
@@ -117,17 +153,45 @@ struct ContactStep {
   double stiffness_residual = 0;          // its relative residual
 };
 
+// The pressures a solver answers (ExactContact::pressure_range), found before any iteration.
+struct ContactPressureRange {
+  // Below it the whole load on the highest point deflects that point by less than the solve
+  // resolves (tolerance times the rms height): the contact is less than one node, the answer
+  // the undeformed map resting on its highest point. Refused below it.
+  double one_node = 0;
+  // Periodic maps without missing points: the nominal pressure of full contact, from one FFT:
+  // flattened, the map carries p(x) = p0 + K[h](x), K the solver's own inverse kernel (1/G, the
+  // mean left out), so the whole map touches when p0 > max(-K[h]). Above it the step is
+  // answered in closed form (no iteration). +inf otherwise (padded, or missing points: no
+  // closed form; such a map's full contact is iterated).
+  double full_contact = 0;
+  // Above it the displacements' rounding (2^-52 of the largest compliance times the pressure,
+  // times 32 for the transforms' and iterations' accumulation) reaches the tolerance: the solve
+  // cannot converge. Refused above it (unless answered in closed form as full contact).
+  double numerical_limit = 0;
+};
+
 class ExactContact {
  public:
   // Throws asperity::Error for a bad map (HeightMap::validate), a modulus not finite and > 0, a
   // tolerance outside [min_contact_tolerance, max_contact_tolerance], max_iterations < 1,
-  // love_aliases outside [1, 1000], a solve grid beyond max_contact_points, or a map whose valid
-  // heights are all equal.
+  // love_aliases outside [1, 1000], a solve grid beyond max_contact_points, a map whose valid
+  // heights are all equal, or a memory estimate beyond options.max_memory (the figure named);
+  // running out of memory (std::bad_alloc) is an asperity::Error naming the map and the estimate.
   ExactContact(const HeightMap& map, const ExactContactOptions& options);
 
   // The contact at a mean nominal pressure [Pa] > 0 (0: no contact), from the last solution
-  // (a warm start). Throws asperity::Error for a pressure not finite and >= 0, or no convergence.
+  // (a warm start). Above pressure_range().full_contact the closed form (every point in contact,
+  // infinite stiffness, no iteration). Throws asperity::Error for a pressure not finite and >= 0,
+  // one below pressure_range().one_node or above its numerical_limit (the bound and what to do
+  // named, before any iteration), no convergence, or no memory.
   ContactStep at_pressure(double pressure);
+  // The checks at_pressure makes before iterating: throws its asperity::Error for a pressure it
+  // would refuse (so that a sweep is checked before its first solve); nothing else.
+  void check_pressure(double pressure) const;
+  const ContactPressureRange& pressure_range() const noexcept { return range_; }
+  // exact_contact_memory of this solver's map and options [bytes].
+  std::size_t memory_estimate() const noexcept { return memory_; }
   // The contact at a mean gap [m] > 0 (the separation from the mean plane; at or above the
   // highest point: no contact), from the last solution. Throws asperity::Error for a gap not
   // finite and > 0, or no convergence.
@@ -166,6 +230,12 @@ class ExactContact {
   ContactStep describe(const Solve& solve);
   void report(const char* stage, int iteration, double residual, std::size_t contact) const;
   void start_from_coarse();  // the pressure prolonged from coarse_'s last solution
+  void find_pressure_range();  // range_, from the kernel and the heights
+  void stiffness_times_heights(std::vector<double>& out);  // K[h] on the solve grid (periodic)
+  ContactStep full_contact(double pressure);  // the closed form above range_.full_contact
+  ContactStep solve_pressure(double pressure);
+  ContactStep solve_mean_gap(double mean_gap);
+  [[noreturn]] void out_of_memory(const std::string& doing) const;
 
   ExactContactOptions options_;
   std::size_t nx_ = 0, ny_ = 0, sx_ = 0, sy_ = 0;  // map grid; solve grid
@@ -184,6 +254,9 @@ class ExactContact {
   double stencil_centre_ = 0, stencil_x_ = 0, stencil_y_ = 0, stencil_diagonal_ = 0;
   bool stencil_ = false;
   double approach_ = 0;              // the last solution's rigid-body position
+  ContactPressureRange range_;
+  double largest_compliance_ = 0;    // of the kernel [m/Pa]: the displacements' scale
+  std::size_t memory_ = 0;           // exact_contact_memory of the map and options
   std::unique_ptr<ExactContact> coarse_;  // the map coarsened 2 x 2, for the coarse start
 };
 
