@@ -709,6 +709,18 @@ void bind(py::module_& m) {
           "The mean summit height above the mean plane [m] ('mean-plane' datum), else None.")
       .def_property_readonly("datum_position", &ContactModel::datum_position,
                              "Where the datum is, as a separation in the origin convention [m].")
+      // the range answered (a scene table's; everything for a full table's curves): outside, NaN
+      // with asperity.OutOfRangeWarning
+      .def_property_readonly("min_separation", &ContactModel::min_separation,
+                             "The separations answered start here [m, the model's datum]: a scene table's range\n"
+                             "(-inf for a full table's curves); outside, NaN with asperity.OutOfRangeWarning (the\n"
+                             "bounded side answers every separation at or past first contact: no contact).")
+      .def_property_readonly("max_separation", &ContactModel::max_separation,
+                             "The separations answered end here [m] (+inf for a full table's curves).")
+      .def_property_readonly("min_load", &ContactModel::min_load, "The least load answered [N] (at max_separation).")
+      .def_property_readonly("max_load", &ContactModel::max_load, "The largest load answered [N] (at min_separation).")
+      .def_property_readonly("min_real_area", &ContactModel::min_real_area, "The least real area answered [m^2].")
+      .def_property_readonly("max_real_area", &ContactModel::max_real_area, "The largest real area answered [m^2].")
       .def(
           "at_separations",
           [](const ContactModel& model, const std::string& quantity, const ArrayLike& separation,

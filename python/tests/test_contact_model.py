@@ -118,6 +118,12 @@ def test_the_card_takes_the_datum_names(table):
         plane.pressure_overclosure_card(1e3, 1e8, overclosure_datum="plane")
 
 
+def test_a_full_tables_model_answers_everything(table):
+    model = asperity.ContactModel(table, steel())
+    assert (model.min_separation, model.max_separation) == (-math.inf, math.inf)
+    assert (model.min_load, model.max_load, model.min_real_area, model.max_real_area) == (0, math.inf, 0, math.inf)
+
+
 def test_an_implausible_datum_height_warns_one_line(table):
     with pytest.warns(asperity.ImplausibleValueWarning) as caught:
         asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=-1.0)
@@ -152,6 +158,11 @@ def test_a_query_outside_a_scene_tables_range_warns(bearing_model):
     # command refuses such a query)
     model = bearing_model
     assert issubclass(asperity.OutOfRangeWarning, UserWarning)
+    assert model.min_separation == pytest.approx(-2e-6, rel=1e-15)
+    assert model.max_separation == pytest.approx(-1e-12, rel=1e-9)
+    assert 0 < model.min_load < model.max_load < math.inf
+    assert 0 < model.min_real_area < model.max_real_area < math.inf
+    assert model.at_load(model.max_load).load == pytest.approx(model.max_load, rel=1e-9)
     with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 3 separations outside the range the table serves "
                                                         r"\(answered NaN\): separations -2e-06 to -1e-12 m") as caught:
         state = model.at_separation(np.array([-5e-6, -1e-6, 1e-7]))
