@@ -28,6 +28,11 @@ void check_text(const std::string& text, const char* name) {
 
 }  // namespace
 
+void check_exact_contact_table_text(const std::string& description, const std::string& generator_options) {
+  check_text(description, "description");
+  check_text(generator_options, "generator_options");
+}
+
 void check_exact_contact_table_nodes(const std::vector<double>& pressures) {
   const std::size_t n = pressures.size();
   if (n < static_cast<std::size_t>(schema::min_contact_curve_nodes) ||
@@ -62,8 +67,7 @@ std::string exact_contact_table_generator_options(const std::string& prefix, con
 ExactContactTable measure_exact_contact_table(ExactContact& solver, const std::vector<ContactStep>& nodes,
                                               const std::string& description, const std::string& generator_options,
                                               double safety_factor) {
-  check_text(description, "description");  // before the checks' solves, not after them
-  check_text(generator_options, "generator_options");
+  check_exact_contact_table_text(description, generator_options);  // before the checks' solves, not after them
   if (nodes.size() < 3) throw Error("a contact-curves table needs at least 3 nodes");
   for (std::size_t i = 0; i < nodes.size(); ++i)
     if (!(std::isfinite(nodes[i].pressure) && nodes[i].pressure > 0) ||

@@ -778,10 +778,15 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       "'fourier' (point force) or 'love' (pixel-constant pressure); solver: 'preconditioned' (by the inverse\n"
       "Green's function's 3 x 3 stencil) or 'polonsky-keer' (as published). Each step starts from the solution\n"
       "on the map coarsened 2 x 2 (coarse_start) or else from the last solution. A solve that does not converge raises asperity.Error. Calls on one solver run\n"
-      "one at a time (a lock), without the GIL.")
+      "one at a time (a lock), without the GIL. max_memory: the bytes it may allocate (None: no limit): a map whose\n"
+      "estimate (its arrays, counted) exceeds it raises asperity.Error before anything is allocated, as running out\n"
+      "of memory does, with the map's size and the estimate. A pressure below one node of contact or beyond the\n"
+      "solver's numerical range raises asperity.Error before iterating, naming the bound; a periodic map without\n"
+      "missing points pressed flat (above its full-contact pressure, from one FFT) is answered in closed form.")
       .def(py::init([](const topo::HeightMap& map, double contact_modulus, const std::string& boundary,
                        const std::string& kernel, double tolerance, int max_iterations, int love_aliases,
-                       bool stiffness, int threads, const std::string& solver, bool coarse_start) {
+                       bool stiffness, int threads, const std::string& solver, bool coarse_start,
+                       std::optional<std::size_t> max_memory) {
              topo::ExactContactOptions options;
              options.contact_modulus = contact_modulus;
              if (!topo::parse_contact_boundary(boundary, options.boundary))
@@ -796,11 +801,12 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
              options.love_aliases = love_aliases;
              options.stiffness = stiffness;
              options.threads = threads;
+             options.max_memory = max_memory.value_or(0);  // None: no limit
              return without_gil([copy = map, &options] { return std::make_unique<ExactContactHandle>(copy, options); });
            }),
            "map"_a, py::kw_only(), "contact_modulus"_a, "boundary"_a = "periodic", "kernel"_a = "fourier",
            "tolerance"_a = 1e-8, "max_iterations"_a = 20000, "love_aliases"_a = 16, "stiffness"_a = true,
-           "threads"_a = 0, "solver"_a = "preconditioned", "coarse_start"_a = true)
+           "threads"_a = 0, "solver"_a = "preconditioned", "coarse_start"_a = true, "max_memory"_a = py::none())
       .def(
           "at_pressure",
           [](ExactContactHandle& h, double pressure) {
@@ -829,12 +835,15 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
               std::lock_guard<std::mutex> guard(h.lock);
               for (std::size_t i = 1; i < pressures.size(); ++i)
                 if (!(pressures[i] > pressures[i - 1])) throw Error("write_table needs the pressures in ascending order");
+              // every limit of the table checked before the first solve
+              topo::check_exact_contact_table_nodes(pressures);
+              for (double pressure : pressures) h.solver.check_pressure(pressure);
+              const std::string options = topo::exact_contact_table_generator_options(
+                  "asperity.topography.ExactContact.write_table: ", pressures);
+              topo::check_exact_contact_table_text(description, options);
               std::vector<topo::ContactStep> nodes;
               for (double pressure : pressures) nodes.push_back(h.solver.at_pressure(pressure));
-              std::ostringstream options;
-              options << "asperity.topography.ExactContact.write_table: nodes at pressures [Pa]:";
-              for (double pressure : pressures) options << " " << pressure;
-              table = topo::measure_exact_contact_table(h.solver, nodes, description, options.str(), safety_factor);
+              table = topo::measure_exact_contact_table(h.solver, nodes, description, options, safety_factor);
               write_contact_curves_file(table.data, file);
             });
             py::list nodes;
@@ -844,7 +853,8 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
           "path"_a, "pressures"_a, "safety_factor"_a = topo::default_table_safety_factor, "description"_a = "",
           "Writes the map's contact curves as a contact-curves table (asperity.ContactCurves serves it): solves at\n"
           "the pressures [Pa] (ascending, at least 3) as nodes, one more solve between each two to measure the\n"
-          "served curves' error; the stored bound is that times safety_factor. Returns the nodes' ContactSteps.")
+          "served curves' error; the stored bound is that times safety_factor. Returns the nodes' ContactSteps. The\n"
+          "pressures, the description's length and the solver's range are checked before the first solve.")
       .def(
           "pressure_field",
           [](ExactContactHandle& h) {
@@ -866,6 +876,12 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
           },
           "The last solution's gap [m] as a (ny, nx) array (0 in contact, NaN at missing points).")
       .def_property_readonly("nx", [](const ExactContactHandle& h) { return h.solver.nx(); })
+      .def_property_readonly("full_contact_pressure",
+                             [](const ExactContactHandle& h) { return h.solver.pressure_range().full_contact; },
+                             "The nominal pressure [Pa] above which the whole map touches (a periodic map without missing\n"
+                             "points, from one FFT; inf otherwise): at_pressure answers above it in closed form.")
+      .def_property_readonly("memory_estimate", [](const ExactContactHandle& h) { return h.solver.memory_estimate(); },
+                             "The bytes the solver needs, as max_memory counts them.")
       .def_property_readonly("ny", [](const ExactContactHandle& h) { return h.solver.ny(); })
       .def_property_readonly("rms_height", [](const ExactContactHandle& h) { return h.solver.rms_height(); },
                              "About the mean plane [m].")

@@ -163,3 +163,41 @@ def test_one_solver_shared_by_threads():
     assert not errors and len(results) == 9
     # each from a different warm start: the same contact to within a few points
     assert all(abs(r - reference.contact_points) <= 3 for r in results)
+
+
+# ---- inputs answered or refused before any iteration, memory refused up front (issue 37) ----
+
+def test_full_contact_answered_in_closed_form():
+    modulus, wavelength, amplitude = 1e11, 1e-3, 1e-6
+    solver = topography.ExactContact(wavy(128), contact_modulus=modulus)
+    assert solver.full_contact_pressure == pytest.approx(math.pi * modulus * amplitude / wavelength, rel=1e-12)
+    step = solver.at_pressure(1e30)  # was 20,000 iterations and "did not converge"
+    assert step.area_fraction == 1 and step.iterations == 0 and math.isinf(step.stiffness)
+    padded = topography.ExactContact(wavy(128), contact_modulus=modulus, boundary="padded")
+    assert math.isinf(padded.full_contact_pressure)
+
+
+def test_hopeless_pressures_refused_with_the_bound():
+    solver = topography.ExactContact(wavy(64), contact_modulus=1e-3, boundary="padded")
+    with pytest.raises(asperity.Error, match=r"p/E\* 1e\+09\) is beyond the solver's numerical range.*at most"):
+        solver.at_pressure(1e6)
+    with pytest.raises(asperity.Error, match="below one node of contact.*ask for at least"):
+        solver.at_pressure(1e-300)
+
+
+def test_max_memory_refused_before_allocating():
+    with pytest.raises(asperity.Error, match=r"\(64 x 64 points, padded to a 128 x 128 solve grid\) needs about "
+                                             r"[0-9.]+ MB, more than the 1 MB allowed"):
+        square = topography.HeightMap(np.tile(1e-6 * np.sin(np.arange(64) / 5), (64, 1)), 1e-6, 1e-6)
+        topography.ExactContact(square, contact_modulus=1e11, boundary="padded", max_memory=1_000_000)
+    solver = topography.ExactContact(wavy(64), contact_modulus=1e11, max_memory=10_000_000)
+    assert 0 < solver.memory_estimate <= 10_000_000
+
+
+def test_write_table_checks_every_limit_before_the_first_solve(tmp_path):
+    solver = topography.ExactContact(wavy(64), contact_modulus=1e11, boundary="padded")
+    with pytest.raises(asperity.Error, match="description would hold 60001 bytes"):
+        solver.write_table(tmp_path / "t.h5", [1e4, 1e5, 1e6], description="x" * 60001)
+    with pytest.raises(asperity.Error, match="below one node of contact"):
+        solver.write_table(tmp_path / "t.h5", [1e-300, 1e5, 1e6])
+    assert not (tmp_path / "t.h5").exists()

@@ -45,6 +45,10 @@ void check_exact_contact_table_nodes(const std::vector<double>& pressures);
 // one exactly). Always within the limit for a prefix of up to 1000 bytes, whatever the count.
 std::string exact_contact_table_generator_options(const std::string& prefix, const std::vector<double>& pressures);
 
+// The table's text attributes within schema::max_text_bytes: throws asperity::Error naming the
+// one that is not (what measure_exact_contact_table checks first; callers check it earlier).
+void check_exact_contact_table_text(const std::string& description, const std::string& generator_options);
+
 ExactContactTable measure_exact_contact_table(ExactContact& solver, const std::vector<ContactStep>& nodes,
                                               const std::string& description, const std::string& generator_options,
                                               double safety_factor = default_table_safety_factor);
