@@ -120,6 +120,22 @@ TEST(TopographyCli, FileBytesInMessagesArePrintable) {
   EXPECT_NE(r.err.find("\\x1b]0;owned\\x07"), std::string::npos) << r.err;
 }
 
+// The map's name and the report's folder on standard output as on the other streams: control
+// bytes (an escape sequence, a newline that would fake a line) shown as \xNN (issue 37)
+TEST(TopographyCli, FileNamesArePrintableOnStandardOutput) {
+  const std::string folder = work + "/names";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string map = folder + "/m\x1b]0;owned\x07\nfake.txt", report = folder + "/r\x1b[2J";
+  std::filesystem::copy_file(surfaces + "/afm-zsensor-10um.txt", map);
+  const CommandRun r = run({map, "--ensemble", "0", "--no-height-fit", "--report", report});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\x07'), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("/m\\x1B]0;owned\\x07\\x0Afake.txt (ascii-matrix): 256 x 256 points"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  report: " + folder + "/r\\x1B[2J/report.md"), std::string::npos) << r.out;
+}
+
 // More threads than the system gives (an address-space limit: 1024 stacks do not fit) is not
 // std::terminate (exit 134): the threads that start do the work.
 TEST(TopographyCli, ThreadsTheSystemRefuses) {
