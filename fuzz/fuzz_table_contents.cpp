@@ -300,7 +300,8 @@ bool indirect(hid_t file, const char* group_name, FuzzedDataProvider& input) {
   const char* name = whole_group ? (contact_curves ? "contact_curves" : "weibull_tail") : pick_dataset(input);
   bool made = false;
   if (H5Lexists(group, name, H5P_DEFAULT) > 0) {
-    const std::string path = "/" + std::string(group_name == std::string("/") ? "" : std::string(group_name) + "/") + name;
+    const std::string parent = group_name == std::string("/") ? "" : std::string(group_name) + "/";
+    const std::string path = "/" + parent + name;
     switch (input.ConsumeIntegralInRange<int>(0, 5)) {
       case 0:  // an external link to the same path in another file
         H5Ldelete(group, name, H5P_DEFAULT);

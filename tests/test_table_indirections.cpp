@@ -298,7 +298,9 @@ TEST(TableIndirections, AVirtualDatasetIsRefused) {
   const std::string path = contact_curves_file("indirection-virtual.h5");
   const std::string other = temp_path("indirection-virtual-source.h5");
   write_pressure_source(other);
-  edit(path, [&](hid_t file) { replace_pressure(file, [&](hid_t create) { map_pressure_from(create, other); }, false); });
+  edit(path, [&](hid_t file) {
+    replace_pressure(file, [&](hid_t create) { map_pressure_from(create, other); }, false);
+  });
   EXPECT_HAS(curves_refusal(path), "'contact_curves/pressure' is a virtual dataset");
 }
 
@@ -389,7 +391,9 @@ TEST(TableIndirections, AFifoAtTheOtherPathDoesNotHang) {
   const std::string mapped = contact_curves_file("indirection-fifo-virtual.h5");
   const std::string source = temp_path("indirection-fifo-virtual-source.h5");
   write_pressure_source(source);
-  edit(mapped, [&](hid_t file) { replace_pressure(file, [&](hid_t create) { map_pressure_from(create, source); }, false); });
+  edit(mapped, [&](hid_t file) {
+    replace_pressure(file, [&](hid_t create) { map_pressure_from(create, source); }, false);
+  });
   make_fifo(source);
   EXPECT_HAS(refusal_within_10_seconds([&] { return curves_refusal(mapped); }),
              "'contact_curves/pressure' is a virtual dataset");
@@ -405,6 +409,18 @@ TEST(TableIndirections, AFifoAtTheOtherPathDoesNotHang) {
              }),
              "'contact_curves/pressure' is a dataset compressed by filter 32004");
   for (const std::string& fifo : {link_target, storage, source, plugins + "/libfifo.so"}) std::remove(fifo.c_str());
+}
+
+// The walk's work is bounded: a small file of many empty groups is refused at the limit.
+TEST(TableIndirections, MoreLinksThanATableHoldsAreRefused) {
+  const std::string path = table_file("indirection-many-links.h5");
+  edit(path, [](hid_t file) {
+    const hid_t group = H5Gcreate2(file, "many", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (int i = 0; i < 10000; ++i)
+      H5Gclose(H5Gcreate2(group, std::to_string(i).c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    H5Gclose(group);
+  });
+  EXPECT_HAS(gw_refusal(path), "is link 10001, more than a table holds (10000)");
 }
 
 // ---- what is refused, is refused whatever reads it ----

@@ -96,9 +96,13 @@ inline std::optional<std::string> dataset_indirection(hid_t set) {
   return std::nullopt;
 }
 
+// Links a table may hold: the walk's work is bounded whatever the file (tables hold a few dozen).
+inline constexpr long max_table_links = 10000;
+
 struct IndirectionWalk {
   hid_t dataset_access;
   std::optional<std::string> found;  // the first object that points outside the file, described
+  long links = 0;
 };
 
 // What a soft or external link points to, from its stored value (reading it follows nothing).
@@ -122,6 +126,9 @@ inline herr_t visit_link(hid_t root, const char* name, const H5L_info_t* info, v
     walk.found = "'" + printable(name) + "' is " + what;
     return 1;  // stops the walk
   };
+  if (++walk.links > max_table_links)
+    return refuse("link " + std::to_string(walk.links) + ", more than a table holds (" +
+                  std::to_string(max_table_links) + ")");
   switch (info->type) {
     case H5L_TYPE_HARD: break;
     case H5L_TYPE_SOFT:
@@ -144,7 +151,7 @@ inline herr_t visit_link(hid_t root, const char* name, const H5L_info_t* info, v
 // The first object of the file that would make HDF5 read another file, described ("'weibull_tail'
 // is an external link to ..."), or nothing.
 inline std::optional<std::string> find_indirection(hid_t file, hid_t dataset_access) {
-  IndirectionWalk walk{dataset_access, std::nullopt};
+  IndirectionWalk walk{dataset_access, std::nullopt, 0};
   const herr_t walked = H5Lvisit(file, H5_INDEX_NAME, H5_ITER_INC, visit_link, &walk);
   if (walk.found) return walk.found;
   if (walked < 0) return std::string("a file whose links HDF5 cannot walk");
