@@ -985,7 +985,7 @@ void ExactContact::find_pressure_range() {
     if (std::isfinite(g)) compliance = std::max(compliance, std::fabs(g));
   compliance = std::max(compliance, std::fabs(self_compliance_));
   largest_compliance_ = compliance;
-  range_.numerical_limit = resolved / (32 * std::numeric_limits<double>::epsilon() * compliance);
+  range_.numerical_limit = resolved / (8 * std::numeric_limits<double>::epsilon() * compliance);
   range_.full_contact = INFINITY;
   if (options_.boundary == ContactBoundary::periodic && valid_points_ == nx_ * ny_) {
     stiffness_times_heights(work_);

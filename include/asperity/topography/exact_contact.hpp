@@ -166,8 +166,10 @@ struct ContactPressureRange {
   // closed form; such a map's full contact is iterated).
   double full_contact = 0;
   // Above it the displacements' rounding (2^-52 of the largest compliance times the pressure,
-  // times 32 for the transforms' and iterations' accumulation) reaches the tolerance: the solve
-  // cannot converge. Refused above it (unless answered in closed form as full contact).
+  // times 8 for the transforms' and iterations' accumulation) reaches the tolerance: the solve
+  // cannot converge. Refused above it (unless answered in closed form as full contact). A
+  // lower bound of the hopeless: solves within about 30 times below it may still not converge
+  // (docs/exact-contact.md), none above it does.
   double numerical_limit = 0;
 };
 
