@@ -108,7 +108,7 @@ void reseal(const std::string& path) {
 std::string crafted(const std::string& name, const std::function<void(hid_t file)>& edit,
                     const TableData& data = tiny_table()) {
   const std::string path = temp_path(name);
-  write_table_file(data, path);
+  write_table_file(data, path, true);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   EXPECT_GE(file, 0);
   edit(file);
@@ -169,7 +169,7 @@ std::vector<hsize_t> knot_dims(const CurveSet& set) {
 
 TEST(TableIo, RoundTripKeepsEveryNumber) {
   const std::string path = temp_path("roundtrip.h5");
-  write_table_file(small_table(), path);
+  write_table_file(small_table(), path, true);
   const TableData read = read_table_file(path);
   ASSERT_EQ(read.sets.size(), small_table().sets.size());
   for (std::size_t i = 0; i < read.sets.size(); ++i) {
@@ -185,8 +185,8 @@ TEST(TableIo, RoundTripKeepsEveryNumber) {
 }
 
 TEST(TableIo, SameDataSameBytes) {
-  write_table_file(small_table(), temp_path("first.h5"));
-  write_table_file(small_table(), temp_path("second.h5"));
+  write_table_file(small_table(), temp_path("first.h5"), true);
+  write_table_file(small_table(), temp_path("second.h5"), true);
   EXPECT_EQ(read_bytes(temp_path("first.h5")), read_bytes(temp_path("second.h5")));
   // and generation itself is deterministic, whatever the thread count
   generator::GenerateOptions options;
@@ -201,7 +201,7 @@ TEST(TableIo, SameDataSameBytes) {
 
 TEST(TableIo, TheHeaderIsTheFormatOfTableSchema) {
   const std::string path = temp_path("header.h5");
-  write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path, true);
   const std::string bytes = read_bytes(path);
   ASSERT_GT(bytes.size(), schema::header_bytes);
   EXPECT_EQ(std::memcmp(bytes.data(), schema::header_magic, sizeof schema::header_magic), 0);
@@ -220,7 +220,7 @@ TEST(TableIo, TheHeaderIsTheFormatOfTableSchema) {
 
 TEST(TableIo, FailedWriteLeavesTheTargetAlone) {
   const std::string path = temp_path("keep.h5");
-  write_table_file(small_table(), path);
+  write_table_file(small_table(), path, true);
   const std::string before = read_bytes(path);
   TableData broken = small_table();
   broken.sets[0].knots.pop_back();  // inconsistent: the writer refuses it
@@ -270,7 +270,7 @@ TEST(TableIo, DirectoriesFifosAndDevicesAreRefusedWithoutWaiting) {
 
 TEST(TableIo, TruncatedFile) {
   const std::string path = temp_path("whole.h5"), cut = temp_path("truncated.h5");
-  write_table_file(small_table(), path);
+  write_table_file(small_table(), path, true);
   const std::string bytes = read_bytes(path);
   for (double fraction : {0.9, 0.5, 0.01, 0.0001}) {
     write_bytes(cut, bytes.substr(0, static_cast<std::size_t>(bytes.size() * fraction)));
@@ -283,7 +283,7 @@ TEST(TableIo, TruncatedFile) {
 // One changed byte anywhere is found before HDF5 reads anything (HDF5 1.10.8 crashed on such files).
 TEST(TableIo, EveryChangedByteIsFound) {
   const std::string path = temp_path("pristine.h5"), changed = temp_path("changed.h5");
-  write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path, true);
   const std::string bytes = read_bytes(path);
   int checked = 0;
   for (std::size_t position = 0; position < bytes.size(); position += position < 600 ? 1 : 97) {
@@ -303,7 +303,7 @@ TEST(TableIo, EveryChangedByteIsFound) {
 TEST(TableIo, OldTablesWithoutTheHeaderAskToBeRegenerated) {
   // A version-1 table: the same HDF5 file without the integrity header in its user block.
   const std::string path = temp_path("version1.h5");
-  write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path, true);
   std::string bytes = read_bytes(path);
   write_bytes(path, bytes.substr(schema::header_bytes));  // no user block, as version 1 wrote them
   EXPECT_REFUSED(path, TableFileStatus::other_version, "format version 1");
@@ -312,7 +312,7 @@ TEST(TableIo, OldTablesWithoutTheHeaderAskToBeRegenerated) {
   write_bytes(path, bytes);
   EXPECT_REFUSED(path, TableFileStatus::damaged, "integrity header is missing or damaged");
   // a future format version
-  write_table_file(tiny_table(), path);
+  write_table_file(tiny_table(), path, true);
   bytes = read_bytes(path);
   bytes[schema::header_version_offset] = static_cast<char>(schema::version + 1);
   write_bytes(path, bytes);

@@ -162,7 +162,7 @@ OutputPlan output_plan(const Options& o, std::size_t steps) {
       for (const char* field : {"pressure", "gap"}) images.push_back({field_name(k, field), &output_kinds::field_image});
     plan.folder("--fields", o.fields, std::move(images));
   }
-  if (!o.card.empty()) plan.file("--card", o.card, output_kinds::card);
+  if (!o.card.empty() && o.card != "-") plan.file("--card", o.card, output_kinds::card);  // "-": standard output
   if (!o.table.empty()) plan.file("--table", o.table, output_kinds::contact_curves_table);
   plan.check();
   return plan;
@@ -246,8 +246,9 @@ std::string stage_table(OutputTransaction& outputs, const Options& o, topo::Exac
   return line.str();
 }
 
-// The pressure-overclosure card of the solved curve, staged (warnings on standard error).
-void stage_card(OutputTransaction& outputs, const Options& o, const CLI::App& command, const topo::ExactContact& solver,
+// The pressure-overclosure card of the solved curve, staged (warnings on standard error);
+// returns its text.
+std::string stage_card(OutputTransaction& outputs, const Options& o, const CLI::App& command, const topo::ExactContact& solver,
                 const topo::HeightMap& map, const std::vector<topo::ContactStep>& results,
                 const topo::ExactContactOptions& options, CardFormat card_format, CardUnits card_units,
                 OverclosureDatum card_datum) {
@@ -284,7 +285,7 @@ void stage_card(OutputTransaction& outputs, const Options& o, const CLI::App& co
         << "first point: zero pressure at first contact (the flat at the map's highest point)";
   std::ostringstream out;
   write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str());
-  outputs.stage(o.card, out.str());
+  if (o.card != "-") outputs.stage(o.card, out.str());
   if (card.points.size() < card.given_points)
     warn(command, "the card keeps " + std::to_string(card.points.size()) + " of the curve's " +
                       std::to_string(card.given_points) + " points (--max-points " +
@@ -306,6 +307,7 @@ void stage_card(OutputTransaction& outputs, const Options& o, const CLI::App& co
                         "use --overclosure-datum zero-pressure (and start the model with the surfaces touching) "
                         "or larger faces");
   }
+  return out.str();
 }
 
 void print_results(const Options& o, const topo::HeightMap& map, const topo::ExactContact& solver,
@@ -399,9 +401,12 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
     step_start = clock::now();
     table_note = stage_table(outputs, o, solver, map, results, steps.values, options);
   }
-  if (!o.card.empty()) stage_card(outputs, o, command, solver, map, results, options, card_format, card_units, card_datum);
+  std::string card;
+  if (!o.card.empty())
+    card = stage_card(outputs, o, command, solver, map, results, options, card_format, card_units, card_datum);
   outputs.commit();
   if (!table_note.empty()) note(command, table_note);  // what the table states, not progress: also with --quiet
+  if (o.card == "-") std::cout << card;
 
   print_results(o, map, solver, options, steps.by_pressure, results);
   return exit_success;
@@ -530,7 +535,7 @@ void add_exact_contact_command(CLI::App& app) {
       ->type_name("DIR")->group(output);
   add_text(*command, "--card", o.card,
            "write the solved curve as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card (overclosure from the "
-           "mean summit height: --overclosure-datum)")
+           "mean summit height: --overclosure-datum); - writes it to standard output, before the results")
       ->type_name("FILE")->group(output);
   add_text(*command, "--table", o.table,
            "write the solved curves as a contact-curves table (HDF5, the tables' format): the pressures asked are "

@@ -20,6 +20,7 @@
 
 #include "asperity/contact_curves_data.hpp"
 #include "asperity/error.hpp"
+#include "asperity/output.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/table_schema.hpp"
 #include "command_line.hpp"
@@ -53,8 +54,17 @@ struct Options {
   std::string out, scene, shapes, sides;
   double tolerance = NAN, density = NAN;
   long long threads = 0;
-  bool gaussian = false, no_gaussian = false, quiet = false;
+  bool gaussian = false, no_gaussian = false, quiet = false, overwrite = false;
 };
+
+// --out under the output policy (asperity/output.hpp), checked before any tabulation: a file that
+// is not a table of ours of this kind is replaced only with --overwrite; the scene never.
+void check_out(const Options& options, const OutputKind& kind) {
+  OutputPlan plan(options.overwrite);
+  if (!options.scene.empty()) plan.input(options.scene);
+  plan.file("--out", options.out, kind);
+  plan.check();
+}
 
 [[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
@@ -175,6 +185,7 @@ class ProgressLine {
 // A law scene: the law's rough-surface curves as a contact-curves table
 int generate_law_scene(const Options& options, const Scene& scene, std::chrono::steady_clock::time_point start) {
   const SceneLaw& law = scene.laws.front();
+  check_out(options, output_kinds::contact_curves_table);
   if (!options.quiet)
     std::fprintf(stderr, "tablegen: scene %s: the %s law's curves\n", quote_text(options.scene, 200).c_str(),
                  contact_law_name(law.law.kind));
@@ -192,7 +203,7 @@ int generate_law_scene(const Options& options, const Scene& scene, std::chrono::
                                             });
   }
   if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
-  write_contact_curves_file(result.data, options.out);
+  write_contact_curves_file(result.data, options.out, options.overwrite);
   const ContactCurvesData& data = result.data;
   std::printf("%-18s %-8s %-8s %7s %-20s %9s %36s %6s %8s\n", "law", "dist", "side", "shape", "separations", "asked",
               "achieved p / k / a / count", "nodes", "evals");
@@ -215,6 +226,7 @@ int generate_scene(const Options& options, int threads) {
   const Scene scene = read_scene_file(options.scene);
   if (!scene.laws.empty()) return generate_law_scene(options, scene, start);
   check_scene(scene);
+  check_out(options, output_kinds::gw_table);
   if (!options.quiet)
     std::fprintf(stderr, "tablegen: scene %s: %zu curves\n", quote_text(options.scene, 200).c_str(), scene.curves.size());
   generator::SceneResult result;
@@ -223,7 +235,7 @@ int generate_scene(const Options& options, int threads) {
     result = generator::generate_scene_table(scene, threads, [&](const std::string& step) { line.set(step); });
   }
   if (!options.quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
-  write_table_file(result.table, options.out);
+  write_table_file(result.table, options.out, options.overwrite);
   std::printf("%-16s %-8s %-8s %7s %-14s %-24s %9s %9s %6s %8s\n", "curve", "dist", "side", "shape", "orders",
               "separations", "asked", "achieved", "knots", "memory");
   std::size_t bytes = 0;
@@ -273,6 +285,7 @@ int generate(Options options) {
   if (!generate.tail && !generate.bounded && !generate.gaussian)
     usage("nothing to generate: choose at least one of --sides tail/bounded or --gaussian");
 
+  check_out(options, output_kinds::gw_table);
   const auto start = std::chrono::steady_clock::now();
   const bool terminal = isatty(STDERR_FILENO);
   const bool quiet = options.quiet;
@@ -302,7 +315,7 @@ int generate(Options options) {
                  generate.gaussian ? ", and the Gaussian" : "");
   const TableData table = generator::generate_table(generate, progress);
   if (!quiet) std::fprintf(stderr, "tablegen: writing %s\n", quote_text(options.out, 200).c_str());
-  write_table_file(table, options.out);
+  write_table_file(table, options.out, options.overwrite);
   double worst = 0;
   std::size_t curves = 0;
   for (const CurveSet& set : table.sets) {
@@ -334,6 +347,8 @@ int main(int argc, char** argv) {
   cli::add_text(app, "--out", o.out, "the table file to write (atomically: a temporary file renamed into place)")
       ->type_name("FILE")
       ->required();
+  app.add_flag("--overwrite", o.overwrite,
+               "replace --out even if it is not a table of ours of the kind written (a table is replaced without it)");
   cli::add_text(app, "--scene", o.scene,
                 "a table for one scene's curves only (docs/scenes.md): exact shapes, knots where the scene "
                 "needs them, each curve's error measured and stored")
