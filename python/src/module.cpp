@@ -847,14 +847,16 @@ void bind(py::module_& m) {
                   "The same as ContactCurves(path).")
       .def(
           "write",
-          [](const ContactCurves& curves, const PathName& path) {
+          [](const ContactCurves& curves, const PathName& path, bool overwrite) {
             const std::string file = to_path(path.object);
             py::gil_scoped_release unlocked;
-            write_contact_curves_file(curves.data(), file);
+            write_contact_curves_file(curves.data(), file, overwrite);
           },
-          "path"_a,
+          "path"_a, py::kw_only(), "overwrite"_a = false,
           "Writes the curves as a contact-curves table (HDF5, with its integrity header): what ContactCurves(path),\n"
-          "asperity contact --table and the C API read back. Raises asperity.Error if it cannot be written.")
+          "asperity contact --table and the C API read back. Under the output policy (docs/reliability.md,\n"
+          "'Outputs'): a file there that is not a contact-curves table of asperity's is replaced only with\n"
+          "overwrite=True; a link is never followed. Raises asperity.Error if it cannot be written.")
       .def(
           "pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL

@@ -21,6 +21,7 @@
 
 #include "arrays.hpp"
 #include "asperity/error.hpp"
+#include "asperity/output.hpp"
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/contact_comparison.hpp"
 #include "asperity/topography/distribution_fit.hpp"
@@ -312,11 +313,13 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
         "read_height_map for x y z columns on a regular grid (units required: lateral_unit, height_unit).");
   m.def(
       "write_gsf",
-      [](const topo::HeightMap& map, const PathName& path) {
+      [](const topo::HeightMap& map, const PathName& path, bool overwrite) {
         const std::string file = to_path(path.object);
-        without_gil([copy = map, &file] { topo::write_gsf(copy, file); });
+        without_gil([copy = map, &file, overwrite] { topo::write_gsf(copy, file, overwrite); });
       },
-      "map"_a, "path"_a, "Writes a map as Gwyddion Simple Field (float32). Raises asperity.Error on a write error.");
+      "map"_a, "path"_a, py::kw_only(), "overwrite"_a = false,
+      "Writes a map as Gwyddion Simple Field (float32). A file there that is not a .gsf of asperity's is\n"
+      "replaced only with overwrite=True (docs/reliability.md, 'Outputs'). Raises asperity.Error on a write error.");
   m.def("length_unit_in_metres", [](const std::string& unit) { return topo::length_unit_in_metres(unit); }, "unit"_a,
         "The metres in one unit: m, dm, cm, mm, um (µm), nm, pm, A (Å), km. asperity.Error for anything else.");
   m.def("parse_length", [](const std::string& text, const std::string& unit) { return topo::parse_length(text, unit); },
@@ -828,11 +831,14 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def(
           "write_table",
           [](ExactContactHandle& h, const PathName& path, const std::vector<double>& pressures, double safety_factor,
-             const std::string& description) {
+             const std::string& description, bool overwrite) {
             const std::string file = to_path(path.object);
             topo::ExactContactTable table;
             without_gil([&] {
               std::lock_guard<std::mutex> guard(h.lock);
+              OutputPlan plan(overwrite);  // the output checked before the first solve too
+              plan.file("path", file, output_kinds::contact_curves_table);
+              plan.check();
               for (std::size_t i = 1; i < pressures.size(); ++i)
                 if (!(pressures[i] > pressures[i - 1])) throw Error("write_table needs the pressures in ascending order");
               // every limit of the table checked before the first solve
@@ -844,17 +850,19 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
               std::vector<topo::ContactStep> nodes;
               for (double pressure : pressures) nodes.push_back(h.solver.at_pressure(pressure));
               table = topo::measure_exact_contact_table(h.solver, nodes, description, options, safety_factor);
-              write_contact_curves_file(table.data, file);
+              write_contact_curves_file(table.data, file, overwrite);
             });
             py::list nodes;
             for (const topo::ContactStep& step : table.nodes) nodes.append(step);
             return nodes;
           },
           "path"_a, "pressures"_a, "safety_factor"_a = topo::default_table_safety_factor, "description"_a = "",
+          py::kw_only(), "overwrite"_a = false,
           "Writes the map's contact curves as a contact-curves table (asperity.ContactCurves serves it): solves at\n"
           "the pressures [Pa] (ascending, at least 3) as nodes, one more solve between each two to measure the\n"
           "served curves' error; the stored bound is that times safety_factor. Returns the nodes' ContactSteps. The\n"
-          "pressures, the description's length and the solver's range are checked before the first solve.")
+          "pressures, the description's length, the solver's range and the output (a file there that is not a\n"
+          "contact-curves table of asperity's is replaced only with overwrite=True) are checked before the first solve.")
       .def(
           "pressure_field",
           [](ExactContactHandle& h) {
@@ -1113,15 +1121,16 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
       .def_readonly("plots", &topo::ReportOutcome::plots)
       .def_readonly("plot_note", &topo::ReportOutcome::plot_note, "Why there are no plots (a map at its noise floor).");
 
-  auto write_report = [](const topo::SurfaceAnalysis& analysis, const PathName& directory) {
+  auto write_report = [](const topo::SurfaceAnalysis& analysis, const PathName& directory, bool overwrite) {
     const std::string path = to_path(directory.object, "directory");
-    return without_gil([copy = analysis, &path] { return topo::write_report(copy, path); });
+    return without_gil([copy = analysis, &path, overwrite] { return topo::write_report(copy, path, overwrite); });
   };
   const char* report_doc =
       "Writes a report folder (created if needed): report.md with the plots, report.json, curves.csv,\n"
       "summits.csv, fits.svg and contact.svg (drawn by the library: nothing is run). Each file is replaced\n"
       "atomically, no link in the folder is followed, one run writes the folder at a time and an earlier\n"
-      "run's files are not left beside this one's. Raises asperity.Error on a write error.";
+      "report's files are not left beside this one's; a file of the user's under a report file's name is\n"
+      "kept (the call fails) unless overwrite=True. Raises asperity.Error on a write error.";
   py::class_<topo::NoiseFloor>(m, "NoiseFloor",
                                "A roughness at the level of the heights' quantization q: Sq under 10 q / sqrt(12).")
       .def_readonly("reached", &topo::NoiseFloor::reached)
@@ -1163,7 +1172,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
            "The JSON document (schema asperity-surface/2) as text.")
       .def("summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
            "The short summary `asperity surface` prints.")
-      .def("write_report", write_report, "directory"_a, report_doc);
+      .def("write_report", write_report, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
 
   auto analysis_options = [](std::optional<topo::AnalysisOptions> options, const py::kwargs& fields) {
     if (fields.size() == 0) return options.value_or(topo::AnalysisOptions{});
@@ -1199,7 +1208,7 @@ void bind_topography(py::module_& parent, py::handle physical_state_type) {
   m.def(
       "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
       "analysis"_a, "The short summary `asperity surface` prints.");
-  m.def("write_report", write_report, "analysis"_a, "directory"_a, report_doc);
+  m.def("write_report", write_report, "analysis"_a, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
 }
 
 }  // namespace asperity::python

@@ -201,3 +201,32 @@ def test_write_table_checks_every_limit_before_the_first_solve(tmp_path):
     with pytest.raises(asperity.Error, match="below one node of contact"):
         solver.write_table(tmp_path / "t.h5", [1e-300, 1e5, 1e6])
     assert not (tmp_path / "t.h5").exists()
+
+
+def test_outputs_follow_the_output_policy(tmp_path):
+    """A file not asperity's is kept unless overwrite=True; a planted link is never followed (issue 37)."""
+    surface = topography.HeightMap(np.sin(np.arange(32.0)[None, :] * 0.4) * np.cos(np.arange(32.0)[:, None] * 0.3) * 1e-7,
+                                   1e-6, 1e-6)
+    mine = tmp_path / "mine.h5"
+    mine.write_text("my own notes\n")
+    victim = tmp_path / "victim"
+    victim.write_text("the victim\n")
+    (tmp_path / "link.gsf").symlink_to(victim)
+    with pytest.raises(asperity.Error, match="not a Gwyddion simple field"):
+        topography.write_gsf(surface, mine)
+    assert mine.read_text() == "my own notes\n"
+    with pytest.raises(asperity.Error, match="symbolic link"):
+        topography.write_gsf(surface, tmp_path / "link.gsf")
+    assert victim.read_text() == "the victim\n"
+    topography.write_gsf(surface, tmp_path / "map.gsf")
+    topography.write_gsf(surface, tmp_path / "map.gsf")  # its own kind: replaced
+    solver = topography.ExactContact(surface, contact_modulus=1e11)
+    with pytest.raises(asperity.Error, match="not a contact-curves table"):
+        solver.write_table(mine, [1e5, 1e6, 1e7])
+    assert mine.read_text() == "my own notes\n"
+    solver.write_table(mine, [1e5, 1e6, 1e7], overwrite=True)
+    curves = asperity.ContactCurves(mine)
+    with pytest.raises(asperity.Error, match="not a contact-curves table"):
+        curves.write(tmp_path / "map.gsf")
+    curves.write(tmp_path / "copy.h5")
+    curves.write(tmp_path / "copy.h5")
