@@ -160,36 +160,51 @@ std::string folder(const std::string& name) {
 
 }  // namespace
 
-// A symbolic link planted under a report file's name is replaced, never followed: the file it
-// points at keeps its bytes (before: overwritten with the report).
-TEST(TopographyReport, PlantedLinkIsReplacedNotFollowed) {
+// A symbolic link planted under a report file's name is never followed (before: its target was
+// overwritten with the report): the run is refused before anything is written, the link and its
+// target kept; with overwrite the link itself is replaced, its target still untouched.
+TEST(TopographyReport, PlantedLinkIsNeverFollowed) {
   const std::string dir = folder("link");
   const std::string victim = fs::path(dir).parent_path() / "victim.txt";
   std::ofstream(victim) << "precious";
   fs::create_symlink(victim, dir + "/report.json");
   fs::create_symlink(victim, dir + "/fits.svg");
-  t::write_report(analysis(), dir);
+  try {
+    t::write_report(analysis(), dir);
+    ADD_FAILURE() << "a planted link was accepted";
+  } catch (const asperity::Error& error) {
+    EXPECT_NE(std::string(error.what()).find("report.json is a symbolic link, never followed"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(read_text(victim), "precious");
+  EXPECT_TRUE(fs::is_symlink(dir + "/report.json"));
+  EXPECT_FALSE(fs::exists(dir + "/report.md"));  // nothing written
+  t::write_report(analysis(), dir, true);
   EXPECT_EQ(read_text(victim), "precious");
   EXPECT_FALSE(fs::is_symlink(dir + "/report.json"));
   EXPECT_NE(read_text(dir + "/report.json").find("asperity-surface/2"), std::string::npos);
-  // a link planted as the lock is refused, not followed
+  // a link planted as the folder's lock is refused, not followed
   const std::string other = folder("lock-link");
-  fs::create_symlink(victim, other + "/.asperity-report.lock");
+  fs::create_symlink(victim, other + "/.asperity.lock");
   EXPECT_THROW(t::write_report(analysis(), other), asperity::Error);
   EXPECT_EQ(read_text(victim), "precious");
+  EXPECT_FALSE(fs::exists(other + "/report.md"));
 }
 
-// A FIFO planted under a report file's name is replaced without being opened (before: the
-// command hung on it); a FIFO as the lock is refused at once.
+// A FIFO planted under a report file's name is never opened (before: the command hung on it) and
+// never replaced, not even with overwrite: refused at once; a FIFO as the lock too.
 TEST(TopographyReport, PlantedFifoDoesNotHang) {
   const std::string dir = folder("fifo");
   ASSERT_EQ(mkfifo((dir + "/report.md").c_str(), 0600), 0);
   ASSERT_EQ(mkfifo((dir + "/summits.csv").c_str(), 0600), 0);
-  t::write_report(analysis(), dir);
-  EXPECT_TRUE(fs::is_regular_file(dir + "/report.md"));
-  EXPECT_TRUE(fs::is_regular_file(dir + "/summits.csv"));
+  for (bool overwrite : {false, true}) {
+    EXPECT_THROW(t::write_report(analysis(), dir, overwrite), asperity::Error);
+    EXPECT_TRUE(fs::is_fifo(dir + "/report.md"));
+    EXPECT_TRUE(fs::is_fifo(dir + "/summits.csv"));
+    EXPECT_FALSE(fs::exists(dir + "/report.json"));
+  }
   const std::string other = folder("fifo-lock");
-  ASSERT_EQ(mkfifo((other + "/.asperity-report.lock").c_str(), 0600), 0);
+  ASSERT_EQ(mkfifo((other + "/.asperity.lock").c_str(), 0600), 0);
   EXPECT_THROW(t::write_report(analysis(), other), asperity::Error);
   // a directory in the way of a file is reported, and left
   const std::string third = folder("directory");
