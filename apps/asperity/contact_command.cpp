@@ -242,6 +242,10 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
   const double low = number_from_text(range[0], "--pressure-range PMIN");
   const double high = number_from_text(range[1], "--pressure-range PMAX");
   if (!(low > 0 && high > low)) usage("--pressure-range needs 0 < PMIN < PMAX");
+  const double area = model.surface().nominal_area;
+  if (low < model.min_load() / area || high > model.max_load() / area)
+    throw Error("--pressure-range " + number(low) + ":" + number(high) +
+                " Pa reaches outside the range the table serves for this surface: " + model_range(model, "pressure"));
   const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
   const std::size_t max_points = card_max_points(options.max_points, format);
   const PressureOverclosureTable table = tabulate_pressure_overclosure(model, low, high, tolerance, datum, max_points);
