@@ -123,6 +123,45 @@ TEST(ContactCurvesInterpolant, AdhesiveCurvesServeTheNetAndThePullOff) {
   EXPECT_EQ(early.min_pressure(), early.pressure(early.max_separation()));
 }
 
+// The fuzzer's adhesive table (fuzz/corpus/table_contents/adhesive-pressure-grid-end): the net
+// pressures straddle 0 Pa, so min + (max - min) * 1 rounds an ulp above max_pressure(); the
+// inverse serves it as the first node, not NaN, and a pressure clearly past stays NaN.
+TEST(ContactCurvesInterpolant, AdhesivePressureGridEndsStayOnTheStableBranch) {
+  ContactCurvesData data;
+  data.source = "contact-law jkr";
+  data.separation_datum = "the mean plane";
+  data.separation = {1e-7, 2e-7, 3e-7, 4e-7, 5e-7};
+  data.pressure = {1e8, 3e7, 1e7, 3e6, 1e6};
+  data.stiffness = {1e15, 3e14, 1e14, 3e13, 1e13};
+  data.area_fraction = {0.1, 0.04, 0.01, 0.004, 0.001};
+  data.tensile_pressure = {36856299.242500149, 2e7, 1e7, 9e6, 6e6};
+  data.tensile_stiffness = {1e14, 7e13, 4.5e13, 3e13, 2e13};
+  for (int i = 0; i < 3; ++i) {
+    data.measured_rel_error[i] = 0.01;
+    data.max_rel_error[i] = 0.02;
+  }
+  data.check_points = 4;
+  data.safety_factor = 2;
+  data.solver_tolerance = 1e-8;
+  data.contact_modulus = 1e11;
+  data.nominal_area = 1e-10;
+  data.mean_summit_height = 2e-8;
+  data.max_height = 6e-7;
+  const ContactCurves curves(data);
+  ASSERT_TRUE(curves.has_tension());
+  const double low = curves.min_pressure(), high = curves.max_pressure(), end = curves.stable_branch_end();
+  ASSERT_LT(low, 0);
+  for (int i = 0; i <= 64; ++i) {
+    const double back = curves.separation_at_pressure(low + (high - low) * i / 64);
+    EXPECT_TRUE(back >= curves.min_separation() && back <= end) << i << " " << back;
+  }
+  EXPECT_GT(low + (high - low) * 64 / 64, high);  // the case: the grid's end past the range
+  EXPECT_EQ(curves.separation_at_pressure(std::nextafter(high, INFINITY)), curves.min_separation());
+  EXPECT_EQ(curves.separation_at_pressure(std::nextafter(low, -INFINITY)), end);
+  EXPECT_TRUE(std::isnan(curves.separation_at_pressure(high + 1e-6 * (high - low))));
+  EXPECT_TRUE(std::isnan(curves.separation_at_pressure(low - 1e-6 * (high - low))));
+}
+
 TEST(ContactCurvesInterpolant, ReproducesACubicLogPressureExactly) {
   const ContactCurves curves(closed_form(5, 3));  // ln p a cubic: Hermite on exact slopes is exact
   EXPECT_EQ(curves.limited_intervals(), 0u);

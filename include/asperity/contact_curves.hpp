@@ -84,7 +84,8 @@ class ContactCurves {
   ContactCurvesState at_separation(double separation) const noexcept;
   // The separation where the served pressure is `pressure` (the inverse of pressure(), to a few
   // ulp; adhesive curves: on the stable branch); NaN outside [min_pressure(), max_pressure()] or
-  // for NaN.
+  // for NaN. Adhesive curves serve a pressure a few ulp of that range's span past an end (one
+  // computed from the two, which straddle 0 Pa, rounds there) as that end's separation.
   double separation_at_pressure(double pressure) const noexcept;
   ContactCurvesState at_pressure(double pressure) const noexcept;
 

@@ -167,6 +167,10 @@ struct ContactCurves::Impl {
   double stable_end = 0, pull_off_separation = nan, pull_off_pressure = nan;
   std::size_t stable_nodes = 0;            // nodes before stable_end
   std::vector<double> minus_net_pressures;  // stable_nodes + 1 values
+  // How far past an end of the net pressures served the inverse still serves that end: a
+  // pressure computed from them (min + (max - min) * 1) rounds up to an ulp of their span past
+  // it, as the range straddles 0 Pa (a few ulp of the span, never a pressure the curves miss)
+  double pressure_slack = 0;
 
   // The interval holding u (inside the range), and t in it.
   std::size_t locate(double u, double& t) const noexcept {
@@ -263,6 +267,7 @@ struct ContactCurves::Impl {
         pull_off_separation = pull_off_pressure = nan;
         break;
       }
+    pressure_slack = 4 * std::numeric_limits<double>::epsilon() * (minus_net_pressures.back() - minus_net_pressures.front());
   }
 };
 
@@ -419,8 +424,10 @@ double ContactCurves::separation_at_pressure(double pressure) const noexcept {
   if (impl.tension) {
     // the stable branch: the first node to stable_end, where the net pressure falls
     const std::vector<double>& keys = impl.minus_net_pressures;
-    if (!(-pressure >= keys.front() && -pressure <= keys.back())) return nan;
-    if (keys.size() == 1 || -pressure == keys.back()) return impl.stable_end;
+    if (!(-pressure >= keys.front() - impl.pressure_slack && -pressure <= keys.back() + impl.pressure_slack))
+      return nan;
+    if (-pressure < keys.front()) return impl.nodes.front();  // within the slack past max_pressure()
+    if (keys.size() == 1 || -pressure >= keys.back()) return impl.stable_end;  // or within the slack past it
     std::size_t k = static_cast<std::size_t>(std::upper_bound(keys.begin(), keys.end(), -pressure) - keys.begin());
     k = k == 0 ? 0 : std::min(k - 1, keys.size() - 2);
     if (-pressure == keys[k]) return k < impl.stable_nodes ? impl.nodes[k] : impl.stable_end;
