@@ -153,10 +153,10 @@ std::string problem_at(const std::string& path, const OutputKind& kind, bool ove
     if (folder_made_later) return "";
     struct stat folder {};
     if (::stat(parts.folder.c_str(), &folder) != 0)
-      return "cannot open the directory '" + printable_path(parts.folder) + "': " + reason(errno);
+      { const int error = errno; return "cannot open the directory '" + printable_path(parts.folder) + "': " + reason(error); }
     if (!S_ISDIR(folder.st_mode)) return "cannot open the directory '" + printable_path(parts.folder) + "': " + reason(ENOTDIR);
     if (::access(parts.folder.c_str(), W_OK | X_OK) != 0)
-      return "cannot write in the directory '" + printable_path(parts.folder) + "': " + reason(errno);
+      { const int error = errno; return "cannot write in the directory '" + printable_path(parts.folder) + "': " + reason(error); }
     return "";
   }
   if (S_ISDIR(status.st_mode)) return "is a directory";
@@ -217,7 +217,7 @@ bool is_field_image(const std::string& path) { return starts_with(read_output_he
 bool is_report_file(const std::string& path) {
   const std::string head = read_output_head(path);
   return starts_with(head, "# Surface report: ") || starts_with(head, "i,j,x_m,y_m,height_m,") ||
-         starts_with(head, "model,pressure_Pa,") ||
+         starts_with(head, "model,pressure_Pa,load_N,mean_separation_m,separation_m,") ||
          starts_with(head, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
                            "version=\"1.1\" width=\"") ||
          (starts_with(head, "{") && head.find("\"schema\": \"asperity-surface/") != std::string::npos);
@@ -269,7 +269,7 @@ std::string folder_problem(const std::string& path, bool& made_later) {
   struct stat status {};
   if (::stat(path.c_str(), &status) == 0) {
     if (!S_ISDIR(status.st_mode)) return "is not a directory";
-    if (::access(path.c_str(), W_OK | X_OK) != 0) return "cannot write in it: " + reason(errno);
+    if (::access(path.c_str(), W_OK | X_OK) != 0) { const int error = errno; return "cannot write in it: " + reason(error); }
     return "";
   }
   const int error = errno;
@@ -279,13 +279,13 @@ std::string folder_problem(const std::string& path, bool& made_later) {
   fs::path above = fs::path(path).lexically_normal().parent_path();
   if (above.empty()) above = ".";
   while (::stat(above.c_str(), &status) != 0) {
-    if (errno != ENOENT) return "cannot be made: '" + printable_path(above.string()) + "': " + reason(errno);
+    if (errno != ENOENT) { const int error = errno; return "cannot be made: '" + printable_path(above.string()) + "': " + reason(error); }
     if (above == above.parent_path() || above.parent_path().empty()) break;
     above = above.parent_path();
   }
   if (!S_ISDIR(status.st_mode)) return "cannot be made: '" + printable_path(above.string()) + "' is not a directory";
   if (::access(above.c_str(), W_OK | X_OK) != 0)
-    return "cannot be made in '" + printable_path(above.string()) + "': " + reason(errno);
+    { const int error = errno; return "cannot be made in '" + printable_path(above.string()) + "': " + reason(error); }
   made_later = true;
   return "";
 }
@@ -382,6 +382,7 @@ struct OutputTransaction::Impl {
     int directory = -1;  // owned
     int slot = -1;       // in live_temporaries
     bool committed = false;
+    const OutputKind* kind = nullptr;
   };
   OutputPlan plan;
   std::vector<Staged> staged;
@@ -396,7 +397,7 @@ struct OutputTransaction::Impl {
     if (at != directories.end()) return at->second;
     if (make) make_folders(folder);
     const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) throw Error("cannot open the directory '" + printable_path(folder) + "': " + reason(errno));
+    if (fd < 0) { const int error = errno; throw Error("cannot open the directory '" + printable_path(folder) + "': " + reason(error)); }
     directories.emplace(folder, fd);
     remove_stale_temporaries(fd);
     return fd;
@@ -412,16 +413,16 @@ struct OutputTransaction::Impl {
     }
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
       if (::mkdir(it->c_str(), 0777) != 0 && errno != EEXIST)
-        throw Error("cannot make the folder '" + printable_path(it->string()) + "': " + reason(errno));
+        { const int error = errno; throw Error("cannot make the folder '" + printable_path(it->string()) + "': " + reason(error)); }
       made_folders.push_back(it->string());
     }
   }
 
   void stage(const std::string& path, const std::string& folder, const std::string& base, std::string_view bytes,
-             bool make_folder) {
+             bool make_folder, const OutputKind& kind) {
     poll_interrupt();
     Staged file{path, folder, base, {}, ::dup(directory_of(folder, make_folder))};
-    if (file.directory < 0) throw Error(printable_path(path) + ": cannot write: " + reason(errno));
+    if (file.directory < 0) { const int error = errno; throw Error(printable_path(path) + ": cannot write: " + reason(error)); }
     int fd = -1;
     for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
       file.temporary = std::string(temporary_prefix) + host + "-" + std::to_string(::getpid()) + "-" +
@@ -439,6 +440,7 @@ struct OutputTransaction::Impl {
       throw Error(printable_path(path) + ": cannot find a free temporary name in '" + printable_path(folder) + "'");
     }
     file.slot = remember_temporary(file.directory, file.temporary);
+    file.kind = &kind;
     staged.push_back(file);  // from here the destructor removes it
     const auto fail = [&](const std::string& what, int error) {
       ::close(fd);
@@ -455,7 +457,7 @@ struct OutputTransaction::Impl {
         ::fchmod(fd, target.st_mode & 07777) != 0)
       fail("keeping its mode", errno);
     if (::fsync(fd) != 0) fail("syncing it to disk", errno);
-    if (::close(fd) != 0) throw Error(printable_path(path) + ": closing it: " + reason(errno));
+    if (::close(fd) != 0) { const int error = errno; throw Error(printable_path(path) + ": closing it: " + reason(error)); }
   }
 
   ~Impl() {
@@ -481,7 +483,7 @@ void OutputTransaction::stage(const std::string& path, std::string_view bytes) {
   for (const OutputPlan::Output& output : impl_->plan.files_)
     if (output.path == path) {
       const SplitPath parts = split(path);
-      impl_->stage(path, parts.folder, parts.base, bytes, false);
+      impl_->stage(path, parts.folder, parts.base, bytes, false, *output.kind);
       return;
     }
   throw Error("internal: " + printable_path(path) + " is not an output of the plan");
@@ -492,7 +494,7 @@ void OutputTransaction::stage(const std::string& folder, const std::string& name
     if (planned.path == folder)
       for (const FolderEntry& entry : planned.entries)
         if (entry.name == name) {
-          impl_->stage((fs::path(folder) / name).string(), folder, name, bytes, true);
+          impl_->stage((fs::path(folder) / name).string(), folder, name, bytes, true, *entry.kind);
           return;
         }
   throw Error("internal: " + printable_path(folder) + "/" + printable_path(name) + " is not an output of the plan");
@@ -505,35 +507,42 @@ std::vector<std::string> OutputTransaction::commit() {
   std::vector<FolderLock> locks;
   for (const OutputPlan::Folder& folder : t.plan.folders_)
     if (t.directories.count(folder.path)) locks.emplace_back(t.directories.at(folder.path), folder.path);
+  // every name checked again before the first rename (the work may have taken hours): a file of
+  // the user's, a link, FIFO or directory that appeared meanwhile is not replaced, and nothing is
+  for (const Impl::Staged& file : t.staged) {
+    const std::string problem = problem_at(file.path, *file.kind, t.plan.overwrite(), false);
+    if (!problem.empty())
+      throw Error(printable_path(file.path) + ": " + problem + " (found when the outputs were to be renamed into "
+                  "place: nothing was written)");
+  }
   std::vector<std::string> written;
   for (Impl::Staged& file : t.staged) {
-    // what is at the name now: a directory, FIFO or device planted since the check is refused
-    struct stat now {};
-    if (::fstatat(file.directory, file.base.c_str(), &now, AT_SYMLINK_NOFOLLOW) == 0 &&
-        (S_ISDIR(now.st_mode) || !(S_ISREG(now.st_mode) || (S_ISLNK(now.st_mode) && t.plan.overwrite()))))
-      throw Error(printable_path(file.path) + ": something other than a file of ours appeared there; not replaced");
     if (::renameat(file.directory, file.temporary.c_str(), file.directory, file.base.c_str()) != 0)
-      throw Error(printable_path(file.path) + ": renaming the finished file into place: " + reason(errno));
+      { const int error = errno; throw Error(printable_path(file.path) + ": renaming the finished file into place: " + reason(error)); }
     file.committed = true;
     written.push_back(file.path);
   }
   t.committed = true;
-  // a folder's files of ours that this run did not write (an earlier run's): removed
+  // a folder's files of ours that this run did not write (an earlier run's): removed through the
+  // folder's own descriptor (a folder swapped for a link meanwhile is not followed); best effort:
+  // everything asked is already in place
   for (const OutputPlan::Folder& folder : t.plan.folders_) {
+    const auto opened = t.directories.find(folder.path);
+    if (opened == t.directories.end()) continue;
     std::vector<FolderEntry> candidates = folder.entries;
     candidates.insert(candidates.end(), folder.stale.begin(), folder.stale.end());
     for (const FolderEntry& old : candidates) {
       const std::string path = (fs::path(folder.path) / old.name).string();
       if (std::find(written.begin(), written.end(), path) != written.end()) continue;
       struct stat status {};
-      if (::lstat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode) && old.kind->recognise &&
-          old.kind->recognise(path) && ::unlink(path.c_str()) != 0)
-        throw Error(printable_path(path) + ": cannot remove the earlier run's file: " + reason(errno));
+      if (::fstatat(opened->second, old.name.c_str(), &status, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(status.st_mode) &&
+          old.kind->recognise && old.kind->recognise(path))
+        ::unlinkat(opened->second, old.name.c_str(), 0);
     }
   }
   for (const auto& [folder, fd] : t.directories)
     if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS)
-      throw Error("'" + printable_path(folder) + "' was written, but syncing it failed: " + reason(errno));
+      { const int error = errno; throw Error("'" + printable_path(folder) + "' was written, but syncing it failed: " + reason(error)); }
   return written;
 }
 
@@ -550,6 +559,7 @@ void install_output_signal_cleanup() {
   static InterruptScope scope(signal_asked, nullptr);
   struct sigaction action {};
   action.sa_handler = on_stop_signal;
+  action.sa_flags = SA_RESTART;  // a read or write under way goes on; the work stops at its next poll
   sigemptyset(&action.sa_mask);
   for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
 }
