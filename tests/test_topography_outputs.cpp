@@ -17,34 +17,17 @@
 #include <thread>
 #include <vector>
 
+#include "file_helpers.hpp"
+
 namespace {
 
 const std::string afm = std::string(ASPERITY_TEST_SURFACES) + "/afm-zsensor-10um.txt";
 
-std::string test_directory(const std::string& name) {
-  const std::string path = std::string(ASPERITY_TEST_BINARY_DIR) + "/outputs-" + name;
-  std::system(("rm -rf '" + path + "'").c_str());
-  mkdir(path.c_str(), 0755);
-  return path;
-}
+using test_files::entries;
+using test_files::plant;
+using test_files::read_bytes;
 
-std::string read_bytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(file), {});
-}
-
-void plant(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
-
-std::vector<std::string> entries(const std::string& directory) {
-  std::vector<std::string> names;
-  if (DIR* listing = opendir(directory.c_str())) {
-    while (const dirent* entry = readdir(listing))
-      if (std::string(entry->d_name) != "." && std::string(entry->d_name) != "..") names.push_back(entry->d_name);
-    closedir(listing);
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+std::string test_directory(const std::string& name) { return test_files::fresh_directory("outputs", name); }
 
 struct Outcome {
   int status = -1;  // exit status; -1: killed by the time limit
