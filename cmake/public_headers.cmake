@@ -20,6 +20,7 @@ set(ASPERITY_RUNTIME_HEADERS
   physical_state_fields.hpp  # the physical state's fields, once (C, Fortran, Python, CSV made or checked from it)
   law_combination.hpp    # how a law's rough-surface quantities combine the tabulated orders (Hertz's numbers)
   contact_law.hpp        # single-asperity contact laws (Hertz, CEB, ZMC, KE, JG, DMT, JKR, MD)
+  contact_law_registry.hpp  # the laws as a registry: parameters, descriptors, typed construction
   scene.hpp scene_curves.hpp
   pressure_overclosure.hpp          # FE export: CalculiX/Abaqus pressure-overclosure cards
   number_text.hpp                   # the one strict number reader and writer

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "asperity/contact_curves.hpp"
+#include "asperity/contact_law_registry.hpp"
 #include "asperity/error.hpp"
 #include "asperity/integrals.hpp"
 #include "asperity/interrupt.hpp"
@@ -79,19 +80,21 @@ std::string law_inputs_at_fault(const SceneLaw& scene) {
   };
   const double modulus = law.modulus;
   outside("the contact modulus E*", modulus, "Pa", plausible_contact_modulus.min, plausible_contact_modulus.max);
-  const bool hardness = law.kind == ContactLawKind::chang_etsion_bogy || law.kind == ContactLawKind::zhao_maietta_chang;
-  const bool yield = law.kind == ContactLawKind::kogut_etsion || law.kind == ContactLawKind::jackson_green;
-  if (hardness || yield) {
-    const double material = hardness ? law.hardness : law.yield_strength;
-    outside(hardness ? "the hardness H" : "the yield strength Y", material, "Pa", material_ratio_min * modulus,
-            material_ratio_max * modulus,
-            std::string(" (") + (hardness ? "H/E* " : "Y/E* ") + format_double(material_ratio_min) + " to " +
+  const ContactLawDescriptor* descriptor = find_contact_law(law.kind);
+  for (int k = 0; descriptor && k < descriptor->parameter_count; ++k) {
+    // a strength set against E* (below, omega_c underflows; the laws' formulas divide by it)
+    const LawParameterInfo& p = law_parameter_info(descriptor->parameters[k].parameter);
+    if (!p.strength) continue;
+    const double material = law_parameter_value(law, p.id);
+    const std::string meaning = p.meaning;  // "hardness H [Pa]": the name without its unit
+    outside("the " + meaning.substr(0, meaning.find(" [")), material, p.unit, material_ratio_min * modulus, material_ratio_max * modulus,
+            std::string(" (") + p.symbol + "/E* " + format_double(material_ratio_min) + " to " +
                 format_double(material_ratio_max) + " with E* " + format_double(modulus) + " Pa)");
     if (!(law.critical_interference > 0))
       out << (out.tellp() > 0 ? "; " : "") << "the critical interference omega_c it gives is "
           << law.critical_interference << " m (the law divides by it)";
   }
-  if (law.kind == ContactLawKind::maugis_dugdale)
+  if (descriptor && law_parameter_use(*descriptor, LawParameter::maugis_parameter))
     outside("Maugis' parameter lambda", law.maugis_parameter, "", 0, maugis_parameter_max,
             " (beyond, Maugis-Dugdale is JKR: law jkr)");
   outside("the height scale sigma_s", scene.height_scale, "m", plausible_height_scale.min, plausible_height_scale.max);
@@ -100,10 +103,7 @@ std::string law_inputs_at_fault(const SceneLaw& scene) {
   out << "none of its inputs is outside the ranges tested (E* " << plausible_contact_modulus.min << " to "
       << plausible_contact_modulus.max << " Pa, H/E* and Y/E* " << material_ratio_min << " to " << material_ratio_max
       << ", sigma_s and R plausible): the law's parameters are E* " << modulus << " Pa";
-  if (hardness) out << ", H " << law.hardness << " Pa";
-  if (yield) out << ", Y " << law.yield_strength << " Pa";
-  if (is_adhesive(law.kind)) out << ", work of adhesion " << law.work_of_adhesion << " J/m^2";
-  if (law.kind == ContactLawKind::maugis_dugdale) out << ", lambda " << law.maugis_parameter;
+  if (descriptor && descriptor->parameter_count > 0) out << ", " << law_parameters_text(law);
   out << ", sigma_s " << scene.height_scale << " m, R " << scene.summit_radius << " m";
   return out.str();
 }
@@ -299,20 +299,11 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     text.precision(17);
     const ContactLaw& l = law.law;
     text << contact_law_name(l.kind) << ": E* = " << l.modulus << " Pa";
-    if (l.kind == ContactLawKind::chang_etsion_bogy || l.kind == ContactLawKind::zhao_maietta_chang)
-      text << ", H = " << l.hardness << " Pa";
-    if (l.kind == ContactLawKind::kogut_etsion || l.kind == ContactLawKind::jackson_green)
-      text << ", Y = " << l.yield_strength << " Pa";
-    if (l.kind != ContactLawKind::hertz && l.kind != ContactLawKind::zhao_maietta_chang && !is_adhesive(l.kind))
-      text << ", nu = " << l.poisson;
-    if (l.kind == ContactLawKind::zhao_maietta_chang) text << ", K = " << l.pressure_factor;
-    if (is_adhesive(l.kind)) {
-      text << ", work of adhesion = " << l.work_of_adhesion << " J/m^2";
-      if (l.kind == ContactLawKind::maugis_dugdale) text << ", Maugis parameter lambda = " << l.maugis_parameter;
+    if (find_contact_law(l.kind)->parameter_count > 0) text << ", " << law_parameters_text(l);
+    if (is_adhesive(l.kind))
       text << ", length scale d_s = " << l.critical_interference << " m";
-    } else if (l.kind != ContactLawKind::hertz) {
+    else if (std::isfinite(l.critical_interference))
       text << ", omega_c = " << l.critical_interference << " m";
-    }
     text << "; summits " << to_string(law.distribution);
     if (law.distribution == Distribution::weibull) text << " a = " << law.shape << " " << to_string(law.side) << " side";
     text << ", sigma_s = " << sigma << " m, R = " << law.summit_radius << " m, density = " << eta

@@ -43,8 +43,8 @@ const t::SurfaceAnalysis& analysis() {
 t::LawSceneMaker maker(const std::string& name, double yield_strength = NAN, double poisson = NAN) {
   asperity::cli::LawOptions law;
   law.law = name;
-  law.yield_strength = yield_strength;
-  law.poisson = poisson;
+  law.material.set(asperity::LawParameter::yield_strength, yield_strength);
+  law.material.set(asperity::LawParameter::poisson, poisson);
   return [law](const asperity::RoughSurface& surface, double s_min, double s_max) {
     return asperity::cli::law_scene(law, surface, s_min, s_max, "test");
   };
@@ -112,7 +112,7 @@ TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
   {
     asperity::cli::LawOptions options;
     options.law = "jkr";
-    options.work_of_adhesion = 0.5;
+    options.material.set(asperity::LawParameter::work_of_adhesion, 0.5);
     const t::LawSceneMaker weak = [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
       return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
     };
@@ -126,7 +126,7 @@ TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
   const double e = 1e11, dgamma = 200;
   asperity::cli::LawOptions options;
   options.law = "jkr";
-  options.work_of_adhesion = dgamma;
+  options.material.set(asperity::LawParameter::work_of_adhesion, dgamma);
   const t::LawSceneMaker jkr = [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
     return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
   };
@@ -167,7 +167,7 @@ TEST(LawContact, RefusalsAndLimits) {
     t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", maker("chang-etsion-bogy", NAN, 0.3));
     ADD_FAILURE() << "no hardness accepted";
   } catch (const asperity::Error& error) {
-    EXPECT_NE(std::string(error.what()).find("the law has no 'hardness'"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("chang-etsion-bogy needs --hardness"), std::string::npos) << error.what();
   }
   // a fit without elastic curves has nothing to set the law beside
   t::ContactComparison without = *a.contact;

@@ -69,8 +69,8 @@ const t::SurfaceAnalysis& law_analysis() {
   static const t::SurfaceAnalysis a = [] {
     asperity::cli::LawOptions law;
     law.law = "kogut-etsion";
-    law.yield_strength = 1e9;
-    law.poisson = 0.3;
+    law.material.set(asperity::LawParameter::yield_strength, 1e9);
+    law.material.set(asperity::LawParameter::poisson, 0.3);
     return small_analysis(1, 0, [law](const asperity::RoughSurface& surface, double s_min, double s_max) {
       return asperity::cli::law_scene(law, surface, s_min, s_max, "test");
     });
@@ -452,7 +452,7 @@ TEST(TopographyReport, TheLawInEveryOutput) {
 TEST(TopographyReport, AnAdhesiveLawReportsItsAdhesionNotPlasticity) {
   asperity::cli::LawOptions jkr;
   jkr.law = "jkr";
-  jkr.work_of_adhesion = 0.5;
+  jkr.material.set(asperity::LawParameter::work_of_adhesion, 0.5);
   const t::SurfaceAnalysis adhesive =
       small_analysis(1, 0, [jkr](const asperity::RoughSurface& surface, double s_min, double s_max) {
         return asperity::cli::law_scene(jkr, surface, s_min, s_max, "test");

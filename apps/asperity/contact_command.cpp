@@ -10,6 +10,7 @@
 
 #include "asperity/contact_curves.hpp"
 #include "asperity/contact_law.hpp"
+#include "asperity/contact_law_registry.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/generator/law_curves.hpp"
 #include "asperity/scene.hpp"
@@ -298,7 +299,7 @@ void check_curve_queries(const Options& options, const std::string& what) {
 // the options, so that its checks and messages are the scene file's) and served as contact curves.
 int run_contact_law(const Options& options, const CLI::App& command) {
   if (!options.table.empty()) usage("--law tabulates the law's curves itself: give no --table");
-  law_kind(options.law);
+  law_values(options.law);
   if (options.law_range.empty()) throw CLI::RequiredError("--law-range (with --law)");
   const std::vector<std::string> range = split(options.law_range, ':');
   if (range.size() != 2) usage("--law-range wants SMIN:SMAX (dimensionless separations), got '" +
@@ -309,15 +310,20 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   const RoughSurface surface = surface_from(options, given_scale);
   const SceneLaw law = law_scene(options.law, surface, lo, hi, "asperity contact --law");
   if (!given_scale.empty()) note(command, given_scale);
-  const ContactLawKind kind = law.law.kind;
-  if (is_adhesive(kind)) {
-    note(command, std::string(contact_law_name(kind)) + ": the approach (loading) branch; Maugis' length d_s = " +
-                      approximately(law.law.critical_interference) + " m, Fuller-Tabor's adhesion parameter " +
-                      "sigma_s / delta_c = " + approximately(adhesion_parameter(law.law, surface.height_scale)));
-  } else if (std::isfinite(law.law.critical_interference))
-    note(command, std::string(contact_law_name(kind)) + ": omega_c = " + approximately(law.law.critical_interference) +
-                      " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
-                      approximately(plasticity_index(law.law, surface.height_scale)));
+  const std::string name = contact_law_name(law.law.kind);
+  switch (find_contact_law(law.law.kind)->family) {  // the regime's figure (contact_law_registry.hpp)
+    case LawFamily::adhesive:
+      note(command, name + ": the approach (loading) branch; Maugis' length d_s = " +
+                        approximately(law.law.critical_interference) + " m, Fuller-Tabor's adhesion parameter " +
+                        "sigma_s / delta_c = " + approximately(adhesion_parameter(law.law, surface.height_scale)));
+      break;
+    case LawFamily::elastic_plastic:
+      note(command, name + ": omega_c = " + approximately(law.law.critical_interference) +
+                        " m, plasticity index psi = (sigma_s / omega_c)^1/2 = " +
+                        approximately(plasticity_index(law.law, surface.height_scale)));
+      break;
+    case LawFamily::elastic: break;
+  }
   const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity contact --law");
   return serve_contact_curves(options, command, ContactCurves(result.data));
 }
@@ -596,10 +602,9 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--moments", o.moments,
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
-  add_law_options(*command, o.law,
-                  "a contact law's curves instead of Hertz's: hertz, chang-etsion-bogy, zhao-maietta-chang, "
-                  "kogut-etsion, jackson-green, dmt, jkr or maugis-dugdale (the approach branch), tabulated now on the surface given (docs/contact-laws.md section 8); "
-                  "queries --separation, --pressure, --sweep separation|pressure, --export");
+  add_law_options(*command, o.law, "a contact law's curves instead of Hertz's",
+                  " (an adhesive law's approach branch), tabulated now on the surface given (docs/contact-laws.md "
+                  "section 8); queries --separation, --pressure, --sweep separation|pressure, --export");
   add_text(*command, "--law-range", o.law_range,
            "with --law: the dimensionless separations s tabulated (origin convention; required)")
       ->type_name("SMIN:SMAX")->group("Contact law");

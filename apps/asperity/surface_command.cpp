@@ -173,17 +173,7 @@ int run_surface(const Options& o) {
     usage("the contact curves (--pressure, --load, --area, --table, --exact, --law) need the contact modulus: --modulus "
           "E* [Pa] or --e1 --nu1 --e2 --nu2");
   check_no_law_options(o.law);
-  if (!o.law.law.empty()) {
-    // the law and its material checked now, as a scene on a stand-in surface, before the analysis
-    RoughSurface stand_in;
-    stand_in.distribution = Distribution::gaussian;
-    stand_in.height_scale = 1e-6;
-    stand_in.summit_radius = 1e-4;
-    stand_in.summit_density = 1e9;
-    stand_in.nominal_area = 1e-6;
-    stand_in.contact_modulus = modulus;
-    law_scene(o.law, stand_in, 0, 1, "asperity surface --law");
-  }
+  if (!o.law.law.empty()) law_values(o.law);  // the law and its material checked before the analysis
   std::vector<double> pressures, loads;
   if (!o.pressures.empty()) pressures = positive_numbers(o.pressures, "--pressure");
   if (!o.loads.empty()) loads = positive_numbers(o.loads, "--load");
@@ -358,10 +348,10 @@ void add_surface_command(CLI::App& app) {
   add_number(*command, "--exact-tolerance", o.exact_tolerance, "of each exact solve (default 1e-8)")
       ->type_name("TOL")->group(contact);
   command->add_flag("--no-persson", o.no_persson, "leave out Persson's theory of the map's spectrum")->group(contact);
-  add_law_options(*command, o.law,
-                  "a contact law beside the elastic curves (with --modulus): hertz, chang-etsion-bogy, "
-                  "zhao-maietta-chang, kogut-etsion or jackson-green with its material; gives the plasticity index of "
-                  "the measured summits and the law's curves on the fit the verdict names (docs/surfaces.md)");
+  add_law_options(*command, o.law, "a contact law beside the elastic curves (with --modulus)",
+                  " with its material; gives the regime of the measured summits (an elastic-plastic law's "
+                  "plasticity index, an adhesive law's adhesion parameter) and the law's curves on the fit the "
+                  "verdict names (docs/surfaces.md)");
   const char* output = "Output";
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
@@ -381,9 +371,10 @@ void add_surface_command(CLI::App& app) {
       "the contact curves of each fit and their ratios at the pressures of interest, Persson's theory of\n"
       "the map's spectrum, and with --exact the exact elastic contact of the map, which every curve is\n"
       "then compared with (docs/surfaces.md, docs/exact-contact.md).\n"
-      "With --law NAME and its material: the plasticity index psi of the measured summits (the law's\n"
-      "(sigma_s/omega_c)^1/2 and GW's (E*/H)(sigma_s/R)^1/2, sigma_s the summit heights' standard\n"
-      "deviation, R the summit radius; GW: psi < 0.6 elastic, > 1 plastic) and the law's curves\n"
+      "With --law NAME and its material: the regime of the measured summits (an elastic-plastic law's\n"
+      "plasticity index psi, the law's (sigma_s/omega_c)^1/2 and GW's (E*/H)(sigma_s/R)^1/2, sigma_s the\n"
+      "summit heights' standard deviation, R the summit radius, GW: psi < 0.6 elastic, > 1 plastic; an\n"
+      "adhesive law's Fuller-Tabor adhesion parameter sigma_s/delta_c) and the law's curves\n"
       "(separation, real area, stiffness) on the fit the verdict names, next to its elastic ones, at\n"
       "the pressures of interest (the report's law.svg; curves.csv rows law:NAME).\n" +
       std::string(exit_status_help));

@@ -15,25 +15,42 @@
 
 namespace asperity {
 
-enum class ContactLawKind {
-  hertz,               // elastic (Hertz): today's law
-  chang_etsion_bogy,   // CEB 1987: Hertz to omega_c, then volume conservation at mean pressure K H
-  zhao_maietta_chang,  // ZMC 2000: Hertz to omega_1, cubic blend to 54 omega_1, then fully plastic
-  kogut_etsion,        // KE 2002: FE fits on [1, 6] and [6, 110] omega_c, fully plastic beyond
-  jackson_green,       // JG 2005: Hertz to 1.9 omega_c, then FE fits with a geometric hardness
-  dmt,                 // Derjaguin-Muller-Toporov: Hertz less the pull-off 2 pi dgamma R
-  jkr,                 // Johnson-Kendall-Roberts (Maugis-Dugdale's lambda -> infinity)
-  maugis_dugdale,      // Maugis-Dugdale 1992 through the Maugis parameter lambda (DMT .. JKR)
-};
+// The built-in laws, one line each, in the order messages list them: X(kind, descriptor), the
+// descriptor defined in runtime/core/laws/ (contact_law_registry.hpp: what each law takes).
+//   hertz               elastic (Hertz)
+//   chang_etsion_bogy   CEB 1987: Hertz to omega_c, then volume conservation at mean pressure K H
+//   zhao_maietta_chang  ZMC 2000: Hertz to omega_1, cubic blend to 54 omega_1, then fully plastic
+//   kogut_etsion        KE 2002: FE fits on [1, 6] and [6, 110] omega_c, fully plastic beyond
+//   jackson_green       JG 2005: Hertz to 1.9 omega_c, then FE fits with a geometric hardness
+//   dmt                 Derjaguin-Muller-Toporov: Hertz less the pull-off 2 pi dgamma R
+//   jkr                 Johnson-Kendall-Roberts (Maugis-Dugdale's lambda -> infinity)
+//   maugis_dugdale      Maugis-Dugdale 1992 through the Maugis parameter lambda (DMT .. JKR)
+#define ASPERITY_BUILT_IN_CONTACT_LAWS(X)                                                         \
+  X(hertz, hertz_law_descriptor)                                                                 \
+  X(chang_etsion_bogy, chang_etsion_bogy_law_descriptor)                                         \
+  X(zhao_maietta_chang, zhao_maietta_chang_law_descriptor)                                       \
+  X(kogut_etsion, kogut_etsion_law_descriptor)                                                   \
+  X(jackson_green, jackson_green_law_descriptor)                                                 \
+  X(dmt, dmt_law_descriptor)                                                                     \
+  X(jkr, jkr_law_descriptor)                                                                     \
+  X(maugis_dugdale, maugis_dugdale_law_descriptor)
 
-// Every law, in the order messages list them.
-inline constexpr ContactLawKind contact_law_kinds[] = {
-    ContactLawKind::hertz,         ContactLawKind::chang_etsion_bogy, ContactLawKind::zhao_maietta_chang,
-    ContactLawKind::kogut_etsion,  ContactLawKind::jackson_green,     ContactLawKind::dmt,
-    ContactLawKind::jkr,           ContactLawKind::maugis_dugdale};
+// A law's kind: the built-ins', then those a program registers (contact_law_registry.hpp), which
+// take the values after built_in_contact_law_count.
+enum class ContactLawKind : int {
+#define ASPERITY_LAW_KIND(kind, descriptor) kind,
+  ASPERITY_BUILT_IN_CONTACT_LAWS(ASPERITY_LAW_KIND)
+#undef ASPERITY_LAW_KIND
+};
+inline constexpr int built_in_contact_law_count = 0
+#define ASPERITY_LAW_COUNT(kind, descriptor) +1
+    ASPERITY_BUILT_IN_CONTACT_LAWS(ASPERITY_LAW_COUNT)
+#undef ASPERITY_LAW_COUNT
+    ;
 
 // The name used in files and messages ("hertz", "chang-etsion-bogy", "zhao-maietta-chang",
-// "kogut-etsion", "jackson-green", "dmt", "jkr", "maugis-dugdale").
+// "kogut-etsion", "jackson-green", "dmt", "jkr", "maugis-dugdale", or a registered law's);
+// "unknown" for a kind no law has.
 const char* contact_law_name(ContactLawKind kind) noexcept;
 // The kind of such a name; false (and `kind` untouched) for a name that is not a law's.
 bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept;
@@ -118,7 +135,7 @@ struct AsperityLoadSplit {
   double compressive_stiffness = 0, tensile_stiffness = 0;  // d/domega [N/m]
 };
 AsperityLoadSplit asperity_load_split(const ContactLaw& law, double interference) noexcept;
-// Whether the law's load has a tensile part (DMT, JKR, Maugis-Dugdale).
+// Whether the law's load has a tensile part (DMT, JKR, Maugis-Dugdale: the adhesive family).
 bool is_adhesive(ContactLawKind kind) noexcept;
 
 // The omegas where the formula changes (KE: omega_c, 6 omega_c, 110 omega_c; JG: 1.9 omega_c;

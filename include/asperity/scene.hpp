@@ -21,17 +21,10 @@
 //
 //   [[law]]
 //   name = "steel pad"              # optional
-//   law = "kogut-etsion"            # hertz, chang-etsion-bogy, zhao-maietta-chang, kogut-etsion, jackson-green,
-//                                   # dmt, jkr, maugis-dugdale (contact_law.hpp's names)
+//   law = "kogut-etsion"            # a law's name (contact_law_registry.hpp: hertz, chang-etsion-bogy, ...)
 //   contact_modulus = 1.15e11       # E* [Pa] (every law)
-//   yield_strength = 1.0e9          # Y [Pa]: kogut-etsion, jackson-green
-//   hardness = 2.0e9                # H [Pa]: chang-etsion-bogy, zhao-maietta-chang
-//   poisson = 0.3                   # nu: chang-etsion-bogy, kogut-etsion, jackson-green
-//   pressure_factor = 0.6           # zhao-maietta-chang's K (optional, 0.6)
-//   geometric_hardness = "2005"     # jackson-green's H_G: "2005" (cosine, default) or "2006"
-//   work_of_adhesion = 0.5          # dgamma [J/m^2]: dmt, jkr, maugis-dugdale (the approach branch
-//                                   # is tabulated: contact-curves with a tensile part)
-//   maugis_parameter = 1.0          # lambda > 0: maugis-dugdale
+//   yield_strength = 1.0e9          # the law's parameters, by the registry's keys: which law takes
+//   poisson = 0.3                   # which, with units and ranges, is its descriptor's (docs/contact-laws.md)
 //   distribution = "gaussian"       # summit heights: as a [[curve]]'s (shape, side)
 //   height_scale = 1e-6             # sigma_s [m]
 //   summit_radius = 1e-4            # R [m]
@@ -48,9 +41,12 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "asperity/contact_law.hpp"
+#include "asperity/contact_law_registry.hpp"
+#include "asperity/error.hpp"
 #include "asperity/integrals.hpp"
 
 namespace asperity {
@@ -93,6 +89,60 @@ struct Scene {
 
 // The tolerances a law scene may ask (its exact values are quadratures to ~1e-13)
 inline constexpr double scene_law_error_min = 1e-10;
+
+// A [[law]]'s values, typed: what a scene file, the command line (asperity contact --law) and
+// Python (asperity.law_curves) give. NaN: not given.
+struct SceneLawInputs {
+  std::string name;
+  ContactLawKind law = ContactLawKind::hertz;
+  LawValues material;                // the law's parameters (contact_law_registry.hpp)
+  double contact_modulus = 0.0 / 0.0;
+  Distribution distribution = Distribution::gaussian;
+  bool side_given = false;
+  Side side = Side::tail;
+  double shape = 0.0 / 0.0;          // the Weibull's (not for the Gaussian)
+  double height_scale = 0.0 / 0.0, summit_radius = 0.0 / 0.0, summit_density = 0.0 / 0.0, nominal_area = 0.0 / 0.0;
+  double range_min = 0.0 / 0.0, range_max = 0.0 / 0.0;  // separation [s_min, s_max]
+  double max_rel_error = 0.0 / 0.0;  // NaN: the default given to make_scene_law
+};
+
+// A [[law]]'s keys beyond its material's, and what the command line and Python call each.
+struct SceneLawKey {
+  const char* key;      // in a scene file ("height_scale")
+  const char* option;   // on the command line ("--sigma")
+  const char* keyword;  // in Python (asperity.law_curves's keyword)
+};
+inline constexpr SceneLawKey scene_law_keys[] = {
+    {"name", "", "name"},
+    {"law", "--law", "law"},
+    {"contact_modulus", "--modulus", "contact_modulus"},
+    {"distribution", "--dist", "distribution"},
+    {"shape", "--shape", "shape"},
+    {"side", "--side", "side"},
+    {"height_scale", "--sigma", "height_scale"},
+    {"summit_radius", "--radius", "summit_radius"},
+    {"summit_density", "--density", "summit_density"},
+    {"nominal_area", "--area", "nominal_area"},
+    {"separation", "--law-range", "separation"},
+    {"max_rel_error", "--law-tolerance", "max_rel_error"},
+};
+// The name of a [[law]] key (its own or its material's) in `naming`'s vocabulary ('key', --option, keyword=).
+std::string scene_law_key_name(const std::string& key, LawNaming naming);
+
+// A law scene's input refused: `key` is the scene key at fault ("" for the law as a whole).
+class SceneLawError : public Error {
+ public:
+  SceneLawError(std::string key, const std::string& message, std::string label)
+      : Error(message), key(std::move(key)), label(std::move(label)) {}
+  std::string key, label;
+};
+
+// The law scene of typed inputs, every check of a [[law]] applied in one place (the scene reader,
+// the command line and Python call it); messages name the inputs in `naming`'s vocabulary.
+// Throws SceneLawError.
+SceneLaw make_scene_law(const SceneLawInputs& inputs, LawNaming naming, double default_tolerance = 1e-8);
+// A law scene's max_rel_error: `asked` checked (NaN: the default, at least scene_law_error_min).
+double checked_law_tolerance(double asked, double default_tolerance, LawNaming naming);
 
 // The limits a scene is checked against.
 inline constexpr double scene_shape_min = 0.3, scene_shape_max = 50.0;

@@ -2,9 +2,9 @@
 // tabulated from Python by the generator (asperity/generator/law_curves.hpp), as tablegen does a
 // law scene, and served as an asperity.ContactCurves (docs/contact-laws.md section 8).
 //
-// The keyword arguments are a [[law]] scene's keys (asperity/scene.hpp): they are written as the
-// scene's TOML text and go through the scene's own checks, so that Python, the command line
-// (asperity contact --law) and a scene file refuse the same inputs with the same messages.
+// The keyword arguments are a [[law]] scene's keys (asperity/scene.hpp), the law's parameters the
+// contact-law registry's: they become typed inputs checked by make_scene_law, the one check that
+// the command line (asperity contact --law) and a scene file go through too.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 #include "interrupt.hpp"
 #include "asperity/contact_curves.hpp"
+#include "asperity/contact_law_registry.hpp"
 #include "asperity/error.hpp"
 #include "asperity/generator/law_curves.hpp"
 #include "asperity/interrupt.hpp"
@@ -28,36 +29,96 @@ using namespace pybind11::literals;
 namespace asperity::python {
 namespace {
 
-// A value as TOML: a number in its shortest exact form, a string quoted (the scene refuses
-// control characters; quotes and backslashes are escaped here), a pair of numbers an array.
-std::string toml_value(const std::string& key, const py::handle& value) {
-  if (py::isinstance<py::bool_>(value)) throw Error("law_curves: " + key + " must be a number or a string, not a bool");
-  if (py::isinstance<py::str>(value)) {
-    std::string quoted = "\"";
-    for (char c : value.cast<std::string>()) {
-      if (c == '"' || c == '\\') quoted += '\\';
-      quoted += c;
+std::string type_name(const py::handle& value) { return py::str(py::type::of(value).attr("__name__")); }
+
+// A keyword's value: a number (not a bool, a string or a sequence).
+double number_of(const std::string& key, const py::handle& value) {
+  if (py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) || !py::hasattr(value, "__float__") ||
+      py::isinstance<py::sequence>(value))
+    throw Error("law_curves: " + key + " must be a number, not a " + type_name(value));
+  return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+}
+
+std::string text_of(const std::string& key, const py::handle& value) {
+  if (!py::isinstance<py::str>(value)) throw Error("law_curves: " + key + " must be a string, not a " + type_name(value));
+  return value.cast<std::string>();
+}
+
+// The parameters a law takes, as keywords ("yield_strength, poisson")
+std::string law_keys_text(ContactLawKind kind) {
+  const ContactLawDescriptor& law = *find_contact_law(kind);
+  std::string keys;
+  for (int k = 0; k < law.parameter_count; ++k)
+    keys += std::string(k ? ", " : "") + law_parameter_info(law.parameters[k].parameter).key;
+  return keys.empty() ? "none" : keys;
+}
+
+// A law parameter's keyword into `in`; false when `key` is not a law parameter's.
+bool read_law_parameter(const std::string& key, const py::handle& value, SceneLawInputs& in) {
+  for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p) {
+    if (key != p->key) continue;
+    if (!p->choices[0]) {
+      in.material.set(p->id, number_of(key, value));
+      return true;
     }
-    return quoted + "\"";
+    const bool whole = py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value);
+    double index;
+    if (!law_choice_index(p->id, whole ? std::string(py::str(value)) : text_of(key, value), index))
+      throw Error("law_curves: " + key + " is " + law_choices_text(p->id, " or ", true));
+    in.material.set(p->id, index);
+    return true;
   }
-  if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) || py::hasattr(value, "__float__")) {
-    if (py::isinstance<py::sequence>(value)) throw Error("law_curves: " + key + " must be a number");
-    return format_double(py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());
+  return false;
+}
+
+// A [[law]] key of the surface or the range into `in`; false when `key` is none of them.
+bool read_scene_key(const std::string& key, const py::handle& value, SceneLawInputs& in) {
+  const std::pair<const char*, double*> numbers[] = {
+      {"contact_modulus", &in.contact_modulus}, {"shape", &in.shape},
+      {"height_scale", &in.height_scale},       {"summit_radius", &in.summit_radius},
+      {"summit_density", &in.summit_density},   {"nominal_area", &in.nominal_area},
+      {"max_rel_error", &in.max_rel_error}};
+  for (const auto& [name, target] : numbers)
+    if (key == name) return *target = number_of(key, value), true;
+  if (key == "name") {
+    in.name = text_of(key, value);
+  } else if (key == "distribution") {
+    if (!parse_distribution(text_of(key, value), in.distribution))
+      throw Error("law_curves: distribution must be 'weibull' or 'gaussian'");
+  } else if (key == "side") {
+    if (!parse_side(text_of(key, value), in.side)) throw Error("law_curves: side must be 'tail' or 'bounded'");
+    in.side_given = true;
+  } else if (key == "separation") {
+    if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) || py::len(value) != 2)
+      throw Error("law_curves: separation must be a pair (smin, smax)");
+    const py::sequence pair = value.cast<py::sequence>();
+    in.range_min = number_of("separation", pair[0]);
+    in.range_max = number_of("separation", pair[1]);
+  } else {
+    return false;
   }
-  if (py::isinstance<py::sequence>(value)) {
-    const py::sequence items = value.cast<py::sequence>();
-    std::string array = "[";
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      if (i) array += ", ";
-      const py::handle item = items[i];
-      if (py::isinstance<py::bool_>(item) || py::isinstance<py::str>(item) || !py::hasattr(item, "__float__"))
-        throw Error("law_curves: " + key + " must be numbers");
-      array += format_double(py::float_(py::reinterpret_borrow<py::object>(item)).cast<double>());
+  return true;
+}
+
+// The keywords of law_curves as a law scene's typed inputs: each key is a law parameter (the
+// registry's) or a [[law]] key (asperity/scene.hpp's scene_law_keys), nothing else.
+SceneLawInputs law_inputs(const std::string& law, const py::kwargs& keys, py::object& progress) {
+  SceneLawInputs in;
+  if (!contact_law_kind_of(law.c_str(), in.law))
+    throw Error("law_curves: law must be one of " + contact_law_names(", ", true) + ", not '" + quote_text(law) + "'");
+  for (const auto& item : keys) {
+    const std::string key = py::str(item.first);
+    if (key == "progress") {  // not a scene key: the call's own
+      progress = py::reinterpret_borrow<py::object>(item.second);
+      continue;
     }
-    return array + "]";
+    if (!read_law_parameter(key, item.second, in) && !read_scene_key(key, item.second, in))
+      throw Error("law_curves: '" + quote_text(key) + "' is not a law scene's key (" + law + "'s: " +
+                  law_keys_text(in.law) +
+                  "; the surface's: contact_modulus, distribution, shape, side, height_scale, summit_radius, "
+                  "summit_density, nominal_area; separation, max_rel_error, name, progress)");
   }
-  throw Error("law_curves: " + key + " has a value of type " + std::string(py::str(py::type::of(value).attr("__name__"))) +
-              " (a number, a string or a pair of numbers is wanted)");
+  return in;
 }
 
 // progress= of law_curves: the callable is given a dict (pass, nodes, checked, intervals,
@@ -83,11 +144,8 @@ struct ProgressCall {
   }
 };
 
-// The one law of a scene's text, tabulated (without the GIL, one thread; Ctrl-C stops it)
-ContactCurves tabulate(const std::string& text, const std::string& source, const py::object& progress = py::none()) {
-  const Scene scene = parse_scene(text, source);
-  if (scene.laws.size() != 1 || !scene.curves.empty())
-    throw Error(source + ": a law scene needs exactly one [[law]] and no [[curve]]");
+// A law scene tabulated (without the GIL, one thread; Ctrl-C stops it)
+ContactCurves tabulate(const SceneLaw& law, const std::string& source, const py::object& progress = py::none()) {
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw py::type_error("progress must be a callable or None, not '" +
                          std::string(py::str(py::type::handle_of(progress).attr("__name__"))) + "'");
@@ -95,50 +153,59 @@ ContactCurves tabulate(const std::string& text, const std::string& source, const
   std::function<void(const generator::LawCurvesProgress&)> report;
   if (!progress.is_none()) report = std::ref(call);
   generator::LawCurvesResult result =
-      interruptible([&] { return generator::generate_law_curves(scene.laws.front(), source, report); });
+      interruptible([&] { return generator::generate_law_curves(law, source, report); });
   return ContactCurves(std::move(result.data));
+}
+
+// The keywords every law parameter has, for the docstring (the registry's)
+std::string law_keywords_doc() {
+  std::string doc;
+  for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p)
+    doc += std::string("    ") + p->key + ": " + p->meaning + " (" + laws_taking(p->id) + ")\n";
+  return doc;
 }
 
 }  // namespace
 
 void bind_law_curves(py::module_& m) {
-  m.def(
-      "law_curves",
-      [](const std::string& law, const py::kwargs& keys) {
-        // a key name is the scene's; its text is checked there (an unknown key is refused by name)
-        std::string text = "[[law]]\nlaw = " + toml_value("law", py::str(law)) + "\n";
-        py::object progress = py::none();
-        for (const auto& item : keys) {
-          const std::string key = py::str(item.first);
-          if (key == "progress") {  // not a scene key: the call's own
-            progress = py::reinterpret_borrow<py::object>(item.second);
-            continue;
-          }
-          for (char c : key)
-            if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'))
-              throw Error("law_curves: '" + quote_text(key) + "' is not a law scene's key");
-          text += key + " = " + toml_value(key, item.second) + "\n";
-        }
-        return tabulate(text, "asperity.law_curves", progress);
-      },
-      "law"_a,
+  static const std::string doc =
       "A contact law's rough-surface curves (pressure, stiffness, real area fraction against separation),\n"
       "tabulated now by the generator to max_rel_error with the error measured and stored, as tablegen does a\n"
       "law scene (docs/contact-laws.md section 8), served as an asperity.ContactCurves (write it with .write).\n"
-      "The keywords are a [[law]] scene's keys: contact_modulus, the law's material (hardness, yield_strength,\n"
-      "poisson, ...), distribution, shape, side, height_scale, summit_radius, summit_density, nominal_area,\n"
-      "separation=(smin, smax) (dimensionless, origin convention), max_rel_error (1e-10 .. 1e-2). Raises\n"
-      "asperity.Error naming the key for a missing, unknown or bad one, or where the curves cannot be\n"
-      "tabulated. It runs without the GIL; Ctrl-C stops it (KeyboardInterrupt). progress=callable: called at\n"
+      "law: " + contact_law_names() + ".\n"
+      "The keywords are a [[law]] scene's keys: contact_modulus, distribution, shape, side, height_scale,\n"
+      "summit_radius, summit_density, nominal_area, separation=(smin, smax) (dimensionless, origin convention),\n"
+      "max_rel_error (1e-10 .. 1e-2), name, and the law's parameters:\n" + law_keywords_doc() +
+      "Raises asperity.Error naming the keyword for a missing, unknown or bad one, or where the curves cannot\n"
+      "be tabulated. It runs without the GIL; Ctrl-C stops it (KeyboardInterrupt). progress=callable: called at\n"
       "most once a second with a dict (pass, nodes, checked, intervals, evaluations, elapsed [s]); its\n"
       "exception stops the tabulation. Example:\n"
       "    asperity.law_curves('kogut-etsion', contact_modulus=1.13e11, yield_strength=1e9, poisson=0.3,\n"
       "                        distribution='gaussian', height_scale=1e-6, summit_radius=1e-4,\n"
-      "                        summit_density=4e8, nominal_area=1e-4, separation=(0, 4), max_rel_error=1e-6)");
+      "                        summit_density=4e8, nominal_area=1e-4, separation=(0, 4), max_rel_error=1e-6)";
   m.def(
-      "tabulate_law_scene", [](const std::string& text) { return tabulate(text, "asperity.tabulate_law_scene"); },
-      "text"_a,
-      "The same from a law scene's TOML text (a scene file's contents: one [[law]], no [[curve]]).");
+      "law_curves",
+      [](const std::string& law, const py::kwargs& keys) {
+        py::object progress = py::none();
+        const SceneLawInputs in = law_inputs(law, keys, progress);
+        SceneLaw scene;
+        try {
+          scene = make_scene_law(in, LawNaming::keyword);
+        } catch (const SceneLawError& error) {
+          throw Error(std::string("asperity.law_curves: ") + error.what());
+        }
+        return tabulate(scene, "asperity.law_curves", progress);
+      },
+      "law"_a, doc.c_str());
+  m.def(
+      "tabulate_law_scene",
+      [](const std::string& text) {
+        const Scene scene = parse_scene(text, "asperity.tabulate_law_scene");
+        if (scene.laws.size() != 1 || !scene.curves.empty())
+          throw Error("asperity.tabulate_law_scene: a law scene needs exactly one [[law]] and no [[curve]]");
+        return tabulate(scene.laws.front(), "asperity.tabulate_law_scene");
+      },
+      "text"_a, "The same from a law scene's TOML text (a scene file's contents: one [[law]], no [[curve]]).");
 }
 
 }  // namespace asperity::python

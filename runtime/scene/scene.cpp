@@ -240,138 +240,62 @@ SceneCurve read_curve(const toml::value& table, double default_tolerance, std::s
   return curve;
 }
 
-// The summit heights of a [[curve]] or a [[law]]: distribution, shape, side
-void read_heights(const toml::value& table, const std::string& where, Distribution& distribution, Side& side,
-                  double& shape) {
-  const toml::value* given = entry_of(table, "distribution");
-  if (!given) fail_at(table, where + " has no 'distribution'", "here");
-  if (!parse_distribution(text(*given, "distribution"), distribution))
-    fail_at(*given, "distribution must be \"weibull\" or \"gaussian\"", "unknown distribution");
-  if (const toml::value* s = entry_of(table, "side"))
-    if (!parse_side(text(*s, "side"), side)) fail_at(*s, "side must be \"tail\" or \"bounded\"", "here");
-  if (distribution == Distribution::gaussian) {
-    if (const toml::value* s = entry_of(table, "shape")) fail_at(*s, "the Gaussian has no shape", "remove this key");
-    if (side == Side::bounded) fail_at(*entry_of(table, "side"), "the Gaussian has a tail side only", "here");
-    shape = 2.0;
-    return;
-  }
-  const toml::value* s = entry_of(table, "shape");
-  if (!s) fail_at(table, where + " has no 'shape'", "here");
-  shape = number(*s, "shape");
-  if (!(shape >= scene_shape_min && shape <= scene_shape_max)) {
-    std::ostringstream message;
-    message << "shape must be between " << scene_shape_min << " and " << scene_shape_max;
-    fail_at(*s, message.str(), "out of range");
-  }
-}
-
+// A [[law]]: its values read as TOML (types checked here, where they are), then every check of a
+// law scene by make_scene_law, its message pointed at the key it names.
 SceneLaw read_law(const toml::value& table, double default_tolerance) {
   const std::string where = "the law";
   if (!table.is_table()) fail_at(table, where + " is not a table", "here");
-  check_keys(table,
-             {"name", "law", "contact_modulus", "yield_strength", "hardness", "poisson", "pressure_factor",
-              "geometric_hardness", "work_of_adhesion", "maugis_parameter", "distribution", "shape", "side", "height_scale", "summit_radius", "summit_density",
-              "nominal_area", "separation", "max_rel_error"},
-             where);
-  SceneLaw out;
-  out.line = static_cast<int>(table.location().line());
-  out.max_rel_error = std::max(default_tolerance, scene_law_error_min);
-  auto required = [&](const std::string& key) -> const toml::value& {
+  std::set<std::string> keys;
+  for (const SceneLawKey& k : scene_law_keys) keys.insert(k.key);
+  for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p) keys.insert(p->key);
+  check_keys(table, keys, where);
+  SceneLawInputs in;
+  const auto optional_number = [&](const char* key) {
     const toml::value* value = entry_of(table, key);
-    if (!value) fail_at(table, where + " has no '" + key + "'", "this law");
-    return *value;
+    return value ? number(*value, key) : 0.0 / 0.0;
   };
-  auto positive = [&](const std::string& key) {
-    const toml::value& value = required(key);
-    const double x = number(value, key);
-    if (!(std::isfinite(x) && x > 0)) fail_at(value, "'" + key + "' must be positive and finite", "here");
-    return x;
-  };
-  if (const toml::value* name = entry_of(table, "name")) out.name = name_text(*name);
-  const toml::value& law_name = required("law");
-  ContactLawKind kind;
-  if (!contact_law_kind_of(text(law_name, "law").c_str(), kind)) {
-    std::string names;
-    for (ContactLawKind each : contact_law_kinds)
-      names += std::string(names.empty() ? "" : ", ") + "\"" + contact_law_name(each) + "\"";
-    fail_at(law_name, "law must be one of " + names, "unknown law");
+  if (const toml::value* name = entry_of(table, "name")) in.name = name_text(*name);
+  const toml::value* law_name = entry_of(table, "law");
+  if (!law_name) fail_at(table, where + " has no 'law'", "this law");
+  if (!contact_law_kind_of(text(*law_name, "law").c_str(), in.law))
+    fail_at(*law_name, "law must be one of " + contact_law_names(", ", true), "unknown law");
+  if (const toml::value* given = entry_of(table, "distribution")) {
+    if (!parse_distribution(text(*given, "distribution"), in.distribution))
+      fail_at(*given, "distribution must be \"weibull\" or \"gaussian\"", "unknown distribution");
+  } else {
+    fail_at(table, where + " has no 'distribution'", "here");
   }
-  read_heights(table, where, out.distribution, out.side, out.shape);
-  out.height_scale = positive("height_scale");
-  out.summit_radius = positive("summit_radius");
-  out.summit_density = positive("summit_density");
-  out.nominal_area = positive("nominal_area");
-  const double modulus = positive("contact_modulus");
-  // each law's material keys, and no other
-  const bool takes_hardness = kind == ContactLawKind::chang_etsion_bogy || kind == ContactLawKind::zhao_maietta_chang;
-  const bool takes_yield = kind == ContactLawKind::kogut_etsion || kind == ContactLawKind::jackson_green;
-  const bool takes_poisson = kind == ContactLawKind::chang_etsion_bogy || kind == ContactLawKind::kogut_etsion ||
-                             kind == ContactLawKind::jackson_green;
-  const std::string law_text = contact_law_name(kind);
-  auto refuse = [&](const char* key, bool taken) {
-    if (const toml::value* value = entry_of(table, key); value && !taken)
-      fail_at(*value, std::string("'") + key + "' does not apply to " + law_text, "remove this key");
-  };
-  refuse("hardness", takes_hardness);
-  refuse("yield_strength", takes_yield);
-  refuse("poisson", takes_poisson);
-  refuse("pressure_factor", kind == ContactLawKind::zhao_maietta_chang);
-  refuse("geometric_hardness", kind == ContactLawKind::jackson_green);
-  refuse("work_of_adhesion", is_adhesive(kind));
-  refuse("maugis_parameter", kind == ContactLawKind::maugis_dugdale);
-  const double r = out.summit_radius;
-  double poisson = 0;
-  if (takes_poisson) {
-    const toml::value& value = required("poisson");
-    poisson = number(value, "poisson");
-    if (!(poisson >= 0 && poisson <= 0.5)) fail_at(value, "'poisson' must be between 0 and 0.5", "here");
+  if (const toml::value* side = entry_of(table, "side")) {
+    if (!parse_side(text(*side, "side"), in.side)) fail_at(*side, "side must be \"tail\" or \"bounded\"", "here");
+    in.side_given = true;
   }
-  switch (kind) {
-    case ContactLawKind::hertz: out.law = hertz_law(r, modulus); break;
-    case ContactLawKind::chang_etsion_bogy:
-      out.law = chang_etsion_bogy_law(r, modulus, positive("hardness"), poisson);
-      break;
-    case ContactLawKind::zhao_maietta_chang: {
-      double factor = 0.6;
-      if (const toml::value* value = entry_of(table, "pressure_factor")) {
-        factor = number(*value, "pressure_factor");
-        if (!(factor > 0 && factor <= 1)) fail_at(*value, "'pressure_factor' must be in (0, 1]", "here");
-      }
-      out.law = zhao_maietta_chang_law(r, modulus, positive("hardness"), factor);
-      break;
+  in.shape = optional_number("shape");
+  const std::pair<const char*, double*> surface_numbers[] = {
+      {"height_scale", &in.height_scale},     {"summit_radius", &in.summit_radius}, {"summit_density", &in.summit_density},
+      {"nominal_area", &in.nominal_area},     {"contact_modulus", &in.contact_modulus}};
+  for (const auto& [key, value] : surface_numbers) *value = optional_number(key);
+  for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p) {
+    const toml::value* value = entry_of(table, p->key);
+    if (!value || !p->choices[0]) {
+      in.material.set(p->id, optional_number(p->key));
+      continue;
     }
-    case ContactLawKind::kogut_etsion: out.law = kogut_etsion_law(r, modulus, positive("yield_strength"), poisson); break;
-    case ContactLawKind::jackson_green: {
-      JacksonGreenHardness hardness = JacksonGreenHardness::cosine_2005;
-      if (const toml::value* value = entry_of(table, "geometric_hardness")) {
-        const std::string form = text(*value, "geometric_hardness");
-        if (form == "2006") hardness = JacksonGreenHardness::exponential_2006;
-        else if (form != "2005") fail_at(*value, "'geometric_hardness' is \"2005\" or \"2006\"", "here");
-      }
-      out.law = jackson_green_law(r, modulus, positive("yield_strength"), poisson, hardness);
-      break;
-    }
-    case ContactLawKind::dmt: out.law = dmt_law(r, modulus, positive("work_of_adhesion")); break;
-    case ContactLawKind::jkr: out.law = jkr_law(r, modulus, positive("work_of_adhesion")); break;
-    case ContactLawKind::maugis_dugdale:
-      out.law = maugis_dugdale_law(r, modulus, positive("work_of_adhesion"), positive("maugis_parameter"));
-      break;
+    double index;
+    if (!law_choice_index(p->id, text(*value, p->key), index))
+      fail_at(*value, std::string("'") + p->key + "' is " + law_choices_text(p->id, " or ", true), "here");
+    in.material.set(p->id, index);
   }
-  if (!std::isfinite(out.law.lowest_interference))
-    fail_at(law_name, "the law's parameters give no finite critical interference (not physical?)", "here");
-  const toml::value& separation = required("separation");
-  range(separation, "separation", out.range_min, out.range_max);
-  if (out.side == Side::bounded && !(out.range_max < 0))
-    fail_at(separation, "on the bounded side nothing touches at separation >= 0: the range must end below 0",
-            "impossible range");
-  if (std::fabs(out.range_min) > 1e3 || std::fabs(out.range_max) > 1e3)
-    fail_at(separation, "a law's separations are within [-1e3, 1e3] (dimensionless)", "too far");
-  if (const toml::value* own = entry_of(table, "max_rel_error")) {
-    out.max_rel_error = tolerance(*own);
-    if (out.max_rel_error < scene_law_error_min)
-      fail_at(*own, "a law's max_rel_error is at least 1e-10 (its values are quadratures to ~1e-13)", "too small");
+  if (const toml::value* separation = entry_of(table, "separation")) range(*separation, "separation", in.range_min, in.range_max);
+  if (const toml::value* own = entry_of(table, "max_rel_error")) in.max_rel_error = number(*own, "max_rel_error");
+  try {
+    SceneLaw out = make_scene_law(in, LawNaming::scene_key, default_tolerance);
+    out.line = static_cast<int>(table.location().line());
+    return out;
+  } catch (const SceneLawError& error) {
+    const toml::value* at = error.key.empty() ? nullptr : entry_of(table, error.key);
+    if (error.key == "law") at = law_name;
+    fail_at(at ? *at : table, error.what(), error.label);
   }
-  return out;
 }
 
 }  // namespace

@@ -1,0 +1,156 @@
+// Maugis 1992: the sphere's adhesion with a Dugdale zone, from DMT (lambda -> 0) to JKR
+// (lambda -> inf), in Johnson & Greenwood 1997's notation (docs/contact-laws.md section 5).
+#include <boost/math/tools/roots.hpp>
+
+#include "law_support.hpp"
+
+namespace asperity {
+namespace detail {
+namespace {
+
+// For contact radius A and Dugdale ratio m, t = sqrt(m^2 - 1):
+//   (lambda A^2 / 2) [t + (m^2-2) atan t] + (4 lambda^2 A / 3) [t atan t - m + 1] = 1
+//   Pbar = A^3 - lambda A^2 [t + m^2 atan t]
+//   D    = A^2 - (4/3) A lambda t
+// The first is a quadratic in A: alpha A^2 + beta A = 1.
+struct MdState {
+  double a, d, p;     // A, D, Pbar
+  double da, dd, dp;  // their derivatives in t
+};
+
+// t - atan t without cancellation for small t
+double t_minus_atan(double t) noexcept {
+  if (t >= 0.5) return t - std::atan(t);
+  const double t2 = t * t;
+  double term = t * t2, sum = 0;
+  for (int k = 1; k < 60; ++k) {
+    const double add = term / (2 * k + 1);
+    sum += (k % 2) ? add : -add;
+    if (add < 1e-18 * sum) break;
+    term *= t2;
+  }
+  return sum;
+}
+
+MdState md_state(double lambda, double t) noexcept {
+  const double at = std::atan(t), t2 = t * t, s = std::sqrt(1 + t2);
+  const double f1 = t2 * at + t_minus_atan(t);              // t + (t^2 - 1) atan t
+  const double f2 = t * at - t2 / (1 + s);                  // t atan t - sqrt(1+t^2) + 1
+  const double f1p = 2 * t * (at + t / (1 + t2));           // d f1/dt
+  const double f2p = at + t / (1 + t2) - t / s;             // d f2/dt
+  const double g = t + (1 + t2) * at, gp = 2 + 2 * t * at;  // t + m^2 atan t and its derivative
+  const double alpha = 0.5 * lambda * f1, beta = (4.0 / 3.0) * lambda * lambda * f2;
+  const double alphap = 0.5 * lambda * f1p, betap = (4.0 / 3.0) * lambda * lambda * f2p;
+  MdState st;
+  st.a = 2 / (beta + std::sqrt(beta * beta + 4 * alpha));
+  st.da = -(alphap * st.a * st.a + betap * st.a) / (2 * alpha * st.a + beta);
+  st.d = st.a * st.a - (4.0 / 3.0) * st.a * lambda * t;
+  st.dd = 2 * st.a * st.da - (4.0 / 3.0) * lambda * (st.da * t + st.a);
+  st.p = st.a * st.a * st.a - lambda * st.a * st.a * g;
+  st.dp = 3 * st.a * st.a * st.da - lambda * (2 * st.a * st.da * g + st.a * st.a * gp);
+  return st;
+}
+
+constexpr double md_t_min = 1e-30, md_t_max = 1e12;
+
+// The first t where dD/dt turns non-negative (the end of the fixed-grips stable branch), or inf.
+double md_turning_point(double lambda) noexcept {
+  double previous = md_t_min * 1e20;  // 1e-10
+  for (int i = 1; i <= 16 * 40; ++i) {
+    // up to t = 1e6: beyond, D is within rounding of its limit (a turning point found there is
+    // rounding, and one that is real changes the lowest interference by less than 1e-6)
+    const double t = 1e-10 * std::pow(10.0, i / 40.0);
+    if (t > 1e6) break;
+    if (md_state(lambda, t).dd > 0) {
+      try {
+        boost::uintmax_t iterations = 200;
+        const auto bracket = boost::math::tools::toms748_solve(
+            [&](double u) { return md_state(lambda, u).dd; }, previous, t,
+            boost::math::tools::eps_tolerance<double>(50), iterations);
+        return 0.5 * (bracket.first + bracket.second);
+      } catch (...) {
+        return nan;
+      }
+    }
+    previous = t;
+  }
+  return inf;
+}
+
+// t on the stable branch where D(t) = d, or NaN.
+double md_parameter_at(double lambda, double turning, double d) noexcept {
+  const double t_high = std::isfinite(turning) ? turning : md_t_max;
+  if (md_state(lambda, t_high).d >= d) return t_high;  // at (or, by rounding, below) the lowest interference
+  double t_low = std::fmin(1e-3, t_high / 2);
+  for (int i = 0; md_state(lambda, t_low).d <= d; ++i) {
+    if (i > 40) return nan;
+    t_low /= 10;
+  }
+  try {
+    boost::uintmax_t iterations = 300;
+    // in ln t: D spans decades in t
+    const auto bracket = boost::math::tools::toms748_solve(
+        [&](double u) { return md_state(lambda, std::exp(u)).d - d; }, std::log(t_low), std::log(t_high),
+        boost::math::tools::eps_tolerance<double>(52), iterations);
+    return std::exp(0.5 * (bracket.first + bracket.second));
+  } catch (...) {
+    return nan;
+  }
+}
+
+ContactLaw make(double radius, double modulus, const LawValues& v) noexcept {
+  return maugis_dugdale_law(radius, modulus, v[LawParameter::work_of_adhesion], v[LawParameter::maugis_parameter]);
+}
+
+AsperityResponse response(const ContactLaw& law, double w) noexcept {
+  const double t = md_parameter_at(law.maugis_parameter, law.md_turning, w / law.critical_interference);
+  if (std::isnan(t)) return {nan, nan, nan};
+  const MdState st = md_state(law.maugis_parameter, t);
+  return adhesive_response(law, st.a, st.p, st.dp / st.dd);
+}
+
+AsperityLoadSplit load_split(const ContactLaw& law, double w, const AsperityResponse&) noexcept {
+  const double t = md_parameter_at(law.maugis_parameter, law.md_turning, w / law.critical_interference);
+  if (std::isnan(t)) return {nan, nan, nan, nan};
+  const MdState st = md_state(law.maugis_parameter, t);
+  const double pc = law.critical_load, kc = law.critical_load / law.critical_interference;
+  const double compressive = st.a * st.a * st.a, dcompressive = 3 * st.a * st.a * st.da / st.dd;
+  return {pc * compressive, pc * (compressive - st.p), kc * dcompressive, kc * (dcompressive - st.dp / st.dd)};
+}
+
+constexpr LawParameterUse parameters[] = {{LawParameter::work_of_adhesion, true, 0},
+                                          {LawParameter::maugis_parameter, true, 0}};
+
+}  // namespace
+
+const ContactLawDescriptor maugis_dugdale_law_descriptor = {
+    ContactLawKind::maugis_dugdale, "maugis-dugdale", "Maugis-Dugdale 1992",
+    "adhesive elastic spheres with a Dugdale zone, DMT (lambda -> 0) to JKR (lambda -> infinity)",
+    LawFamily::adhesive, parameters, 2, make, response, load_split, 0, {0, 0, 0, 0}, false};
+
+}  // namespace detail
+
+// lambda = 2 sigma_0 (R / (pi dgamma K^2))^(1/3), K = (4/3) E*.
+ContactLaw maugis_dugdale_law(double radius, double modulus, double work_of_adhesion, double maugis_parameter) noexcept {
+  const auto kind = ContactLawKind::maugis_dugdale;
+  if (!detail::positive(radius) || !detail::positive(modulus) || !detail::positive(work_of_adhesion) ||
+      !detail::positive(maugis_parameter))
+    return detail::bad_law(kind);
+  ContactLaw law = detail::law_with(kind, radius, modulus);
+  law.work_of_adhesion = work_of_adhesion;
+  law.maugis_parameter = maugis_parameter;
+  detail::set_adhesive_scales(law);
+  law.md_turning = detail::md_turning_point(maugis_parameter);
+  if (std::isnan(law.md_turning)) return detail::bad_law(kind);
+  const double t_end = std::isfinite(law.md_turning) ? law.md_turning : detail::md_t_max;
+  law.lowest_interference = detail::md_state(maugis_parameter, t_end).d * law.critical_interference;
+  return law;
+}
+
+MaugisDugdalePoint maugis_dugdale_point(double maugis_parameter, double t) noexcept {
+  if (!detail::positive(maugis_parameter) || !detail::positive(t)) return {detail::nan, detail::nan, detail::nan, detail::nan};
+  const detail::MdState st = detail::md_state(maugis_parameter, t);
+  return {t, st.a, st.d, st.p};
+}
+
+}  // namespace asperity
