@@ -17,6 +17,7 @@ set(ASPERITY_RUNTIME_HEADERS
   inverse.hpp contact_model.hpp persson.hpp
   separation_datum.hpp   # where separations are measured from (origin, mean summit, mean plane)
   plausibility.hpp       # units caught: implausible surface parameters
+  record_fields.hpp      # a result record defined once: its fields, struct, CSV columns (the writers made from it)
   physical_state_fields.hpp  # the physical state's fields, once (C, Fortran, Python, CSV made or checked from it)
   law_combination.hpp    # how a law's rough-surface quantities combine the tabulated orders (Hertz's numbers)
   contact_law.hpp        # single-asperity contact laws (Hertz, CEB, ZMC, KE, JG, DMT, JKR, MD)

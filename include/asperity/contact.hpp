@@ -7,6 +7,7 @@
 
 #include "asperity/contact_scales.hpp"
 #include "asperity/curve.hpp"
+#include "asperity/record_fields.hpp"
 
 namespace asperity {
 
@@ -23,15 +24,21 @@ struct SurfaceScales {
 // The former name, kept for existing code (deprecated: to be removed; use SurfaceScales).
 using Surface = SurfaceScales;
 
+// contact_at's answer, in the units of the SurfaceScales given; its fields, defined once (a
+// record's list, record_fields.hpp): the C API's asperity_contact_state, the Fortran type and
+// Python's ContactState are checked against it (test_physical_state_fields). stiffness_ratio is
+// taken from the logs: finite where the values underflow, NaN where there is no contact (X_3/2 = 0).
+#define ASPERITY_CONTACT_STATE_FIELDS(X)                                                    \
+  X(double, count, "count", "N X_0")                                                        \
+  X(double, area, "area", "pi N R sigma_s X_1")                                             \
+  X(double, load, "load", "(4/3) N E* R^1/2 sigma_s^3/2 X_3/2")                             \
+  X(double, stiffness, "stiffness", "2 N E* R^1/2 sigma_s^1/2 X_1/2 (= -dP/d(separation))") \
+  X(double, stiffness_ratio, "stiffness_ratio", "-(dP/ds)/P = (3/2) X_1/2 / X_3/2, in separation units")
+
 struct ContactState {
-  double count;            // N X_0
-  double area;             // pi N R sigma_s X_1
-  double load;             // (4/3) N E* R^1/2 sigma_s^3/2 X_3/2
-  double stiffness;        // 2 N E* R^1/2 sigma_s^1/2 X_1/2  (= -dP/d(separation))
-  double stiffness_ratio;  // -(dP/ds)/P = (3/2) X_1/2 / X_3/2, in separation units (from the
-                           // logs: finite where the values underflow; NaN where there is no
-                           // contact, X_3/2 = 0)
+  ASPERITY_CONTACT_STATE_FIELDS(ASPERITY_RECORD_MEMBER)
 };
+ASPERITY_DEFINE_RECORD(ContactState, ASPERITY_CONTACT_STATE_FIELDS)
 
 // The factors of docs/model.md section 3, quantity = factor * X_n (ContactScales: contact_scales.hpp)
 ContactScales contact_scales(const SurfaceScales& surface) noexcept;

@@ -33,15 +33,23 @@
 #include <string>
 
 #include "asperity/contact_curves_data.hpp"
+#include "asperity/record_fields.hpp"
 
 namespace asperity {
 
+// Contact curves at one separation; its fields, defined once (a record's list, record_fields.hpp):
+// the C API's asperity_contact_curves_state, the Fortran type and `asperity contact`'s CSV columns
+// are made from or checked against it.
+#define ASPERITY_CONTACT_CURVES_STATE_FIELDS(X)                                                             \
+  X(double, separation, "separation_m", "[m], from the table's datum (ContactCurvesData::separation_datum)") \
+  X(double, pressure, "nominal_pressure_Pa", "[Pa], mean nominal pressure")                                 \
+  X(double, stiffness, "stiffness_per_area_Pa_per_m", "-dp/d(separation) [Pa/m]")                           \
+  X(double, area_fraction, "area_fraction", "real contact area / nominal area")
+
 struct ContactCurvesState {
-  double separation = 0;     // m, from the table's datum (ContactCurvesData::separation_datum)
-  double pressure = 0;       // Pa, mean nominal pressure
-  double stiffness = 0;      // Pa/m, -dp/d(separation)
-  double area_fraction = 0;  // real contact area / nominal area
+  ASPERITY_CONTACT_CURVES_STATE_FIELDS(ASPERITY_RECORD_MEMBER_ZERO)
 };
+ASPERITY_DEFINE_RECORD(ContactCurvesState, ASPERITY_CONTACT_CURVES_STATE_FIELDS)
 
 class ContactCurves {
  public:

@@ -27,12 +27,11 @@ namespace asperity {
 // separation, mean_separation, count, real_area, area_fraction, load, pressure, stiffness,
 // stiffness_over_load: doubles, their meanings and units in physical_state_fields.hpp
 struct PhysicalState {
-#define ASPERITY_PHYSICAL_STATE_MEMBER(name, column, meaning) double name;
-  ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_PHYSICAL_STATE_MEMBER)
-#undef ASPERITY_PHYSICAL_STATE_MEMBER
+  ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_RECORD_MEMBER)
 };
+ASPERITY_DEFINE_RECORD(PhysicalState, ASPERITY_PHYSICAL_STATE_FIELDS)
 // The members in physical_state_fields' order (the writers and bindings iterate over them)
-#define ASPERITY_PHYSICAL_STATE_POINTER(name, column, meaning) &PhysicalState::name,
+#define ASPERITY_PHYSICAL_STATE_POINTER(type, name, column, meaning) &PhysicalState::name,
 inline constexpr double PhysicalState::*const physical_state_members[] = {
     ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_PHYSICAL_STATE_POINTER)};
 #undef ASPERITY_PHYSICAL_STATE_POINTER

@@ -369,16 +369,16 @@ class ContactStep:
     approach: float
     area_fraction: float
     real_area: float
+    contact_points: int
+    clusters: int
     stiffness: float
     stiffness_per_area: float
     approach_stiffness: float
     max_pressure: float
-    contact_points: int
-    clusters: int
     iterations: int
+    coarse_iterations: int
     solves: int
     residual: float
-    coarse_iterations: int
     stiffness_iterations: int
     stiffness_residual: float
 

@@ -332,19 +332,35 @@ void asperity_model_close(asperity_model* model) { delete model; }
 
 // asperity.h's asperity_physical_state is PhysicalState field for field: its names and order
 // checked here against the one list (physical_state_fields.hpp)
-#define ASPERITY_SAME_FIELD(name, column, meaning)                                            \
+#define ASPERITY_SAME_FIELD(type, name, column, meaning)                                          \
   static_assert(offsetof(asperity_physical_state, name) == offsetof(asperity::PhysicalState, name), \
                 "asperity.h's asperity_physical_state." #name " is out of place");
 ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_SAME_FIELD)
 #undef ASPERITY_SAME_FIELD
 static_assert(sizeof(asperity_physical_state) == sizeof(asperity::PhysicalState),
               "asperity.h's asperity_physical_state has fields PhysicalState lacks");
+// the same for asperity_contact_state (ContactState, contact.hpp) and
+// asperity_contact_curves_state (ContactCurvesState, contact_curves.hpp)
+#define ASPERITY_SAME_FIELD(type, name, column, meaning)                                            \
+  static_assert(offsetof(asperity_contact_state, name) == offsetof(asperity::ContactState, name), \
+                "asperity.h's asperity_contact_state." #name " is out of place");
+ASPERITY_CONTACT_STATE_FIELDS(ASPERITY_SAME_FIELD)
+#undef ASPERITY_SAME_FIELD
+static_assert(sizeof(asperity_contact_state) == sizeof(asperity::ContactState),
+              "asperity.h's asperity_contact_state has fields ContactState lacks");
+#define ASPERITY_SAME_FIELD(type, name, column, meaning)                                                          \
+  static_assert(offsetof(asperity_contact_curves_state, name) == offsetof(asperity::ContactCurvesState, name), \
+                "asperity.h's asperity_contact_curves_state." #name " is out of place");
+ASPERITY_CONTACT_CURVES_STATE_FIELDS(ASPERITY_SAME_FIELD)
+#undef ASPERITY_SAME_FIELD
+static_assert(sizeof(asperity_contact_curves_state) == sizeof(asperity::ContactCurvesState),
+              "asperity.h's asperity_contact_curves_state has fields ContactCurvesState lacks");
 
 static int physical_query(const asperity_model* model, double input, asperity_physical_state* out,
                           asperity::PhysicalState (asperity::ContactModel::*query)(double) const noexcept) {
   if (!model || !out) return ASPERITY_BAD_HANDLE;
   const asperity::PhysicalState state = (model->model.*query)(input);
-#define ASPERITY_COPY_FIELD(name, column, meaning) out->name = state.name;
+#define ASPERITY_COPY_FIELD(type, name, column, meaning) out->name = state.name;
   ASPERITY_PHYSICAL_STATE_FIELDS(ASPERITY_COPY_FIELD)
 #undef ASPERITY_COPY_FIELD
   if (std::isnan(input)) return ASPERITY_BAD_SEPARATION;
@@ -408,7 +424,9 @@ int asperity_contact(const asperity_curve* curve, double summit_count, double su
   asperity::ContactState state;
   const bool ok = asperity::contact_at(curve->curve, {summit_count, summit_radius, height_scale, contact_modulus},
                                        sep, state);
-  *out = {state.count, state.area, state.load, state.stiffness, state.stiffness_ratio};
+#define ASPERITY_COPY_FIELD(type, name, column, meaning) out->name = state.name;
+  ASPERITY_CONTACT_STATE_FIELDS(ASPERITY_COPY_FIELD)
+#undef ASPERITY_COPY_FIELD
   if (ok) return ASPERITY_OK;
   if (!std::isfinite(sep)) return ASPERITY_BAD_SEPARATION;
   return curve->curve.serves(sep) ? ASPERITY_BAD_PARAMETER : ASPERITY_OUTSIDE_RANGE;
@@ -528,7 +546,9 @@ double asperity_contact_curves_pull_off_separation(const asperity_contact_curves
 
 namespace {
 int curves_state(const asperity::ContactCurvesState& state, double input, asperity_contact_curves_state* out) {
-  *out = {state.separation, state.pressure, state.stiffness, state.area_fraction};
+#define ASPERITY_COPY_FIELD(type, name, column, meaning) out->name = state.name;
+  ASPERITY_CONTACT_CURVES_STATE_FIELDS(ASPERITY_COPY_FIELD)
+#undef ASPERITY_COPY_FIELD
   if (std::isnan(input)) return ASPERITY_BAD_SEPARATION;
   return std::isnan(state.pressure) || std::isnan(state.separation) ? ASPERITY_OUTSIDE_RANGE : ASPERITY_OK;
 }

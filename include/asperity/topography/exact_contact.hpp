@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/record_fields.hpp"
 #include "asperity/topography/height_map.hpp"
 
 namespace asperity::topography {
@@ -129,28 +130,33 @@ inline constexpr const char* max_memory_help =
     "its unit, 1M 500MB 2G (powers of 1000) or 512MiB 4GiB (powers of 1024) (default: the memory available now, "
     "MemAvailable in /proc/meminfo, less under a ulimit -v or -d or a cgroup memory.max)";
 
-// One load step. Pressures are nominal: load over the map's area nx dx ny dy.
+// One load step. Pressures are nominal: load over the map's area nx dx ny dy. Its fields, defined
+// once (a record's list, record_fields.hpp), in the order of exact-contact's CSV columns and JSON
+// (exact_contact_report.hpp writes both from it); coarse_iterations is not written.
+#define ASPERITY_CONTACT_STEP_FIELDS(X)                                                                        \
+  X(double, pressure, "pressure_Pa", "mean nominal pressure [Pa]")                                             \
+  X(double, load, "load_N", "[N] on the map's area")                                                           \
+  X(double, mean_gap, "mean_gap_m", "separation of the flat from the mean plane [m]")                          \
+  X(double, separation_from_mean_summit, "separation_from_mean_summit_m", "mean_gap less the mean summit height [m]") \
+  X(double, approach, "approach_m", "the flat's position above the mean plane, rigid-body [m]")                \
+  X(double, area_fraction, "area_fraction", "contact points / map points")                                     \
+  X(double, real_area, "real_area_m2", "[m^2]")                                                                \
+  X(std::size_t, contact_points, "contact_points", "map points in contact")                                    \
+  X(std::size_t, clusters, "clusters", "connected contact patches (4-neighbour; wrapped when periodic)")       \
+  X(double, stiffness, "stiffness_N_per_m", "-dP/d(mean gap) [N/m], 0 without contact")                        \
+  X(double, stiffness_per_area, "stiffness_per_area_N_per_m3", "-dp/d(mean gap) [N/m^3]")                      \
+  X(double, approach_stiffness, "approach_stiffness_N_per_m",                                                  \
+    "-dP/d(approach) [N/m] (equal to stiffness when periodic, without missing points); +inf for both in full contact") \
+  X(double, max_pressure, "max_pressure_Pa", "[Pa]")                                                           \
+  X(int, iterations, "iterations", "constrained CG iterations (all solves of a gap-driven step)")              \
+  X(int, coarse_iterations, nullptr, "those of the coarse start, all coarser levels summed")                   \
+  X(int, solves, "solves", "constrained solves (1 when driven by pressure)")                                   \
+  X(double, residual, "residual", "reached (<= tolerance)")                                                    \
+  X(int, stiffness_iterations, "stiffness_iterations", "CG iterations of the incremental problem")             \
+  X(double, stiffness_residual, "stiffness_residual", "its relative residual")
+
 struct ContactStep {
-  double pressure = 0;                    // mean nominal pressure [Pa]
-  double load = 0;                        // [N] on the map's area
-  double mean_gap = 0;                    // separation of the flat from the mean plane [m]
-  double separation_from_mean_summit = 0; // mean_gap less the mean summit height [m]
-  double approach = 0;                    // the flat's position above the mean plane, rigid-body [m]
-  double area_fraction = 0;               // contact points / map points
-  double real_area = 0;                   // [m^2]
-  double stiffness = 0;                   // -dP/d(mean gap) [N/m], 0 without contact
-  double stiffness_per_area = 0;          // -dp/d(mean gap) [N/m^3]
-  double approach_stiffness = 0;          // -dP/d(approach) [N/m] (equal to stiffness when periodic,
-                                          // without missing points); +inf for both in full contact
-  double max_pressure = 0;                // [Pa]
-  std::size_t contact_points = 0;
-  std::size_t clusters = 0;               // connected contact patches (4-neighbour; wrapped when periodic)
-  int iterations = 0;                     // constrained CG iterations (all solves of a gap-driven step)
-  int coarse_iterations = 0;              // those of the coarse start, all coarser levels summed
-  int solves = 0;                         // constrained solves (1 when driven by pressure)
-  double residual = 0;                    // reached (<= tolerance)
-  int stiffness_iterations = 0;           // CG iterations of the incremental problem
-  double stiffness_residual = 0;          // its relative residual
+  ASPERITY_CONTACT_STEP_FIELDS(ASPERITY_RECORD_MEMBER_ZERO)
 };
 
 // The pressures a solver answers (ExactContact::pressure_range), found before any iteration.
@@ -267,3 +273,7 @@ class ExactContact {
 std::size_t count_clusters(const std::vector<unsigned char>& contact, std::size_t nx, std::size_t ny, bool periodic);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::ContactStep, ASPERITY_CONTACT_STEP_FIELDS)
+}  // namespace asperity

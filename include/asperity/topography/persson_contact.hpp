@@ -35,6 +35,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "asperity/record_fields.hpp"
 #include "asperity/topography/height_map.hpp"
 
 namespace asperity::topography {
@@ -64,11 +65,16 @@ struct RadialPowerSpectrum {
 // equal.
 RadialPowerSpectrum radial_power_spectrum(const HeightMap& map, SpectrumEdges edges);
 
+// Persson's theory at one nominal pressure; its fields, defined once (a record's list,
+// record_fields.hpp)
+#define ASPERITY_PERSSON_STATE_FIELDS(X)                                       \
+  X(double, pressure, "pressure_Pa", "nominal [Pa]")                           \
+  X(double, mean_gap, "mean_gap_m", "from the mean plane [m]")                 \
+  X(double, area_fraction, "area_fraction", "A / A0")                          \
+  X(double, stiffness_per_area, "stiffness_per_area_N_per_m3", "-dp/du [N/m^3]")
+
 struct PerssonState {
-  double pressure = 0;            // nominal [Pa]
-  double mean_gap = 0;            // from the mean plane [m]
-  double area_fraction = 0;       // A / A0
-  double stiffness_per_area = 0;  // -dp/du [N/m^3]
+  ASPERITY_PERSSON_STATE_FIELDS(ASPERITY_RECORD_MEMBER_ZERO)
 };
 
 class PerssonContact {
@@ -95,3 +101,7 @@ class PerssonContact {
 double persson_gap_kernel(double x, double gamma) noexcept;
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::PerssonState, ASPERITY_PERSSON_STATE_FIELDS)
+}  // namespace asperity
