@@ -201,17 +201,16 @@ void check_answered(const ContactModel& model, const std::string& option, const 
               " (a scene table serves its scene's range: a full table, such as the default, serves every one)");
 }
 
+// The CSVs' numbers: ten significant digits
+std::string ten_digits(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
 // the CSV's columns: the physical state's fields (physical_state_fields.hpp), in their order
-void print_header() {
-  for (std::size_t k = 0; k < physical_state_field_count; ++k)
-    std::printf("%s%s", k ? "," : "", physical_state_fields[k].column);
-  std::printf("\n");
-}
-void print(const PhysicalState& state) {
-  for (std::size_t k = 0; k < physical_state_field_count; ++k)
-    std::printf(k ? ",%.10g" : "%.10g", state.*physical_state_members[k]);
-  std::printf("\n");
-}
+void print_header() { std::printf("%s\n", csv_header<PhysicalState>().c_str()); }
+void print(const PhysicalState& state) { std::printf("%s\n", csv_row(state, ten_digits).c_str()); }
 
 void warn_past_gw(const CLI::App& command, double area_fraction) {
   if (!(area_fraction > gw_area_fraction_limit)) return;
@@ -426,15 +425,12 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
       options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size))
     usage("--pressure-range, --units, --export-tolerance, --max-points, --overclosure-datum and --face-size go "
           "with --export");
-  // a law's table counts the summits in contact (a measured surface's has no such column)
-  const bool counted = !data.summit_count.empty();
-  std::printf("separation_m,separation_from_mean_summit_m,nominal_pressure_Pa,stiffness_per_area_Pa_per_m,"
-              "area_fraction%s\n", counted ? ",summits_in_contact_per_m2" : "");
+  // the columns of ContactCurvesRow (contact_curves.hpp); a law's table counts the summits in
+  // contact (a measured surface's has no such column: the last left out)
+  const std::size_t columns = RecordFields<ContactCurvesRow>::count - (curves.counts_summits() ? 0 : 1);
+  std::printf("%s\n", csv_header<ContactCurvesRow>(columns).c_str());
   const auto row = [&](const ContactCurvesState& state) {
-    std::printf("%.10g,%.10g,%.10g,%.10g,%.10g", state.separation, state.separation - data.mean_summit_height,
-                state.pressure, state.stiffness, state.area_fraction);
-    if (counted) std::printf(",%.10g", curves.summit_count(state.separation));
-    std::printf("\n");
+    std::printf("%s\n", csv_row(curves.row(state), ten_digits, columns).c_str());
   };
   const auto at = [&](const std::string& kind, double value) {
     if (kind == "separation") return curves.at_separation(value);

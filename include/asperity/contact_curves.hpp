@@ -51,6 +51,22 @@ struct ContactCurvesState {
 };
 ASPERITY_DEFINE_RECORD(ContactCurvesState, ASPERITY_CONTACT_CURVES_STATE_FIELDS)
 
+// A row of `asperity contact`'s CSV of contact curves (ContactCurves::row): the state with the
+// separation from the mean summit height too and, for a law's curves, the summits in contact
+// (a measured surface's table has no such column: the writer leaves the last out)
+#define ASPERITY_CONTACT_CURVES_ROW_FIELDS(X)                                                                   \
+  X(double, separation, "separation_m", "[m], from the table's datum (ContactCurvesData::separation_datum)")     \
+  X(double, separation_from_mean_summit, "separation_from_mean_summit_m", "[m], from the mean summit height")   \
+  X(double, pressure, "nominal_pressure_Pa", "[Pa], mean nominal pressure")                                     \
+  X(double, stiffness, "stiffness_per_area_Pa_per_m", "-dp/d(separation) [Pa/m]")                               \
+  X(double, area_fraction, "area_fraction", "real contact area / nominal area")                                 \
+  X(double, summits_in_contact, "summits_in_contact_per_m2", "summits in contact per m^2 of nominal area (NaN: not stored)")
+
+struct ContactCurvesRow {
+  ASPERITY_CONTACT_CURVES_ROW_FIELDS(ASPERITY_RECORD_MEMBER_ZERO)
+};
+ASPERITY_DEFINE_RECORD(ContactCurvesRow, ASPERITY_CONTACT_CURVES_ROW_FIELDS)
+
 class ContactCurves {
  public:
   // Validates the data (ContactCurvesData::validate) and builds the interpolants; throws Error.
@@ -96,6 +112,11 @@ class ContactCurves {
   // computed from the two, which straddle 0 Pa, rounds there) as that end's separation.
   double separation_at_pressure(double pressure) const noexcept;
   ContactCurvesState at_pressure(double pressure) const noexcept;
+  // The CSV row of a state these curves answered: its separation from the mean summit height
+  // (ContactCurvesData::mean_summit_height) and the summits in contact (NaN where not stored)
+  ContactCurvesRow row(const ContactCurvesState& state) const noexcept;
+  // Whether the table stores the summits in contact (a law's curves): the CSV's last column
+  bool counts_summits() const noexcept;
 
   struct Impl;
 

@@ -30,23 +30,27 @@ struct RecordField {
 template <class Record>
 struct RecordFields;
 
-// The CSV columns of a record's written fields, comma-separated (no newline)
+// The CSV columns of a record's written fields (those with a column), comma-separated, no newline;
+// the first `fields` written ones only where a writer leaves out trailing ones (a column a table may
+// not have)
 template <class Record>
-std::string csv_header() {
+std::string csv_header(std::size_t fields = RecordFields<Record>::count) {
   std::string header;
+  std::size_t k = 0;
   for (const RecordField& field : RecordFields<Record>::fields)
-    if (field.column) header += (header.empty() ? "" : ",") + std::string(field.column);
+    if (field.column && k++ < fields) header += (header.empty() ? "" : ",") + std::string(field.column);
   return header;
 }
 
-// One CSV row (no newline): reals through format_real (default: the shortest text that reads
-// back, format_double), integers in decimal
+// One CSV row (no newline) of the same columns: reals through format_real (default: the shortest
+// text that reads back, format_double), integers in decimal
 template <class Record, class FormatReal>
-std::string csv_row(const Record& record, FormatReal format_real) {
+std::string csv_row(const Record& record, FormatReal format_real, std::size_t fields = RecordFields<Record>::count) {
   std::string row;
+  std::size_t k = 0;
   bool first = true;
   RecordFields<Record>::for_each(record, [&](const RecordField& field, const auto& value) {
-    if (!field.column) return;
+    if (!field.column || k++ >= fields) return;
     if (!first) row += ",";
     first = false;
     if constexpr (std::is_floating_point_v<std::decay_t<decltype(value)>>) row += format_real(value);

@@ -374,6 +374,13 @@ double ContactCurves::summit_count(double separation) const noexcept {
   return values[Output::count];
 }
 
+ContactCurvesRow ContactCurves::row(const ContactCurvesState& state) const noexcept {
+  return {state.separation, state.separation - data().mean_summit_height, state.pressure, state.stiffness,
+          state.area_fraction, summit_count(state.separation)};
+}
+
+bool ContactCurves::counts_summits() const noexcept { return impl_->count; }
+
 ContactCurvesState ContactCurves::at_separation(double separation) const noexcept {
   const Impl& impl = *impl_;
   if (!impl.served(separation)) return {separation, nan, nan, nan};
