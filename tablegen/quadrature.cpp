@@ -127,7 +127,8 @@ void require_finite(double value, const char* what) {
   message << "quadrature failed: " << what << " of order " << order << " of the " << to_string(curve.distribution);
   if (curve.distribution == Distribution::weibull) message << " shape " << curve.shape;
   message << " " << to_string(curve.side) << " curve at separation s = " << separation << " (" << cause
-          << "); the generator integrates Weibull shapes 0.3 to 50 and the Gaussian at |s| up to 1e6";
+          << "); the generator integrates Weibull shapes " << weibull_shape_min << " to " << weibull_shape_max
+          << " and the Gaussian at |s| up to 1e6";
   throw Error(message.str());
 }
 

@@ -7,7 +7,9 @@
 #include <random>
 
 #include "asperity/error.hpp"
+#include "asperity/integrals.hpp"
 #include "asperity/interrupt.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/topography/summit_contact.hpp"
 #include "asperity/topography/surface_tests.hpp"
 
@@ -289,8 +291,9 @@ SurfaceVerdict surface_verdict(const SurfaceAnalysis& a) {
     else if (a.contact) {
       const ModelContact* curves = a.contact->find(to_string(model));
       if (!curves || !curves->served) why = "it has no contact curves";
-    } else if (model != HeightModel::gaussian && !(m.fit.distribution.shape >= 0.3 && m.fit.distribution.shape <= 50)) {
-      why = "its shape is outside what the tables serve (0.3 to 50)";
+    } else if (model != HeightModel::gaussian && !(m.fit.distribution.shape >= weibull_shape_min && m.fit.distribution.shape <= weibull_shape_max)) {
+      why = "its shape is outside what the tables serve (" + format_double(weibull_shape_min) + " to " +
+            format_double(weibull_shape_max) + ")";
     }
     if (!why.empty()) {
       reasons += std::string(reasons.empty() ? "" : "; ") + describe(model) + ": " + why;

@@ -362,9 +362,9 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
         model.note = options.table_path.empty() ? "default table" : "table " + options.table_path;
         if (height_model != HeightModel::gaussian) model.note += " (shape interpolated between grid shapes)";
       } else {
-        if (!(fit.shape >= scene_shape_min && fit.shape <= scene_shape_max))
+        if (!(fit.shape >= weibull_shape_min && fit.shape <= weibull_shape_max))
           throw Error("the fitted shape " + shape_text(fit.shape) + " is outside the shapes scene tables serve (" +
-                      shape_text(scene_shape_min) + " to " + shape_text(scene_shape_max) + ")");
+                      shape_text(weibull_shape_min) + " to " + shape_text(weibull_shape_max) + ")");
         // an exact-shape scene table over the loads the curves visit (X_3/2, dimensionless)
         // P/A0 per unit X_3/2: the load factor per unit nominal area (contact_scales.hpp)
         const double load_unit = detail::contact_scales_of(summits.density, summits.radius, fit.scale, e_star).load;

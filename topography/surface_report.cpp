@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "asperity/error.hpp"
+#include "asperity/integrals.hpp"
+#include "asperity/number_text.hpp"
 #include "reader_support.hpp"
 #include "svg_plot.hpp"
 
@@ -418,8 +420,9 @@ std::string analysis_json(const SurfaceAnalysis& a) {
                     {"nominal_area_m2", c.nominal_area},
                     {"pressures_Pa", c.pressures},
                     {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
-                    {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes 0.3-50) or, "
-                               "with a given table, that table (the default serves 0.5-20)"},
+                    {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes " +
+                                   format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) +
+                                   ") or, with a given table, that table (the default serves 0.5-20)"},
                     {"models", models},
                     {"measured_summits_spread",
                      {{"meaning", "relative standard deviation of the measured-summit stiffness, and the standard "

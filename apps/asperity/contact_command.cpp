@@ -71,7 +71,9 @@ RoughSurface surface_from(const Options& options, std::string& given_scale) {
   if (!options.side.empty() && !parse_side(options.side, surface.side))
     usage("--side: '" + quote_text(options.side) + "' is not tail or bounded");
   const bool weibull = surface.distribution == Distribution::weibull;
-  if (weibull && !given(options.shape)) usage("--shape A is required for a Weibull surface (0.3 <= A <= 50)");
+  if (weibull && !given(options.shape))
+    usage("--shape A is required for a Weibull surface (" + format_double(weibull_shape_min) + " <= A <= " +
+          format_double(weibull_shape_max) + ")");
   if (!weibull && given(options.shape)) usage("--shape is the Weibull shape: a Gaussian surface has none");
   if (weibull) surface.shape = options.shape;
 
@@ -578,7 +580,7 @@ void add_contact_command(CLI::App& app) {
   add_table_option(*command, o.table);
   add_text(*command, "--dist", o.dist, "summit heights: weibull or gaussian (required)")->type_name("NAME")->group("Surface (SI units)");
   add_text(*command, "--side", o.side, "tail (default; GW's approach) or bounded (Weibull only: worn surfaces)")->type_name("SIDE")->group("Surface (SI units)");
-  add_number(*command, "--shape", o.shape, "Weibull shape a, 0.3 to 50 (required for the Weibull)")->type_name("A")->group("Surface (SI units)");
+  add_number(*command, "--shape", o.shape, "Weibull shape a, " + format_double(weibull_shape_min) + " to " + format_double(weibull_shape_max) + " (required for the Weibull)")->type_name("A")->group("Surface (SI units)");
   add_number(*command, "--sigma", o.sigma,
              "height scale [m]: the Weibull scale sigma_s (not its rms), or the Gaussian's rms summit height")
       ->type_name("M")->group("Surface (SI units)");

@@ -76,9 +76,9 @@ void apply_shapes(const std::string& spec, generator::GenerateOptions& options) 
   if (parts.size() != 3 || spec.back() == ':') usage("--shapes wants LO:HI:STEP, got '" + quote_text(spec) + "'");
   const double lo = cli::number_from_text(parts[0], "--shapes LO"), hi = cli::number_from_text(parts[1], "--shapes HI");
   const double step = cli::number_from_text(parts[2], "--shapes STEP");
-  const std::string limits = "[" + format_double(scene_shape_min) + ", " + format_double(scene_shape_max) + "]";
-  if (!(lo >= scene_shape_min && hi <= scene_shape_max && lo <= hi))
-    usage("--shapes needs " + format_double(scene_shape_min) + " <= LO <= HI <= " + format_double(scene_shape_max) +
+  const std::string limits = "[" + format_double(weibull_shape_min) + ", " + format_double(weibull_shape_max) + "]";
+  if (!(lo >= weibull_shape_min && hi <= weibull_shape_max && lo <= hi))
+    usage("--shapes needs " + format_double(weibull_shape_min) + " <= LO <= HI <= " + format_double(weibull_shape_max) +
           ", got LO " + format_double(lo) + ", HI " + format_double(hi));
   if (!(step > 0)) usage("--shapes needs STEP > 0");
   // The grid's spacing in q = ln a - 1/a is at most STEP (2/3 of it on the bounded side): bound
@@ -95,7 +95,7 @@ void apply_shapes(const std::string& spec, generator::GenerateOptions& options) 
   options.shape_max = hi;
   options.shape_log_step = step;
   const std::vector<double> grid = generator::shape_grid(options);
-  if (grid.front() < scene_shape_min || grid.back() > scene_shape_max) {
+  if (grid.front() < weibull_shape_min || grid.back() > weibull_shape_max) {
     usage("--shapes " + quote_text(spec) + ": the grid runs " + std::to_string(shape_stencil / 2) +
           " nodes past each end (for the interpolation between shapes), here from " + approximately(grid.front()) +
           " to " + approximately(grid.back()) + "; every node must be within " + limits +
@@ -356,7 +356,8 @@ int main(int argc, char** argv) {
   cli::add_text(app, "--shapes", o.shapes,
                 "Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5, uniform in q = ln(a) - 1/a "
                 "between them with spacing at most STEP (2/3 of it on the bounded side), six nodes more past each "
-                "end; every node within [0.3, 50], at most 1000 (default 0.5:20:0.075)")
+                "end; every node within [" + format_double(weibull_shape_min) + ", " + format_double(weibull_shape_max) +
+                    "], at most 1000 (default 0.5:20:0.075)")
       ->type_name("LO:HI:STEP");
   cli::add_text(app, "--sides", o.sides, "Weibull sides to tabulate: tail, bounded, both (default) or none")
       ->type_name("LIST");

@@ -8,6 +8,11 @@ namespace asperity {
 enum class Distribution { weibull = 0, gaussian = 1 };
 enum class Side { tail = 0, bounded = 1 };
 
+// The Weibull shapes a the generator integrates and the library serves (docs/model.md): one range
+// for every check of a shape (surfaces, scenes, fits, the command lines, Python).
+inline constexpr double weibull_shape_min = 0.3;
+inline constexpr double weibull_shape_max = 50.0;
+
 // Orders n = 0, 1/2, 1, 3/2, 2, 5/2 (count, stiffness, area, load, F_2, F_5/2).
 inline constexpr int order_count = 6;
 constexpr double order_of(int twice_order) { return 0.5 * twice_order; }

@@ -21,9 +21,10 @@ void require_positive(double value, const char* name) {
 void RoughSurface::validate() const {
   if (distribution == Distribution::weibull) {
     require_positive(shape, "shape");
-    if (!(shape >= 0.3 && shape <= 50)) {
+    if (!(shape >= weibull_shape_min && shape <= weibull_shape_max)) {
       std::ostringstream message;
-      message << "surface: Weibull shape must be between 0.3 and 50, got " << shape;
+      message << "surface: Weibull shape must be between " << weibull_shape_min << " and " << weibull_shape_max
+              << ", got " << shape;
       throw Error(message.str());
     }
   } else if (side == Side::bounded) {

@@ -29,9 +29,9 @@ void check_heights(const SceneLawInputs& in, LawNaming naming) {
     return;
   }
   if (std::isnan(in.shape)) refuse("shape", "the law has no " + scene_law_key_name("shape", naming), "this law");
-  if (!(in.shape >= scene_shape_min && in.shape <= scene_shape_max)) {
+  if (!(in.shape >= weibull_shape_min && in.shape <= weibull_shape_max)) {
     std::ostringstream message;
-    message << "shape must be between " << scene_shape_min << " and " << scene_shape_max;
+    message << "shape must be between " << weibull_shape_min << " and " << weibull_shape_max;
     refuse("shape", message.str(), "out of range");
   }
 }
