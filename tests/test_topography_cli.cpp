@@ -117,7 +117,7 @@ TEST(TopographyCli, FileBytesInMessagesArePrintable) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\x07'), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("\\x1b]0;owned\\x07"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\\x1B]0;owned\\x07"), std::string::npos) << r.err;
 }
 
 // The map's name and the report's folder on standard output as on the other streams: control

@@ -554,14 +554,14 @@ TEST(TopographyHostile, MessagesQuoteFileBytesPrintably) {
   } catch (const asperity::Error& error) {
     const std::string text = error.what();
     EXPECT_EQ(text.find('\x1b'), std::string::npos) << text;
-    EXPECT_NE(text.find("\\x1b[31mred\\x1b[0m"), std::string::npos) << text;
+    EXPECT_NE(text.find("\\x1B[31mred\\x1B[0m"), std::string::npos) << text;
   }
   write_bytes(path, "# Value units: \xff\xfe\x9b" "2J\n1 2 3\n");
   try {
     t::read_ascii_matrix(path);
     ADD_FAILURE() << "no error";
   } catch (const asperity::Error& error) {
-    EXPECT_NE(std::string(error.what()).find("\\xff\\xfe\\x9b2J"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("\\xFF\\xFE\\x9B2J"), std::string::npos) << error.what();
   }
   expect_error([&] { t::read_height_map(std::string("a.x3p\0.txt", 10)); }, "a path with a NUL byte");
 }

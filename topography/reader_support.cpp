@@ -20,50 +20,9 @@ std::string shortest(double value) {
   return std::string(text, end);
 }
 
-std::string printable(std::string_view text, std::size_t limit) {
-  std::string out;
-  const auto escape = [&](unsigned char byte) {
-    static const char* hex = "0123456789abcdef";
-    out += "\\x";
-    out += hex[byte >> 4];
-    out += hex[byte & 15];
-  };
-  std::size_t k = 0;
-  while (k < text.size()) {
-    if (out.size() >= limit) {
-      out += "...";
-      break;
-    }
-    const unsigned char c = static_cast<unsigned char>(text[k]);
-    if (c < 0x80) {
-      if (c < 0x20 || c == 0x7f || c == '\\') escape(c);
-      else out += static_cast<char>(c);
-      ++k;
-      continue;
-    }
-    // a whole UTF-8 sequence (no overlong forms, surrogates or code points past U+10FFFF), else \xNN
-    std::size_t length = 0;
-    unsigned lo = 0x80, hi = 0xbf;
-    if (c >= 0xc2 && c <= 0xdf) length = 2;
-    else if (c >= 0xe0 && c <= 0xef) length = 3, lo = c == 0xe0 ? 0xa0 : 0x80, hi = c == 0xed ? 0x9f : 0xbf;
-    else if (c >= 0xf0 && c <= 0xf4) length = 4, lo = c == 0xf0 ? 0x90 : 0x80, hi = c == 0xf4 ? 0x8f : 0xbf;
-    bool valid = length > 0 && k + length <= text.size();
-    for (std::size_t m = 1; valid && m < length; ++m) {
-      const unsigned char d = static_cast<unsigned char>(text[k + m]);
-      valid = m == 1 ? (d >= lo && d <= hi) : (d >= 0x80 && d <= 0xbf);
-    }
-    // C1 controls (U+0080-U+009F) act on terminals too
-    if (valid && c == 0xc2 && static_cast<unsigned char>(text[k + 1]) < 0xa0) valid = false;
-    if (!valid) {
-      escape(c);
-      ++k;
-      continue;
-    }
-    out.append(text.substr(k, length));
-    k += length;
-  }
-  return out;
-}
+// The library's one rule for quoting outside text (number_text.hpp): control bytes, DEL, C1
+// controls and bytes that are not UTF-8 as \xNN, cut after `limit` bytes.
+std::string printable(std::string_view text, std::size_t limit) { return terminal_text(quote_text(text, limit)); }
 
 std::string_view trim(std::string_view text) {
   const char* blanks = " \t\r\n\f\v";

@@ -15,9 +15,8 @@ namespace asperity::topography::detail {
 // Throws asperity::Error "PATH: problem", the path made printable.
 [[noreturn]] void fail(const std::string& path, const std::string& problem);
 
-// Text from a file (or a path), made safe to show on a terminal: valid UTF-8 is kept, control
-// bytes, DEL and bytes that are not UTF-8 become \xNN (an escape sequence in a file must not
-// reach the user's terminal), cut after `limit` bytes with "...".
+// Text from a file (or a path), made safe to show on a terminal (an escape sequence in a file must
+// not reach the user's terminal): terminal_text(quote_text(text, limit)), number_text.hpp's rule.
 std::string printable(std::string_view text, std::size_t limit = 80);
 
 // A number for a message, in the shortest form that reads back to it ("1e-200", "3.5e-07").

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/number_text.hpp"
 #include "hdf5_handle.hpp"
 
 namespace asperity::detail {
@@ -47,15 +48,9 @@ inline std::optional<ConfinedAccess> confined_access() {
   return access;
 }
 
-// A name or path from the file, fit for a message: at most 120 characters, control bytes as '?'.
-inline std::string printable(const char* text) {
-  std::string result;
-  for (const char* c = text; c && *c; ++c) {
-    if (result.size() == 120) return result + "...";
-    result += static_cast<unsigned char>(*c) < 0x20 || *c == 0x7f ? '?' : *c;
-  }
-  return result;
-}
+// A name or path from the file, fit for a message: the library's one rule for outside text
+// (number_text.hpp), cut after 120 bytes.
+inline std::string printable(const char* text) { return text ? terminal_text(quote_text(text, 120)) : std::string(); }
 
 // The filters HDF5 has built in; for any other it would search plugin directories and load
 // shared libraries from them (dlopen) when the data are read.
