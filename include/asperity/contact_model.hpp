@@ -47,6 +47,8 @@ bool parse_contact_quantity(const std::string& name, ContactQuantity& quantity) 
 // independent Hertz contacts, which holds only while contacts are sparse. The command and the
 // Python module warn there (asperity contact; asperity.AreaFractionWarning).
 inline constexpr double gw_area_fraction_limit = 0.1;
+// The one wording of that warning, for the command and Python: empty at or below the limit.
+std::string gw_area_fraction_warning(double area_fraction);
 
 // A model holds its curve and inverses by shared handles: copies are cheap and independent of
 // the Table it was made from.

@@ -3,6 +3,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 
 #include "asperity/error.hpp"
@@ -229,6 +230,16 @@ double ContactModel::max_real_area() const noexcept {
 bool ContactModel::answers_separation(double separation) const noexcept {
   const double s = dimensionless(separation);
   return curve_.has_order(orders::load) && !std::isnan(s) && (std::isinf(s) || curve_.serves(s));
+}
+
+std::string gw_area_fraction_warning(double area_fraction) {
+  if (!(area_fraction > gw_area_fraction_limit)) return {};
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the real contact area reaches %.4g of the nominal area (above %.4g): Greenwood-Williamson treats "
+                "the asperity contacts as sparse and independent, which no longer holds there%s",
+                area_fraction, gw_area_fraction_limit, area_fraction > 1 ? "; above 1 the answer is impossible" : "");
+  return text;
 }
 
 }  // namespace asperity
