@@ -17,6 +17,7 @@
 #include "asperity/table_file.hpp"
 #include "asperity/error.hpp"
 #include "command_line.hpp"
+#include "option_helpers.hpp"
 #include "fe_card_options.hpp"
 #include "law_options.hpp"
 #include "asperity/number_text.hpp"
@@ -41,26 +42,7 @@ struct Options {
   long long max_points = 0;  // 0: not given
 };
 
-bool given(double value) { return !std::isnan(value); }
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream stream(text);
-  while (std::getline(stream, part, separator)) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.push_back("");
-  return parts;
-}
-
 std::string number(double value) { return format_double(value); }
-
-std::string approximately(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
-[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
 // The surface from the options; `given_scale` says which height scale was given and the other.
 RoughSurface surface_from(const Options& options, std::string& given_scale) {
@@ -215,12 +197,8 @@ void print_header() { std::printf("%s\n", csv_header<PhysicalState>().c_str()); 
 void print(const PhysicalState& state) { std::printf("%s\n", csv_row(state, ten_digits).c_str()); }
 
 void warn_past_gw(const CLI::App& command, double area_fraction) {
-  if (!(area_fraction > gw_area_fraction_limit)) return;
-  warn(command, "the real contact area reaches " + approximately(area_fraction) +
-                    " of the nominal area (above " + approximately(gw_area_fraction_limit) +
-                    "): Greenwood-Williamson treats the asperity contacts as sparse and independent, "
-                    "which no longer holds there" +
-                    (area_fraction > 1 ? "; above 1 the answer is impossible" : ""));
+  const std::string warning = gw_area_fraction_warning(area_fraction);
+  if (!warning.empty()) warn(command, warning);
 }
 
 std::string describe(const RoughSurface& surface) {

@@ -5,16 +5,9 @@
 
 #include "asperity/number_text.hpp"
 #include "command_line.hpp"
+#include "option_helpers.hpp"
 
 namespace asperity::cli {
-namespace {
-std::string approximately(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
-}  // namespace
 
 std::size_t card_max_points(long long asked, CardFormat format) {
   if (asked > 0) return static_cast<std::size_t>(asked);

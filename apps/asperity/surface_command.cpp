@@ -22,6 +22,7 @@
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
+#include "option_helpers.hpp"
 #include "law_options.hpp"
 #include "asperity/number_text.hpp"
 
@@ -43,30 +44,6 @@ struct Options {
   LawOptions law;  // a contact law beside the elastic curves (law_options.hpp)
 };
 
-bool given(double value) { return !std::isnan(value); }
-
-[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
-
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ',')) parts.push_back(part);
-  if (!text.empty() && text.back() == ',') parts.push_back("");
-  return parts;
-}
-
-// A comma-separated list of positive numbers, each read by the one reader.
-std::vector<double> positive_numbers(const std::string& text, const std::string& name) {
-  std::vector<double> values;
-  for (const std::string& part : split_commas(text)) {
-    const double value = number_from_text(part, name);
-    if (!(value > 0)) usage(name + ": '" + quote_text(part) + "' is not a positive number");
-    values.push_back(value);
-  }
-  return values;
-}
-
 topo::ReadOptions read_options(const Options& o) {
   topo::ReadOptions read;
   if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
@@ -74,7 +51,7 @@ topo::ReadOptions read_options(const Options& o) {
   read.lateral_unit = o.unit;
   read.height_unit = o.height_unit;
   if (!o.pixel_size.empty()) {
-    const std::vector<std::string> parts = split_commas(o.pixel_size);
+    const std::vector<std::string> parts = split(o.pixel_size, ',');
     if (parts.empty() || parts.size() > 2) usage("--pixel-size: one length, or two (x,y)");
     read.pixel_size_x = topo::parse_length(parts[0], o.unit);
     read.pixel_size_y = parts.size() == 2 ? topo::parse_length(parts[1], o.unit) : read.pixel_size_x;

@@ -1,4 +1,5 @@
 #include "command_line.hpp"
+#include "option_helpers.hpp"
 
 #include <cctype>
 #include <cerrno>
@@ -7,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <vector>
 
 #include "asperity/error.hpp"
@@ -215,6 +217,35 @@ int print_version() {
     return exit_failure;
   }
   return exit_success;
+}
+
+void usage(const std::string& message) { throw CLI::ValidationError(message); }
+
+bool given(double value) { return !std::isnan(value); }
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  std::string part;
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.push_back("");  // getline drops a last empty part
+  return parts;
+}
+
+std::vector<double> positive_numbers(const std::string& text, const std::string& name) {
+  std::vector<double> values;
+  for (const std::string& part : split(text, ',')) {
+    const double value = number_from_text(part, name);
+    if (!(value > 0)) usage(name + ": '" + quote_text(part) + "' is not a positive number");
+    values.push_back(value);
+  }
+  return values;
+}
+
+std::string approximately(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
 }
 
 }  // namespace asperity::cli

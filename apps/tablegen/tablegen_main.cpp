@@ -24,6 +24,7 @@
 #include "asperity/scene.hpp"
 #include "asperity/table_schema.hpp"
 #include "command_line.hpp"
+#include "option_helpers.hpp"
 #include "asperity/generator/generate.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/generator/law_curves.hpp"
@@ -33,13 +34,9 @@
 namespace {
 
 using namespace asperity;
+using cli::approximately;
+using cli::usage;
 
-// A derived number in a message: four significant digits are enough to act on.
-std::string approximately(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
 
 // The generator's reach (checked here so that a request beyond it is refused with what is
 // allowed, not answered by a quadrature error): Weibull shapes, including the interpolation
@@ -66,7 +63,6 @@ void check_out(const Options& options, const OutputKind& kind) {
   plan.check();
 }
 
-[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
 // Parses and checks --shapes LO:HI:STEP against the generator's reach before it runs.
 void apply_shapes(const std::string& spec, generator::GenerateOptions& options) {
