@@ -1,5 +1,5 @@
-# Type stubs of the asperity package (python/src/module.cpp). python/tests checks that they name
-# exactly what the module holds.
+# Type stubs of the asperity package (python/src/py_*.cpp, bound in module.cpp).
+# python/tests/test_stubs.py checks them against the module: names, parameters, enum members.
 import enum
 import os
 from typing import Callable, Dict, List, Literal, NamedTuple, Optional, Sequence, Tuple, TypeAlias, Union, overload

@@ -1,5 +1,5 @@
-# Type stubs of asperity.batch (python/asperity/batch.py). python/tests checks that they name
-# exactly what the submodule holds.
+# Type stubs of asperity.batch (python/asperity/batch.py). python/tests/test_stubs.py checks them against
+# the submodule: names and parameters.
 import os
 from typing import Any, Dict, Iterable, List, Optional, Sequence, Union
 

@@ -1,5 +1,5 @@
-# Type stubs of asperity.topography (python/src/topography.cpp). python/tests checks that they
-# name exactly what the submodule holds.
+# Type stubs of asperity.topography (python/src/py_height_map.cpp .. py_report.cpp, bound in module.cpp).
+# python/tests/test_stubs.py checks them against the submodule: names, parameters, enum members.
 import enum
 import os
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, overload

@@ -3,7 +3,7 @@ one distribution, called from several threads at once while other threads change
 properties, a map's heights through the numpy view, the map in place). Whatever the interleaving,
 no crash, no corrupted heap, no exception but the expected ones, and answers that are the
 library's for some state the object was in. The calls that release the GIL work on copies taken
-while it is held (python/src/topography.cpp); this test is what shows it, in CI under
+while it is held (python/src/py_*.cpp of asperity.topography); this test is what shows it, in CI under
 AddressSanitizer and ThreadSanitizer (.ci/run: scripts/python-sanitizer-tests.sh).
 
 numpy copies into an array without the GIL (the writes through a map's heights view here): a

@@ -1,0 +1,39 @@
+// The answers' record types asperity.ContactState and asperity.PhysicalState (namedtuples).
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "bindings.hpp"
+#include "helpers.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace asperity::python {
+
+void bind_records(py::module_& m) {
+  auto collections = py::module_::import("collections");
+  py::object contact_state = collections.attr("namedtuple")(
+      "ContactState", py::make_tuple("count", "area", "load", "stiffness", "stiffness_ratio"), "module"_a = "asperity");
+  contact_state.attr("__doc__") =
+      "contact_at's answer (floats, or arrays shaped like the separations): count N X_0, area pi N R sigma_s X_1, "
+      "load (4/3) N E* R^1/2 sigma_s^3/2 X_3/2, stiffness 2 N E* R^1/2 sigma_s^1/2 X_1/2 and the stiffness/load "
+      "ratio (3/2) X_1/2 / X_3/2 (in separation units).";
+  m.attr("ContactState") = contact_state;
+  contact_state_type = contact_state.release();
+  // the fields' names and meanings from their one list (physical_state_fields.hpp)
+  py::list physical_state_names;
+  std::string physical_state_doc = "ContactModel's answer (floats, or arrays shaped like the input), SI units:";
+  for (const PhysicalStateField& field : physical_state_fields) {
+    physical_state_names.append(field.name);
+    physical_state_doc += std::string(" ") + field.name + " (" + field.meaning + "),";
+  }
+  physical_state_doc.back() = '.';
+  py::object physical_state = collections.attr("namedtuple")("PhysicalState", py::tuple(physical_state_names),
+                                                             "module"_a = "asperity");
+  physical_state.attr("__doc__") = physical_state_doc;
+  m.attr("PhysicalState") = physical_state;
+  physical_state_type = physical_state.release();
+}
+
+}  // namespace asperity::python

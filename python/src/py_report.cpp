@@ -1,0 +1,186 @@
+// The whole path and its report (asperity/topography/analysis.hpp, surface_report.hpp).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "topography_helpers.hpp"
+#include "asperity/topography/analysis.hpp"
+#include "asperity/topography/surface_report.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace asperity::python {
+
+namespace topo = asperity::topography;
+
+
+void bind_analysis_options(py::module_& m) {
+  // ---- the whole path (analysis.hpp, surface_report.hpp) ----
+  py::class_<topo::SamplingRow>(m, "SamplingRow", "Summits and moments at factor times the sampling interval.")
+      .def_readonly("factor", &topo::SamplingRow::factor)
+      .def_readonly("dx", &topo::SamplingRow::dx)
+      .def_readonly("dy", &topo::SamplingRow::dy)
+      .def_readonly("summits", &topo::SamplingRow::summits)
+      .def_readonly("density", &topo::SamplingRow::density)
+      .def_readonly("radius", &topo::SamplingRow::radius)
+      .def_readonly("m2", &topo::SamplingRow::m2)
+      .def_readonly("m4", &topo::SamplingRow::m4)
+      .def_readonly("alpha", &topo::SamplingRow::alpha)
+      .def_readonly("anisotropy", &topo::SamplingRow::anisotropy);
+  py::class_<topo::SurfaceVerdict>(m, "SurfaceVerdict",
+                                   "Is the surface Gaussian (its heights' and its summit heights' tests against surrogate\n"
+                                   "surfaces of its own spectrum, each at half the significance), which way its heights\n"
+                                   "lean, and the model named for the contact, in words.")
+      .def_readonly("tested", &topo::SurfaceVerdict::tested)
+      .def_readonly("gaussian_rejected", &topo::SurfaceVerdict::gaussian_rejected)
+      .def_readonly("p_heights", &topo::SurfaceVerdict::p_heights)
+      .def_readonly("p_summits", &topo::SurfaceVerdict::p_summits)
+      .def_readonly("p_heights_bound", &topo::SurfaceVerdict::p_heights_bound)
+      .def_readonly("p_summits_bound", &topo::SurfaceVerdict::p_summits_bound)
+      .def_readonly("orientation", &topo::SurfaceVerdict::orientation,
+                    "The heights' Weibull (weibull_tail or weibull_bounded), or gaussian: no orientation found.")
+      .def_readonly("named", &topo::SurfaceVerdict::named)
+      .def_readonly("model", &topo::SurfaceVerdict::model, "The model named for the contact (when named).")
+      .def_readonly("text", &topo::SurfaceVerdict::text)
+      .def("__repr__", [](const topo::SurfaceVerdict& v) { return v.text; });
+  py::class_<topo::AnalysisOptions>(m, "AnalysisOptions", "What analyse_height_map and analyse_surface_file do.")
+      .def(py::init([](const std::optional<topo::ReadOptions>& read, bool level,
+                       const std::optional<topo::SummitOptions>& summits,
+                       const std::optional<topo::AssessmentOptions>& assessment, bool fit_heights,
+                       std::size_t max_height_sample, std::vector<std::size_t> sampling_factors,
+                       std::optional<topo::ContactOptions> contact, std::size_t max_fit_sample) {
+             topo::AnalysisOptions options;
+             if (read) options.read = *read;
+             options.level = level;
+             if (summits) options.summits = *summits;
+             if (assessment) options.assessment = *assessment;
+             options.fit_heights = fit_heights;
+             options.max_height_sample = max_height_sample;
+             options.sampling_factors = std::move(sampling_factors);
+             options.contact = std::move(contact);
+             options.max_fit_sample = max_fit_sample;
+             return options;
+           }),
+           "read"_a = py::none(), "level"_a = true, "summits"_a = py::none(), "assessment"_a = py::none(),
+           "fit_heights"_a = true, "max_height_sample"_a = topo::AnalysisOptions{}.max_height_sample,
+           "sampling_factors"_a = topo::AnalysisOptions{}.sampling_factors, "contact"_a = py::none(),
+           "max_fit_sample"_a = topo::AnalysisOptions{}.max_fit_sample,
+           "read: ReadOptions (files only); level: subtract the least-squares plane; summits: SummitOptions;\n"
+           "assessment: AssessmentOptions (the bootstrap); fit_heights: also fit the heights, thinned to one per\n"
+           "correlation length and at most max_height_sample; sampling_factors: summits at k dx; contact:\n"
+           "ContactOptions for the contact curves of each fit (None: no curves); max_fit_sample: the summit\n"
+           "heights fitted, all up to this many, else a reproducible random subsample of this many.")
+      .def_readwrite("read", &topo::AnalysisOptions::read)
+      .def_readwrite("level", &topo::AnalysisOptions::level)
+      .def_readwrite("summits", &topo::AnalysisOptions::summits)
+      .def_readwrite("assessment", &topo::AnalysisOptions::assessment)
+      .def_readwrite("fit_heights", &topo::AnalysisOptions::fit_heights)
+      .def_readwrite("max_height_sample", &topo::AnalysisOptions::max_height_sample)
+      .def_readwrite("sampling_factors", &topo::AnalysisOptions::sampling_factors)
+      .def_readwrite("contact", &topo::AnalysisOptions::contact)
+      .def_readwrite("max_fit_sample", &topo::AnalysisOptions::max_fit_sample);
+}
+
+void bind_report(py::module_& m) {
+  py::class_<topo::ReportOutcome>(m, "ReportOutcome", "What write_report wrote.")
+      .def_property_readonly("files", [](const topo::ReportOutcome& o) { return path_texts(o.files); })
+      .def_readonly("plots", &topo::ReportOutcome::plots)
+      .def_readonly("plot_note", &topo::ReportOutcome::plot_note, "Why there are no plots (a map at its noise floor).");
+
+  auto write_report = [](const topo::SurfaceAnalysis& analysis, const PathName& directory, bool overwrite) {
+    const std::string path = to_path(directory.object, "directory");
+    return without_gil([copy = analysis, &path, overwrite] { return topo::write_report(copy, path, overwrite); });
+  };
+  const char* report_doc =
+      "Writes a report folder (created if needed): report.md with the plots, report.json, curves.csv,\n"
+      "summits.csv, fits.svg and contact.svg (drawn by the library: nothing is run). Each file is replaced\n"
+      "atomically, no link in the folder is followed, one run writes the folder at a time and an earlier\n"
+      "report's files are not left beside this one's; a file of the user's under a report file's name is\n"
+      "kept (the call fails) unless overwrite=True. Raises asperity.Error on a write error.";
+  py::class_<topo::NoiseFloor>(m, "NoiseFloor",
+                               "A roughness at the level of the heights' quantization q: Sq under 10 q / sqrt(12).")
+      .def_readonly("reached", &topo::NoiseFloor::reached)
+      .def_readonly("resolution", &topo::NoiseFloor::resolution, "q [m] (HeightMap.height_resolution).")
+      .def_readonly("rms_limit", &topo::NoiseFloor::rms_limit, "10 q / sqrt(12) [m].")
+      .def_readonly("text", &topo::NoiseFloor::text)
+      .def("__repr__", [](const topo::NoiseFloor& f) {
+        return py::str("NoiseFloor(reached={!r}, resolution={!r})").format(f.reached, f.resolution);
+      });
+
+  py::class_<topo::SurfaceAnalysis>(m, "SurfaceAnalysis",
+                                    "A measured surface analysed: the map as analysed, statistics, moments, summits, the fits\n"
+                                    "with their evidence, and the contact curves. to_dict() gives all of it as the JSON document\n"
+                                    "(schema asperity-surface/2) that `asperity surface --json` writes.")
+      .def_readonly("map", &topo::SurfaceAnalysis::map, "The map as analysed (leveled when asked).")
+      .def_readonly("leveled", &topo::SurfaceAnalysis::leveled)
+      .def_readonly("plane", &topo::SurfaceAnalysis::plane, "The plane subtracted.")
+      .def_readonly("statistics", &topo::SurfaceAnalysis::statistics)
+      .def_readonly("moments", &topo::SurfaceAnalysis::moments)
+      .def_readonly("correlation", &topo::SurfaceAnalysis::correlation)
+      .def_readonly("summits", &topo::SurfaceAnalysis::summits)
+      .def_readonly("sampling", &topo::SurfaceAnalysis::sampling, "Summits and moments at 1, 2, 4 times dx.")
+      .def_readonly("noise_floor", &topo::SurfaceAnalysis::noise_floor,
+                    "Whether the roughness is at the level of the heights' quantization (then no summits, fits\n"
+                    "or contact curves follow the statistics).")
+      .def_readonly("summit_heights", &topo::SurfaceAnalysis::summit_heights, "The fits of the summit heights.")
+      .def_readonly("summits_fitted", &topo::SurfaceAnalysis::summits_fitted,
+                    "The summit heights fitted (all, or a random subsample of AnalysisOptions.max_fit_sample).")
+      .def_readonly("heights", &topo::SurfaceAnalysis::heights,
+                    "The fits of the heights (a fixed random sample of points), or None.")
+      .def_readonly("surrogates", &topo::SurfaceAnalysis::surrogates, "The ensemble's size.")
+      .def_readonly("verdict", &topo::SurfaceAnalysis::verdict)
+      .def_readonly("contact", &topo::SurfaceAnalysis::contact, "The contact curves, or None (no contact modulus).")
+      .def_readonly("options", &topo::SurfaceAnalysis::options)
+      .def("to_dict", [](const topo::SurfaceAnalysis& a) {
+        return py::module_::import("json").attr("loads")(path_text(topo::analysis_json(a)));
+      }, "The analysis as a dict: the JSON document (schema asperity-surface/2); NaN is None.")
+      .def("json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); },
+           "The JSON document (schema asperity-surface/2) as text.")
+      .def("summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
+           "The short summary `asperity surface` prints.")
+      .def("write_report", write_report, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
+
+  auto analysis_options = [](std::optional<topo::AnalysisOptions> options, const py::kwargs& fields) {
+    if (fields.size() == 0) return options.value_or(topo::AnalysisOptions{});
+    if (options) throw py::type_error("give options or its fields as keywords, not both");
+    return py::type::of<topo::AnalysisOptions>()(**fields).cast<topo::AnalysisOptions>();
+  };
+  m.def(
+      "analyse_height_map",
+      [analysis_options](const topo::HeightMap& map, std::optional<topo::AnalysisOptions> options,
+                         const py::kwargs& fields) {
+        const topo::AnalysisOptions chosen = analysis_options(std::move(options), fields);
+        return without_gil(
+            [copy = map, &chosen]() mutable { return topo::analyse_height_map(std::move(copy), chosen); });
+      },
+      "map"_a, "options"_a = py::none(),
+      "The whole path on a map (not changed): leveling, statistics, moments, summits, the fits of the summit\n"
+      "heights (and of the thinned heights) with their evidence, and the contact curves when options.contact\n"
+      "is given. options: an AnalysisOptions, or its fields as keywords. Raises asperity.Error (e.g. fewer than\n"
+      "5 summits).");
+  m.def(
+      "analyse_surface_file",
+      [analysis_options](const PathName& path, std::optional<topo::AnalysisOptions> options, const py::kwargs& fields) {
+        const topo::AnalysisOptions chosen = analysis_options(std::move(options), fields);
+        const std::string file = to_path(path.object);
+        return without_gil([&] { return topo::analyse_surface_file(file, chosen); });
+      },
+      "path"_a, "options"_a = py::none(),
+      "read_height_map and analyse_height_map in one call: options.read says how to read the file (format,\n"
+      "pixel sizes, units); options: an AnalysisOptions, or its fields as keywords.");
+  m.def(
+      "analysis_json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); }, "analysis"_a,
+      "The JSON document (schema asperity-surface/2) as text.");
+  m.def(
+      "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
+      "analysis"_a, "The short summary `asperity surface` prints.");
+  m.def("write_report", write_report, "analysis"_a, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
+}
+
+}  // namespace asperity::python

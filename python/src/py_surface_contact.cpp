@@ -1,0 +1,194 @@
+// The contact of a measured surface by theory (asperity/topography/persson_contact.hpp,
+// contact_comparison.hpp): Persson's theory of its spectrum, the contact curves of the fits side by side.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "topography_helpers.hpp"
+#include "asperity/topography/contact_comparison.hpp"
+#include "asperity/topography/persson_contact.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace asperity::python {
+
+namespace topo = asperity::topography;
+
+namespace {
+
+// PhysicalStates as the asperity.PhysicalState record of arrays.
+py::object states_record(py::handle type, const std::vector<PhysicalState>& states) {
+  constexpr std::size_t fields = physical_state_field_count;
+  std::vector<py::array_t<double>> arrays;
+  for (std::size_t k = 0; k < fields; ++k) arrays.emplace_back(static_cast<py::ssize_t>(states.size()));
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const PhysicalState& s = states[i];
+    for (std::size_t k = 0; k < fields; ++k) arrays[k].mutable_data()[i] = s.*physical_state_members[k];
+  }
+  py::tuple arguments(fields);
+  for (std::size_t k = 0; k < fields; ++k) arguments[k] = arrays[k];
+  return type(*arguments);
+}
+
+}  // namespace
+
+void bind_persson_contact(py::module_& m) {
+  // ---- Persson's theory of a map's spectrum (persson_contact.hpp) ----
+  py::class_<topo::RadialPowerSpectrum>(
+      m, "RadialPowerSpectrum",
+      "The isotropic power spectral density C(q) of a map [m^4] (integral d^2q C = variance), constant over\n"
+      "annuli [edges[k], edges[k + 1]) one wavenumber step 2 pi / L wide.")
+      .def_property_readonly("edges", [](const topo::RadialPowerSpectrum& s) { return to_array(s.edges); }, "[1/m]")
+      .def_property_readonly("density", [](const topo::RadialPowerSpectrum& s) { return to_array(s.density); }, "[m^4]")
+      .def_property_readonly("points", [](const topo::RadialPowerSpectrum& s) { return to_array(s.points); })
+      .def_property_readonly("edges_treatment",
+                             [](const topo::RadialPowerSpectrum& s) {
+                               return s.edges_treatment == topo::SpectrumEdges::none ? "none"
+                                      : s.edges_treatment == topo::SpectrumEdges::hann ? "hann"
+                                                                                         : "periodic_component";
+                             })
+      .def_readonly("map_variance", &topo::RadialPowerSpectrum::map_variance, "[m^2]")
+      .def_readonly("variance", &topo::RadialPowerSpectrum::variance, "2 pi integral q C dq [m^2]")
+      .def_readonly("mean_square_gradient", &topo::RadialPowerSpectrum::mean_square_gradient,
+                    "2 pi integral q^3 C dq");
+  m.def(
+      "radial_power_spectrum",
+      [](const topo::HeightMap& map, const std::string& edges) {
+        topo::SpectrumEdges treatment;
+        if (edges == "none") treatment = topo::SpectrumEdges::none;
+        else if (edges == "hann") treatment = topo::SpectrumEdges::hann;
+        else if (edges == "periodic_component") treatment = topo::SpectrumEdges::periodic_component;
+        else throw py::value_error("edges must be 'none', 'hann' or 'periodic_component', not '" + edges + "'");
+        return without_gil([copy = map, treatment] { return topo::radial_power_spectrum(copy, treatment); });
+      },
+      "map"_a, "edges"_a = "periodic_component",
+      "The radial power spectrum of a map. edges: 'periodic_component' (Moisan's periodic component: a\n"
+      "measured map), 'hann' (a Hann window each way) or 'none' (the map taken as periodic).");
+  py::class_<topo::PerssonState>(m, "PerssonState", "Persson's theory at one nominal pressure (SI units).")
+      .def_readonly("pressure", &topo::PerssonState::pressure, "[Pa]")
+      .def_readonly("mean_gap", &topo::PerssonState::mean_gap, "From the mean plane [m].")
+      .def_readonly("area_fraction", &topo::PerssonState::area_fraction)
+      .def_readonly("stiffness_per_area", &topo::PerssonState::stiffness_per_area, "-dp/du [N/m^3]");
+  py::class_<topo::PerssonContact>(
+      m, "PerssonContact",
+      "Persson's theory of contact (2007; Yang and Persson 2008) from a radial power spectrum: mean gap, real\n"
+      "area and stiffness against nominal pressure.")
+      .def(py::init([](const topo::RadialPowerSpectrum& spectrum, double contact_modulus, double gamma) {
+             return topo::PerssonContact(spectrum, contact_modulus, gamma);
+           }),
+           "spectrum"_a, py::kw_only(), "contact_modulus"_a, "gamma"_a = topo::yang_persson_gamma)
+      .def("at_pressure", &topo::PerssonContact::at_pressure, "pressure"_a,
+           "The state at a nominal pressure [Pa] > 0 (NaN fields otherwise).", py::call_guard<py::gil_scoped_release>())
+      .def_property_readonly("contact_modulus", &topo::PerssonContact::contact_modulus)
+      .def_property_readonly("gamma", &topo::PerssonContact::gamma)
+      .def_property_readonly("area_slope", &topo::PerssonContact::area_slope,
+                             "A/A0 -> area_slope p / E* as p -> 0 (sqrt(8/pi) / h'_rms).");
+}
+
+void bind_contact_comparison(py::module_& m) {
+  // ---- contact curves of the fits (contact_comparison.hpp) ----
+  py::class_<topo::ContactOptions>(m, "ContactOptions", "The contact curves of each fit.")
+      .def(py::init([](double contact_modulus, double nominal_area, std::vector<double> pressures, int curve_points,
+                       double scene_tolerance, const PathName& table_path, int threads, bool persson, bool exact,
+                       const std::string& exact_boundary, const std::string& exact_kernel, int exact_points,
+                       double exact_tolerance) {
+             topo::ContactOptions options;
+             options.contact_modulus = contact_modulus;
+             options.nominal_area = nominal_area;
+             options.pressures = std::move(pressures);
+             options.curve_points = curve_points;
+             options.scene_tolerance = scene_tolerance;
+             options.table_path = to_path(table_path.object, "table_path");
+             options.threads = threads;
+             options.persson = persson;
+             options.exact = exact;
+             if (!topo::parse_contact_boundary(exact_boundary, options.exact_boundary))
+               throw py::value_error("exact_boundary must be 'periodic' or 'padded', not '" + exact_boundary + "'");
+             if (!topo::parse_contact_kernel(exact_kernel, options.exact_kernel))
+               throw py::value_error("exact_kernel must be 'fourier' or 'love', not '" + exact_kernel + "'");
+             options.exact_points = exact_points;
+             options.exact_tolerance = exact_tolerance;
+             return options;
+           }),
+           "contact_modulus"_a, "nominal_area"_a = 0.0, "pressures"_a = std::vector<double>{}, "curve_points"_a = 61,
+           "scene_tolerance"_a = 1e-8, "table_path"_a = "", "threads"_a = 0, "persson"_a = true, "exact"_a = false,
+           "exact_boundary"_a = "padded", "exact_kernel"_a = "love", "exact_points"_a = 13, "exact_tolerance"_a = 1e-8,
+           "contact_modulus E* [Pa] (plane strain); nominal_area A0 [m^2] (0: the measured area); pressures of\n"
+           "interest [Pa] (empty: E* x 1e-5, 1e-4, 1e-3); table_path: a full table for the Weibull curves\n"
+           "instead of exact-shape scene tables made for the fitted shapes; persson: Persson's theory of the\n"
+           "map's spectrum beside them; exact: the exact elastic contact of the map (boundary elements,\n"
+           "exact_boundary 'padded' or 'periodic', exact_kernel 'love' or 'fourier', exact_points solves along\n"
+           "the pressure range), which every curve is then compared with.")
+      .def_readwrite("contact_modulus", &topo::ContactOptions::contact_modulus)
+      .def_readwrite("nominal_area", &topo::ContactOptions::nominal_area)
+      .def_readwrite("pressures", &topo::ContactOptions::pressures)
+      .def_readwrite("curve_points", &topo::ContactOptions::curve_points)
+      .def_readwrite("scene_tolerance", &topo::ContactOptions::scene_tolerance)
+      .def_property(
+          "table_path", [](const topo::ContactOptions& o) { return path_text(o.table_path); },
+          [](topo::ContactOptions& o, const PathName& value) { o.table_path = to_path(value.object, "table_path"); })
+      .def_readwrite("threads", &topo::ContactOptions::threads)
+      .def_readwrite("persson", &topo::ContactOptions::persson)
+      .def_readwrite("exact", &topo::ContactOptions::exact)
+      .def_property(
+          "exact_boundary", [](const topo::ContactOptions& o) { return std::string(topo::contact_boundary_name(o.exact_boundary)); },
+          [](topo::ContactOptions& o, const std::string& name) {
+            if (!topo::parse_contact_boundary(name, o.exact_boundary))
+              throw py::value_error("exact_boundary must be 'periodic' or 'padded', not '" + name + "'");
+          })
+      .def_property(
+          "exact_kernel", [](const topo::ContactOptions& o) { return std::string(topo::contact_kernel_name(o.exact_kernel)); },
+          [](topo::ContactOptions& o, const std::string& name) {
+            if (!topo::parse_contact_kernel(name, o.exact_kernel))
+              throw py::value_error("exact_kernel must be 'fourier' or 'love', not '" + name + "'");
+          })
+      .def_readwrite("exact_points", &topo::ContactOptions::exact_points)
+      .def_readwrite("exact_tolerance", &topo::ContactOptions::exact_tolerance);
+  py::class_<topo::ModelContact>(m, "ModelContact", "The contact curve of one height model.")
+      .def_readonly("label", &topo::ModelContact::label,
+                    "measured-summits, measured-summits-own-radii, gaussian-moments, gaussian, weibull-tail,\n"
+                    "weibull-bounded, persson or exact.")
+      .def_readonly("served", &topo::ModelContact::served)
+      .def_property_readonly("note", [](const topo::ModelContact& c) { return path_text(c.note); },
+                             "The table that served it, or why there is no curve.")
+      .def_readonly("surface", &topo::ModelContact::surface)
+      .def_readonly("mean_summit_height", &topo::ModelContact::mean_summit_height, "[m], in the map's height frame.")
+      .def_property_readonly("curve", [](const topo::ModelContact& c) {
+        return states_record(physical_state_type, c.curve);
+      }, "asperity.PhysicalState of arrays over the pressure range.")
+      .def_property_readonly("at_pressures", [](const topo::ModelContact& c) {
+        return states_record(physical_state_type, c.at_pressures);
+      }, "asperity.PhysicalState of arrays at the pressures of interest.")
+      .def_property_readonly("stiffness_over_measured", [](const topo::ModelContact& c) { return to_array(c.stiffness_over_measured); })
+      .def_property_readonly("separation_minus_measured", [](const topo::ModelContact& c) { return to_array(c.separation_minus_measured); }, "[m]")
+      .def_property_readonly("stiffness_over_exact", [](const topo::ModelContact& c) { return to_array(c.stiffness_over_exact); })
+      .def_property_readonly("area_over_exact", [](const topo::ModelContact& c) { return to_array(c.area_over_exact); })
+      .def_property_readonly("separation_minus_exact", [](const topo::ModelContact& c) { return to_array(c.separation_minus_exact); }, "[m]");
+  py::class_<topo::ContactComparison>(m, "ContactComparison", "The contact curves of the fits side by side.")
+      .def_readonly("options", &topo::ContactComparison::options)
+      .def_property_readonly("pressures", [](const topo::ContactComparison& c) { return to_array(c.pressures); })
+      .def_readonly("pressure_min", &topo::ContactComparison::pressure_min)
+      .def_readonly("pressure_max", &topo::ContactComparison::pressure_max)
+      .def_readonly("nominal_area", &topo::ContactComparison::nominal_area)
+      .def_readonly("models", &topo::ContactComparison::models)
+      .def_readonly("closest", &topo::ContactComparison::closest, "The fitted model nearest the measured summits.")
+      .def_readonly("headline", &topo::ContactComparison::headline)
+      .def_readonly("exact_method", &topo::ContactComparison::exact_method, "How the exact contact was solved.")
+      .def_readonly("closest_to_exact", &topo::ContactComparison::closest_to_exact)
+      .def_readonly("exact_headline", &topo::ContactComparison::exact_headline)
+      .def(
+          "find",
+          [](const topo::ContactComparison& c, const std::string& label) -> std::optional<topo::ModelContact> {
+            const topo::ModelContact* found = c.find(label);
+            return found ? std::optional<topo::ModelContact>(*found) : std::nullopt;
+          },
+          "label"_a, "The model of that label, or None.");
+}
+
+}  // namespace asperity::python

@@ -1,0 +1,271 @@
+// The height models, their fits and their evidence (asperity/topography/distribution_fit.hpp,
+// goodness_of_fit.hpp): distributions, fits, statistics, the bootstrap's assessment and its verdict.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "topography_helpers.hpp"
+#include "asperity/topography/distribution_fit.hpp"
+#include "asperity/topography/goodness_of_fit.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace asperity::python {
+
+namespace topo = asperity::topography;
+
+namespace {
+
+topo::HeightModel to_model(const py::handle& value) {
+  if (py::isinstance<topo::HeightModel>(value)) return value.cast<topo::HeightModel>();
+  if (py::isinstance<py::str>(value)) {
+    std::string name = value.cast<std::string>();
+    std::replace(name.begin(), name.end(), '_', '-');
+    for (topo::HeightModel model : topo::all_height_models)
+      if (name == topo::to_string(model)) return model;
+    throw py::value_error("unknown height model '" + value.cast<std::string>() +
+                          "': expected 'gaussian', 'weibull_tail' or 'weibull_bounded'");
+  }
+  throw py::type_error("model must be a str or an asperity.topography.HeightModel");
+}
+
+// A float64 array of values, in a vector (a copy).
+std::vector<double> to_vector(py::handle values, const char* name) {
+  const DoubleArray array = as_double_array(values, name);
+  return std::vector<double>(array.data(), array.data() + array.size());
+}
+
+std::vector<double> sorted_vector(py::handle values, const char* name) {
+  std::vector<double> sorted = to_vector(values, name);
+  std::sort(sorted.begin(), sorted.end());
+  return sorted;
+}
+
+template <class Function>
+FloatOrArray map_values(py::handle input, const char* name, Function function) {
+  return map_batch(
+      input, name, py::none(),
+      [&](const double* in, double* out, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) out[i] = function(in[i]);
+      },
+      function);
+}
+
+std::string repr_interval(const topo::Interval& interval) {
+  return py::str("Interval(lo={!r}, hi={!r})").format(interval.lo, interval.hi).cast<std::string>();
+}
+
+}  // namespace
+
+void bind_fits(py::module_& m) {
+  // ---- height distributions and their fits (distribution_fit.hpp, goodness_of_fit.hpp) ----
+  py::enum_<topo::HeightModel>(m, "HeightModel",
+                               "gaussian N(location, scale^2); weibull_tail x = location + scale W (the tail up, GW's\n"
+                               "side); weibull_bounded x = location - scale W (bounded above: worn, polished).")
+      .value("gaussian", topo::HeightModel::gaussian)
+      .value("weibull_tail", topo::HeightModel::weibull_tail)
+      .value("weibull_bounded", topo::HeightModel::weibull_bounded);
+  m.def("describe", [](const py::object& model) { return std::string(topo::describe(to_model(model))); }, "model"_a,
+        "The model in words.");
+  m.def("parameter_count", [](const py::object& model) { return topo::parameter_count(to_model(model)); }, "model"_a,
+        "2 for the Gaussian, 3 for the Weibulls.");
+
+  py::class_<topo::HeightDistribution>(m, "HeightDistribution",
+                                       "One of the three height models with its parameters [m] (the Gaussian: mean and\n"
+                                       "standard deviation; the Weibulls: location, scale and shape a). The functions\n"
+                                       "take a number (a float back) or an array of any shape (an array back).")
+      .def(py::init([](const py::object& model, double location, double scale, double shape) {
+             return topo::HeightDistribution{to_model(model), location, scale, shape};
+           }),
+           "model"_a = "gaussian", "location"_a = 0.0, "scale"_a = 1.0, "shape"_a = 0.0)
+      .def_property(
+          "model", [](const topo::HeightDistribution& d) { return d.model; },
+          [](topo::HeightDistribution& d, const py::object& value) { d.model = to_model(value); })
+      .def_readwrite("location", &topo::HeightDistribution::location)
+      .def_readwrite("scale", &topo::HeightDistribution::scale)
+      .def_readwrite("shape", &topo::HeightDistribution::shape)
+      .def("pdf", [](topo::HeightDistribution d, const ArrayLike& x) {
+        return map_values(x.object, "x", [&](double v) { return std::exp(d.log_pdf(v)); });
+      }, "x"_a, "The density.")
+      .def("log_pdf", [](topo::HeightDistribution d, const ArrayLike& x) {
+        return map_values(x.object, "x", [&](double v) { return d.log_pdf(v); });
+      }, "x"_a, "ln of the density (-inf outside the support).")
+      .def("cdf", [](topo::HeightDistribution d, const ArrayLike& x) {
+        return map_values(x.object, "x", [&](double v) { return d.cdf(v); });
+      }, "x"_a, "P(X <= x).")
+      .def("log_cdf", [](topo::HeightDistribution d, const ArrayLike& x) {
+        return map_values(x.object, "x", [&](double v) { return d.log_cdf(v); });
+      }, "x"_a, "ln P(X <= x).")
+      .def("log_sf", [](topo::HeightDistribution d, const ArrayLike& x) {
+        return map_values(x.object, "x", [&](double v) { return d.log_sf(v); });
+      }, "x"_a, "ln P(X > x).")
+      .def("quantile", [](topo::HeightDistribution d, const ArrayLike& p) {
+        return map_values(p.object, "p", [&](double v) { return d.quantile(v); });
+      }, "p"_a, "The x with P(X <= x) = p, p in (0, 1) (NaN outside).")
+      .def("mean", &topo::HeightDistribution::mean,
+           "The mean: NaN for parameters that are no distribution (scale <= 0, a Weibull shape <= 0, not finite),\n"
+           "+-inf beyond the largest double (a Weibull shape below ~0.006).")
+      .def("standard_deviation", &topo::HeightDistribution::standard_deviation,
+           "The standard deviation: NaN for parameters that are no distribution, inf beyond the largest double.")
+      .def("__repr__", [](const topo::HeightDistribution& d) {
+        return py::str("HeightDistribution(model='{}', location={!r}, scale={!r}, shape={!r})")
+            .format(py::str(py::cast(d.model).attr("name")), d.location, d.scale, d.shape);
+      });
+
+  py::class_<topo::FitOptions>(m, "FitOptions", "The Weibull shape's search range of the fits.")
+      .def(py::init([](double shape_min, double shape_max) {
+             topo::FitOptions options;
+             options.shape_min = shape_min;
+             options.shape_max = shape_max;
+             return options;
+           }),
+           "shape_min"_a = topo::FitOptions{}.shape_min, "shape_max"_a = topo::FitOptions{}.shape_max)
+      .def_readwrite("shape_min", &topo::FitOptions::shape_min)
+      .def_readwrite("shape_max", &topo::FitOptions::shape_max);
+  py::class_<topo::FitResult>(m, "FitResult", "A fitted distribution.")
+      .def_readonly("distribution", &topo::FitResult::distribution)
+      .def_readonly("objective", &topo::FitResult::objective,
+                    "Maximum product of spacings: the mean log spacing S; Gaussian: the mean log-likelihood.")
+      .def_readonly("shape_at_bound", &topo::FitResult::shape_at_bound, "The shape hit shape_min or shape_max.")
+      .def_readonly("evaluations", &topo::FitResult::evaluations);
+  m.def(
+      "fit_height_distribution",
+      [](const py::object& model, const ArrayLike& values, const std::optional<topo::FitOptions>& options) {
+        const topo::HeightModel chosen = to_model(model);
+        const std::vector<double> sorted = sorted_vector(values.object, "values");
+        const topo::FitOptions fit = options.value_or(topo::FitOptions{});
+        return without_gil([&] { return topo::fit_height_distribution(chosen, sorted, fit); });
+      },
+      "model"_a, "values"_a, "options"_a = py::none(),
+      "Fits a height model to values (any order): the Gaussian by maximum likelihood, the three-parameter\n"
+      "Weibulls by maximum product of spacings (well-posed for every shape, also below 1). At least 5\n"
+      "finite values not all equal (asperity.Error otherwise).");
+  m.def(
+      "mean_log_spacing",
+      [](const topo::HeightDistribution& d, const ArrayLike& values) {
+        return topo::mean_log_spacing(d, sorted_vector(values.object, "values"));
+      },
+      "distribution"_a, "values"_a, "The MPS objective S (mean log spacing) of a distribution on values.");
+  m.def(
+      "log_likelihood",
+      [](const topo::HeightDistribution& d, const ArrayLike& values) {
+        return topo::log_likelihood(d, to_vector(values.object, "values"));
+      },
+      "distribution"_a, "values"_a, "ln L of values.");
+  m.def(
+      "anderson_darling",
+      [](const topo::HeightDistribution& d, const ArrayLike& values) {
+        return topo::anderson_darling(d, sorted_vector(values.object, "values"));
+      },
+      "distribution"_a, "values"_a, "The Anderson-Darling statistic A^2 of values against a distribution.");
+  m.def(
+      "kolmogorov_smirnov",
+      [](const topo::HeightDistribution& d, const ArrayLike& values) {
+        return topo::kolmogorov_smirnov(d, sorted_vector(values.object, "values"));
+      },
+      "distribution"_a, "values"_a, "The Kolmogorov-Smirnov statistic D of values against a distribution.");
+  m.def(
+      "draw_sample",
+      [](const topo::HeightDistribution& d, std::size_t n, std::uint64_t seed) {
+        return to_array(without_gil([d, n, seed] { return topo::draw_sample(d, n, seed); }));
+      },
+      "distribution"_a, "n"_a, "seed"_a = 1,
+      "n reproducible draws (the bootstrap's generator: the same on every platform).");
+}
+
+void bind_assessment(py::module_& m) {
+  py::class_<topo::AssessmentOptions>(m, "AssessmentOptions", "The bootstrap and the tests of assess_sample.")
+      .def(py::init([](int bootstrap, std::uint64_t seed, int threads, double confidence, double significance,
+                       const std::optional<topo::FitOptions>& fit) {
+             topo::AssessmentOptions options;
+             options.bootstrap = bootstrap;
+             options.seed = seed;
+             options.threads = threads;
+             options.confidence = confidence;
+             options.significance = significance;
+             if (fit) options.fit = *fit;
+             return options;
+           }),
+           "bootstrap"_a = topo::AssessmentOptions{}.bootstrap, "seed"_a = 1, "threads"_a = 0, "confidence"_a = 0.95, "significance"_a = 0.05,
+           "fit"_a = py::none(),
+           "bootstrap: B parametric-bootstrap samples (0: no p-values, no intervals); seed: reproducible; threads:\n"
+           "0 for all cores; confidence of the intervals; significance of the tests for the verdict.")
+      .def_readwrite("bootstrap", &topo::AssessmentOptions::bootstrap)
+      .def_readwrite("seed", &topo::AssessmentOptions::seed)
+      .def_readwrite("threads", &topo::AssessmentOptions::threads)
+      .def_readwrite("confidence", &topo::AssessmentOptions::confidence)
+      .def_readwrite("significance", &topo::AssessmentOptions::significance)
+      .def_readwrite("fit", &topo::AssessmentOptions::fit);
+  py::class_<topo::Interval>(m, "Interval", "A percentile bootstrap interval [lo, hi].")
+      .def_readonly("lo", &topo::Interval::lo)
+      .def_readonly("hi", &topo::Interval::hi)
+      .def("__repr__", &repr_interval);
+  py::class_<topo::ModelAssessment>(m, "ModelAssessment", "One model fitted to one sample, with its evidence.")
+      .def_readonly("fit", &topo::ModelAssessment::fit)
+      .def_readonly("anderson_darling", &topo::ModelAssessment::anderson_darling)
+      .def_readonly("anderson_darling_p", &topo::ModelAssessment::anderson_darling_p, "By parametric bootstrap.")
+      .def_readonly("kolmogorov_smirnov", &topo::ModelAssessment::kolmogorov_smirnov)
+      .def_readonly("kolmogorov_smirnov_p", &topo::ModelAssessment::kolmogorov_smirnov_p, "By parametric bootstrap.")
+      .def_readonly("log_likelihood", &topo::ModelAssessment::log_likelihood)
+      .def_readonly("aic", &topo::ModelAssessment::aic)
+      .def_readonly("delta_aic", &topo::ModelAssessment::delta_aic)
+      .def_readonly("akaike_weight", &topo::ModelAssessment::akaike_weight)
+      .def_readonly("location", &topo::ModelAssessment::location)
+      .def_readonly("scale", &topo::ModelAssessment::scale)
+      .def_readonly("shape", &topo::ModelAssessment::shape, "The shape's interval (Weibull only).")
+      .def_readonly("bootstrap", &topo::ModelAssessment::bootstrap)
+      .def_readonly("failed_refits", &topo::ModelAssessment::failed_refits)
+      .def_readonly("rejected", &topo::ModelAssessment::rejected,
+                    "The Anderson-Darling p-value is below the significance.")
+      .def_readonly("p_at_floor", &topo::ModelAssessment::p_at_floor,
+                    "The Anderson-Darling p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value.")
+      .def_readonly("kolmogorov_smirnov_p_at_floor", &topo::ModelAssessment::kolmogorov_smirnov_p_at_floor,
+                    "The Kolmogorov-Smirnov p-value is at its floor 1/(B + 1): a bound, not a value.")
+      .def_readonly("shape_identified", &topo::ModelAssessment::shape_identified,
+                    "The data pin the shape down (its interval stays inside the fit's bounds).")
+      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.")
+      .def_readonly("bias_slope", &topo::ModelAssessment::bias_slope,
+                    "The heights' Weibull shape: d(bias of ln a)/d(ln a) on the surrogates, which its interval "
+                    "corrects for (NaN where not measured).")
+      .def("__repr__", [](const topo::ModelAssessment& m) {
+        // the p-values as the reports write them: a bound where they are one ("p <= 0.005")
+        return "<asperity.topography.ModelAssessment " + std::string(topo::to_string(m.fit.distribution.model)) +
+               ": AD " + topo::p_value_text(m.anderson_darling_p, m.p_at_floor) + ", KS " +
+               topo::p_value_text(m.kolmogorov_smirnov_p, m.kolmogorov_smirnov_p_at_floor) + ">";
+      });
+  py::class_<topo::Verdict>(m, "Verdict", "Which model the evidence favours, and the evidence in words.")
+      .def_readonly("gaussian_rejected", &topo::Verdict::gaussian_rejected)
+      .def_readonly("best", &topo::Verdict::best, "Lowest AIC among the models not rejected.")
+      .def_readonly("best_rejected", &topo::Verdict::best_rejected, "Every model was rejected: the best by AIC anyway.")
+      .def_readonly("aic_gain_over_gaussian", &topo::Verdict::aic_gain_over_gaussian)
+      .def_readonly("text", &topo::Verdict::text);
+  py::class_<topo::SampleAssessment>(m, "SampleAssessment", "The three models fitted to one sample, and a verdict.")
+      .def_readonly("name", &topo::SampleAssessment::name)
+      .def_readonly("n", &topo::SampleAssessment::n)
+      .def_readonly("models", &topo::SampleAssessment::models, "In HeightModel order: gaussian, weibull_tail, weibull_bounded.")
+      .def_readonly("verdict", &topo::SampleAssessment::verdict)
+      .def_readonly("options", &topo::SampleAssessment::options)
+      .def("model", [](const topo::SampleAssessment& a, const py::object& model) { return a.model(to_model(model)); },
+           "model"_a, "The assessment of one model.");
+  m.def(
+      "assess_sample",
+      [](const std::string& name, const ArrayLike& values, const std::optional<topo::AssessmentOptions>& options) {
+        std::vector<double> sample = to_vector(values.object, "values");
+        const topo::AssessmentOptions chosen = options.value_or(topo::AssessmentOptions{});
+        return without_gil([&] { return topo::assess_sample(name, std::move(sample), chosen); });
+      },
+      "name"_a, "values"_a, "options"_a = py::none(),
+      "Fits the three models to values, tests each (Anderson-Darling, Kolmogorov-Smirnov, p-values by parametric\n"
+      "bootstrap), gives percentile intervals, AIC and a verdict. The values are assumed independent.");
+}
+
+}  // namespace asperity::python
