@@ -15,7 +15,7 @@
 #include "asperity/interrupt.hpp"
 #include "asperity/output.hpp"
 #include "asperity/surface.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/table_file.hpp"
 #include "asperity/number_text.hpp"
 
 namespace asperity::cli {
@@ -200,7 +200,7 @@ int print_version() {
   try {
     const Table table = Table::open(path);
     // Opening checked the file's schema and schema_version attributes against these.
-    std::printf("schema: %s, version %d\n", schema::name, schema::version);
+    std::printf("schema: %s, version %d\n", table_schema_name(), table_schema_version());
     std::printf("generator: %s\n", table.data().generator.c_str());
     std::printf("generator options: %s\n", table.data().generator_options.c_str());
     for (const CurveSet& set : table.data().sets) {

@@ -22,7 +22,7 @@
 #include "asperity/error.hpp"
 #include "asperity/output.hpp"
 #include "asperity/scene.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/table_file.hpp"
 #include "command_line.hpp"
 #include "option_helpers.hpp"
 #include "asperity/generator/generate.hpp"
@@ -327,7 +327,8 @@ int generate(Options options) {
 }
 
 int print_version() {
-  std::printf("tablegen %s (writes schema %s, version %d)\n", ASPERITY_VERSION_STRING, schema::name, schema::version);
+  std::printf("tablegen %s (writes schema %s, version %d)\n", ASPERITY_VERSION_STRING, table_schema_name(),
+              table_schema_version());
   return cli::exit_success;
 }
 

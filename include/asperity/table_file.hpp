@@ -33,6 +33,11 @@ class TableFileError : public Error {
   TableFileStatus status_;
 };
 
+// The table format this library reads and writes: its schema name ("asperity-table") and
+// version (table_schema.hpp, the format's internals, defines them), for --version texts.
+const char* table_schema_name() noexcept;
+int table_schema_version() noexcept;
+
 // What a table file holds (table_schema.hpp): Greenwood-Williamson integrals (Table, table.hpp)
 // or contact curves against separation (ContactCurves, contact_curves.hpp).
 enum class TableKind { integrals, contact_curves };

@@ -123,4 +123,7 @@ void verify_table_bytes(const unsigned char* bytes, std::size_t size, const std:
          "its SHA-256 does not match its header: the file was changed or damaged after it was written");
 }
 
+const char* table_schema_name() noexcept { return schema::name; }
+int table_schema_version() noexcept { return schema::version; }
+
 }  // namespace asperity
