@@ -5,11 +5,10 @@
 
 #include "asperity/error.hpp"
 #include "asperity/number_text.hpp"
+#include "option_helpers.hpp"
 
 namespace asperity::cli {
 namespace {
-
-[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
 
 // The options' values as the registry holds them: numbers as given, a choice's text as its index
 LawValues given_values(const LawOptions& o) {

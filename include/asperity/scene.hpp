@@ -144,8 +144,7 @@ SceneLaw make_scene_law(const SceneLawInputs& inputs, LawNaming naming, double d
 // A law scene's max_rel_error: `asked` checked (NaN: the default, at least scene_law_error_min).
 double checked_law_tolerance(double asked, double default_tolerance, LawNaming naming);
 
-// The limits a scene is checked against.
-inline constexpr double scene_shape_min = 0.3, scene_shape_max = 50.0;
+// The limits a scene is checked against (a shape: integrals.hpp's weibull_shape_min .. weibull_shape_max).
 inline constexpr double scene_error_min = 1e-13, scene_error_max = 1e-2;
 inline constexpr std::size_t scene_max_bytes = 64 * 1024;
 inline constexpr int scene_max_nesting = 4;          // [ and { (a [[curve]] header counts 2)

@@ -97,13 +97,9 @@ inline PyObject* area_fraction_warning = nullptr;
 // As the command warns (asperity contact), a Python warning where the real area passes
 // gw_area_fraction_limit of the nominal area; raises if warnings are errors (-W error).
 inline void warn_past_gw(double area_fraction) {
-  if (!(area_fraction > gw_area_fraction_limit)) return;
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "the real contact area reaches %.4g of the nominal area (above %.4g): Greenwood-Williamson treats "
-                "the asperity contacts as sparse and independent, which no longer holds there%s",
-                area_fraction, gw_area_fraction_limit, area_fraction > 1 ? "; above 1 the answer is impossible" : "");
-  if (PyErr_WarnEx(area_fraction_warning, text, 1) < 0) throw py::error_already_set();
+  const std::string text = gw_area_fraction_warning(area_fraction);  // the command's sentence (contact_model.hpp)
+  if (text.empty()) return;
+  if (PyErr_WarnEx(area_fraction_warning, text.c_str(), 1) < 0) throw py::error_already_set();
 }
 
 // asperity.OutOfRangeWarning (a UserWarning), made once at import (bind_errors).

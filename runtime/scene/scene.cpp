@@ -189,9 +189,9 @@ SceneCurve read_curve(const toml::value& table, double default_tolerance, std::s
   } else {
     const toml::value& shape = required("shape");
     curve.shape = number(shape, "shape");
-    if (!(curve.shape >= scene_shape_min && curve.shape <= scene_shape_max)) {
+    if (!(curve.shape >= weibull_shape_min && curve.shape <= weibull_shape_max)) {
       std::ostringstream message;
-      message << "shape must be between " << scene_shape_min << " and " << scene_shape_max;
+      message << "shape must be between " << weibull_shape_min << " and " << weibull_shape_max;
       fail_at(shape, message.str(), "out of range");
     }
   }
