@@ -7,7 +7,6 @@
 #include <iostream>
 #include <memory>
 #include <new>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +15,7 @@
 #include "asperity/output.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/topography/exact_contact.hpp"
+#include "asperity/topography/exact_contact_report.hpp"
 #include "asperity/topography/exact_contact_table.hpp"
 #include "asperity/contact_curves_data.hpp"
 #include "asperity/topography/height_map_io.hpp"
@@ -177,41 +177,6 @@ void stage_fields(OutputTransaction& outputs, const Options& o, const topo::Exac
   const std::string label = "step " + std::to_string(step + 1);
   outputs.stage(o.fields, field_name(step, "pressure"), pgm_bytes(pressure, map.nx, map.ny, max_pressure, label + " pressure"));
   outputs.stage(o.fields, field_name(step, "gap"), pgm_bytes(gap, map.nx, map.ny, top_gap, label + " gap"));
-}
-
-std::string csv_row(const topo::ContactStep& s) {
-  std::ostringstream row;
-  row << format_double(s.pressure) << "," << format_double(s.load) << "," << format_double(s.mean_gap) << ","
-      << format_double(s.separation_from_mean_summit) << "," << format_double(s.approach) << ","
-      << format_double(s.area_fraction) << "," << format_double(s.real_area) << "," << s.contact_points << ","
-      << s.clusters << "," << format_double(s.stiffness) << "," << format_double(s.stiffness_per_area) << ","
-      << format_double(s.approach_stiffness) << "," << format_double(s.max_pressure) << "," << s.iterations << ","
-      << s.solves << "," << format_double(s.residual) << "," << s.stiffness_iterations << ","
-      << format_double(s.stiffness_residual) << "\n";
-  return row.str();
-}
-
-nlohmann::json step_json(const topo::ContactStep& s) {
-  // JSON has no infinity: null for a stiffness in full contact
-  auto value = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  return {{"pressure_Pa", value(s.pressure)},
-          {"load_N", value(s.load)},
-          {"mean_gap_m", value(s.mean_gap)},
-          {"separation_from_mean_summit_m", value(s.separation_from_mean_summit)},
-          {"approach_m", value(s.approach)},
-          {"area_fraction", value(s.area_fraction)},
-          {"real_area_m2", value(s.real_area)},
-          {"contact_points", s.contact_points},
-          {"clusters", s.clusters},
-          {"stiffness_N_per_m", value(s.stiffness)},
-          {"stiffness_per_area_N_per_m3", value(s.stiffness_per_area)},
-          {"approach_stiffness_N_per_m", value(s.approach_stiffness)},
-          {"max_pressure_Pa", value(s.max_pressure)},
-          {"iterations", s.iterations},
-          {"solves", s.solves},
-          {"residual", value(s.residual)},
-          {"stiffness_iterations", s.stiffness_iterations},
-          {"stiffness_residual", value(s.stiffness_residual)}};
 }
 
 // The contact-curves table of the solved nodes (with the solves between them that measure its
@@ -420,34 +385,7 @@ void print_results(const Options& o, const topo::HeightMap& map, const topo::Exa
   const std::string kernel = topo::contact_kernel_name(options.kernel);
   const double modulus = options.contact_modulus;
   if (o.json) {
-    nlohmann::json steps_json = nlohmann::json::array();
-    for (const topo::ContactStep& s : results) steps_json.push_back(step_json(s));
-    nlohmann::json document = {
-        {"schema", "asperity-exact-contact/1"},
-        {"map",
-         {{"source", map.source},
-          {"nx", map.nx},
-          {"ny", map.ny},
-          {"dx_m", map.dx},
-          {"dy_m", map.dy},
-          {"missing_points", map.missing_points()},
-          {"leveled", !o.no_level},
-          {"rms_height_m", solver.rms_height()},
-          {"max_height_m", solver.max_height()},
-          {"summits", solver.summits()},
-          {"mean_summit_height_m", std::isfinite(solver.mean_summit_height()) ? nlohmann::json(solver.mean_summit_height())
-                                                                               : nlohmann::json(nullptr)},
-          {"nominal_area_m2", solver.nominal_area()}}},
-        {"solver",
-         {{"contact_modulus_Pa", modulus},
-          {"boundary", boundary},
-          {"kernel", kernel},
-          {"algorithm", topo::contact_solver_name(options.solver)},
-          {"coarse_start", options.coarse_start},
-          {"tolerance", options.tolerance},
-          {"driven_by", by_pressure ? "pressure" : "mean_gap"}}},
-        {"steps", steps_json}};
-    std::cout << document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    std::cout << topo::exact_contact_json(map, !o.no_level, solver, options, by_pressure, results) << "\n";
   } else {
     std::cout << "# asperity exact-contact: " << terminal_text(quote_text(map.source, 4096)) << ", " << map.nx << " x "
               << map.ny << " points, dx " << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
@@ -457,10 +395,8 @@ void print_results(const Options& o, const topo::HeightMap& map, const topo::Exa
               << "# datum: mean_gap_m is the separation of the flat from the mean plane of the map; the mean summit\n"
               << "# height is " << format_double(solver.mean_summit_height()) << " m above it ("
               << solver.summits() << " summits), the highest point " << format_double(solver.max_height()) << " m\n"
-              << "pressure_Pa,load_N,mean_gap_m,separation_from_mean_summit_m,approach_m,area_fraction,real_area_m2,"
-                 "contact_points,clusters,stiffness_N_per_m,stiffness_per_area_N_per_m3,approach_stiffness_N_per_m,"
-                 "max_pressure_Pa,iterations,solves,residual,stiffness_iterations,stiffness_residual\n";
-    for (const topo::ContactStep& s : results) std::cout << csv_row(s);
+              << csv_header<topo::ContactStep>() << "\n";  // the columns of ContactStep's list (exact_contact.hpp)
+    for (const topo::ContactStep& s : results) std::cout << csv_row(s) << "\n";
   }
 }
 
