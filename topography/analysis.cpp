@@ -190,7 +190,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
       c.measured_separation_spread.push_back(spread(separation));
     }
     // the measured-summit answer at coarser samplings
-    const ModelContact* finest = c.find("measured-summits");
+    const ModelContact* finest = c.find(ContactModelKind::measured_summits);
     for (const auto& [factor, coarse] : coarse_summits) {
       if (!finest || !finest->served) break;
       try {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -39,9 +40,12 @@ void fill_curves(ModelContact& model, const ContactModel& contact, const Contact
   model.served = true;
 }
 
-// A fitted law (not a reference, not the measured summits).
-bool is_fitted(const std::string& label) {
-  return label == "gaussian-moments" || label == "gaussian" || label == "weibull-tail" || label == "weibull-bounded";
+// A comparison's curve of that kind, named
+ModelContact model_of(ContactModelKind kind) {
+  ModelContact model;
+  model.kind = kind;
+  model.label = to_string(kind);
+  return model;
 }
 
 // A reference's state at nominal pressure p over the comparison's nominal area A0.
@@ -63,7 +67,7 @@ PhysicalState reference_state(double p, double mean_gap, double area_fraction, d
 void conclude_against_exact(ContactComparison& comparison) {
   comparison.closest_to_exact.clear();
   comparison.exact_headline.clear();
-  const ModelContact* exact = comparison.find("exact");
+  const ModelContact* exact = comparison.find(ContactModelKind::exact);
   for (ModelContact& model : comparison.models) {
     model.stiffness_over_exact.clear();
     model.area_over_exact.clear();
@@ -71,8 +75,9 @@ void conclude_against_exact(ContactComparison& comparison) {
   }
   if (!exact || !exact->served) return;
   double best = std::numeric_limits<double>::infinity();
+  const ModelContact* closest = nullptr;
   for (ModelContact& model : comparison.models) {
-    if (!model.served || model.label == "exact") continue;
+    if (!model.served || model.kind == ContactModelKind::exact) continue;
     double worst = 0;
     for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
       const PhysicalState &m = model.at_pressures[k], &e = exact->at_pressures[k];
@@ -81,8 +86,9 @@ void conclude_against_exact(ContactComparison& comparison) {
       model.separation_minus_exact.push_back(m.mean_separation - e.mean_separation);
       worst = std::max(worst, std::fabs(std::log(model.stiffness_over_exact.back())));
     }
-    if (model.label != "measured-summits-own-radii" && worst < best) {  // NaN never wins
+    if (model.kind != ContactModelKind::measured_summits_own_radii && worst < best) {  // NaN never wins
       best = worst;
+      closest = &model;
       comparison.closest_to_exact = model.label;
     }
   }
@@ -100,14 +106,14 @@ void conclude_against_exact(ContactComparison& comparison) {
   text << "Against the exact elastic contact of the map at ";
   for (std::size_t k = 0; k < comparison.pressures.size(); ++k) text << (k ? ", " : "") << comparison.pressures[k];
   text << " Pa: ";
-  if (comparison.closest_to_exact.empty()) {
+  if (!closest) {
     text << "no other curve to compare";
   } else {
     text << "closest ";
-    describe(*comparison.find(comparison.closest_to_exact));
-    for (const char* label : {"measured-summits", "persson"}) {
-      const ModelContact* m = comparison.find(label);
-      if (m && m->served && comparison.closest_to_exact != label) {
+    describe(*closest);
+    for (ContactModelKind kind : {ContactModelKind::measured_summits, ContactModelKind::persson}) {
+      const ModelContact* m = comparison.find(kind);
+      if (m && m->served && m != closest) {
         text << "; ";
         describe(*m);
       }
@@ -127,8 +133,7 @@ void add_reference_contact(ContactComparison& comparison, const HeightMap& map, 
     throw Error("contact: exact_points must be from " + std::to_string(min_exact_points) + " to " +
                 std::to_string(max_exact_points) + ", not " + std::to_string(options.exact_points));
   if (options.persson) {
-    ModelContact model;
-    model.label = "persson";
+    ModelContact model = model_of(ContactModelKind::persson);
     model.mean_summit_height = mean_summit_height;
     try {
       const RadialPowerSpectrum spectrum = radial_power_spectrum(map, SpectrumEdges::periodic_component);
@@ -155,8 +160,7 @@ void add_reference_contact(ContactComparison& comparison, const HeightMap& map, 
     comparison.models.push_back(std::move(model));
   }
   if (options.exact) {
-    ModelContact model;
-    model.label = "exact";
+    ModelContact model = model_of(ContactModelKind::exact);
     model.mean_summit_height = mean_summit_height;
     try {
       ExactContactOptions solve;
@@ -229,7 +233,7 @@ std::vector<double> contact_pressures(const ContactOptions& options) {
 
 void conclude_contact(ContactComparison& comparison) {
   conclude_against_exact(comparison);
-  const ModelContact* measured = comparison.find("measured-summits");
+  const ModelContact* measured = comparison.find(ContactModelKind::measured_summits);
   if (!measured || !measured->served) return;
   for (ModelContact& model : comparison.models) {
     model.stiffness_over_measured.clear();
@@ -244,21 +248,23 @@ void conclude_contact(ContactComparison& comparison) {
   // the fitted model whose worst stiffness ratio over the pressures is nearest 1
   double best = std::numeric_limits<double>::infinity();
   comparison.closest.clear();
+  const ModelContact* closest_model = nullptr;
   for (const ModelContact& model : comparison.models) {
-    if (!model.served || !is_fitted(model.label)) continue;
+    if (!model.served || !is_fitted(model.kind)) continue;
     double worst = 0;
     for (double ratio : model.stiffness_over_measured) worst = std::max(worst, std::fabs(std::log(ratio)));
     if (worst < best) {
       best = worst;
+      closest_model = &model;
       comparison.closest = model.label;
     }
   }
   std::ostringstream text;
   text.precision(3);
-  if (comparison.closest.empty()) {
+  if (!closest_model) {
     text << "no fitted model has contact curves to compare with the measured summits";
   } else {
-    const ModelContact& closest = *comparison.find(comparison.closest);
+    const ModelContact& closest = *closest_model;
     text << "Closest to GW on the measured summits (no law fitted): " << closest.label << ", stiffness ";
     for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
       text << (k ? ", " : "") << closest.stiffness_over_measured[k] << "x";
@@ -277,10 +283,56 @@ void conclude_contact(ContactComparison& comparison) {
   comparison.headline = text.str();
 }
 
-const ModelContact* ContactComparison::find(const std::string& label) const {
+const ModelContact* ContactComparison::find(ContactModelKind kind) const {
   for (const ModelContact& m : models)
-    if (m.label == label) return &m;
+    if (m.kind == kind) return &m;
   return nullptr;
+}
+
+const ModelContact* ContactComparison::find(const std::string& label) const {
+  ContactModelKind kind;
+  return parse_contact_model_kind(label, kind) ? find(kind) : nullptr;
+}
+
+namespace {
+// The kinds' names, once, in ContactModelKind's order; the fitted height models' are HeightModel's
+// (nullptr here: to_string(HeightModel), distribution_fit.cpp)
+constexpr const char* contact_model_kind_names[] = {
+    "measured-summits", "measured-summits-own-radii", "gaussian-moments", nullptr, nullptr, nullptr, "persson", "exact"};
+}  // namespace
+
+const char* to_string(ContactModelKind kind) {
+  switch (kind) {
+    case ContactModelKind::gaussian: return to_string(HeightModel::gaussian);
+    case ContactModelKind::weibull_tail: return to_string(HeightModel::weibull_tail);
+    case ContactModelKind::weibull_bounded: return to_string(HeightModel::weibull_bounded);
+    default: break;
+  }
+  const auto k = static_cast<std::size_t>(kind);
+  return k < std::size(contact_model_kind_names) && contact_model_kind_names[k] ? contact_model_kind_names[k] : "?";
+}
+
+bool parse_contact_model_kind(const std::string& name, ContactModelKind& kind) noexcept {
+  for (ContactModelKind candidate : all_contact_model_kinds)
+    if (name == to_string(candidate)) {
+      kind = candidate;
+      return true;
+    }
+  return false;
+}
+
+ContactModelKind contact_model_kind(HeightModel model) noexcept {
+  switch (model) {
+    case HeightModel::gaussian: return ContactModelKind::gaussian;
+    case HeightModel::weibull_tail: return ContactModelKind::weibull_tail;
+    case HeightModel::weibull_bounded: return ContactModelKind::weibull_bounded;
+  }
+  return ContactModelKind::gaussian;
+}
+
+bool is_fitted(ContactModelKind kind) noexcept {
+  return kind == ContactModelKind::gaussian_moments || kind == ContactModelKind::gaussian ||
+         kind == ContactModelKind::weibull_tail || kind == ContactModelKind::weibull_bounded;
 }
 
 ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summits& summits,
@@ -304,8 +356,8 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
 
   // GW on the measured summits, no law: with GW's one radius, and with each summit's own
   for (const bool own_radii : {false, true}) {
-    ModelContact model;
-    model.label = own_radii ? "measured-summits-own-radii" : "measured-summits";
+    ModelContact model =
+        model_of(own_radii ? ContactModelKind::measured_summits_own_radii : ContactModelKind::measured_summits);
     try {
       const SummitContact contact(summits, e_star, area, own_radii);
       model.mean_summit_height = contact.mean_summit_height();
@@ -326,8 +378,7 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
 
   // the Gaussian from the spectral moments (Nayak-McCool)
   {
-    ModelContact model;
-    model.label = "gaussian-moments";
+    ModelContact model = model_of(ContactModelKind::gaussian_moments);
     try {
       model.surface = gaussian_surface_from_moments(moments.m0, moments.m2, moments.m4, area, e_star);
       model.mean_summit_height = 0;
@@ -343,8 +394,7 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
 
   for (HeightModel height_model : all_height_models) {
     const HeightDistribution& fit = summit_fit.model(height_model).fit.distribution;
-    ModelContact model;
-    model.label = to_string(height_model);
+    ModelContact model = model_of(contact_model_kind(height_model));
     model.mean_summit_height = fit.mean();
     RoughSurface& surface = model.surface;
     surface.distribution = height_model == HeightModel::gaussian ? Distribution::gaussian : Distribution::weibull;

@@ -5,6 +5,7 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "asperity/error.hpp"
@@ -55,13 +56,21 @@ double scaled_gamma(double scale, double x) noexcept {
 }
 }  // namespace
 
+// The models' names, once, in HeightModel's order
+constexpr const char* height_model_names[] = {"gaussian", "weibull-tail", "weibull-bounded"};
+
 const char* to_string(HeightModel model) {
-  switch (model) {
-    case HeightModel::gaussian: return "gaussian";
-    case HeightModel::weibull_tail: return "weibull-tail";
-    case HeightModel::weibull_bounded: return "weibull-bounded";
-  }
-  return "?";
+  const auto k = static_cast<std::size_t>(model);
+  return k < std::size(height_model_names) ? height_model_names[k] : "?";
+}
+
+bool parse_height_model(const std::string& name, HeightModel& model) noexcept {
+  for (HeightModel candidate : all_height_models)
+    if (name == to_string(candidate)) {
+      model = candidate;
+      return true;
+    }
+  return false;
 }
 
 const char* describe(HeightModel model) {

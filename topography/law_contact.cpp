@@ -57,6 +57,7 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
     throw Error(std::string("contact law: the ") + to_string(model) + " fit has no elastic curves to set the law beside");
   if (summits.list.size() < 2) throw Error("contact law: too few summits for their heights' standard deviation");
   LawContact out;
+  out.fit = model;
   out.model = to_string(model);
   out.model_reason = model_reason;
   out.surface = elastic->surface;

@@ -124,24 +124,31 @@ HeightUnit height_unit(const SurfaceAnalysis& a) {
   return a.statistics.rms < 1e-6 ? HeightUnit{"nm", 1e9} : HeightUnit{"\xC2\xB5m", 1e6};
 }
 
-const char* colour_of(const std::string& label) {
-  if (label == "measured-summits") return "#2ca02c";
-  if (label == "measured-summits-own-radii") return "#98df8a";
-  if (label == "gaussian-moments") return "#8c8c8c";
-  if (label == "gaussian") return "#000000";
-  if (label == "weibull-tail") return "#1f77b4";
-  if (label == "persson") return "#ff7f0e";
-  if (label == "exact") return "#7b3294";
-  return "#d62728";  // weibull-bounded
+// Each curve's colour and legend in the plots
+const char* colour_of(ContactModelKind kind) {
+  switch (kind) {
+    case ContactModelKind::measured_summits: return "#2ca02c";
+    case ContactModelKind::measured_summits_own_radii: return "#98df8a";
+    case ContactModelKind::gaussian_moments: return "#8c8c8c";
+    case ContactModelKind::gaussian: return "#000000";
+    case ContactModelKind::weibull_tail: return "#1f77b4";
+    case ContactModelKind::weibull_bounded: return "#d62728";
+    case ContactModelKind::persson: return "#ff7f0e";
+    case ContactModelKind::exact: return "#7b3294";
+  }
+  return "#d62728";
 }
-const char* legend_of(const std::string& label) {
-  if (label == "measured-summits") return "GW on the measured summits (no law)";
-  if (label == "measured-summits-own-radii") return "measured summits, their own radii";
-  if (label == "gaussian-moments") return "Gaussian from m0, m2, m4 (Nayak-McCool)";
-  if (label == "gaussian") return "Gaussian fit";
-  if (label == "weibull-tail") return "Weibull, tail up";
-  if (label == "persson") return "Persson's theory (the map's spectrum)";
-  if (label == "exact") return "exact elastic contact (boundary elements)";
+const char* legend_of(ContactModelKind kind) {
+  switch (kind) {
+    case ContactModelKind::measured_summits: return "GW on the measured summits (no law)";
+    case ContactModelKind::measured_summits_own_radii: return "measured summits, their own radii";
+    case ContactModelKind::gaussian_moments: return "Gaussian from m0, m2, m4 (Nayak-McCool)";
+    case ContactModelKind::gaussian: return "Gaussian fit";
+    case ContactModelKind::weibull_tail: return "Weibull, tail up";
+    case ContactModelKind::weibull_bounded: return "Weibull mirrored (bounded)";
+    case ContactModelKind::persson: return "Persson's theory (the map's spectrum)";
+    case ContactModelKind::exact: return "exact elastic contact (boundary elements)";
+  }
   return "Weibull mirrored (bounded)";
 }
 
@@ -172,8 +179,8 @@ detail::PlotPanel density_panel(const std::vector<double>& values, const SampleA
   const double pad = 0.15 * (hi - lo);
   for (const ModelAssessment& m : fits.models) {
     detail::PlotSeries series;
-    series.label = std::string(legend_of(to_string(m.fit.distribution.model))) + p_label(m);
-    series.colour = colour_of(to_string(m.fit.distribution.model));
+    series.label = std::string(legend_of(contact_model_kind(m.fit.distribution.model))) + p_label(m);
+    series.colour = colour_of(contact_model_kind(m.fit.distribution.model));
     for (int k = 0; k <= 400; ++k) {
       const double x = lo - pad + (hi - lo + 2 * pad) * k / 400.0;
       series.x.push_back(x * unit.per_metre);
@@ -197,8 +204,8 @@ std::string fits_svg(const SurfaceAnalysis& a) {
   qq.y_label = std::string("observed summit height [") + unit.name + "]";
   for (const ModelAssessment& m : a.summit_heights.models) {
     detail::PlotSeries series;
-    series.label = legend_of(to_string(m.fit.distribution.model));
-    series.colour = colour_of(to_string(m.fit.distribution.model));
+    series.label = legend_of(contact_model_kind(m.fit.distribution.model));
+    series.colour = colour_of(contact_model_kind(m.fit.distribution.model));
     series.points = true;
     const std::size_t n = heights.size(), step = std::max<std::size_t>(1, n / 2000);  // at most ~2000 markers
     for (std::size_t k = 0; k < n; k += step) {
@@ -274,7 +281,8 @@ std::string contact_svg(const SurfaceAnalysis& a) {
   ContactPanels panels(a, "load-separation", title);
   for (const ModelContact& m : a.contact->models)
     if (m.served)  // the exact contact's solved steps as markers, Persson dashed
-      panels.add(m.curve, legend_of(m.label), colour_of(m.label), m.label == "exact", m.label == "persson");
+      panels.add(m.curve, legend_of(m.kind), colour_of(m.kind), m.kind == ContactModelKind::exact,
+                 m.kind == ContactModelKind::persson);
   return panels.svg();
 }
 
@@ -282,10 +290,10 @@ std::string contact_svg(const SurfaceAnalysis& a) {
 std::string law_svg(const SurfaceAnalysis& a) {
   const LawContact& law = *a.law;
   ContactPanels panels(a, law.law + " and elastic: load-separation", "stiffness-load");
-  const ModelContact* elastic = a.contact->find(law.model);
+  const ModelContact* elastic = a.contact->find(contact_model_kind(law.fit));
   if (elastic && elastic->served)
-    panels.add(elastic->curve, std::string("elastic (Hertz), ") + legend_of(law.model), "#1f77b4");
-  panels.add(law.curve, law.law + ", " + legend_of(law.model), "#d62728");
+    panels.add(elastic->curve, std::string("elastic (Hertz), ") + legend_of(contact_model_kind(law.fit)), "#1f77b4");
+  panels.add(law.curve, law.law + ", " + legend_of(contact_model_kind(law.fit)), "#d62728");
   return panels.svg();
 }
 
@@ -376,7 +384,7 @@ std::string analysis_json(const SurfaceAnalysis& a) {
   if (a.contact) {
     const ContactComparison& c = *a.contact;
     ordered_json models = ordered_json::array();
-    const ModelContact* gaussian = c.find("gaussian");
+    const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
     for (const ModelContact& mc : c.models) {
       ordered_json mj{{"model", mc.label},
                       {"mean_summit_height_m", number(mc.mean_summit_height)},
@@ -524,18 +532,18 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
   out << "  " << a.verdict.text << "\n";
   if (a.contact) {
     const ContactComparison& c = *a.contact;
-    const ModelContact* gaussian = c.find("gaussian");
+    const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
       out << "  at " << g(c.pressures[k]) << " Pa: stiffness per area [N/m^3] (x the measured summits')";
       for (const ModelContact& mc : c.models) {
-        if (mc.label == "measured-summits-own-radii") continue;
+        if (mc.kind == ContactModelKind::measured_summits_own_radii) continue;
         out << "  " << mc.label << " ";
         if (!mc.served) {
           out << "(none)";
           continue;
         }
         out << g(mc.at_pressures[k].stiffness / c.nominal_area);
-        if (k < mc.stiffness_over_measured.size() && mc.label != "measured-summits")
+        if (k < mc.stiffness_over_measured.size() && mc.kind != ContactModelKind::measured_summits)
           out << " (" << g(mc.stiffness_over_measured[k], 3) << "x)";
       }
       (void)gaussian;
@@ -715,7 +723,7 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
     if (!c.headline.empty()) md << "**" << c.headline << ".**\n\n";
     md << "| model | table |\n|---|---|\n";
     for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
-    const ModelContact* gaussian = c.find("gaussian");
+    const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
       md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
       for (const ModelContact& mc : c.models) {
@@ -725,7 +733,7 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
         }
         const PhysicalState& s = mc.at_pressures[k];
         std::string versus = k < mc.stiffness_over_measured.size() ? g(mc.stiffness_over_measured[k], 3) : "–";
-        if (mc.label == "measured-summits" && k < c.measured_stiffness_spread.size())
+        if (mc.kind == ContactModelKind::measured_summits && k < c.measured_stiffness_spread.size())
           versus = "1 (±" + g(100 * c.measured_stiffness_spread[k], 2) + "%)";
         md << "| " << mc.label << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
            << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | " << versus << " | "
@@ -744,14 +752,14 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
     if (!c.measured_stiffness_spread.empty())
       md << "\n± on the measured summits: the relative standard deviation of their stiffness over the surrogate "
             "ensemble (surfaces of the same statistics), the uncertainty of each ratio to them.\n";
-    const ModelContact* exact = c.find("exact");
+    const ModelContact* exact = c.find(ContactModelKind::exact);
     if (exact && exact->served) {
       md << "\n### Each model against the exact contact of this map\n\nThe exact elastic contact: " << c.exact_method
          << ". It neglects neither the summits' coalescence nor their elastic interaction: what every model is judged "
             "against.\n\n**" << c.exact_headline << ".**\n\n| model | nominal pressure [Pa] | mean separation − exact's [m] | "
             "real area / exact's | stiffness / exact's |\n|---|---:|---:|---:|---:|\n";
       for (const ModelContact& mc : c.models) {
-        if (!mc.served || mc.label == "exact" || mc.stiffness_over_exact.empty()) continue;
+        if (!mc.served || mc.kind == ContactModelKind::exact || mc.stiffness_over_exact.empty()) continue;
         for (std::size_t k = 0; k < c.pressures.size(); ++k)
           md << "| " << mc.label << " | " << g(c.pressures[k]) << " | " << g(mc.separation_minus_exact[k], 3) << " | "
              << g(mc.area_over_exact[k], 3) << " | " << g(mc.stiffness_over_exact[k], 3) << " |\n";

@@ -37,13 +37,19 @@ __all__ = ["COLUMNS", "analyse_files", "options_fingerprint", "output_name", "re
 
 _SCHEMA = "asperity-surface/2"
 _DONE_SCHEMA = "asperity-batch-done/1"  # a surface's <name>.done marker
-_MODELS = ("gaussian", "weibull_tail", "weibull_bounded")
+# The models' names, spelled once: by the library (the JSON documents' spelling), read from the module.
+# The fits' columns spell a height model with underscores (heights_weibull_tail_ad_p), the contact
+# columns as the JSON does (stiffness_over_measured_0_weibull-tail).
+from ._asperity import topography as _topography  # noqa: E402
+
+_MODELS = tuple(model.replace("-", "_") for model in _topography.height_model_names)
 _SAMPLES = ("summit_heights", "heights")
+# the curves of a contact comparison, in the library's order (ContactModelKind)
+_MEASURED, _OWN_RADII, _GAUSSIAN_MOMENTS, *_FITTED, _PERSSON, _EXACT = _topography.contact_model_names
 # the contact models whose stiffness is compared with GW summed over the measured summits
-_CONTACT_MODELS = ("gaussian-moments", "gaussian", "weibull-tail", "weibull-bounded", "measured-summits-own-radii",
-                   "persson", "exact")
+_CONTACT_MODELS = (_GAUSSIAN_MOMENTS, *_FITTED, _OWN_RADII, _PERSSON, _EXACT)
 # the curves compared with the exact contact, when it was solved
-_EXACT_MODELS = ("measured-summits",) + _CONTACT_MODELS[:-1]
+_EXACT_MODELS = (_MEASURED,) + _CONTACT_MODELS[:-1]
 
 COLUMNS = [
     "source", "name", "status", "error", "seconds",
@@ -58,13 +64,30 @@ COLUMNS = [
     f"{sample}_{model}_{field}"
     for sample in _SAMPLES
     for model in _MODELS
-    for field in (("ad_p", "ad_p_is_bound", "akaike_weight") if model == "gaussian" else
+    for field in (("ad_p", "ad_p_is_bound", "akaike_weight") if _topography.parameter_count(model) == 2 else
                   ("shape", "shape_lo", "shape_hi", "shape_identified", "ad_p", "ad_p_is_bound", "akaike_weight"))
 ] + ["verdict_text", "contact_closest_model", "contact_headline", "contact_closest_to_exact"]
 """The table's fixed columns, in order. With contact curves, each pressure k (0, 1, ...) adds
 pressure_{k}_Pa, measured_summits_stiffness_spread_{k} and, for each model m compared with the
 measured summits, stiffness_over_measured_{k}_{m}; with the exact contact solved, for each curve m
 stiffness_over_exact_{k}_{m} and area_over_exact_{k}_{m}: see row_from_json."""
+
+# Where each fixed column is in a surface's JSON document (asperity-surface/2): one table, read by
+# row_from_json (a missing key gives None)
+_JSON_PATHS = {
+    **{key: ("surface", key) for key in ("nx", "ny", "dx_m", "dy_m")},
+    **{key: ("statistics", key) for key in ("valid_points", "missing_points", "Sq_m", "Sa_m", "Ssk", "Sku")},
+    **{key: ("spectral_moments", key) for key in ("alpha", "anisotropy", "isotropic")},
+    "noise_floor_reached": ("noise_floor", "reached"),
+    "summits": ("summits", "count"), "summit_density_per_m2": ("summits", "density_per_m2"),
+    "summit_radius_m": ("summits", "radius_m"),
+    "summits_fitted": ("fits", "summits_fitted"), "surrogates": ("ensemble", "surrogates"),
+    "verdict_tested": ("verdict", "tested"),
+    **{key: ("verdict", key) for key in (
+        "gaussian_rejected", "gaussian_p_heights", "gaussian_p_heights_is_bound", "gaussian_p_summit_heights",
+        "gaussian_p_summit_heights_is_bound", "heights_orientation", "model_for_contact")},
+    "verdict_text": ("verdict", "text"),
+}
 
 
 # ---- options: a plain, picklable description of an AnalysisOptions, and its fingerprint ----
@@ -299,27 +322,14 @@ def row_from_json(document, source=None, name=None) -> dict:
     d = json.loads(document) if isinstance(document, (str, bytes)) else document
     if d.get("schema") != _SCHEMA:
         raise ValueError(f"not an {_SCHEMA} document (schema {d.get('schema')!r})")
-    surface, stats, moments = d["surface"], d["statistics"], d["spectral_moments"]
-    summits, verdict = d["summits"], d["verdict"]
     row = dict.fromkeys(COLUMNS)
-    row.update({
-        "source": source if source is not None else surface["source"], "name": name, "status": "analysed",
-        "nx": surface["nx"], "ny": surface["ny"], "dx_m": surface["dx_m"], "dy_m": surface["dy_m"],
-        "valid_points": stats["valid_points"], "missing_points": stats["missing_points"],
-        "Sq_m": stats["Sq_m"], "Sa_m": stats["Sa_m"], "Ssk": stats["Ssk"], "Sku": stats["Sku"],
-        "alpha": moments["alpha"], "anisotropy": moments["anisotropy"], "isotropic": moments["isotropic"],
-        "noise_floor_reached": d["noise_floor"]["reached"],
-        "summits": summits["count"], "summit_density_per_m2": summits["density_per_m2"],
-        "summit_radius_m": summits["radius_m"],
-        "summits_fitted": d["fits"].get("summits_fitted"), "surrogates": d["ensemble"]["surrogates"],
-        "verdict_tested": verdict["tested"], "gaussian_rejected": verdict["gaussian_rejected"],
-        "gaussian_p_heights": verdict["gaussian_p_heights"],
-        "gaussian_p_heights_is_bound": verdict["gaussian_p_heights_is_bound"],
-        "gaussian_p_summit_heights": verdict["gaussian_p_summit_heights"],
-        "gaussian_p_summit_heights_is_bound": verdict["gaussian_p_summit_heights_is_bound"],
-        "heights_orientation": verdict["heights_orientation"], "model_for_contact": verdict["model_for_contact"],
-        "verdict_text": verdict["text"],
-    })
+    row.update({"source": source if source is not None else d["surface"]["source"], "name": name,
+                "status": "analysed"})
+    for column, path in _JSON_PATHS.items():
+        value = d
+        for key in path:
+            value = value.get(key) if isinstance(value, dict) else None
+        row[column] = value
     for sample in _SAMPLES:
         fits = d["fits"].get(sample)
         for m in (fits or {}).get("models", []):
@@ -329,7 +339,7 @@ def row_from_json(document, source=None, name=None) -> dict:
             row[prefix + "ad_p"] = m["anderson_darling_p"]
             row[prefix + "ad_p_is_bound"] = m["anderson_darling_p_is_bound"]
             row[prefix + "akaike_weight"] = m["akaike_weight"]
-            if m["model"] != "gaussian":
+            if prefix + "shape" in row:  # a model with a shape (the Weibulls)
                 row[prefix + "shape"] = m["shape"]
                 row[prefix + "shape_lo"], row[prefix + "shape_hi"] = m["interval_shape"]
                 row[prefix + "shape_identified"] = m["shape_identified"]
@@ -338,7 +348,7 @@ def row_from_json(document, source=None, name=None) -> dict:
         row["contact_closest_model"] = contact["closest_fitted_model"]
         row["contact_headline"] = contact["headline"]
         references = contact.get("references", {})
-        exact_solved = bool(references.get("exact")) and _models_served(contact, "exact")
+        exact_solved = bool(references.get("exact")) and _models_served(contact, _EXACT)
         row["contact_closest_to_exact"] = references.get("closest_to_exact") or None
         models = {m["model"]: m for m in contact["models"]}
         spread = contact["measured_summits_spread"]["stiffness_relative"]

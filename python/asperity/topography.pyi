@@ -193,6 +193,7 @@ class HeightModel(enum.Enum):
     weibull_bounded = 2
 
 ModelLike = Union[str, HeightModel]
+height_model_names: Tuple[str, ...]  # "gaussian", "weibull-tail", "weibull-bounded": the JSON documents' spelling
 
 def describe(model: ModelLike) -> str: ...
 def parameter_count(model: ModelLike) -> int: ...
@@ -431,6 +432,8 @@ class RadialPowerSpectrum:
     def mean_square_gradient(self) -> float: ...
 
 def radial_power_spectrum(map: HeightMap, edges: str = "periodic_component") -> RadialPowerSpectrum: ...
+
+contact_model_names: Tuple[str, ...]  # ModelContact.label's: "measured-summits", ..., "persson", "exact"
 
 class PerssonState:
     """Persson's theory at one nominal pressure (SI units)."""

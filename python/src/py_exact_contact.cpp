@@ -148,32 +148,16 @@ void bind_exact_contact(py::module_& m) {
       "map"_a,
       "The rms gradient sqrt(<|grad h|^2>) of a map taken as periodic, from its Fourier spectrum: the slope in\n"
       "the area-load law A/A0 = kappa p / (E* h'_rms). Raises asperity.Error for missing points.");
-  py::class_<topo::ContactStep>(m, "ContactStep",
+  py::class_<topo::ContactStep> contact_step(m, "ContactStep",
                                 "One load step of the exact contact: nominal pressure and load, the mean gap (the\n"
                                 "separation of the flat from the mean plane), that less the mean summit height (the GW\n"
                                 "curves' datum), area, stiffness -dP/d(mean gap) from the incremental solve, contact\n"
-                                "patches, and the solve's iterations and residual.")
-      .def_readonly("pressure", &topo::ContactStep::pressure, "Mean nominal pressure [Pa].")
-      .def_readonly("load", &topo::ContactStep::load, "[N] on the map's area.")
-      .def_readonly("mean_gap", &topo::ContactStep::mean_gap, "Separation of the flat from the mean plane [m].")
-      .def_readonly("separation_from_mean_summit", &topo::ContactStep::separation_from_mean_summit,
-                    "mean_gap less the mean summit height [m].")
-      .def_readonly("approach", &topo::ContactStep::approach, "The flat's rigid-body position [m].")
-      .def_readonly("area_fraction", &topo::ContactStep::area_fraction)
-      .def_readonly("real_area", &topo::ContactStep::real_area, "[m^2]")
-      .def_readonly("stiffness", &topo::ContactStep::stiffness, "-dP/d(mean gap) [N/m].")
-      .def_readonly("stiffness_per_area", &topo::ContactStep::stiffness_per_area, "[N/m^3]")
-      .def_readonly("approach_stiffness", &topo::ContactStep::approach_stiffness, "-dP/d(approach) [N/m].")
-      .def_readonly("max_pressure", &topo::ContactStep::max_pressure, "[Pa]")
-      .def_readonly("contact_points", &topo::ContactStep::contact_points)
-      .def_readonly("clusters", &topo::ContactStep::clusters, "Contact patches (4-neighbour; wrapped when periodic).")
-      .def_readonly("iterations", &topo::ContactStep::iterations)
-      .def_readonly("solves", &topo::ContactStep::solves)
-      .def_readonly("residual", &topo::ContactStep::residual)
-      .def_readonly("coarse_iterations", &topo::ContactStep::coarse_iterations)
-      .def_readonly("stiffness_iterations", &topo::ContactStep::stiffness_iterations)
-      .def_readonly("stiffness_residual", &topo::ContactStep::stiffness_residual)
-      .def("__repr__", [](const topo::ContactStep& s) {
+                                "patches, and the solve's iterations and residual.");
+  // its fields from their one list (ContactStep's, exact_contact.hpp), each with its meaning
+#define ASPERITY_BIND_FIELD(type, name, column, meaning) contact_step.def_readonly(#name, &topo::ContactStep::name, meaning);
+  ASPERITY_CONTACT_STEP_FIELDS(ASPERITY_BIND_FIELD)
+#undef ASPERITY_BIND_FIELD
+  contact_step.def("__repr__", [](const topo::ContactStep& s) {
         return "ContactStep(pressure=" + std::string(py::repr(py::float_(s.pressure))) +
                ", mean_gap=" + std::string(py::repr(py::float_(s.mean_gap))) +
                ", area_fraction=" + std::string(py::repr(py::float_(s.area_fraction))) + ")";

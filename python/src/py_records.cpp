@@ -5,6 +5,8 @@
 
 #include "bindings.hpp"
 #include "helpers.hpp"
+#include "asperity/contact.hpp"
+#include "asperity/record_fields.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -13,8 +15,11 @@ namespace asperity::python {
 
 void bind_records(py::module_& m) {
   auto collections = py::module_::import("collections");
-  py::object contact_state = collections.attr("namedtuple")(
-      "ContactState", py::make_tuple("count", "area", "load", "stiffness", "stiffness_ratio"), "module"_a = "asperity");
+  // the fields' names from their one list (ContactState's, contact.hpp)
+  py::list contact_state_names;
+  for (const RecordField& field : RecordFields<ContactState>::fields) contact_state_names.append(field.name);
+  py::object contact_state = collections.attr("namedtuple")("ContactState", py::tuple(contact_state_names),
+                                                            "module"_a = "asperity");
   contact_state.attr("__doc__") =
       "contact_at's answer (floats, or arrays shaped like the separations): count N X_0, area pi N R sigma_s X_1, "
       "load (4/3) N E* R^1/2 sigma_s^3/2 X_3/2, stiffness 2 N E* R^1/2 sigma_s^1/2 X_1/2 and the stiffness/load "

@@ -70,11 +70,16 @@ void bind_persson_contact(py::module_& m) {
       "map"_a, "edges"_a = "periodic_component",
       "The radial power spectrum of a map. edges: 'periodic_component' (Moisan's periodic component: a\n"
       "measured map), 'hann' (a Hann window each way) or 'none' (the map taken as periodic).");
-  py::class_<topo::PerssonState>(m, "PerssonState", "Persson's theory at one nominal pressure (SI units).")
-      .def_readonly("pressure", &topo::PerssonState::pressure, "[Pa]")
-      .def_readonly("mean_gap", &topo::PerssonState::mean_gap, "From the mean plane [m].")
-      .def_readonly("area_fraction", &topo::PerssonState::area_fraction)
-      .def_readonly("stiffness_per_area", &topo::PerssonState::stiffness_per_area, "-dp/du [N/m^3]");
+  // the curves' names a ContactComparison holds (ModelContact.label), as the JSON documents spell
+  // them (contact_comparison.hpp's one table), in ContactModelKind's order
+  py::list contact_model_names;
+  for (topo::ContactModelKind kind : topo::all_contact_model_kinds) contact_model_names.append(topo::to_string(kind));
+  m.attr("contact_model_names") = py::tuple(contact_model_names);
+  py::class_<topo::PerssonState> persson_state(m, "PerssonState", "Persson's theory at one nominal pressure (SI units).");
+  // its fields from their one list (PerssonState's, persson_contact.hpp), each with its meaning
+#define ASPERITY_BIND_FIELD(type, name, column, meaning) persson_state.def_readonly(#name, &topo::PerssonState::name, meaning);
+  ASPERITY_PERSSON_STATE_FIELDS(ASPERITY_BIND_FIELD)
+#undef ASPERITY_BIND_FIELD
   py::class_<topo::PerssonContact>(
       m, "PerssonContact",
       "Persson's theory of contact (2007; Yang and Persson 2008) from a radial power spectrum: mean gap, real\n"

@@ -29,9 +29,9 @@ topo::HeightModel to_model(const py::handle& value) {
   if (py::isinstance<topo::HeightModel>(value)) return value.cast<topo::HeightModel>();
   if (py::isinstance<py::str>(value)) {
     std::string name = value.cast<std::string>();
-    std::replace(name.begin(), name.end(), '_', '-');
-    for (topo::HeightModel model : topo::all_height_models)
-      if (name == topo::to_string(model)) return model;
+    std::replace(name.begin(), name.end(), '_', '-');  // Python's enum names: weibull_tail
+    topo::HeightModel model;
+    if (topo::parse_height_model(name, model)) return model;
     throw py::value_error("unknown height model '" + value.cast<std::string>() +
                           "': expected 'gaussian', 'weibull_tail' or 'weibull_bounded'");
   }
@@ -74,6 +74,10 @@ void bind_fits(py::module_& m) {
       .value("gaussian", topo::HeightModel::gaussian)
       .value("weibull_tail", topo::HeightModel::weibull_tail)
       .value("weibull_bounded", topo::HeightModel::weibull_bounded);
+  // the models' names as the JSON documents spell them (to_string's one table), in HeightModel's order
+  py::list height_model_names;
+  for (topo::HeightModel model : topo::all_height_models) height_model_names.append(topo::to_string(model));
+  m.attr("height_model_names") = py::tuple(height_model_names);
   m.def("describe", [](const py::object& model) { return std::string(topo::describe(to_model(model))); }, "model"_a,
         "The model in words.");
   m.def("parameter_count", [](const py::object& model) { return topo::parameter_count(to_model(model)); }, "model"_a,

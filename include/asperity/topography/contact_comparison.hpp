@@ -66,8 +66,27 @@ struct ContactOptions {
 
 inline constexpr int min_exact_points = 2, max_exact_points = 1000;
 
+// Which curve a comparison holds, each named once (to_string: the name in JSON, the report, the
+// batch's table and Python): GW on the measured summits (one radius, or each its own), the
+// Gaussian from the spectral moments, the fitted height models (HeightModel's names), and the
+// references (Persson's theory, the exact contact).
+enum class ContactModelKind {
+  measured_summits, measured_summits_own_radii, gaussian_moments, gaussian, weibull_tail, weibull_bounded, persson, exact
+};
+inline constexpr ContactModelKind all_contact_model_kinds[] = {
+    ContactModelKind::measured_summits, ContactModelKind::measured_summits_own_radii, ContactModelKind::gaussian_moments,
+    ContactModelKind::gaussian,         ContactModelKind::weibull_tail,               ContactModelKind::weibull_bounded,
+    ContactModelKind::persson,          ContactModelKind::exact};
+// "measured-summits", "measured-summits-own-radii", "gaussian-moments", "gaussian", "weibull-tail",
+// "weibull-bounded", "persson", "exact"
+const char* to_string(ContactModelKind kind);
+bool parse_contact_model_kind(const std::string& name, ContactModelKind& kind) noexcept;  // to_string's inverse
+ContactModelKind contact_model_kind(HeightModel model) noexcept;  // a fitted height model's curve
+bool is_fitted(ContactModelKind kind) noexcept;  // a law fitted to the map: gaussian-moments and the height models
+
 struct ModelContact {
-  std::string label;               // measured-summits(-own-radii), gaussian-moments, gaussian, weibull-tail, weibull-bounded
+  ContactModelKind kind = ContactModelKind::measured_summits;
+  std::string label;               // to_string(kind)
   bool served = false;
   std::string note;                // the table that served it, or why there is no curve
   RoughSurface surface;
@@ -108,7 +127,8 @@ struct ContactComparison {
   std::string exact_method;
   std::string closest_to_exact;
   std::string exact_headline;
-  const ModelContact* find(const std::string& label) const;
+  const ModelContact* find(ContactModelKind kind) const;
+  const ModelContact* find(const std::string& label) const;  // by to_string(kind); nullptr for another name
 };
 
 // Progress of the exact solves: `done` of `total` load steps.

@@ -19,6 +19,7 @@
 // remedy). The maximum is found by NLopt's BOBYQA in (ln gap, ln scale, ln shape) on
 // standardized data, from several starting shapes; the shape is kept in [shape_min, shape_max].
 #pragma once
+#include <string>
 #include <cstddef>
 #include <vector>
 
@@ -29,6 +30,8 @@ inline constexpr HeightModel all_height_models[] = {HeightModel::gaussian, Heigh
                                                     HeightModel::weibull_bounded};
 
 const char* to_string(HeightModel model);        // "gaussian", "weibull-tail", "weibull-bounded"
+// The inverse of to_string (its one spelling table); false for any other name
+bool parse_height_model(const std::string& name, HeightModel& model) noexcept;
 const char* describe(HeightModel model);         // "Gaussian", "Weibull, tail up (GW side)", ...
 int parameter_count(HeightModel model);          // 2 or 3
 

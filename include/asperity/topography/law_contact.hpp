@@ -42,7 +42,8 @@ using LawSceneMaker = std::function<SceneLaw(const RoughSurface& surface, double
 
 struct LawContact {
   std::string law;                 // its name (asperity::contact_law_name)
-  std::string model;               // the fit the curves are of: gaussian, weibull-tail, weibull-bounded
+  HeightModel fit = HeightModel::gaussian;  // the fit the curves are of
+  std::string model;               // its name, to_string(fit): gaussian, weibull-tail, weibull-bounded
   std::string model_reason;        // why that fit
   RoughSurface surface;            // its surface (the elastic curves' too)
   // the plasticity index from the measured summits
