@@ -462,7 +462,7 @@ Surface: TypeAlias = SurfaceScales
 PhysicalSurface: TypeAlias = RoughSurface
 
 def law_curves(law: str, *, progress: Optional[Callable[[Dict[str, float]], object]] = None,
-               **keys: Union[float, str, Sequence[float]]) -> ContactCurves:
+               **kwargs: Union[float, str, Sequence[float]]) -> ContactCurves:
     """A contact law's rough-surface curves, tabulated now (the keywords are a [[law]] scene's keys;
     progress: called at most once a second with a dict; Ctrl-C stops it)."""
     ...

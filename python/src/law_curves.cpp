@@ -102,21 +102,17 @@ bool read_scene_key(const std::string& key, const py::handle& value, SceneLawInp
 
 // The keywords of law_curves as a law scene's typed inputs: each key is a law parameter (the
 // registry's) or a [[law]] key (asperity/scene.hpp's scene_law_keys), nothing else.
-SceneLawInputs law_inputs(const std::string& law, const py::kwargs& keys, py::object& progress) {
+SceneLawInputs law_inputs(const std::string& law, const py::kwargs& keys) {
   SceneLawInputs in;
   if (!contact_law_kind_of(law.c_str(), in.law))
     throw Error("law_curves: law must be one of " + contact_law_names(", ", true) + ", not '" + quote_text(law) + "'");
   for (const auto& item : keys) {
     const std::string key = py::str(item.first);
-    if (key == "progress") {  // not a scene key: the call's own
-      progress = py::reinterpret_borrow<py::object>(item.second);
-      continue;
-    }
     if (!read_law_parameter(key, item.second, in) && !read_scene_key(key, item.second, in))
       throw Error("law_curves: '" + quote_text(key) + "' is not a law scene's key (" + law + "'s: " +
                   law_keys_text(in.law) +
                   "; the surface's: contact_modulus, distribution, shape, side, height_scale, summit_radius, "
-                  "summit_density, nominal_area; separation, max_rel_error, name, progress)");
+                  "summit_density, nominal_area; separation, max_rel_error, name)");
   }
   return in;
 }
@@ -185,9 +181,8 @@ void bind_law_curves(py::module_& m) {
       "                        summit_density=4e8, nominal_area=1e-4, separation=(0, 4), max_rel_error=1e-6)";
   m.def(
       "law_curves",
-      [](const std::string& law, const py::kwargs& keys) {
-        py::object progress = py::none();
-        const SceneLawInputs in = law_inputs(law, keys, progress);
+      [](const std::string& law, const py::object& progress, const py::kwargs& keys) {
+        const SceneLawInputs in = law_inputs(law, keys);
         SceneLaw scene;
         try {
           scene = make_scene_law(in, LawNaming::keyword);
@@ -196,7 +191,7 @@ void bind_law_curves(py::module_& m) {
         }
         return tabulate(scene, "asperity.law_curves", progress);
       },
-      "law"_a, doc.c_str());
+      "law"_a, py::kw_only(), "progress"_a = py::none(), doc.c_str());
   m.def(
       "tabulate_law_scene",
       [](const std::string& text) {
