@@ -96,6 +96,7 @@
 #include "asperity/contact_curves.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/detail/fast_math.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/table.hpp"
 
 namespace {
@@ -751,7 +752,7 @@ const Segment& far_tail_segment() {
     const CurveSet& set = *table().find(Distribution::weibull, Side::tail);
     std::size_t shape = 0;
     while (set.shapes[shape] != 2.0) ++shape;
-    const auto maps = SegmentMap::resolve(set.layout, set.distribution, set.side, 2.0);
+    const auto maps = detail::SegmentMap::resolve(set.layout, set.distribution, set.side, 2.0);
     const std::size_t last = maps.size() - 1;
     int first = 0;
     for (std::size_t i = 0; i < last; ++i) first += set.layout[i].knots;

@@ -5,6 +5,7 @@
 //   build/bench/degree_choice
 #include "asperity/generator/chain_ode.hpp"
 #include "asperity/layout.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/detail/quintic_hermite.hpp"
 #include <cstdio>
 #include <cmath>
@@ -25,7 +26,7 @@ int main() {
   for (auto& c : cs) {
     auto layout = scale_knot_density(default_layout(c.d, c.side), 2);
     auto data = generator::integrate_curve({c.d, c.side, c.a}, layout, {});
-    auto maps = SegmentMap::resolve(layout, c.d, c.side, c.a);
+    auto maps = detail::SegmentMap::resolve(layout, c.d, c.side, c.a);
     int total = 0; for (auto& l : layout) total += l.knots;
     for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
       int iq = 0, ic = 0; int first = 0;

@@ -26,12 +26,14 @@
 
 #include "random_separations.hpp"
 #include "asperity/curve.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/generator/chain_ode.hpp"
 #include "asperity/generator/quadrature.hpp"
 #include "reference.hpp"
 
 namespace {
 using namespace asperity;
+using detail::SegmentMap;
 
 constexpr std::size_t query_count = 4096;
 constexpr int reference_points = 400;

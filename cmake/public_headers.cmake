@@ -1,5 +1,6 @@
 # The public face: the headers each component installs, listed one by one (cmake/install.cmake).
-# Nothing else is installed: the runtime's internals (runtime/include/asperity/detail/) and each
+# Nothing else is installed: the runtime's internals (runtime/include/asperity/detail/, among
+# them the table format's segment kinds and maps, segment_kind.hpp and segment_map.hpp) and each
 # folder's private headers stay in the source tree. tests/check_layering.cmake checks that every
 # header under include/ is listed here once and that a listed header includes only listed ones.
 set(ASPERITY_RUNTIME_HEADERS
@@ -7,10 +8,13 @@ set(ASPERITY_RUNTIME_HEADERS
   error.hpp              # asperity::Error, the one exception type
   integrals.hpp          # distributions, sides, orders: which integral
   model.hpp              # integrals.hpp's former name (deprecated)
-  segment_kind.hpp layout.hpp instruction_set.hpp
+  layout.hpp             # a curve's knot layout (SegmentKind, SegmentSpec): Curve and CurveSet name it
+  instruction_set.hpp
   curve.hpp              # one resolved curve: the hot handle
   asymptotic.hpp         # the series beyond the table
-  table_data.hpp table.hpp table_file.hpp table_schema.hpp table_writer.hpp
+  table_data.hpp         # a table's contents (TableData, CurveSet): generated, written, read
+  table.hpp table_file.hpp table_writer.hpp
+  table_schema.hpp       # the table format's names and limits (to leave the installed set: issue 38)
   contact_curves_data.hpp contact_curves.hpp  # contact curves against separation: a measured surface served
   contact_scales.hpp contact.hpp    # contact_at: the four quantities of a curve
   surface.hpp            # a physical surface, unit conversions and input checks

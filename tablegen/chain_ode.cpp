@@ -7,11 +7,14 @@
 #include <string>
 
 #include "asperity/asymptotic.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
 #include "asperity/interrupt.hpp"
 
 namespace asperity::generator {
 namespace {
+
+using detail::SegmentMap;
 
 using State = std::array<double, order_count>;
 // Logs of X_-1/2 and X_0 .. X_5/2: log_values[0] is X_-1/2, log_values[1 + k] is twice_order k.

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "asperity/detail/parallel_for.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
 #include "asperity/interrupt.hpp"
 #include "asperity/table_schema.hpp"
@@ -86,11 +87,11 @@ std::vector<double> shape_grid(const GenerateOptions& options, Side side) {
 
 std::vector<double> check_separations(const Curve& curve, const std::vector<SegmentSpec>& layout, int check_stride) {
   std::vector<double> points;
-  const std::vector<SegmentMap> maps = SegmentMap::resolve(layout, curve.distribution(), curve.side(), curve.shape());
+  const std::vector<detail::SegmentMap> maps = detail::SegmentMap::resolve(layout, curve.distribution(), curve.side(), curve.shape());
   const int stride = std::max(1, check_stride);
   // Each segment: uniform in its own variable u (the knots' spacing), and log-spaced toward
   // both of its ends, where an interpolant is weakest.
-  for (const SegmentMap& map : maps) {
+  for (const detail::SegmentMap& map : maps) {
     if (map.kind == SegmentKind::reciprocal) {  // s in (-inf, s1]: u = sqrt(s1/s) in (0, 1]
       for (double u : {1e-6, 1e-3, 0.01, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999}) points.push_back(map.separation_of_u(u));
       continue;

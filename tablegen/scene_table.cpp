@@ -15,6 +15,7 @@
 
 #include "asperity/curve.hpp"
 #include "asperity/detail/quintic_hermite.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
 #include "asperity/generator/chain_ode.hpp"
 #include "asperity/generator/quadrature.hpp"
@@ -99,6 +100,7 @@ double group_tolerance(const Group& group) {
 }
 
 using detail::parallel_for;
+using detail::SegmentMap;
 
 // The largest error in H of the quintic through every factor-th fine knot of a segment, at the
 // fine knots it drops, where the shape is served (every order, its separations).

@@ -12,7 +12,7 @@ cmake_minimum_required(VERSION 3.18)
 #    also share apps/common/; tests, benchmarks and fuzzers may use the seams named below.
 # 4. The public face: every header under include/ is in cmake/public_headers.cmake once, and a
 #    public header includes only public headers.
-set(layer_core integrals model layout curve asymptotic instruction_set error segment_kind contact_scales number_text
+set(layer_core integrals model layout curve asymptotic instruction_set error contact_scales number_text
     interrupt output record_fields
     contact_law contact_law_registry law_combination)
 set(layer_table table table_schema table_data table_file table_writer contact_curves_data)

@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
 #include "asperity/layout.hpp"
 
 namespace {
 using namespace asperity;
+using detail::SegmentMap;
 
 void check_maps(Distribution distribution, Side side, double shape) {
   const auto maps = SegmentMap::resolve(default_layout(distribution, side), distribution, side, shape);

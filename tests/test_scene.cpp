@@ -19,6 +19,7 @@
 #include "asperity/asperity.h"
 #include "asperity/contact.hpp"
 #include "asperity/contact_model.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/inverse.hpp"
 #include "asperity/error.hpp"
 #include "asperity/scene.hpp"
@@ -496,7 +497,7 @@ TEST(SceneTable, ServesOnlyWhatItsSceneModelled) {
 // zone ends), toward s = 0 and past the table's end.
 std::vector<double> dense_points(const CurveSet& set, std::size_t shape_index, double lo, double hi) {
   const double shape = set.shapes[shape_index];
-  const auto maps = SegmentMap::resolve(set.layout, set.distribution, set.side, shape);
+  const auto maps = detail::SegmentMap::resolve(set.layout, set.distribution, set.side, shape);
   std::vector<double> points;
   for (std::size_t g = 0; g < maps.size(); ++g) {
     const int intervals = set.layout[g].knots - 1;

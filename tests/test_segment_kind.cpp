@@ -11,10 +11,12 @@
 #include <vector>
 
 #include "asperity/detail/compact_curve.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/layout.hpp"
 
 namespace {
 using namespace asperity;
+using namespace asperity::detail;  // the kinds and their maps are the library's (white box)
 
 struct Case {
   Distribution distribution;

@@ -1,18 +1,32 @@
-// The knot layout of a tabulated curve: the table format's geometry, shared by the
-// generator (which fills the knots) and the runtime (which interpolates them).
-//
-// A curve covers the real separation axis with a few segments. Each segment has its own
-// interpolation variable u, in which the knots are uniform, and an analytic offset so that
-// what is stored, H = ln X - offset(n, u), is smooth and O(1-100). The kinds, their maps and
-// offsets are defined once, in segment_kind.hpp.
+// The knot layout of a tabulated curve: which segments cover the separation axis, each with
+// its kind, knot count and ends. Public because public signatures name it: a Curve is built
+// from a layout (curve.hpp), a table's curve set carries one (CurveSet::layout, table_data.hpp)
+// and the generator integrates on one (generator/chain_ode.hpp). What a kind means (its map
+// from separation s to the segment variable u, its offset, its schema text) is the table
+// format's, defined once in the library (runtime/include/asperity/detail/segment_kind.hpp).
 #pragma once
-#include <array>
 #include <vector>
 
 #include "asperity/integrals.hpp"
-#include "asperity/segment_kind.hpp"
 
 namespace asperity {
+
+// A segment's kind. The numbers are the table format (a file stores them): never reuse one.
+// The library's list of kinds (detail/segment_kind.hpp) checks that it matches this enum.
+enum class SegmentKind : int {
+  reciprocal = 0,       // s <= s1 (the next segment's start), u = sqrt(s1/s)
+  linear = 1,           // p0 <= s <= p1, u = s
+  graded = 2,           // s = p0 + (p1 - p0) u^q (version 1 tables)
+  log_exponent = 3,     // s >= p0 and t <= p1, u = ln t (t = s^a, or s^2/2 for the Gaussian)
+  log_tau = 4,          // tau = (-s)^a in [p0, p1], u = ln tau
+  log_distance = 5,     // p0 <= s <= p1 < 0, u = ln(-s)
+  bounded_far = 6,      // -s = d0 exp(L u^2): the bounded side past the bulk
+  gaussian_linear = 7,  // p0 <= s <= p1, u = s (Gaussian only)
+  graded_bare = 8,      // s = p0 + (p1 - p0) u^6
+};
+
+// The kind's name in the schema ("reciprocal", ...); "unknown" for a number that names none.
+const char* to_string(SegmentKind kind) noexcept;
 
 // A layout has 1 to max_segments segments (the loader refuses more).
 inline constexpr int max_segments = 8;
@@ -31,39 +45,5 @@ std::vector<SegmentSpec> default_layout(Distribution distribution, Side side);
 // become round(density * (knots - 1)), at least 2): a cheaper table for a stated error, or a
 // denser one. Throws asperity::Error for a density that is not positive and finite.
 std::vector<SegmentSpec> scale_knot_density(const std::vector<SegmentSpec>& layout, double density);
-
-// A segment resolved for one curve (distribution, side, shape): its kind's functions
-// (segment_kind.hpp) on its geometry. Inline: what only the generator uses (s_of_u, the
-// offset's derivatives) is compiled only into the generator.
-struct SegmentMap : SegmentGeometry {
-  // All the maps of a layout, in order (the reciprocal segment's anchor is the next
-  // segment's lower end). Throws asperity::Error for a layout that does not tile the axis.
-  static std::vector<SegmentMap> resolve(const std::vector<SegmentSpec>& layout, Distribution distribution,
-                                         Side side, double shape);
-  double u_of_s(double separation) const {
-    return visit_segment_kind(kind, [&](auto k) { return decltype(k)::u_of_s(*this, separation); });
-  }
-  // s(u) with its first and second derivatives.
-  void s_of_u(double u, double& separation, double& ds_du, double& d2s_du2) const {
-    visit_segment_kind(kind, [&](auto k) { decltype(k)::s_of_u(*this, u, separation, ds_du, d2s_du2); });
-  }
-  double separation_of_u(double u) const {
-    double separation, d1, d2;
-    s_of_u(u, separation, d1, d2);
-    return separation;
-  }
-  // offset(n, u) and its first two u-derivatives.
-  void offset(double order, double u, double& value, double& d1, double& d2) const {
-    visit_segment_kind(kind, [&](auto k) { decltype(k)::offset(*this, order, u, value, d1, d2); });
-  }
-  double offset_value(double order, double u) const {
-    double value, d1, d2;
-    offset(order, u, value, d1, d2);
-    return value;
-  }
-};
-
-// The exponent t(s) of the far tail: s^a for the Weibull, s^2/2 for the Gaussian.
-double tail_exponent(Distribution distribution, double shape, double separation);
 
 }  // namespace asperity

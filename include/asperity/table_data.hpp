@@ -1,5 +1,8 @@
 // A table file's contents in memory (CurveSet, TableData) and the readers that make them
-// from a file; Table (table.hpp) serves curves from them.
+// from a file; Table (table.hpp) serves curves from them. Public: it is what the generator
+// makes (generator/generate.hpp, scene_table.hpp), what the writer writes (table_writer.hpp)
+// and what Table::data() shows (Python's asperity.CurveSet). The file format's own names and
+// limits are the library's (not installed).
 #pragma once
 #include <cstddef>
 #include <string>
@@ -31,8 +34,8 @@ struct CurveSet {
 
   int total_knots() const;
   std::size_t curve_stride() const { return static_cast<std::size_t>(order_count) * total_knots() * 3; }
-  // Throws Error if sizes, ordering or values are inconsistent, or beyond the limits of
-  // table_schema.hpp (which the writer keeps too).
+  // Throws Error if sizes, ordering or values are inconsistent, or beyond the table format's
+  // limits (which the writer keeps too).
   void validate(const std::string& context) const;
 };
 

@@ -73,7 +73,6 @@
 //   interpolant. The tensile part like the pressure (ln p_t by cubic Hermite, slopes -k_t/p_t),
 //   the summit count like the area fraction (Steffen in ln).
 #pragma once
-#include "asperity/segment_kind.hpp"
 #include <cstddef>
 #include <cstdint>
 
@@ -107,7 +106,7 @@ inline constexpr const char* attr_schema = "schema";
 inline constexpr const char* attr_schema_version = "schema_version";
 inline constexpr const char* attr_generator = "generator";
 inline constexpr const char* attr_generator_options = "generator_options";
-inline constexpr const char* attr_conventions = "conventions";
+inline constexpr const char* attr_conventions = "conventions";  // its text: table_writer.cpp
 inline constexpr const char* attr_exact_shapes = "exact_shapes";
 inline constexpr const char* attr_distribution = "distribution";
 inline constexpr const char* attr_side = "side";
@@ -172,18 +171,5 @@ inline constexpr const char* contact_curves_definition =
     "ln p_t like ln p_c; the pressure and stiffness bounds are relative to p_c + p_t and k_c + k_t.\n"
     "Optional summit_count: summits in contact per m^2 [1/m^2], ln by Steffen's cubic, bounded by\n"
     "summit_count_max_rel_error.";
-
-inline constexpr const char* conventions =
-    "Greenwood-Williamson asperity integrals, see docs/model.md of the asperity project.\n"
-    "Weibull summit heights phi_a(z) = a z^(a-1) exp(-z^a), z >= 0 (unit scale sigma_s);\n"
-    "Gaussian phi(z) = exp(-z^2/2)/sqrt(2 pi) (unit rms summit height sigma).\n"
-    "tail side:    J_n(s) = integral_{z > max(s,0)} (z - s)^n phi(z) dz, every real s.\n"
-    "bounded side: K_n(s) = integral_0^{max(-s,0)} (-s - z)^n phi(z) dz; 0 for s >= 0.\n"
-    "Orders n = 0, 1/2, 1, 3/2, 2, 5/2. Separation s from the Weibull origin (Gaussian: from\n"
-    "the mean), in units of sigma_s (Gaussian: sigma). dX_n/ds = -n X_(n-1).\n"
-    "Stored: H = ln X - offset(u) and dH/du, d2H/du2 on knots uniform in u per segment.\n"
-    "Segment kinds (p0, p1 from segment_p0/p1; t = s^a, or s^2/2 for the Gaussian):\n"
-    ASPERITY_SEGMENT_KIND_TEXT
-    "Shapes between grid nodes: Lagrange in q = ln a - 1/a over the 12 nearest nodes, at the same s.";
 
 }  // namespace asperity::schema

@@ -1,4 +1,4 @@
-// Writing a table file (format in asperity/table_schema.hpp): the HDF5 file is built in memory
+// Writing a table file (format in docs/reliability.md): the HDF5 file is built in memory
 // with a 512-byte user block, the integrity header (SHA-256 of the rest) put in that block, and
 // the bytes written under the output policy (asperity/output.hpp): a crash never leaves a
 // half-written table at the target, and a file that is not such a table is replaced only with

@@ -1,4 +1,5 @@
 #include "asperity/layout.hpp"
+#include "asperity/detail/segment_map.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,11 +44,6 @@ std::vector<SegmentSpec> scale_knot_density(const std::vector<SegmentSpec>& layo
   return scaled;
 }
 
-double tail_exponent(Distribution distribution, double shape, double separation) {
-  return distribution == Distribution::gaussian ? 0.5 * separation * separation
-                                                : std::pow(separation, shape);
-}
-
 const char* to_string(SegmentKind kind) noexcept {
   switch (kind) {
 #define ASPERITY_KIND_NAME(number, name, Type, text) \
@@ -57,6 +53,8 @@ const char* to_string(SegmentKind kind) noexcept {
   }
   return "unknown";
 }
+
+namespace detail {
 
 std::vector<SegmentMap> SegmentMap::resolve(const std::vector<SegmentSpec>& layout, Distribution distribution,
                                             Side side, double shape) {
@@ -87,4 +85,5 @@ std::vector<SegmentMap> SegmentMap::resolve(const std::vector<SegmentSpec>& layo
   return maps;
 }
 
+}  // namespace detail
 }  // namespace asperity

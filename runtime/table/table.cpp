@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
 #include "asperity/table_schema.hpp"
 
@@ -48,21 +49,21 @@ void CurveSet::validate(const std::string& context) const {
   for (const SegmentSpec& segment : layout) {
     if (segment.knots < 2 || segment.knots > schema::max_segment_knots)
       throw Error(where + "a segment has a bad knot count (2 to " + std::to_string(schema::max_segment_knots) + ")");
-    if (!is_segment_kind(static_cast<int>(segment.kind)))
+    if (!detail::is_segment_kind(static_cast<int>(segment.kind)))
       throw Error(where + "unknown segment kind");
     if (!std::isfinite(segment.p0) || !std::isfinite(segment.p1)) throw Error(where + "a segment bound is not finite");
   }
   if (layout.front().kind != SegmentKind::reciprocal) throw Error(where + "the first segment must be reciprocal");
   for (double shape : shapes) {
-    std::vector<SegmentMap> maps;
+    std::vector<detail::SegmentMap> maps;
     try {
-      maps = SegmentMap::resolve(layout, distribution, side, distribution == Distribution::gaussian ? 2.0 : shape);
+      maps = detail::SegmentMap::resolve(layout, distribution, side, distribution == Distribution::gaussian ? 2.0 : shape);
     } catch (const Error& error) {
       throw Error(where + error.what());
     }
     // What a lookup divides by and maps with must be finite numbers.
     for (std::size_t i = 0; i < maps.size(); ++i) {
-      const SegmentMap& map = maps[i];
+      const detail::SegmentMap& map = maps[i];
       const double inverse_step = (layout[i].knots - 1) / (map.u_hi - map.u_lo);
       if (!std::isfinite(map.u_lo) || !std::isfinite(map.u_hi) || !std::isfinite(inverse_step) ||
           std::isnan(map.s_lo) || std::isnan(map.s_hi) || !std::isfinite(map.span) || !std::isfinite(map.power))

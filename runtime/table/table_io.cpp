@@ -23,6 +23,7 @@
 #include "hdf5_confinement.hpp"
 #include "hdf5_handle.hpp"
 #include "asperity/detail/regular_file.hpp"
+#include "asperity/detail/segment_kind.hpp"
 
 namespace asperity {
 namespace {
@@ -298,7 +299,7 @@ TableData read_verified(const unsigned char* bytes, std::size_t size, const std:
     for (int k = 0; k < order_count; ++k)
       if (orders[k] != order_of(k)) in_group.invalid("dataset 'orders' must be 0, 0.5, 1, 1.5, 2, 2.5");
     const hsize_t segments = in_group.length(g, schema::set_segment_kind, max_segments);
-    const auto kinds = in_group.integers(g, schema::set_segment_kind, {segments}, 0, segment_kind_count - 1);
+    const auto kinds = in_group.integers(g, schema::set_segment_kind, {segments}, 0, detail::segment_kind_count - 1);
     const auto knots = in_group.integers(g, schema::set_segment_knots, {segments}, 2, schema::max_segment_knots);
     const std::vector<double> p0 = in_group.doubles(g, schema::set_segment_p0, {segments});
     const std::vector<double> p1 = in_group.doubles(g, schema::set_segment_p1, {segments});

@@ -10,6 +10,7 @@
 #include "asperity/error.hpp"
 #include "asperity/table_file.hpp"
 #include "asperity/table_schema.hpp"
+#include "asperity/detail/segment_kind.hpp"
 #include "hdf5_handle.hpp"
 #include "asperity/output.hpp"
 
@@ -17,6 +18,21 @@ namespace asperity {
 namespace {
 
 using detail::Hdf5Handle;
+
+// The root attribute `conventions`: what a table holds, in words (its segment kinds' lines from
+// the kinds' one list, which is the library's, detail/segment_kind.hpp).
+constexpr const char* conventions_text =
+    "Greenwood-Williamson asperity integrals, see docs/model.md of the asperity project.\n"
+    "Weibull summit heights phi_a(z) = a z^(a-1) exp(-z^a), z >= 0 (unit scale sigma_s);\n"
+    "Gaussian phi(z) = exp(-z^2/2)/sqrt(2 pi) (unit rms summit height sigma).\n"
+    "tail side:    J_n(s) = integral_{z > max(s,0)} (z - s)^n phi(z) dz, every real s.\n"
+    "bounded side: K_n(s) = integral_0^{max(-s,0)} (-s - z)^n phi(z) dz; 0 for s >= 0.\n"
+    "Orders n = 0, 1/2, 1, 3/2, 2, 5/2. Separation s from the Weibull origin (Gaussian: from\n"
+    "the mean), in units of sigma_s (Gaussian: sigma). dX_n/ds = -n X_(n-1).\n"
+    "Stored: H = ln X - offset(u) and dH/du, d2H/du2 on knots uniform in u per segment.\n"
+    "Segment kinds (p0, p1 from segment_p0/p1; t = s^a, or s^2/2 for the Gaussian):\n"
+    ASPERITY_SEGMENT_KIND_TEXT
+    "Shapes between grid nodes: Lagrange in q = ln a - 1/a over the 12 nearest nodes, at the same s.";
 
 [[noreturn]] void fail(const std::string& what) { throw Error("writing the table failed: " + what); }
 void check(herr_t status, const std::string& what) {
@@ -71,7 +87,7 @@ void write_contents(hid_t file, const TableData& table) {
   write_int_attribute(file, schema::attr_schema_version, schema::version);
   write_string_attribute(file, schema::attr_generator, table.generator);
   write_string_attribute(file, schema::attr_generator_options, table.generator_options);
-  write_string_attribute(file, schema::attr_conventions, schema::conventions);
+  write_string_attribute(file, schema::attr_conventions, conventions_text);
   if (table.exact_shapes) write_int_attribute(file, schema::attr_exact_shapes, 1);
   for (const CurveSet& set : table.sets) {
     const std::string name = std::string(to_string(set.distribution)) + "_" + to_string(set.side);

@@ -6,16 +6,11 @@ set -eu
 library=$1
 nm=${2:-nm}
 cxxfilt=${3:-c++filt}
-expected='asperity::detail::CompactCurve::CompactCurve
-asperity::detail::CompactCurve::log_value
-asperity::detail::CompactCurve::log_values
-asperity::detail::InheritInterrupt::InheritInterrupt
+expected='asperity::detail::InheritInterrupt::InheritInterrupt
 asperity::detail::InheritInterrupt::~InheritInterrupt
-asperity::detail::build_fast_grid
+asperity::detail::SegmentMap::resolve
 asperity::detail::contact_at_checked
 asperity::detail::current_interrupt_state
-asperity::detail::describe_grid
-asperity::detail::kernels_for
 asperity::detail::no_contact_products
 asperity::detail::no_curve_value'
 # each defined dynamic symbol's demangled name, without its address, type and version

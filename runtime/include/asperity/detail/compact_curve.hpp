@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "asperity/asymptotic.hpp"
+#include "asperity/detail/segment_map.hpp"
 #include "asperity/layout.hpp"
 #include "asperity/integrals.hpp"
 

@@ -2,8 +2,9 @@
 // the map from separation s to the segment variable u, the inverse u -> s (with derivatives),
 // and the offset subtracted from ln X so that what is stored, H = ln X - offset(n, u), is
 // smooth. The generator (tablegen) integrates in u and the runtime interpolates in u with
-// these same functions; ASPERITY_SEGMENT_KINDS generates the enum, the dispatch
-// (visit_segment_kind) and the schema text, so a kind is added in one place.
+// these same functions; ASPERITY_SEGMENT_KINDS generates the dispatch (visit_segment_kind) and
+// the schema text, and is checked against the public enum SegmentKind (layout.hpp), so a kind
+// is added here and there. Not installed: the format's internals are the library's.
 //
 // t is the far-tail exponent: s^a for the Weibull, s^2/2 for the Gaussian.
 #pragma once
@@ -11,6 +12,7 @@
 #include <limits>
 
 #include "asperity/integrals.hpp"
+#include "asperity/layout.hpp"
 
 namespace asperity {
 
@@ -29,11 +31,15 @@ namespace asperity {
   X(8, graded_bare, GradedBare,                                                                                      \
     "s = p0 + (p1 - p0) u^6, offset -s^a for n = 0 on the Weibull tail where s > 0 (J_0 = exp(-s^a)), else 0")
 
-enum class SegmentKind : int {
-#define ASPERITY_KIND_ENUM(number, name, Type, text) name = number,
-  ASPERITY_SEGMENT_KINDS(ASPERITY_KIND_ENUM)
-#undef ASPERITY_KIND_ENUM
-};
+// Each kind of the list is the public enum's, with the same number (an enumerator the list
+// lacks: -Wswitch warns in visit_segment_kind and to_string).
+#define ASPERITY_KIND_MATCHES(number, name, Type, text)                       \
+  static_assert(static_cast<int>(SegmentKind::name) == number,                \
+                "ASPERITY_SEGMENT_KINDS and SegmentKind (layout.hpp) differ: " #name);
+ASPERITY_SEGMENT_KINDS(ASPERITY_KIND_MATCHES)
+#undef ASPERITY_KIND_MATCHES
+
+namespace detail {
 
 // The kinds' lines of the schema text, one string literal: "<number> <name>  <text>\n" each.
 #define ASPERITY_KIND_TEXT(number, name, Type, text) #number " " #name "  " text "\n"
@@ -59,8 +65,6 @@ constexpr bool segment_kinds_are_numbered_densely() {
   return true;
 }
 static_assert(segment_kinds_are_numbered_densely(), "segment kinds must be numbered 0 .. count - 1");
-
-const char* to_string(SegmentKind kind) noexcept;
 
 // A segment of one curve (distribution, side, shape) with everything its map needs.
 struct SegmentGeometry {
@@ -250,4 +254,5 @@ decltype(auto) visit_segment_kind(SegmentKind kind, Visit&& visit) {
   return visit(segment_kinds::Linear{});
 }
 
+}  // namespace detail
 }  // namespace asperity
