@@ -26,7 +26,7 @@
 
 #include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/self_affine.hpp"
-#include "fft.hpp"
+#include "statistics/fft.hpp"
 
 namespace {
 using namespace asperity::topography;

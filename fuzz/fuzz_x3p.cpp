@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "md5.hpp"
+#include "input/md5.hpp"
 #include "surface_harness.hpp"
 
 namespace {

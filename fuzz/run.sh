@@ -8,7 +8,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 build_dir="${BUILD_DIR:-build-fuzz}"
-targets="fuzz_table_file fuzz_table_contents fuzz_output_policy fuzz_scene fuzz_eval_csv fuzz_x3p fuzz_gsf fuzz_ascii_matrix fuzz_xyz"
 
 # Clang 14 and its libFuzzer runtime (Debian), installed if missing.
 packages="clang-14 libclang-rt-14-dev"
@@ -18,6 +17,8 @@ bash scripts/install-packages.sh $packages
 CC=clang-14 CXX=clang++-14 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DASPERITY_BUILD_FUZZERS=ON -DASPERITY_SANITIZE=ON -DASPERITY_BUILD_TESTS=OFF \
   -DASPERITY_BUILD_BENCHMARKS=OFF >/dev/null
+# the targets fuzz/CMakeLists.txt made (a surface format's from the formats' list)
+targets="$(cat "$build_dir/fuzz/targets.txt")"
 # shellcheck disable=SC2086
 cmake --build "$build_dir" -j"$(nproc)" --target $targets
 
@@ -27,6 +28,10 @@ summary=""
 for target in $targets; do
   corpus="$work/$target"
   mkdir -p "$corpus" "$work/artifacts-$target"
+  if ! compgen -G "fuzz/corpus/${target#fuzz_}/*" >/dev/null; then
+    echo "$target: no seed files in fuzz/corpus/${target#fuzz_}/ (a new format needs a few small files there)" >&2
+    exit 1
+  fi
   cp fuzz/corpus/"${target#fuzz_}"/* "$corpus"/
   echo "== $target: ${seconds} s"
   log="$work/$target.log"

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# python3-pythran: the FFT of the surface analysis (pocketfft, header-only; topography/fft.hpp);
+# python3-pythran: the FFT of the surface analysis (pocketfft, header-only; topography/statistics/fft.hpp);
 # librsvg2-bin and imagemagick: the tests render the report's SVG plots with both
 # abigail-tools: abidiff, the ABI check between two builds of the runtime (tests/abi/abi_check.sh)
 packages="g++ gfortran cmake make libboost-dev libhdf5-dev pkg-config libgtest-dev libbenchmark-dev libtoml11-dev libssl-dev libcli11-dev libzip-dev libpugixml-dev libnlopt-dev libnlopt-cxx-dev nlohmann-json3-dev python3-pythran librsvg2-bin imagemagick libhwy-dev abigail-tools"

@@ -8,7 +8,12 @@ cmake_minimum_required(VERSION 3.18)
 #    runtime and the generator; the commands and Python: the public headers only), and the
 #    runtime's internals (runtime/include/asperity/detail/) only where it is one of the
 #    project's own libraries, tests or benchmarks.
-# 3. A quoted include without "asperity/" is a header of the file's own folder; the commands
+# 2a. The topography's parts (topography/CMakeLists.txt) only look down: input < statistics <
+#    verdict < contact < report. A part's sources and its public headers (each header of
+#    include/asperity/topography/ is one part's, listed below) include the headers of their own
+#    part and of the parts below, never above; the generator from contact up.
+# 3. A quoted include without "asperity/" is a header of the file's own folder; a topography
+#    part's file may also include "PART/name.hpp" of a part at or below its own; the commands
 #    also share apps/common/; tests, benchmarks and fuzzers may use the seams named below.
 # 4. The public face: every header under include/ is in cmake/public_headers.cmake once, and a
 #    public header includes only public headers.
@@ -31,15 +36,34 @@ set(allowed_fe_export core table physics fe_export detail)
 set(allowed_c_api core table physics scene fe_export c_api detail)
 set(runtime_public core table physics scene fe_export c_api)
 set(allowed_generator ${runtime_public} detail generator)
-set(allowed_topography ${runtime_public} detail generator topography)
-set(allowed_commands ${runtime_public} generator topography)
-set(allowed_python ${runtime_public} generator topography)
-set(allowed_white_box ${runtime_public} detail generator topography)
+
+# The topography's parts from the bottom up, each public header's part (by the part that
+# implements it), and what each part's sources and headers may include: the parts at or below.
+set(topography_parts input statistics verdict contact report)
+set(part_input height_map height_map_io surface_formats units)
+set(part_statistics statistics summits leveling synthetic self_affine)
+set(part_verdict distribution_fit goodness_of_fit surrogates surface_tests)
+set(part_contact summit_contact contact_comparison law_contact persson_contact exact_contact exact_contact_table)
+set(part_report analysis surface_report exact_contact_report)
+set(topography_groups "")
+foreach(part IN LISTS topography_parts)
+  list(APPEND topography_groups topography_${part})
+  set(public_topography_${part} ${runtime_public} ${topography_groups})
+  set(allowed_topography_${part} ${public_topography_${part}} detail)
+  if(part STREQUAL "contact" OR part STREQUAL "report")
+    list(APPEND allowed_topography_${part} generator)  # the scene and law tables of the fits
+  endif()
+endforeach()
+set(allowed_commands ${runtime_public} generator ${topography_groups})
+set(allowed_python ${runtime_public} generator ${topography_groups})
+set(allowed_white_box ${runtime_public} detail generator ${topography_groups})
 
 # The private headers tests, benchmarks and fuzzers may use (their CMake targets say so too:
 # asperity_runtime_test_seams, asperity_topography_test_seams).
-set(seams runtime/table/replace_file.hpp runtime/core/kernel/kernels.hpp topography/md5.hpp
-    topography/spacing_fit.hpp topography/vector_math.hpp topography/fft.hpp apps/asperity/eval_csv.hpp
+# A seam is included by its name, or (the topography's) as "PART/name.hpp".
+set(seams runtime/table/replace_file.hpp runtime/core/kernel/kernels.hpp topography/input/md5.hpp
+    topography/verdict/spacing_fit.hpp topography/verdict/vector_math.hpp topography/statistics/fft.hpp
+    apps/asperity/eval_csv.hpp
     apps/asperity/law_options.hpp tests/reference.hpp
     tests/accuracy_harness.hpp)
 
@@ -51,8 +75,15 @@ function(header_group header out)
   elseif(header MATCHES "^generator/")
     set(${out} generator PARENT_SCOPE)
     return()
-  elseif(header MATCHES "^topography/")
-    set(${out} topography PARENT_SCOPE)
+  elseif(header MATCHES "^topography/(.+)\\.hpp$")
+    set(name "${CMAKE_MATCH_1}")
+    foreach(part IN LISTS topography_parts)
+      if(name IN_LIST part_${part})
+        set(${out} topography_${part} PARENT_SCOPE)
+        return()
+      endif()
+    endforeach()
+    set(${out} unknown PARENT_SCOPE)
     return()
   endif()
   foreach(layer IN LISTS runtime_layers)
@@ -86,6 +117,13 @@ function(check_file file group)
       string(APPEND failures "\n  ${file} includes ${header}: another folder's file by a relative path")
     elseif(EXISTS "${folder}/${header}")
       # its own folder's
+    elseif(group MATCHES "^topography_" AND header MATCHES "^([a-z_]+)/[^/]+$"
+           AND EXISTS "${SOURCE_DIR}/topography/${header}")
+      # another topography part's private header, as "PART/name.hpp"
+      set(included "topography_${CMAKE_MATCH_1}")
+      if(NOT included IN_LIST allowed)
+        string(APPEND failures "\n  ${file} (${group}) includes \"${header}\" (${included})")
+      endif()
     elseif(group STREQUAL "commands" AND EXISTS "${SOURCE_DIR}/apps/common/${header}")
       # what the commands share
     elseif(group STREQUAL "white_box" AND header MATCHES "^(default_table_config|CLI/|pybind11|gtest|benchmark|hwy)")
@@ -95,7 +133,7 @@ function(check_file file group)
       set(seam "")
       foreach(candidate IN LISTS seams)
         get_filename_component(name "${candidate}" NAME)
-        if(name STREQUAL header)
+        if(name STREQUAL header OR candidate STREQUAL "topography/${header}")
           set(seam "${candidate}")
         endif()
       endforeach()
@@ -136,8 +174,28 @@ check_folder(runtime/include core ${allowed_core})
 # 2, 3. every other folder
 check_folder(tablegen generator ${allowed_generator})
 check_folder(include/asperity/generator generator ${runtime_public} generator)
-check_folder(topography topography ${allowed_topography})
-check_folder(include/asperity/topography topography ${runtime_public} topography)
+# 2a. the topography's parts, their sources and public headers; nothing outside a part
+foreach(part IN LISTS topography_parts)
+  check_folder(topography/${part} topography_${part} ${allowed_topography_${part}})
+  foreach(name IN LISTS part_${part})
+    if(EXISTS "${SOURCE_DIR}/include/asperity/topography/${name}.hpp")
+      check_file("${SOURCE_DIR}/include/asperity/topography/${name}.hpp" topography_${part}
+                 ${public_topography_${part}})
+    endif()
+  endforeach()
+endforeach()
+file(GLOB_RECURSE topography_files RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/topography/*.cpp"
+     "${SOURCE_DIR}/topography/*.hpp" "${SOURCE_DIR}/include/asperity/topography/*.hpp")
+foreach(file IN LISTS topography_files)
+  if(file MATCHES "^include/asperity/topography/(.+)\\.hpp$")
+    header_group("topography/${CMAKE_MATCH_1}.hpp" part)
+    if(part STREQUAL "unknown")
+      string(APPEND failures "\n  ${file} is no part's: name it in a part_* list (tests/check_layering.cmake)")
+    endif()
+  elseif(NOT file MATCHES "^topography/([a-z_]+)/" OR NOT CMAKE_MATCH_1 IN_LIST topography_parts)
+    string(APPEND failures "\n  ${file} is in no part's folder (topography/CMakeLists.txt: ${topography_parts})")
+  endif()
+endforeach()
 check_folder(apps commands ${allowed_commands})
 check_folder(python/src python ${allowed_python})
 foreach(folder tests bench fuzz examples)

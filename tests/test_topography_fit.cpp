@@ -12,8 +12,8 @@
 #include "asperity/error.hpp"
 #include "asperity/topography/distribution_fit.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
-#include "spacing_fit.hpp"
-#include "vector_math.hpp"
+#include "verdict/spacing_fit.hpp"
+#include "verdict/vector_math.hpp"
 
 namespace t = asperity::topography;
 

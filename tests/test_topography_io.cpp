@@ -21,7 +21,7 @@
 #include "asperity/error.hpp"
 #include "asperity/topography/height_map_io.hpp"
 #include "asperity/topography/units.hpp"
-#include "md5.hpp"
+#include "input/md5.hpp"
 
 namespace t = asperity::topography;
 namespace fs = std::filesystem;

@@ -19,6 +19,7 @@
 #include "asperity/topography/exact_contact_table.hpp"
 #include "asperity/contact_curves_data.hpp"
 #include "asperity/topography/height_map_io.hpp"
+#include "asperity/topography/surface_formats.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
@@ -70,7 +71,7 @@ std::vector<double> positive_numbers(const std::string& text, const std::string&
 topo::ReadOptions read_options(const Options& o) {
   topo::ReadOptions read;
   if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
-    usage("--format: unknown format '" + quote_text(o.format) + "' (auto, x3p, gsf, matrix, xyz)");
+    usage("--format: unknown format '" + quote_text(o.format) + "' (" + topo::surface_format_names() + ")");
   read.lateral_unit = o.unit;
   read.height_unit = o.height_unit;
   if (!o.pixel_size.empty()) {
@@ -414,7 +415,8 @@ void add_exact_contact_command(CLI::App& app) {
       ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
                              ""));
   const char* reading = "Reading";
-  add_text(*command, "--format", o.format, "auto (default: by content, then extension), x3p, gsf, matrix, xyz")
+  add_text(*command, "--format", o.format,
+           topo::surface_format_names() + " (default auto: by content, then extension)")
       ->type_name("NAME")->group(reading);
   add_text(*command, "--pixel-size", o.pixel_size,
            "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "

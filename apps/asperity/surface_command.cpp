@@ -248,7 +248,7 @@ void add_surface_command(CLI::App& app) {
   auto options = std::make_shared<Options>();
   Options& o = *options;
   CLI::App* command = app.add_subcommand(
-      "surface", "a measured height map (X3P, Gwyddion .gsf or ASCII matrix, xyz) to its statistics, summits, the "
+      "surface", "a measured height map (" + topo::surface_format_list() + ") to its statistics, summits, the "
                  "Gaussian and two three-parameter Weibulls fitted to its summit heights with their goodness of "
                  "fit, and (with --modulus) the contact curves of each fit side by side");
   command->add_option("FILE", o.file, "the height map")
@@ -264,7 +264,8 @@ void add_surface_command(CLI::App& app) {
            "else it overrides the file's")
       ->type_name("LENGTH[,LENGTH]")->group(reading);
   add_text(*command, "--unit", o.unit,
-           "unit of x, y (and of heights unless --height-unit) for files without units (xyz), and of a bare "
+           "unit of x, y (and of heights unless --height-unit) for files without units (" +
+               topo::surface_formats_without_units() + "), and of a bare "
            "--pixel-size")
       ->type_name("UNIT")->group(reading);
   add_text(*command, "--height-unit", o.height_unit, "unit of the heights in the file (overrides the file's)")

@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "asperity/curve.hpp"
 #include "asperity/integrals.hpp"
+#include "asperity/topography/surface_formats.hpp"
 
 namespace py = pybind11;
 
@@ -24,10 +25,12 @@ namespace {
 void bind_topography(py::module_& parent) {
   py::module_ m = parent.def_submodule(
       "topography",
-      "From a measured surface to its contact curves (docs/surfaces.md): reading height maps (X3P, Gwyddion\n"
-      ".gsf and ASCII matrix, xyz), leveling, height statistics and spectral moments, summits, the three\n"
-      "height models fitted with their evidence (Anderson-Darling and Kolmogorov-Smirnov by parametric\n"
-      "bootstrap, AIC, a verdict), the contact curves of each fit, and reports. SI units throughout.");
+      ("From a measured surface to its contact curves (docs/surfaces.md): reading height maps\n(" +
+       asperity::topography::surface_format_list() +
+       "), leveling, height statistics and spectral moments, summits, the three\n"
+       "height models fitted with their evidence (Anderson-Darling and Kolmogorov-Smirnov by parametric\n"
+       "bootstrap, AIC, a verdict), the contact curves of each fit, and reports. SI units throughout.")
+          .c_str());
   bind_height_map(m);
   bind_statistics(m);
   bind_summits(m);

@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -75,7 +76,8 @@ void bind_height_map_io(py::module_& m) {
       "format: " + topo::surface_format_names() + " (auto: by content, then extension), or a HeightMapFormat.\n"
       "pixel_size_x, pixel_size_y [m]: sampling intervals for formats without them, or overriding the\n"
       "file's (0: the file's; pixel_size_y 0: pixel_size_x). lateral_unit, height_unit: 'um', 'nm', ...\n"
-      "for formats without units (xyz), overriding the file's for the others. max_points: a header is\n"
+      "for formats without units (" + topo::surface_formats_without_units() +
+      "), overriding the file's for the others. max_points: a header is\n"
       "never trusted to allocate more.";
   py::class_<topo::ReadOptions>(m, "ReadOptions", "How to read a height map file.")
       .def(py::init([](const py::object& format, double pixel_size_x, double pixel_size_y, std::string lateral_unit,
@@ -117,13 +119,15 @@ void bind_height_map_io(py::module_& m) {
     };
   };
   m.def("read_height_map", reader(&topo::read_height_map), "path"_a, "options"_a = py::none(), read_doc);
-  m.def("read_x3p", reader(&topo::read_x3p), "path"_a, "options"_a = py::none(), "read_height_map for an X3P file.");
-  m.def("read_gsf", reader(&topo::read_gsf), "path"_a, "options"_a = py::none(),
-        "read_height_map for a Gwyddion Simple Field (.gsf).");
-  m.def("read_ascii_matrix", reader(&topo::read_ascii_matrix), "path"_a, "options"_a = py::none(),
-        "read_height_map for Gwyddion's ASCII data matrix export.");
-  m.def("read_xyz", reader(&topo::read_xyz), "path"_a, "options"_a = py::none(),
-        "read_height_map for x y z columns on a regular grid (units required: lateral_unit, height_unit).");
+  // read_ID for each format of the table: its reader, documented by its description
+  static std::deque<std::string> reader_texts;  // pybind11 keeps the name's and the docstring's pointers
+  for (const topo::SurfaceFormat& format : topo::surface_formats()) {
+    const std::string& name = reader_texts.emplace_back(std::string("read_") + format.python_name);
+    const std::string& doc = reader_texts.emplace_back(
+        std::string("read_height_map for one format: ") + format.description + " ('" + format.name + "')." +
+        (format.needs_units ? " Its files carry no units: lateral_unit is required." : ""));
+    m.def(name.c_str(), reader(format.read), "path"_a, "options"_a = py::none(), doc.c_str());
+  }
   m.def(
       "write_gsf",
       [](const topo::HeightMap& map, const PathName& path, bool overwrite) {
@@ -144,6 +148,7 @@ void bind_height_map_io(py::module_& m) {
 
 void bind_height_map(py::module_& m) {
   // ---- height maps (height_map.hpp, height_map_io.hpp, units.hpp) ----
+  static const std::string map_format_doc = topo::surface_format_list() + ", synthetic or array.";
   py::class_<topo::HeightMap>(m, "HeightMap",
                               "A measured height map: heights [m] on a regular grid with sampling intervals dx, dy [m];\n"
                               "missing points are NaN.")
@@ -166,7 +171,7 @@ void bind_height_map(py::module_& m) {
           "source", [](const topo::HeightMap& map) { return path_text(map.source); },
           [](topo::HeightMap& map, const PathName& value) { map.source = to_path(value.object, "source"); },
           "The file it came from (for messages; str, bytes or os.PathLike in, str out as os.fsdecode gives it).")
-      .def_readwrite("format", &topo::HeightMap::format, "x3p, gsf, ascii-matrix, xyz, synthetic or array.")
+      .def_readwrite("format", &topo::HeightMap::format, map_format_doc.c_str())
       .def_readwrite("height_resolution", &topo::HeightMap::height_resolution,
                      "The largest rounding step of the heights as stored [m] (0: unknown): roughness at this level\n"
                      "is quantization (the analysis stops at its noise floor).")

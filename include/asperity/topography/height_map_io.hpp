@@ -27,7 +27,32 @@
 
 namespace asperity::topography {
 
-enum class HeightMapFormat { automatic, x3p, gsf, ascii_matrix, xyz };
+// The surface formats, the one list (X-macro: X is called once per format, in the order help texts
+// list them). Everything that names the formats is made from it: HeightMapFormat's values, the
+// table surface_formats() (surface_formats.hpp) and through it read_height_map's choice,
+// --format and every help text, the Python enum and its read_ID functions; the fuzz targets
+// (fuzz/CMakeLists.txt reads this file: one entry per line starting "X(ID,"). A format's reader
+// is read_ID (declared below). Fields:
+//   ID          the HeightMapFormat member, the Python name, the fuzz target fuzz_ID
+//   NAME        what --format and Python's format= take (and HeightMap::format)
+//   ALIASES     (...) other names it answers to
+//   MAGIC       the bytes its files start with; nullptr: none (text)
+//   EXTENSIONS  (...) lower case, without the dot: the choice by extension when no magic matches
+//   NEEDS_UNITS true: its files carry no units (ReadOptions::lateral_unit is required)
+//   DESCRIPTION one line, for help texts
+// clang-format off
+#define ASPERITY_SURFACE_FORMATS(X)                                                                    \
+  X(x3p, "x3p", (), "PK\x03\x04", ("x3p"), false,                                                    \
+    "ISO 25178-72 XML 3D surface profile (a zip archive)")                                             \
+  X(gsf, "gsf", (), "Gwyddion Simple Field", ("gsf"), false, "Gwyddion Simple Field")                  \
+  X(ascii_matrix, "ascii-matrix", ("matrix"), nullptr, ("txt", "asc", "dat"), false,                   \
+    "a matrix of heights as text (Gwyddion's ASCII export, AFM text dumps)")                           \
+  X(xyz, "xyz", ("csv"), nullptr, ("xyz", "csv"), true, "x y z points on a grid, as text")
+// clang-format on
+
+#define ASPERITY_SURFACE_FORMAT_ENUMERATOR(id, ...) id,
+enum class HeightMapFormat { automatic, ASPERITY_SURFACE_FORMATS(ASPERITY_SURFACE_FORMAT_ENUMERATOR) };
+#undef ASPERITY_SURFACE_FORMAT_ENUMERATOR
 
 struct ReadOptions {
   HeightMapFormat format = HeightMapFormat::automatic;  // automatic: by magic bytes, then extension
@@ -39,12 +64,13 @@ struct ReadOptions {
 };
 
 HeightMap read_height_map(const std::string& path, const ReadOptions& options = {});
+// Each format's reader, read_ID (a format without one does not link).
 HeightMap read_x3p(const std::string& path, const ReadOptions& options = {});
 HeightMap read_gsf(const std::string& path, const ReadOptions& options = {});
 HeightMap read_ascii_matrix(const std::string& path, const ReadOptions& options = {});
 HeightMap read_xyz(const std::string& path, const ReadOptions& options = {});
 
-// "x3p", "gsf", "ascii-matrix" (or "matrix"), "xyz" (or "csv"), "auto"; false for anything else.
+// A format's NAME or one of its ALIASES ("x3p", "matrix", ...), or "auto"; false for anything else.
 bool parse_height_map_format(const std::string& name, HeightMapFormat& out);
 
 // Writes a height map as .gsf (float32: heights lose digits beyond ~7) under the output policy

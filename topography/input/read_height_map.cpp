@@ -12,14 +12,13 @@ namespace asperity::topography {
 
 const std::vector<SurfaceFormat>& surface_formats() {
   static const std::vector<SurfaceFormat> formats = {
-      {HeightMapFormat::x3p, "x3p", "x3p", {}, "PK\x03\x04", {"x3p"},
-       "ISO 25178-72 XML 3D surface profile (a zip archive)", &read_x3p},
-      {HeightMapFormat::gsf, "gsf", "gsf", {}, "Gwyddion Simple Field", {"gsf"}, "Gwyddion Simple Field",
-       &read_gsf},
-      {HeightMapFormat::ascii_matrix, "ascii-matrix", "ascii_matrix", {"matrix"}, nullptr, {"txt", "asc", "dat"},
-       "a matrix of heights as text (Gwyddion's ASCII export, AFM text dumps)", &read_ascii_matrix},
-      {HeightMapFormat::xyz, "xyz", "xyz", {"csv"}, nullptr, {"xyz", "csv"}, "x y z points on a grid, as text",
-       &read_xyz},
+#define ASPERITY_LIST_ITEMS(...) __VA_ARGS__
+#define ASPERITY_SURFACE_FORMAT_ENTRY(id, name, aliases, magic, extensions, needs_units, description)           \
+  SurfaceFormat{HeightMapFormat::id, name, #id, {ASPERITY_LIST_ITEMS aliases}, magic, {ASPERITY_LIST_ITEMS extensions}, \
+                needs_units, description, &read_##id},
+      ASPERITY_SURFACE_FORMATS(ASPERITY_SURFACE_FORMAT_ENTRY)
+#undef ASPERITY_SURFACE_FORMAT_ENTRY
+#undef ASPERITY_LIST_ITEMS
   };
   return formats;
 }
@@ -38,6 +37,19 @@ std::string surface_format_names() {
       if (std::strlen(alias) < shortest.size()) shortest = alias;
     names += ", " + shortest;
   }
+  return names;
+}
+
+std::string surface_format_list() {
+  std::string names;
+  for (const SurfaceFormat& entry : surface_formats()) names += (names.empty() ? "" : ", ") + std::string(entry.name);
+  return names;
+}
+
+std::string surface_formats_without_units() {
+  std::string names;
+  for (const SurfaceFormat& entry : surface_formats())
+    if (entry.needs_units) names += (names.empty() ? "" : ", ") + std::string(entry.name);
   return names;
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
-#include "fft.hpp"
+#include "statistics/fft.hpp"
 
 namespace asperity::topography {
 namespace {

@@ -12,7 +12,7 @@
 #include "asperity/error.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/surrogates.hpp"
-#include "plane_fit.hpp"
+#include "statistics/plane_fit.hpp"
 
 namespace asperity::topography {
 namespace {

@@ -13,7 +13,7 @@
 #include "asperity/error.hpp"
 #include "asperity/integrals.hpp"
 #include "asperity/number_text.hpp"
-#include "reader_support.hpp"
+#include "input/reader_support.hpp"
 #include "svg_plot.hpp"
 
 namespace asperity::topography {

@@ -7,7 +7,7 @@
 
 #include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
-#include "fft.hpp"
+#include "statistics/fft.hpp"
 #include "vector_math.hpp"
 
 namespace asperity::topography {

@@ -19,7 +19,7 @@
 #include "asperity/error.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/topography/summits.hpp"
-#include "fft.hpp"
+#include "statistics/fft.hpp"
 
 namespace asperity::topography {
 namespace {
