@@ -84,7 +84,7 @@ TEST(SurfaceFormats, EveryHelpTextAndMessageNamesEveryFormat) {
   for (const char* command : {"surface", "exact-contact"}) {
     SCOPED_TRACE(command);
     const std::string help = run(std::string(command) + " --help");
-    const std::string refusal = run(std::string(command) + " " ASPERITY_TEST_SURFACES "/afm-zsensor-10um.txt --modulus 1e11 --format tiff");
+    const std::string refusal = run(std::string(command) + " " ASPERITY_TEST_SURFACES "/afm-zsensor-10um.txt --modulus 1e11 --pressure 1e6 --format tiff");
     EXPECT_NE(refusal.find("unknown format 'tiff'"), std::string::npos) << refusal;
     for (const t::SurfaceFormat& entry : t::surface_formats()) {
       EXPECT_NE(help.find(shortest_name(entry)), std::string::npos) << entry.name << " not in:\n" << help;
