@@ -14,7 +14,6 @@ set(ASPERITY_RUNTIME_HEADERS
   asymptotic.hpp         # the series beyond the table
   table_data.hpp         # a table's contents (TableData, CurveSet): generated, written, read
   table.hpp table_file.hpp table_writer.hpp
-  table_schema.hpp       # the table format's names and limits (to leave the installed set: issue 38)
   contact_curves_data.hpp contact_curves.hpp  # contact curves against separation: a measured surface served
   contact_scales.hpp contact.hpp    # contact_at: the four quantities of a curve
   surface.hpp            # a physical surface, unit conversions and input checks

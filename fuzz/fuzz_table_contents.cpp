@@ -28,7 +28,7 @@
 #include "asperity/contact_curves_data.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 #include "asperity/table_writer.hpp"
 #include "tiny_table.hpp"
 

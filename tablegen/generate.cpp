@@ -13,7 +13,7 @@
 #include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
 #include "asperity/interrupt.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 #include "asperity/generator/quadrature.hpp"
 
 namespace asperity::generator {

@@ -19,7 +19,7 @@
 #include "asperity/interrupt.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/plausibility.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 
 namespace asperity::generator {
 namespace {

@@ -20,7 +20,7 @@ cmake_minimum_required(VERSION 3.18)
 set(layer_core integrals model layout curve asymptotic instruction_set error contact_scales number_text
     interrupt output record_fields
     contact_law contact_law_registry law_combination)
-set(layer_table table table_schema table_data table_file table_writer contact_curves_data)
+set(layer_table table table_data table_file table_writer contact_curves_data)
 set(layer_physics contact contact_model physical_state_fields inverse surface persson separation_datum plausibility
     contact_curves)
 set(layer_scene scene scene_curves)

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 #include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/exact_contact_table.hpp"
 #include "asperity/topography/self_affine.hpp"

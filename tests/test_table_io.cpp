@@ -18,7 +18,7 @@
 #include "asperity/error.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 #include "asperity/generator/generate.hpp"
 #include "asperity/table_writer.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "asperity/contact_curves_data.hpp"
 #include "asperity/error.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 
 namespace asperity {
 

@@ -8,7 +8,7 @@
 
 #include "asperity/detail/segment_map.hpp"
 #include "asperity/error.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 
 namespace asperity {
 namespace {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 
 namespace asperity {
 namespace {

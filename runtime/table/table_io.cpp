@@ -19,7 +19,7 @@
 #include "asperity/error.hpp"
 #include "asperity/table.hpp"
 #include "asperity/table_file.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 #include "hdf5_confinement.hpp"
 #include "hdf5_handle.hpp"
 #include "asperity/detail/regular_file.hpp"

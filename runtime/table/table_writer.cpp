@@ -9,7 +9,7 @@
 #include "asperity/contact_curves_data.hpp"
 #include "asperity/error.hpp"
 #include "asperity/table_file.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 #include "asperity/detail/segment_kind.hpp"
 #include "hdf5_handle.hpp"
 #include "asperity/output.hpp"

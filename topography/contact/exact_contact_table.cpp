@@ -7,7 +7,7 @@
 #include "asperity/contact_curves.hpp"
 #include "asperity/error.hpp"
 #include "asperity/number_text.hpp"
-#include "asperity/table_schema.hpp"
+#include "asperity/detail/table_schema.hpp"
 
 namespace asperity::topography {
 namespace {
