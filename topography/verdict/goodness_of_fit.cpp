@@ -161,6 +161,18 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
   return result;
 }
 
+void weigh_models(SampleAssessment& sample) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const ModelAssessment& m : sample.models) best = std::min(best, m.aic);
+  double sum = 0;
+  for (ModelAssessment& m : sample.models) {
+    m.delta_aic = m.aic - best;
+    m.akaike_weight = std::exp(-0.5 * m.delta_aic);
+    sum += m.akaike_weight;
+  }
+  for (ModelAssessment& m : sample.models) m.akaike_weight /= sum;
+}
+
 SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options) {
   if (!(options.confidence > 0 && options.confidence < 1)) throw Error("assessment: confidence must be in (0, 1)");
   if (!(options.significance > 0 && options.significance < 1)) throw Error("assessment: significance must be in (0, 1)");
@@ -192,16 +204,7 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
     m.rejected = options.bootstrap > 0 && m.anderson_darling_p < options.significance;
     assessment.models.push_back(m);
   }
-  // AIC differences and Akaike weights
-  double best_aic = std::numeric_limits<double>::infinity();
-  for (const ModelAssessment& m : assessment.models) best_aic = std::min(best_aic, m.aic);
-  double weight_sum = 0;
-  for (ModelAssessment& m : assessment.models) {
-    m.delta_aic = m.aic - best_aic;
-    m.akaike_weight = std::exp(-0.5 * m.delta_aic);
-    weight_sum += m.akaike_weight;
-  }
-  for (ModelAssessment& m : assessment.models) m.akaike_weight /= weight_sum;
+  weigh_models(assessment);
 
   Verdict& v = assessment.verdict;
   const ModelAssessment& gaussian = assessment.model(HeightModel::gaussian);

@@ -204,20 +204,6 @@ void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const Assess
   }
 }
 
-// Akaike weights over every compared model (the rejected ones too: the weights are about the
-// likelihoods, the tests about the fit).
-void weigh(SampleAssessment& sample) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const ModelAssessment& m : sample.models) best = std::min(best, m.aic);
-  double sum = 0;
-  for (ModelAssessment& m : sample.models) {
-    m.delta_aic = m.aic - best;
-    m.akaike_weight = std::exp(-0.5 * m.delta_aic);
-    sum += m.akaike_weight;
-  }
-  for (ModelAssessment& m : sample.models) m.akaike_weight /= sum;
-}
-
 std::string p_text(const ModelAssessment& m) { return p_value_text(m.anderson_darling_p, m.p_at_floor); }
 
 // The sample's own verdict, in words (the surface's verdict combines the two samples).
@@ -406,7 +392,7 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
     }
   }
   for (SampleAssessment* sample : {&H, &S}) {
-    weigh(*sample);
+    weigh_models(*sample);
     judge(*sample, a);
   }
   return tests;

@@ -107,6 +107,10 @@ std::string p_value_text(double p, bool at_floor);
 // asperity::Error for confidence or significance outside (0, 1), bootstrap outside
 // [0, max_bootstrap], or values the fits refuse.
 SampleAssessment assess_sample(const std::string& name, std::vector<double> values, const AssessmentOptions& options = {});
+// Each model's AIC difference from the least and its Akaike weight, over every compared model
+// (the rejected ones too: the weights are about the likelihoods, the tests about the fit); the
+// one weighting both verdict paths use (assess_sample, surface_tests.hpp).
+void weigh_models(SampleAssessment& sample);
 
 // The parametric-bootstrap p-value of the Anderson-Darling (and KS) test of one model on one
 // sample: exposed for the size and power measurements.
