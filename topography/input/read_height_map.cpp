@@ -93,14 +93,19 @@ HeightMap read_height_map(const std::string& path, const ReadOptions& options) {
         for (const char* known : entry.extensions)
           if (extension == known) chosen = &entry;
     if (!chosen) {
-      std::string text_extensions;
+      std::string by_magic, text_extensions;  // "X3P or GSF": the formats told by their first bytes
       for (const SurfaceFormat& entry : surface_formats())
-        if (!entry.magic) {
+        if (entry.magic) {
+          std::string name = entry.name;
+          std::transform(name.begin(), name.end(), name.begin(),
+                         [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+          by_magic += (by_magic.empty() ? "" : " or ") + name;
+        } else {
           std::string list;
           for (const char* known : entry.extensions) list += (list.empty() ? "." : "/.") + std::string(known);
           text_extensions += (text_extensions.empty() ? "" : " or ") + list + " (" + entry.name + ")";
         }
-      detail::fail(path, "unknown format (not X3P or GSF by its first bytes, and the extension '" +
+      detail::fail(path, "unknown format (not " + by_magic + " by its first bytes, and the extension '" +
                              detail::printable(extension) + "' is not " + text_extensions + "): give --format");
     }
   }
