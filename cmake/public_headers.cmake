@@ -35,7 +35,7 @@ set(ASPERITY_GENERATOR_HEADERS
 set(ASPERITY_TOPOGRAPHY_HEADERS
   topography/units.hpp topography/height_map.hpp topography/height_map_io.hpp topography/surface_formats.hpp
   topography/leveling.hpp topography/statistics.hpp topography/summits.hpp topography/distribution_fit.hpp
-  topography/goodness_of_fit.hpp topography/synthetic.hpp topography/surrogates.hpp topography/surface_tests.hpp
+  topography/goodness_of_fit.hpp topography/synthetic.hpp topography/surrogates.hpp topography/surface_tests.hpp topography/surface_verdict.hpp
   topography/summit_contact.hpp topography/contact_comparison.hpp topography/law_contact.hpp topography/analysis.hpp
   topography/surface_report.hpp topography/exact_contact.hpp topography/exact_contact_report.hpp topography/exact_contact_table.hpp topography/self_affine.hpp
   topography/persson_contact.hpp)

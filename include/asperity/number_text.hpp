@@ -25,6 +25,10 @@ bool read_whole_number(std::string_view text, long long lo, long long hi, long l
 // The shortest text that reads back to exactly `value` ("1.6", "1e-300", "-inf", "nan").
 std::string format_double(double value);
 
+// Three significant digits ("%.3g": "0.0244", "5.54", "1.1e-24"): a figure in a sentence, where
+// format_double would give the full 17.
+std::string three_digits(double value);
+
 // `text` made safe to quote in a message: control bytes shown as \xNN, cut after `limit` bytes.
 std::string quote_text(std::string_view text, std::size_t limit = 60);
 

@@ -56,6 +56,12 @@ std::string format_double(double value) {
   return std::string(buffer, result.ptr);
 }
 
+std::string three_digits(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
 std::string quote_text(std::string_view text, std::size_t limit) {
   std::string out;
   for (std::size_t i = 0; i < text.size() && i < limit; ++i) {

@@ -16,12 +16,6 @@
 namespace asperity::topography {
 namespace {
 constexpr double min_roughness = 1e-15;  // [m]
-
-std::string short_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
 }  // namespace
 
 SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options) {
@@ -45,7 +39,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   floor.resolution = std::max(map.height_resolution, 4 * (std::nextafter(largest, 2 * largest + 1) - largest));
   floor.rms_limit = 10 * floor.resolution / std::sqrt(12.0);
   if (largest > 0 && largest < min_roughness) {
-    throw Error(map.source + ": every height is below " + short_number(min_roughness) +
+    throw Error(map.source + ": every height is below " + three_digits(min_roughness) +
                 " m (1 fm) in size: a wrong height unit?");
   } else if (sq == 0) {
     floor.reached = true;
@@ -53,9 +47,9 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
                  ": no roughness, so no summits, fits or contact curves";
   } else if (sq < floor.rms_limit) {
     floor.reached = true;
-    floor.text = "the roughness (Sq " + short_number(sq) + " m) is at the level of the heights' quantization (" +
-                 short_number(floor.resolution) + " m a step, rounding noise " +
-                 short_number(floor.resolution / std::sqrt(12.0)) +
+    floor.text = "the roughness (Sq " + three_digits(sq) + " m) is at the level of the heights' quantization (" +
+                 three_digits(floor.resolution) + " m a step, rounding noise " +
+                 three_digits(floor.resolution / std::sqrt(12.0)) +
                  " m rms): its summits would be rounding noise, so no summits, fits or contact curves";
   }
   if (floor.reached) {
@@ -125,9 +119,9 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   const int ensemble = options.assessment.bootstrap;
   if (ensemble > 0 && ensemble < minimum_bootstrap(options.assessment.significance / 2))
     throw Error("an ensemble of " + std::to_string(ensemble) + " surrogate surfaces can never give p below " +
-                short_number(options.assessment.significance / 2) +
+                three_digits(options.assessment.significance / 2) +
                 " (the verdict tests the heights and the summit heights, each at half the significance; the smallest "
-                "p-value is 1/(B + 1) = " + short_number(1.0 / (ensemble + 1)) + "): use at least " +
+                "p-value is 1/(B + 1) = " + three_digits(1.0 / (ensemble + 1)) + "): use at least " +
                 std::to_string(minimum_bootstrap(options.assessment.significance / 2)) + ", or 0 for no test");
   check_bootstrap_size(ensemble, options.assessment.significance);
   SurfaceTestOptions tests_options;
@@ -230,97 +224,20 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
 }
 
 SurfaceVerdict surface_verdict(const SurfaceAnalysis& a) {
-  SurfaceVerdict v;
-  if (a.noise_floor.reached) {
-    v.text = "no verdict: " + a.noise_floor.text;
-    return v;
+  SurfaceEvidence evidence;
+  evidence.summit_heights = &a.summit_heights;
+  evidence.heights = a.heights ? &*a.heights : nullptr;
+  evidence.surrogates = a.surrogates;
+  if (a.noise_floor.reached) evidence.no_verdict = a.noise_floor.text;
+  if (a.contact) {
+    const ContactComparison& contact = *a.contact;
+    evidence.has_contact_curves = [&contact](HeightModel model) {
+      const ModelContact* curves = contact.find(to_string(model));
+      return curves && curves->served;
+    };
+    evidence.contact_headline = contact.headline;
   }
-  const SampleAssessment& S = a.summit_heights;
-  const SampleAssessment* H = a.heights ? &*a.heights : nullptr;
-  if (S.models.size() != 3) return v;
-  const double significance = S.options.significance;
-  v.tested = S.options.bootstrap > 0;
-  const ModelAssessment& gs = S.model(HeightModel::gaussian);
-  v.p_summits = gs.anderson_darling_p;
-  v.p_summits_bound = gs.p_at_floor;
-  if (H) {
-    v.p_heights = H->model(HeightModel::gaussian).anderson_darling_p;
-    v.p_heights_bound = H->model(HeightModel::gaussian).p_at_floor;
-  }
-  const auto p = [](double value, bool bound) { return p_value_text(value, bound); };
-  std::string text;
-  if (!v.tested) {
-    text = "Is it Gaussian? Not tested (no surrogate surfaces: --ensemble 0).";
-  } else {
-    const double half = significance / 2;
-    const bool heights_reject = H && v.p_heights < half, summits_reject = v.p_summits < half;
-    v.gaussian_rejected = heights_reject || summits_reject;
-    text = std::string("Is it Gaussian? ") + (v.gaussian_rejected ? "No" : "Not rejected") + ": against " +
-           std::to_string(a.surrogates) + " Gaussian surfaces of the map's own spectrum, ";
-    if (H) text += "its heights give " + p(v.p_heights, v.p_heights_bound) + " and ";
-    text += "its summit heights " + p(v.p_summits, v.p_summits_bound) + " (Anderson-Darling, each at " +
-            short_number(100 * half) + "% so that the verdict's size is " + short_number(100 * significance) + "%).";
-  }
-  // the orientation from the heights' marginal
-  if (H) {
-    int best = -1;
-    for (HeightModel model : {HeightModel::weibull_tail, HeightModel::weibull_bounded}) {
-      const ModelAssessment& m = H->model(model);
-      if ((v.tested && m.rejected) || !m.shape_identified) continue;
-      if (best < 0 || m.aic < H->models[static_cast<std::size_t>(best)].aic) best = static_cast<int>(model);
-    }
-    if (best >= 0) {
-      v.orientation = static_cast<HeightModel>(best);
-      const ModelAssessment& m = H->models[static_cast<std::size_t>(best)];
-      text += std::string(" The heights lean ") + (v.orientation == HeightModel::weibull_tail ? "tail up" : "bounded above") +
-              " (" + describe(v.orientation) + ", a = " + short_number(m.fit.distribution.shape) + " [" +
-              short_number(m.shape.lo) + ", " + short_number(m.shape.hi) + "]).";
-    } else {
-      text += " Neither Weibull describes the heights (rejected or its shape not identified).";
-    }
-  }
-  // the model named for the contact: from the summit heights, what GW integrates
-  std::string reasons;
-  int named = -1;
-  for (HeightModel model : all_height_models) {
-    const ModelAssessment& m = S.model(model);
-    std::string why;
-    if (model == HeightModel::gaussian && v.gaussian_rejected) why = "the surface is not Gaussian";
-    else if (v.tested && m.rejected) why = "rejected on the summit heights (" + p(m.anderson_darling_p, m.p_at_floor) + ")";
-    else if (!m.shape_identified) why = "its shape is " + m.identification;
-    else if (a.contact) {
-      const ModelContact* curves = a.contact->find(to_string(model));
-      if (!curves || !curves->served) why = "it has no contact curves";
-    } else if (model != HeightModel::gaussian && !(m.fit.distribution.shape >= weibull_shape_min && m.fit.distribution.shape <= weibull_shape_max)) {
-      why = "its shape is outside what the tables serve (" + format_double(weibull_shape_min) + " to " +
-            format_double(weibull_shape_max) + ")";
-    }
-    if (!why.empty()) {
-      reasons += std::string(reasons.empty() ? "" : "; ") + describe(model) + ": " + why;
-      continue;
-    }
-    if (named < 0 || m.aic < S.models[static_cast<std::size_t>(named)].aic) named = static_cast<int>(model);
-  }
-  if (named >= 0) {
-    v.named = true;
-    v.model = static_cast<HeightModel>(named);
-    const ModelAssessment& m = S.models[static_cast<std::size_t>(named)];
-    text += std::string(" For the contact (the summit heights, what GW integrates): ") + describe(v.model);
-    if (v.model != HeightModel::gaussian)
-      text += ", a = " + short_number(m.fit.distribution.shape) + " [" + short_number(m.shape.lo) + ", " +
-              short_number(m.shape.hi) + "]";
-    text += " (" + (v.tested ? p(m.anderson_darling_p, m.p_at_floor) : std::string("not tested")) + ", Akaike weight " +
-            short_number(m.akaike_weight) + ").";
-    if (H && v.orientation != HeightModel::gaussian && v.model != HeightModel::gaussian && v.model != v.orientation)
-      text += " Its orientation is not the heights': the summits alone can mislead about it.";
-  } else {
-    text += " No model is named for the contact";
-  }
-  if (!reasons.empty()) text += (named >= 0 ? " Not named: " : ": ") + reasons + ".";
-  else if (named < 0) text += ".";
-  if (a.contact && !a.contact->headline.empty()) text += " " + a.contact->headline + ".";
-  v.text = text;
-  return v;
+  return surface_verdict(evidence);
 }
 
 SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOptions& options) {

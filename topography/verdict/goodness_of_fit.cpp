@@ -7,28 +7,13 @@
 
 #include "asperity/detail/parallel_for.hpp"
 #include "asperity/error.hpp"
+#include "sample_verdict.hpp"
 
 namespace asperity::topography {
 namespace {
 
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
 // a uniform in (0, 1) from 53 bits, never 0 or 1
 double uniform(std::mt19937_64& engine) { return (static_cast<double>(engine() >> 11) + 0.5) * 0x1p-53; }
-
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end());
-  const double position = q * static_cast<double>(values.size() - 1);
-  const std::size_t k = static_cast<std::size_t>(position);
-  const double fraction = position - static_cast<double>(k);
-  return k + 1 < values.size() ? values[k] * (1 - fraction) + values[k + 1] * fraction : values[k];
-}
 
 std::string format(const char* pattern, double a) {
   char buffer[64];
@@ -103,61 +88,62 @@ std::vector<double> draw_sample(const HeightDistribution& distribution, std::siz
   return sample;
 }
 
+namespace {
+
+// The model refitted on B samples of n drawn from its fit `fitted` (the i.i.d. parametric
+// bootstrap), each from its own seed (seed, model, replicate): the same for every thread count.
+std::vector<verdict::Refit> bootstrap_refits(HeightModel model, const HeightDistribution& fitted, std::size_t n,
+                                             int bootstrap, std::uint64_t seed, int threads, const FitOptions& fit_options) {
+  using verdict::splitmix64;
+  std::vector<verdict::Refit> refits(static_cast<std::size_t>(std::max(bootstrap, 0)));
+  detail::parallel_for(refits.size(), threads, [&](std::size_t b) {
+    const std::uint64_t replicate_seed =
+        splitmix64(splitmix64(seed) ^ splitmix64(static_cast<std::uint64_t>(model) * 1000003u + static_cast<std::uint64_t>(b)));
+    std::vector<double> sample = draw_sample(fitted, n, replicate_seed);
+    std::sort(sample.begin(), sample.end());
+    refits[b] = verdict::refit(model, sample, fitted, fit_options);  // a failure is counted
+  });
+  return refits;
+}
+
+// The model fitted on `sorted`, bootstrapped and concluded (p-values, percentile intervals, the
+// shape's identification): what both bootstrap_test and assess_sample report.
+ModelAssessment bootstrapped(HeightModel model, const std::vector<double>& sorted, const AssessmentOptions& options,
+                             std::vector<verdict::Refit>* refits_out = nullptr) {
+  ModelAssessment m = verdict::observed(model, sorted, options.fit);
+  const std::vector<verdict::Refit> refits =
+      bootstrap_refits(model, m.fit.distribution, sorted.size(), options.bootstrap, options.seed, options.threads, options.fit);
+  verdict::conclude(m, refits, options, verdict::ShapeInterval::percentile);
+  if (refits_out) *refits_out = refits;
+  return m;
+}
+
+}  // namespace
+
 TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, int bootstrap, std::uint64_t seed,
                           int threads, const FitOptions& fit_options) {
+  AssessmentOptions options;
+  options.bootstrap = bootstrap;
+  options.seed = seed;
+  options.threads = threads;
+  options.fit = fit_options;
+  std::vector<verdict::Refit> refits;
+  const ModelAssessment m = bootstrapped(model, sorted, options, &refits);
   TestResult result;
-  result.fit = fit_height_distribution(model, sorted, fit_options);
-  const HeightDistribution& fitted = result.fit.distribution;
-  result.anderson_darling = anderson_darling(fitted, sorted);
-  result.kolmogorov_smirnov = kolmogorov_smirnov(fitted, sorted);
-  if (bootstrap <= 0) return result;
-
-  struct Replicate {
-    double a2 = 0, d = 0, location = 0, scale = 0, shape = 0;
-    bool ok = false;
-  };
-  std::vector<Replicate> replicates(static_cast<std::size_t>(bootstrap));
-  FitOptions refit_options = fit_options;
-  refit_options.start = &fitted;
-  detail::parallel_for(static_cast<std::size_t>(bootstrap), threads, [&](std::size_t index) {
-    {
-      const int b = static_cast<int>(index);
-      const std::uint64_t replicate_seed =
-          splitmix64(splitmix64(seed) ^ splitmix64(static_cast<std::uint64_t>(model) * 1000003u + static_cast<std::uint64_t>(b)));
-      std::vector<double> sample = draw_sample(fitted, sorted.size(), replicate_seed);
-      std::sort(sample.begin(), sample.end());
-      Replicate& r = replicates[static_cast<std::size_t>(b)];
-      try {
-        const FitResult refit = fit_height_distribution(model, sample, refit_options);
-        r.a2 = anderson_darling(refit.distribution, sample);
-        r.d = kolmogorov_smirnov(refit.distribution, sample);
-        r.location = refit.distribution.location;
-        r.scale = refit.distribution.scale;
-        r.shape = refit.distribution.shape;
-        r.ok = true;
-      } catch (const Error&) {
-        r.ok = false;  // counted; a sample of identical values cannot happen from a continuous law
-      }
-    }
-  });
-
-  int exceed_a2 = 0, exceed_d = 0, ok = 0;
-  for (const Replicate& r : replicates) {
-    if (!r.ok) {
-      ++result.failed_refits;
-      continue;
-    }
-    ++ok;
-    exceed_a2 += r.a2 >= result.anderson_darling ? 1 : 0;
-    exceed_d += r.d >= result.kolmogorov_smirnov ? 1 : 0;
+  result.fit = m.fit;
+  result.anderson_darling = m.anderson_darling;
+  result.kolmogorov_smirnov = m.kolmogorov_smirnov;
+  result.anderson_darling_p = m.anderson_darling_p;
+  result.kolmogorov_smirnov_p = m.kolmogorov_smirnov_p;
+  result.anderson_darling_p_at_floor = m.p_at_floor;
+  result.kolmogorov_smirnov_p_at_floor = m.kolmogorov_smirnov_p_at_floor;
+  result.failed_refits = m.failed_refits;
+  for (const verdict::Refit& r : refits) {
+    if (!r.ok) continue;
     result.refit_locations.push_back(r.location);
     result.refit_scales.push_back(r.scale);
     result.refit_shapes.push_back(r.shape);
   }
-  result.anderson_darling_p = static_cast<double>(1 + exceed_a2) / (ok + 1);
-  result.kolmogorov_smirnov_p = static_cast<double>(1 + exceed_d) / (ok + 1);
-  result.anderson_darling_p_at_floor = ok > 0 && exceed_a2 == 0;
-  result.kolmogorov_smirnov_p_at_floor = ok > 0 && exceed_d == 0;
   return result;
 }
 
@@ -182,71 +168,8 @@ SampleAssessment assess_sample(const std::string& name, std::vector<double> valu
   assessment.name = name;
   assessment.n = values.size();
   assessment.options = options;
-  const double tail = 0.5 * (1 - options.confidence);
-  for (HeightModel model : all_height_models) {
-    const TestResult test = bootstrap_test(model, values, options.bootstrap, options.seed, options.threads, options.fit);
-    ModelAssessment m;
-    m.fit = test.fit;
-    m.anderson_darling = test.anderson_darling;
-    m.anderson_darling_p = test.anderson_darling_p;
-    m.kolmogorov_smirnov = test.kolmogorov_smirnov;
-    m.kolmogorov_smirnov_p = test.kolmogorov_smirnov_p;
-    m.p_at_floor = options.bootstrap > 0 && test.anderson_darling_p_at_floor;
-    m.kolmogorov_smirnov_p_at_floor = options.bootstrap > 0 && test.kolmogorov_smirnov_p_at_floor;
-    m.log_likelihood = log_likelihood(test.fit.distribution, values);
-    m.aic = 2 * parameter_count(model) - 2 * m.log_likelihood;
-    m.bootstrap = options.bootstrap;
-    m.failed_refits = test.failed_refits;
-    m.location = {percentile(test.refit_locations, tail), percentile(test.refit_locations, 1 - tail)};
-    m.scale = {percentile(test.refit_scales, tail), percentile(test.refit_scales, 1 - tail)};
-    if (model != HeightModel::gaussian) m.shape = {percentile(test.refit_shapes, tail), percentile(test.refit_shapes, 1 - tail)};
-    else m.shape = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-    m.rejected = options.bootstrap > 0 && m.anderson_darling_p < options.significance;
-    assessment.models.push_back(m);
-  }
-  weigh_models(assessment);
-
-  Verdict& v = assessment.verdict;
-  const ModelAssessment& gaussian = assessment.model(HeightModel::gaussian);
-  v.gaussian_rejected = gaussian.rejected;
-  int best = -1;
-  for (int k = 0; k < 3; ++k)
-    if (!assessment.models[k].rejected && (best < 0 || assessment.models[k].aic < assessment.models[best].aic)) best = k;
-  v.best_rejected = best < 0;
-  if (best < 0)
-    for (int k = 0; k < 3; ++k)
-      if (best < 0 || assessment.models[k].aic < assessment.models[best].aic) best = k;
-  v.best = static_cast<HeightModel>(best);
-  const ModelAssessment& winner = assessment.models[best];
-  v.aic_gain_over_gaussian = gaussian.aic - winner.aic;
-
-  const int b = options.bootstrap;
-  std::string text = name + " (n = " + std::to_string(values.size()) + "): ";
-  if (b <= 0) {
-    text += "not tested (no bootstrap samples, so no p-values: nothing is said about Gaussianity); by AIC alone "
-            "the lowest is " + std::string(describe(v.best)) + ".";
-  } else {
-    text += v.gaussian_rejected ? "not Gaussian: Anderson-Darling rejects the Gaussian (" : "consistent with a Gaussian (Anderson-Darling ";
-    text += p_value_text(gaussian.anderson_darling_p, gaussian.p_at_floor) + ", KS " +
-            p_value_text(gaussian.kolmogorov_smirnov_p, gaussian.kolmogorov_smirnov_p_at_floor) + ", " +
-            std::to_string(b) + " bootstrap samples). ";
-    if (v.best_rejected) {
-      text += "No model passes at the " + format("%.0f%%", 100 * options.significance) + " level; the least bad by AIC is " +
-              describe(v.best);
-    } else {
-      text += std::string("Best fit (lowest AIC among the models not rejected): ") + describe(v.best);
-    }
-    if (v.best != HeightModel::gaussian)
-      text += ", shape " + format("%.3g", winner.fit.distribution.shape) + " [" + format("%.3g", winner.shape.lo) + ", " +
-              format("%.3g", winner.shape.hi) + "] (" + format("%.0f%%", 100 * options.confidence) + ")";
-    text += " (Anderson-Darling " + p_value_text(winner.anderson_darling_p, winner.p_at_floor) + ")";
-    if (v.best != HeightModel::gaussian) {
-      text += "; its AIC is " + format("%.1f", v.aic_gain_over_gaussian) + " below the Gaussian's (Akaike weights " +
-              format("%.3g", winner.akaike_weight) + " against " + format("%.3g", gaussian.akaike_weight) + ")";
-    }
-    text += ".";
-  }
-  v.text = text;
+  for (HeightModel model : all_height_models) assessment.models.push_back(bootstrapped(model, values, options));
+  verdict::judge(assessment, verdict::NullSamples::bootstrap);
   return assessment;
 }
 

@@ -12,24 +12,16 @@
 #include "asperity/error.hpp"
 #include "asperity/topography/leveling.hpp"
 #include "asperity/topography/surrogates.hpp"
+#include "sample_verdict.hpp"
 #include "statistics/plane_fit.hpp"
 
 namespace asperity::topography {
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-// The step in ln shape over which the heights' bias slope is measured, and the least
-// d(estimate)/d(shape) (1 + the slope) with which an interval is given.
-constexpr double bias_step = 0.1;
-constexpr double min_sensitivity = 0.25;
-FitOptions bounds_of_fit() { return FitOptions{}; }
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
+using verdict::nan;
+using verdict::bias_step;
+using verdict::splitmix64;
+using verdict::Refit;
 
 // ln Phi(z), accurate far into both tails
 double log_normal_cdf(double z) {
@@ -48,15 +40,6 @@ std::vector<std::size_t> choose(std::size_t n, std::size_t k, std::uint64_t seed
   all.resize(k);
   std::sort(all.begin(), all.end());
   return all;
-}
-
-double percentile(std::vector<double> values, double q) {
-  if (values.empty()) return nan;
-  std::sort(values.begin(), values.end());
-  const double position = q * static_cast<double>(values.size() - 1);
-  const std::size_t k = static_cast<std::size_t>(position);
-  const double fraction = position - static_cast<double>(k);
-  return k + 1 < values.size() ? values[k] * (1 - fraction) + values[k + 1] * fraction : values[k];
 }
 
 // F^-1(Phi(g)) tabulated on a fine grid of g and interpolated linearly (within ~1e-7 of the
@@ -83,169 +66,6 @@ class MarginalTable {
   std::vector<double> values_;
 };
 
-// One model refitted on one surrogate sample.
-struct Refit {
-  double a2 = nan, d = nan, shape = nan, location = nan, scale = nan;
-  bool ok = false, at_bound = false;
-};
-
-Refit refit(HeightModel model, const std::vector<double>& sorted, const HeightDistribution& start,
-            const FitOptions& options) {
-  Refit r;
-  try {
-    FitOptions warm = options;
-    warm.start = &start;
-    const FitResult fit = fit_height_distribution(model, sorted, warm);
-    const FitStatistics statistics = fit_statistics(fit.distribution, sorted);
-    r.a2 = statistics.anderson_darling;
-    r.d = statistics.kolmogorov_smirnov;
-    r.shape = fit.distribution.shape;
-    r.location = fit.distribution.location;
-    r.scale = fit.distribution.scale;
-    r.at_bound = fit.shape_at_bound;
-    r.ok = std::isfinite(r.a2);
-  } catch (const Error&) {
-  }
-  return r;
-}
-
-ModelAssessment observed(HeightModel model, const std::vector<double>& sorted, const FitOptions& options) {
-  ModelAssessment m;
-  m.fit = fit_height_distribution(model, sorted, options);
-  m.anderson_darling = anderson_darling(m.fit.distribution, sorted);
-  m.kolmogorov_smirnov = kolmogorov_smirnov(m.fit.distribution, sorted);
-  m.log_likelihood = log_likelihood(m.fit.distribution, sorted);
-  m.aic = 2 * parameter_count(model) - 2 * m.log_likelihood;
-  m.shape = m.location = m.scale = {nan, nan};
-  m.anderson_darling_p = m.kolmogorov_smirnov_p = nan;
-  return m;
-}
-
-// p-values, intervals and identification of one model from its refits.
-void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const AssessmentOptions& options,
-              const std::vector<Refit>* stepped) {
-  const bool centred_on_estimate = stepped == nullptr;
-  int exceed_a2 = 0, exceed_d = 0, ok = 0, at_bound = 0;
-  std::vector<double> shapes, locations, scales;
-  for (const Refit& r : refits) {
-    if (!r.ok) {
-      ++m.failed_refits;
-      continue;
-    }
-    ++ok;
-    exceed_a2 += r.a2 >= m.anderson_darling ? 1 : 0;
-    exceed_d += r.d >= m.kolmogorov_smirnov ? 1 : 0;
-    at_bound += r.at_bound ? 1 : 0;
-    shapes.push_back(r.shape);
-    locations.push_back(r.location);
-    scales.push_back(r.scale);
-  }
-  m.bootstrap = static_cast<int>(refits.size());
-  if (ok == 0) return;
-  m.anderson_darling_p = static_cast<double>(1 + exceed_a2) / (ok + 1);
-  m.kolmogorov_smirnov_p = static_cast<double>(1 + exceed_d) / (ok + 1);
-  m.p_at_floor = exceed_a2 == 0;
-  m.kolmogorov_smirnov_p_at_floor = exceed_d == 0;
-  m.rejected = m.anderson_darling_p < options.significance;
-  const double tail = 0.5 * (1 - options.confidence);
-  const HeightModel model = m.fit.distribution.model;
-  m.location = {percentile(locations, tail), percentile(locations, 1 - tail)};
-  m.scale = {percentile(scales, tail), percentile(scales, 1 - tail)};
-  if (model == HeightModel::gaussian) return;
-  const double lo = percentile(shapes, tail), hi = percentile(shapes, 1 - tail);
-  const double a = m.fit.distribution.shape;
-  if (centred_on_estimate) {
-    // the spread of the refits around their own centre, carried to the estimate (in ln shape)
-    const double median = percentile(shapes, 0.5);
-    m.shape = {a * median / hi, a * median / lo};
-  } else {
-    // The basic bootstrap interval in ln shape corrected for a bias that changes with the shape.
-    // The surrogates are drawn at the estimate, so their refits' offset b0 = ln median - ln a_hat
-    // is the estimator's own bias there (leveling moves a skewed marginal's shape). The basic
-    // interval, ln a_hat - b0 - e (e the refits' centred quantiles), assumes that bias the same
-    // at the true shape; it is not (at a = 1.5 it falls as the shape grows: the maps whose
-    // estimate erred most up showed the least bias, and the basic interval held the truth in 86%
-    // of maps). So the bias is also measured at ln a_hat - bias_step on the same surrogate fields
-    // (common random numbers: the difference is nearly free of their noise), b linear in ln a
-    // between, beta its slope, and ln a_hat = ln a + b(ln a) + e solved for ln a:
-    //   ln a = ln a_hat - (b0 + e) / (1 + beta).
-    const double b0 = std::log(percentile(shapes, 0.5) / a);
-    std::vector<double> stepped_shapes;
-    for (const Refit& r : *stepped)
-      if (r.ok) stepped_shapes.push_back(r.shape);
-    double beta = 0;
-    if (stepped_shapes.size() * 2 >= shapes.size()) {
-      const double a1 = a * std::exp(-bias_step);
-      const double b1 = std::log(percentile(stepped_shapes, 0.5) / a1);
-      beta = (b1 - b0) / -bias_step;
-    }
-    m.bias_slope = beta;
-    if (!(1 + beta >= min_sensitivity)) {
-      // the estimate hardly follows the shape: no interval is honest
-      m.shape = {bounds_of_fit().shape_min, bounds_of_fit().shape_max};
-    } else {
-      const double e_lo = std::log(lo / a) - b0, e_hi = std::log(hi / a) - b0;
-      m.shape = {a * std::exp(-(b0 + e_hi) / (1 + beta)), a * std::exp(-(b0 + e_lo) / (1 + beta))};
-    }
-  }
-  const FitOptions bounds;
-  const bool interval_at_bound = m.shape.lo <= bounds.shape_min * 1.01 || m.shape.hi >= bounds.shape_max / 1.01;
-  const bool refits_at_bound = at_bound * 10 > ok;
-  if (m.fit.shape_at_bound || interval_at_bound || refits_at_bound) {
-    m.shape_identified = false;
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "not identified: %s (the fit keeps the shape within [%g, %g])",
-                  m.fit.shape_at_bound ? "the estimate is at a bound"
-                  : interval_at_bound  ? "its interval reaches a bound"
-                                       : "over a tenth of the ensemble's refits end at a bound",
-                  bounds.shape_min, bounds.shape_max);
-    m.identification = text;
-  }
-}
-
-std::string p_text(const ModelAssessment& m) { return p_value_text(m.anderson_darling_p, m.p_at_floor); }
-
-// The sample's own verdict, in words (the surface's verdict combines the two samples).
-void judge(SampleAssessment& sample, const AssessmentOptions& options) {
-  Verdict& v = sample.verdict;
-  const ModelAssessment& gaussian = sample.model(HeightModel::gaussian);
-  v.gaussian_rejected = gaussian.rejected;
-  int best = -1;
-  for (int k = 0; k < 3; ++k) {
-    const ModelAssessment& m = sample.models[static_cast<std::size_t>(k)];
-    if (m.rejected || !m.shape_identified) continue;
-    if (best < 0 || m.aic < sample.models[static_cast<std::size_t>(best)].aic) best = k;
-  }
-  v.best_rejected = best < 0;
-  if (best < 0) best = 0;
-  v.best = static_cast<HeightModel>(best);
-  v.aic_gain_over_gaussian = gaussian.aic - sample.models[static_cast<std::size_t>(best)].aic;
-  std::string text = sample.name + " (n = " + std::to_string(sample.n) + "): ";
-  if (options.bootstrap <= 0) {
-    text += "not tested (no surrogates, so no p-values: nothing is said about Gaussianity).";
-    v.text = text;
-    return;
-  }
-  text += std::string(v.gaussian_rejected ? "not Gaussian" : "consistent with a Gaussian surface") +
-          " (Anderson-Darling " + p_text(gaussian) + " against " + std::to_string(options.bootstrap) +
-          " surrogate surfaces of the map's spectrum). ";
-  for (HeightModel model : {HeightModel::weibull_tail, HeightModel::weibull_bounded}) {
-    const ModelAssessment& m = sample.model(model);
-    char shape[160];
-    if (m.shape_identified)
-      std::snprintf(shape, sizeof shape, "shape %.3g [%.3g, %.3g]", m.fit.distribution.shape, m.shape.lo, m.shape.hi);
-    else
-      std::snprintf(shape, sizeof shape, "shape %s", m.identification.c_str());
-    text += std::string(describe(model)) + ": " + shape + ", " + (m.rejected ? "rejected" : "not rejected") + " (" +
-            p_text(m) + "). ";
-  }
-  char weights[160];
-  std::snprintf(weights, sizeof weights, "Akaike weights: Gaussian %.2g, tail up %.2g, mirrored %.2g.",
-                sample.models[0].akaike_weight, sample.models[1].akaike_weight, sample.models[2].akaike_weight);
-  text += weights;
-  v.text = text;
-}
 
 }  // namespace
 
@@ -291,8 +111,8 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
   S.n = summits.size();
   H.options = S.options = a;
   for (HeightModel model : all_height_models) {
-    H.models.push_back(observed(model, heights, a.fit));
-    S.models.push_back(observed(model, summits, a.fit));
+    H.models.push_back(verdict::observed(model, heights, a.fit));
+    S.models.push_back(verdict::observed(model, summits, a.fit));
   }
 
   if (a.bootstrap > 0) {
@@ -364,15 +184,15 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
           sample(weibull_height, plane, tests.height_positions, x_heights);
           sample(weibull_height, plane, summit_points, x_summits);
         }
-        if (options.test_heights) refits[b][static_cast<std::size_t>(m)] = refit(model, x_heights, marginal, a.fit);
+        if (options.test_heights) refits[b][static_cast<std::size_t>(m)] = verdict::refit(model, x_heights, marginal, a.fit);
         if (x_summits.size() >= 5)
           refits[b][static_cast<std::size_t>(3 + m)] =
-              refit(model, x_summits, S.models[static_cast<std::size_t>(m)].fit.distribution, a.fit);
+              verdict::refit(model, x_summits, S.models[static_cast<std::size_t>(m)].fit.distribution, a.fit);
         if (options.test_heights && model != HeightModel::gaussian) {  // the same field at the stepped shape
           const MarginalTable& stepped_table = tables[static_cast<std::size_t>(2 + m)];
           const auto stepped_height = [&](std::size_t k) { return stepped_table.at(g[k]); };
           sample(stepped_height, leveled_plane(stepped_height), tests.height_positions, x_heights);
-          refits[b][static_cast<std::size_t>(6 + m)] = refit(model, x_heights, stepped[static_cast<std::size_t>(m)], a.fit);
+          refits[b][static_cast<std::size_t>(6 + m)] = verdict::refit(model, x_heights, stepped[static_cast<std::size_t>(m)], a.fit);
         }
       }
       if (progress) {
@@ -387,13 +207,14 @@ SurfaceTests test_surface(const HeightMap& map, const std::vector<double>& summi
         of_summits.push_back(r[static_cast<std::size_t>(3 + m)]);
         if (m > 0) of_stepped.push_back(r[static_cast<std::size_t>(6 + m)]);
       }
-      if (options.test_heights) conclude(H.models[static_cast<std::size_t>(m)], of_heights, a, &of_stepped);
-      conclude(S.models[static_cast<std::size_t>(m)], of_summits, a, nullptr);
+      if (options.test_heights)
+        verdict::conclude(H.models[static_cast<std::size_t>(m)], of_heights, a, verdict::ShapeInterval::bias_corrected,
+                          &of_stepped);
+      verdict::conclude(S.models[static_cast<std::size_t>(m)], of_summits, a, verdict::ShapeInterval::centred_on_estimate);
     }
   }
   for (SampleAssessment* sample : {&H, &S}) {
-    weigh_models(*sample);
-    judge(*sample, a);
+    verdict::judge(*sample, verdict::NullSamples::surrogate_surfaces);
   }
   return tests;
 }

@@ -18,6 +18,7 @@
 #include "asperity/topography/statistics.hpp"
 #include "asperity/topography/summits.hpp"
 #include "asperity/topography/surface_tests.hpp"
+#include "asperity/topography/surface_verdict.hpp"
 
 namespace asperity::topography {
 
@@ -47,25 +48,6 @@ struct SamplingRow {
   std::size_t summits = 0;
   double density = 0, radius = 0;  // [1/m^2], [m]
   double m2 = 0, m4 = 0, alpha = 0, anisotropy = 1;
-};
-
-// What the evidence says, for the surface as a whole (docs/surfaces.md, section 4):
-//   Is it Gaussian? The heights' test and the summit heights' test, each at half the
-//   significance (Bonferroni: the verdict's size stays at most the significance). Either
-//   rejecting says "not Gaussian".
-//   Which Weibull? The heights give the orientation (their marginal is what a wear process
-//   bounds); the summit heights give the law GW integrates. The verdict names a model for the
-//   contact only if it is not rejected on the summit heights, its shape is identified, and it
-//   has contact curves (or, without a modulus, a shape scene tables serve).
-struct SurfaceVerdict {
-  bool tested = false;                 // an ensemble was run
-  bool gaussian_rejected = false;
-  double p_heights = 0, p_summits = 0;  // the Gaussian's Anderson-Darling p on each sample
-  bool p_heights_bound = false, p_summits_bound = false;  // p at its floor 1/(B + 1): a bound
-  HeightModel orientation = HeightModel::gaussian;  // the heights' Weibull, or gaussian: no orientation found
-  bool named = false;                  // a model for the contact is named
-  HeightModel model = HeightModel::gaussian;
-  std::string text;
 };
 
 // A map whose roughness is at the level of its height quantization q (HeightMap::
@@ -101,7 +83,7 @@ struct SurfaceAnalysis {
   AnalysisOptions options;
 };
 
-// The verdict of an analysis (its tests, and its contact curves when there are any).
+// The verdict of an analysis (surface_verdict.hpp: its tests, and its contact curves when there are any).
 SurfaceVerdict surface_verdict(const SurfaceAnalysis& analysis);
 
 // Throws asperity::Error (naming the map's source) for a map that is not one (HeightMap::

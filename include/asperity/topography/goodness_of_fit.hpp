@@ -16,8 +16,10 @@
 // replicate from (seed, model, replicate), uniforms from its bits and the quantile function,
 // so results are the same on every platform and for every thread count.
 //
-// The samples are assumed independent: summit heights nearly are (summits are at least two
-// sampling intervals apart); all heights of a map are not, and are thinned first (analysis.hpp).
+// The samples are assumed independent; a map's heights and summit heights are not (neighbours
+// share the long wavelengths): a map is tested against surrogate surfaces of its own spectrum
+// instead (surface_tests.hpp). Both draw their null samples their own way and share the rest:
+// the refits' p-values, intervals, the shape's identification, the Akaike weights and the verdict.
 #pragma once
 #include <cstdint>
 #include <limits>
@@ -60,7 +62,9 @@ struct ModelAssessment {
   double anderson_darling = 0, anderson_darling_p = 0;
   double kolmogorov_smirnov = 0, kolmogorov_smirnov_p = 0;
   double log_likelihood = 0, aic = 0, delta_aic = 0, akaike_weight = 0;
-  Interval location, scale, shape;  // percentile bootstrap intervals (shape: Weibull only)
+  // location and scale: percentile intervals of the refits; shape (Weibull only): percentile
+  // (assess_sample), or as surface_tests.hpp says for a surface's samples
+  Interval location, scale, shape;
   int bootstrap = 0, failed_refits = 0;
   bool rejected = false;            // the Anderson-Darling p-value is below the significance
   // p at its floor 1/(B' + 1) (B' the refits that succeeded; no refit reached the statistic): then
@@ -79,8 +83,10 @@ struct ModelAssessment {
 
 struct Verdict {
   bool gaussian_rejected = false;
-  HeightModel best = HeightModel::gaussian;  // lowest AIC among the models not rejected
-  bool best_rejected = false;                // every model was rejected: the best by AIC anyway
+  // the lowest AIC among the models neither rejected nor of an unidentified shape
+  HeightModel best = HeightModel::gaussian;
+  bool best_rejected = false;                // there was none: the lowest AIC of all
+
   double aic_gain_over_gaussian = 0;         // AIC(Gaussian) - AIC(best)
   std::string text;                          // the verdict with its evidence, in words
 };
