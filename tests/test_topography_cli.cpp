@@ -65,7 +65,7 @@ TEST(TopographyCli, JsonAndReport) {
                             "--modulus=2e9", "--load", "1e-5", "--summit-window", "2"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("{", 0), 0u);
-  EXPECT_NE(r.out.find("\"schema\": \"asperity-surface/2\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"schema\": \"asperity-surface/3\""), std::string::npos);
   EXPECT_NE(r.out.find("\"window_points\": 2"), std::string::npos);
   // standard error holds at most the ensemble's progress (a run over a second)
   std::istringstream lines(r.err);

@@ -302,7 +302,7 @@ TEST(TopographySurface, ReportFolder) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/curves.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/summits.csv"));
   const std::string json = t::analysis_json(a);
-  EXPECT_NE(json.find("\"schema\": \"asperity-surface/2\""), std::string::npos);
+  EXPECT_NE(json.find("\"schema\": \"asperity-surface/3\""), std::string::npos);
   EXPECT_THROW(t::write_report(a, "/proc/no/such/dir"), asperity::Error);
 }
 

@@ -334,7 +334,8 @@ void add_surface_command(CLI::App& app) {
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
       ->type_name("DIR")->group(output);
-  command->add_flag("--json", o.json, "write the JSON (schema asperity-surface/2) instead of the summary")
+  command->add_flag("--json", o.json,
+                    std::string("write the JSON (schema ") + topo::surface_json_schema + ") instead of the summary")
       ->group(output);
   command->add_flag("--overwrite", o.overwrite,
                     "with --report: replace files in DIR that are not asperity's report files (a report's own files "

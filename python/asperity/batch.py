@@ -4,7 +4,7 @@ A production line measures thousands of parts; each file gets the whole analysis
 asperity.topography.analyse_surface_file, run on the workers of a dask.distributed cluster (a
 LocalCluster on this machine by default, or a running scheduler's address), and the batch gives one
 table -- a row per surface: statistics, fits, verdict, contact ratios -- plus each surface's JSON
-document (schema asperity-surface/2):
+document (schema asperity.topography.SURFACE_JSON_SCHEMA):
 
     from asperity import batch
     if __name__ == "__main__":  # required in a script: the worker processes import it again
@@ -35,12 +35,13 @@ import time
 
 __all__ = ["COLUMNS", "analyse_files", "options_fingerprint", "output_name", "read_table", "row_from_json"]
 
-_SCHEMA = "asperity-surface/2"
 _DONE_SCHEMA = "asperity-batch-done/1"  # a surface's <name>.done marker
 # The models' names, spelled once: by the library (the JSON documents' spelling), read from the module.
 # The fits' columns spell a height model with underscores (heights_weibull_tail_ad_p), the contact
 # columns as the JSON does (stiffness_over_measured_0_weibull-tail).
 from ._asperity import topography as _topography  # noqa: E402
+
+_SCHEMA = _topography.SURFACE_JSON_SCHEMA  # the surfaces' JSON documents'
 
 _MODELS = tuple(model.replace("-", "_") for model in _topography.height_model_names)
 _SAMPLES = ("summit_heights", "heights")
@@ -72,7 +73,7 @@ pressure_{k}_Pa, measured_summits_stiffness_spread_{k} and, for each model m com
 measured summits, stiffness_over_measured_{k}_{m}; with the exact contact solved, for each curve m
 stiffness_over_exact_{k}_{m} and area_over_exact_{k}_{m}: see row_from_json."""
 
-# Where each fixed column is in a surface's JSON document (asperity-surface/2): one table, read by
+# Where each fixed column is in a surface's JSON document (SURFACE_JSON_SCHEMA): one table, read by
 # row_from_json (a missing key gives None)
 _JSON_PATHS = {
     **{key: ("surface", key) for key in ("nx", "ny", "dx_m", "dy_m")},

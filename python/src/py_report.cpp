@@ -116,7 +116,7 @@ void bind_report(py::module_& m) {
   py::class_<topo::SurfaceAnalysis>(m, "SurfaceAnalysis",
                                     "A measured surface analysed: the map as analysed, statistics, moments, summits, the fits\n"
                                     "with their evidence, and the contact curves. to_dict() gives all of it as the JSON document\n"
-                                    "(schema asperity-surface/2) that `asperity surface --json` writes.")
+                                    "(its schema: SURFACE_JSON_SCHEMA) that `asperity surface --json` writes.")
       .def_readonly("map", &topo::SurfaceAnalysis::map, "The map as analysed (leveled when asked).")
       .def_readonly("leveled", &topo::SurfaceAnalysis::leveled)
       .def_readonly("plane", &topo::SurfaceAnalysis::plane, "The plane subtracted.")
@@ -139,9 +139,9 @@ void bind_report(py::module_& m) {
       .def_readonly("options", &topo::SurfaceAnalysis::options)
       .def("to_dict", [](const topo::SurfaceAnalysis& a) {
         return py::module_::import("json").attr("loads")(path_text(topo::analysis_json(a)));
-      }, "The analysis as a dict: the JSON document (schema asperity-surface/2); NaN is None.")
+      }, "The analysis as a dict: the JSON document (schema SURFACE_JSON_SCHEMA); NaN is None.")
       .def("json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); },
-           "The JSON document (schema asperity-surface/2) as text.")
+           "The JSON document (schema SURFACE_JSON_SCHEMA) as text.")
       .def("summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
            "The short summary `asperity surface` prints.")
       .def("write_report", write_report, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
@@ -176,10 +176,11 @@ void bind_report(py::module_& m) {
       "pixel sizes, units); options: an AnalysisOptions, or its fields as keywords.");
   m.def(
       "analysis_json", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_json(a)); }, "analysis"_a,
-      "The JSON document (schema asperity-surface/2) as text.");
+      "The JSON document (schema SURFACE_JSON_SCHEMA) as text.");
   m.def(
       "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
       "analysis"_a, "The short summary `asperity surface` prints.");
+  m.attr("SURFACE_JSON_SCHEMA") = topo::surface_json_schema;
   m.def("write_report", write_report, "analysis"_a, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
 }
 

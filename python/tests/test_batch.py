@@ -144,7 +144,7 @@ def test_each_row_holds_its_surfaces_json(first_run):
         if row["status"] != "analysed":
             continue
         d = json.loads((out / (row["name"] + ".json")).read_text())
-        assert d["schema"] == "asperity-surface/2" and d["surface"]["source"] == row["source"]
+        assert d["schema"] == "asperity-surface/3" and d["surface"]["source"] == row["source"]
         assert (row["nx"], row["ny"], row["dx_m"]) == (d["surface"]["nx"], d["surface"]["ny"], d["surface"]["dx_m"])
         for column, key in (("Sq_m", "Sq_m"), ("Ssk", "Ssk"), ("Sku", "Sku")):
             assert row[column] == d["statistics"][key]
@@ -471,7 +471,7 @@ def test_a_worker_importing_the_main_script_fails_at_once(tmp_path):
 
 
 def test_row_from_json_refuses_another_schema():
-    with pytest.raises(ValueError, match="asperity-surface/2"):
+    with pytest.raises(ValueError, match="asperity-surface/3"):
         batch.row_from_json('{"schema": "asperity-surface/1"}')
 
 

@@ -433,7 +433,7 @@ def test_analyse_the_real_afm_map(tmp_path):
                                          contact=contact)
     analysis = topography.analyse_surface_file(AFM, options)
     document = analysis.to_dict()
-    assert document["schema"] == "asperity-surface/2" and json.loads(analysis.json()) == document
+    assert document["schema"] == topography.SURFACE_JSON_SCHEMA == "asperity-surface/3" and json.loads(analysis.json()) == document
     assert document["surface"]["nx"] == 256 and analysis.map.heights.shape == (256, 256) and analysis.leveled
     summits = analysis.summits
     assert document["summits"]["count"] == len(summits) == summits.heights.size > 5
@@ -461,7 +461,7 @@ def test_analyse_the_real_afm_map(tmp_path):
     assert outcome.plots and outcome.plot_note == ""
     names = {Path(f).name for f in outcome.files}
     assert names == {"report.md", "report.json", "curves.csv", "summits.csv", "fits.svg", "contact.svg"}
-    assert json.loads((tmp_path / "report" / "report.json").read_text())["schema"] == "asperity-surface/2"
+    assert json.loads((tmp_path / "report" / "report.json").read_text())["schema"] == topography.SURFACE_JSON_SCHEMA
     same = topography.write_report(analysis, str(tmp_path / "again"))
     assert len(same.files) == len(outcome.files)
 

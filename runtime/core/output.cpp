@@ -217,6 +217,8 @@ bool is_field_image(const std::string& path) { return starts_with(read_output_he
 bool is_report_file(const std::string& path) {
   const std::string head = read_output_head(path);
   return starts_with(head, "# Surface report: ") || starts_with(head, "i,j,x_m,y_m,height_m,") ||
+         // curves.csv: "model," and PhysicalState's columns (asperity-surface/3), or the older spelling
+         starts_with(head, "model,separation_m,mean_separation_m,count,") ||
          starts_with(head, "model,pressure_Pa,load_N,mean_separation_m,separation_m,") ||
          starts_with(head, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
                            "version=\"1.1\" width=\"") ||

@@ -14,6 +14,7 @@
 #include "asperity/integrals.hpp"
 #include "asperity/number_text.hpp"
 #include "input/reader_support.hpp"
+#include "record_json.hpp"
 #include "svg_plot.hpp"
 
 namespace asperity::topography {
@@ -30,17 +31,8 @@ std::string g(double v, int digits = 4) {
   return buffer;
 }
 
-ordered_json state_json(const PhysicalState& s) {
-  return ordered_json{{"pressure_Pa", number(s.pressure)},
-                      {"load_N", number(s.load)},
-                      {"separation_m", number(s.separation)},
-                      {"mean_separation_m", number(s.mean_separation)},
-                      {"summits_in_contact", number(s.count)},
-                      {"real_area_m2", number(s.real_area)},
-                      {"area_fraction", number(s.area_fraction)},
-                      {"stiffness_N_per_m", number(s.stiffness)},
-                      {"stiffness_over_load_per_m", number(s.stiffness_over_load)}};
-}
+// a physical state as its record's list keys it (physical_state_fields.hpp)
+ordered_json state_json(const PhysicalState& s) { return record_json<ordered_json>(s); }
 
 ordered_json assessment_json(const SampleAssessment& a) {
   ordered_json models = ordered_json::array();
@@ -297,41 +289,47 @@ std::string law_svg(const SurfaceAnalysis& a) {
   return panels.svg();
 }
 
-}  // namespace
-
-std::string analysis_json(const SurfaceAnalysis& a) {
+// the map as read and analysed: its grid, noise floor, leveling, statistics, spectral moments,
+// correlation, summits, their sampling dependence, the height histogram and the ensemble
+void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
   const HeightMap& map = a.map;
-  ordered_json j;
-  j["schema"] = "asperity-surface/2";
-  j["surface"] = {{"source", map.source},
-                  {"format", map.format},
-                  {"nx", map.nx},
-                  {"ny", map.ny},
-                  {"dx_m", map.dx},
-                  {"dy_m", map.dy},
-                  {"width_m", map.width()},
-                  {"length_m", map.length()},
-                  {"notes", map.notes}};
-  j["noise_floor"] = {{"reached", a.noise_floor.reached},
-                      {"height_resolution_m", a.noise_floor.resolution},
-                      {"rms_limit_m", a.noise_floor.rms_limit},
-                      {"rule", "Sq under 10 times the rms of rounding to the heights' quantization step (q / sqrt(12))"},
-                      {"text", a.noise_floor.text}};
+  j["surface"] = {{"source", map.source},   {"format", map.format},     {"nx", map.nx},
+                  {"ny", map.ny},           {"dx_m", map.dx},           {"dy_m", map.dy},
+                  {"width_m", map.width()}, {"length_m", map.length()}, {"notes", map.notes}};
+  j["noise_floor"] = {
+      {"reached", a.noise_floor.reached},
+      {"height_resolution_m", a.noise_floor.resolution},
+      {"rms_limit_m", a.noise_floor.rms_limit},
+      {"rule", "Sq under 10 times the rms of rounding to the heights' quantization step (q / sqrt(12))"},
+      {"text", a.noise_floor.text}};
   j["leveling"] = {{"leveled", a.leveled},
                    {"method", "least-squares plane subtracted"},
                    {"offset_m", a.plane.offset},
                    {"slope_x", a.plane.slope_x},
                    {"slope_y", a.plane.slope_y}};
   const HeightStatistics& s = a.statistics;
-  j["statistics"] = {{"valid_points", s.valid_points}, {"missing_points", s.missing_points}, {"Sq_m", s.rms},
-                     {"Sa_m", s.mean_absolute},        {"Ssk", s.skewness},                  {"Sku", s.kurtosis},
-                     {"min_m", s.min},                 {"max_m", s.max}};
+  j["statistics"] = {{"valid_points", s.valid_points},
+                     {"missing_points", s.missing_points},
+                     {"Sq_m", s.rms},
+                     {"Sa_m", s.mean_absolute},
+                     {"Ssk", s.skewness},
+                     {"Sku", s.kurtosis},
+                     {"min_m", s.min},
+                     {"max_m", s.max}};
   const SpectralMoments& m = a.moments;
   j["spectral_moments"] = {
-      {"method", "slopes by forward differences, curvatures by second differences (one discrete wavenumber); m2, m4 "
-                 "the equivalent isotropic moments, geometric means along the principal directions (McCool 1986)"},
-      {"m0_m2", m.m0}, {"m2", m.m2}, {"m4_per_m2", m.m4}, {"alpha", m.alpha}, {"m2x", m.m2x}, {"m2y", m.m2y},
-      {"m11", m.m11}, {"m4x_per_m2", m.m4x}, {"m4y_per_m2", m.m4y},
+      {"method",
+       "slopes by forward differences, curvatures by second differences (one discrete wavenumber); m2, m4 "
+       "the equivalent isotropic moments, geometric means along the principal directions (McCool 1986)"},
+      {"m0_m2", m.m0},
+      {"m2", m.m2},
+      {"m4_per_m2", m.m4},
+      {"alpha", m.alpha},
+      {"m2x", m.m2x},
+      {"m2y", m.m2y},
+      {"m11", m.m11},
+      {"m4x_per_m2", m.m4x},
+      {"m4y_per_m2", m.m4y},
       {"principal_angle_rad", m.principal_angle},
       {"m2_principal", {m.m2_principal[0], m.m2_principal[1]}},
       {"m4_principal_per_m2", {m.m4_principal[0], m.m4_principal[1]}},
@@ -357,154 +355,189 @@ std::string analysis_json(const SurfaceAnalysis& a) {
                   {"radius_method", "1 / mean over summits of -(h_xx + h_yy)/2 (3-point second differences)"}};
   ordered_json sampling = ordered_json::array();
   for (const SamplingRow& r : a.sampling)
-    sampling.push_back({{"factor", r.factor}, {"dx_m", r.dx}, {"dy_m", r.dy}, {"summits", r.summits},
-                        {"density_per_m2", r.density}, {"radius_m", r.radius}, {"m2", r.m2},
-                        {"m4_per_m2", r.m4}, {"alpha", r.alpha}, {"anisotropy", number(r.anisotropy)}});
+    sampling.push_back({{"factor", r.factor},
+                        {"dx_m", r.dx},
+                        {"dy_m", r.dy},
+                        {"summits", r.summits},
+                        {"density_per_m2", r.density},
+                        {"radius_m", r.radius},
+                        {"m2", r.m2},
+                        {"m4_per_m2", r.m4},
+                        {"alpha", r.alpha},
+                        {"anisotropy", number(r.anisotropy)}});
   j["sampling_dependence"] = sampling;
   j["height_histogram"] = histogram_json(map, 60);
   j["ensemble"] = {{"surrogates", a.surrogates},
                    {"padded_grid", {a.padded_nx, a.padded_ny}},
-                   {"method", "Gaussian random fields with the periodogram of the map's normal scores (Hann window, "
-                              "padded by two correlation lengths, smoothed over 3 x 3 wavevectors), cut to the map; "
-                              "each model's marginal by F^-1(Phi(g))"}};
+                   {"method",
+                    "Gaussian random fields with the periodogram of the map's normal scores (Hann window, "
+                    "padded by two correlation lengths, smoothed over 3 x 3 wavevectors), cut to the map; "
+                    "each model's marginal by F^-1(Phi(g))"}};
+}
+
+ordered_json verdict_json(const SurfaceVerdict& v) {
+  return ordered_json{
+      {"tested", v.tested},
+      {"gaussian_rejected", v.gaussian_rejected},
+      {"gaussian_p_heights", number(v.p_heights)},
+      {"gaussian_p_heights_is_bound", v.p_heights_bound},
+      {"gaussian_p_summit_heights", number(v.p_summits)},
+      {"gaussian_p_summit_heights_is_bound", v.p_summits_bound},
+      {"rule", "each sample's Gaussian test at half the significance (Bonferroni)"},
+      {"heights_orientation", v.orientation == HeightModel::gaussian ? "none" : to_string(v.orientation)},
+      {"model_for_contact", v.named ? to_string(v.model) : "none"},
+      {"text", v.text}};
+}
+
+// one model's contact: its surface, its states at the asked pressures with its ratios to the
+// references, and its curve
+ordered_json model_contact_json(const ModelContact& mc, const ContactComparison& c) {
+  const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
+  ordered_json mj{{"model", mc.label},
+                  {"mean_summit_height_m", number(mc.mean_summit_height)},
+                  {"served", mc.served},
+                  {"note", mc.note},
+                  {"surface",
+                   {{"distribution", asperity::to_string(mc.surface.distribution)},
+                    {"side", asperity::to_string(mc.surface.side)},
+                    {"shape", number(mc.surface.distribution == Distribution::weibull ? mc.surface.shape : NAN)},
+                    {"height_scale_m", mc.surface.height_scale},
+                    {"summit_radius_m", mc.surface.summit_radius},
+                    {"summit_density_per_m2", mc.surface.summit_density}}}};
+  ordered_json at = ordered_json::array();
+  for (std::size_t k = 0; k < mc.at_pressures.size(); ++k) {
+    ordered_json sj = state_json(mc.at_pressures[k]);
+    sj["stiffness_per_area_N_per_m3"] = number(mc.at_pressures[k].stiffness / c.nominal_area);
+    if (gaussian && gaussian->served && k < gaussian->at_pressures.size()) {
+      const PhysicalState& ref = gaussian->at_pressures[k];
+      sj["stiffness_over_gaussian"] = number(ratio(mc.at_pressures[k].stiffness, ref.stiffness));
+      sj["area_over_gaussian"] = number(ratio(mc.at_pressures[k].real_area, ref.real_area));
+      sj["mean_separation_minus_gaussian_m"] = number(mc.at_pressures[k].mean_separation - ref.mean_separation);
+    }
+    if (k < mc.stiffness_over_measured.size()) {
+      sj["stiffness_over_measured_summits"] = number(mc.stiffness_over_measured[k]);
+      sj["mean_separation_minus_measured_summits_m"] = number(mc.separation_minus_measured[k]);
+    }
+    if (k < mc.stiffness_over_exact.size()) {
+      sj["stiffness_over_exact"] = number(mc.stiffness_over_exact[k]);
+      sj["area_over_exact"] = number(mc.area_over_exact[k]);
+      sj["mean_separation_minus_exact_m"] = number(mc.separation_minus_exact[k]);
+    }
+    at.push_back(sj);
+  }
+  mj["at_pressures"] = at;
+  ordered_json curve = ordered_json::array();
+  for (const PhysicalState& st : mc.curve) curve.push_back(state_json(st));
+  mj["curve"] = curve;
+  return mj;
+}
+
+// the contact comparison: every model's curves beside the measured summits' (and the exact's)
+ordered_json contact_json(const ContactComparison& c) {
+  ordered_json models = ordered_json::array();
+  for (const ModelContact& mc : c.models) models.push_back(model_contact_json(mc, c));
+  ordered_json contact{{"contact_modulus_Pa", c.options.contact_modulus},
+                       {"nominal_area_m2", c.nominal_area},
+                       {"pressures_Pa", c.pressures},
+                       {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
+                       {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes " +
+                                      format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) +
+                                      ") or, with a given table, that table (the default serves 0.5-20)"},
+                       {"models", models},
+                       {"measured_summits_spread",
+                        {{"meaning",
+                          "relative standard deviation of the measured-summit stiffness, and the standard "
+                          "deviation of its mean separation [m], over the surrogate ensemble: the "
+                          "uncertainty of every ratio to it"},
+                         {"stiffness_relative", c.measured_stiffness_spread},
+                         {"mean_separation_m", c.measured_separation_spread}}},
+                       {"closest_fitted_model", c.closest},
+                       {"headline", c.headline},
+                       {"references",
+                        {{"persson", c.options.persson},
+                         {"exact", c.options.exact},
+                         {"exact_method", c.exact_method},
+                         {"closest_to_exact", c.closest_to_exact},
+                         {"exact_headline", c.exact_headline}}}};
+  ordered_json sampling_contact = ordered_json::array();
+  for (const SamplingContact& r : c.sampling)
+    sampling_contact.push_back({{"factor", r.factor}, {"stiffness_over_finest", r.stiffness_over_finest}});
+  contact["measured_summits_sampling_dependence"] = sampling_contact;
+  return contact;
+}
+
+// the contact law's curves beside the elastic ones of the same fit (its plasticity or adhesion)
+ordered_json law_json(const LawContact& law, const ContactComparison& c) {
+  ordered_json at = ordered_json::array();
+  for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+    ordered_json lj = state_json(law.at_pressures[k]), ej = state_json(law.elastic_at_pressures[k]);
+    lj["stiffness_per_area_N_per_m3"] = number(law.at_pressures[k].stiffness / c.nominal_area);
+    ej["stiffness_per_area_N_per_m3"] = number(law.elastic_at_pressures[k].stiffness / c.nominal_area);
+    at.push_back({{"pressure_Pa", c.pressures[k]},
+                  {"law", lj},
+                  {"elastic", ej},
+                  {"mean_separation_minus_elastic_m", number(law.separation_minus_elastic[k])},
+                  {"area_over_elastic", number(law.area_over_elastic[k])},
+                  {"stiffness_over_elastic", number(law.stiffness_over_elastic[k])}});
+  }
+  ordered_json curve = ordered_json::array();
+  for (const PhysicalState& st : law.curve) curve.push_back(state_json(st));
+  return ordered_json{
+      {"law", law.law},
+      {"model", law.model},
+      {"model_reason", law.model_reason},
+      {"plasticity",
+       {{"summit_height_standard_deviation_m", number(law.summit_height_sd)},
+        {"summit_radius_m", number(law.summit_radius)},
+        {"contact_modulus_Pa", number(law.contact_modulus)},
+        {"hardness_Pa", number(law.hardness)},
+        {"critical_interference_m", number(law.critical_interference)},
+        {"valid_up_to_m", number(law.valid_up_to)},
+        {"psi", number(law.plasticity_index)},
+        {"psi_definition",
+         "(sigma_s / omega_c)^1/2 with the law's omega_c (Kogut-Etsion 2003's with the CEB/KE "
+         "omega_c; Jackson-Green's with theirs)"},
+        {"psi_gw", number(law.gw_plasticity_index)},
+        {"psi_gw_definition",
+         "(E*/H)(sigma_s/R)^1/2 (Greenwood-Williamson 1966; H: the law's hardness, "
+         "Kogut-Etsion's 2.8 Y)"},
+        {"regime", law.regime}}},
+      {"adhesion",
+       law.adhesive
+           ? ordered_json{{"adhesion_parameter", number(law.adhesion_parameter)},
+                          {"adhesion_parameter_definition",
+                           "sigma_s / delta_c, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (Fuller-Tabor 1975)"},
+                          {"length_scale_m", number(law.adhesion_length)},
+                          {"branch", "approach (loading)"},
+                          {"pull_off_pressure_Pa", number(law.pull_off_pressure)},
+                          {"pull_off_mean_separation_m", number(law.pull_off_mean_separation)}}
+           : ordered_json(nullptr)},
+      {"served", law.served},
+      {"note", law.note},
+      {"separation_range", {number(law.separation_min), number(law.separation_max)}},
+      {"nodes", law.nodes},
+      {"max_rel_error",
+       {{"pressure", number(law.max_rel_error[0])},
+        {"stiffness", number(law.max_rel_error[1])},
+        {"area_fraction", number(law.max_rel_error[2])}}},
+      {"at_pressures", at},
+      {"curve", curve},
+      {"warnings", law.warnings}};
+}
+
+}  // namespace
+
+std::string analysis_json(const SurfaceAnalysis& a) {
+  ordered_json j;
+  j["schema"] = surface_json_schema;
+  describe_surface(a, j);
   j["fits"]["summit_heights"] = assessment_json(a.summit_heights);
   j["fits"]["summits_fitted"] = a.summits_fitted;
   if (a.heights) j["fits"]["heights"] = assessment_json(*a.heights);
-  const SurfaceVerdict& v = a.verdict;
-  j["verdict"] = {{"tested", v.tested},
-                  {"gaussian_rejected", v.gaussian_rejected},
-                  {"gaussian_p_heights", number(v.p_heights)},
-                  {"gaussian_p_heights_is_bound", v.p_heights_bound},
-                  {"gaussian_p_summit_heights", number(v.p_summits)},
-                  {"gaussian_p_summit_heights_is_bound", v.p_summits_bound},
-                  {"rule", "each sample's Gaussian test at half the significance (Bonferroni)"},
-                  {"heights_orientation", v.orientation == HeightModel::gaussian ? "none" : to_string(v.orientation)},
-                  {"model_for_contact", v.named ? to_string(v.model) : "none"},
-                  {"text", v.text}};
+  j["verdict"] = verdict_json(a.verdict);
   if (a.contact) {
-    const ContactComparison& c = *a.contact;
-    ordered_json models = ordered_json::array();
-    const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
-    for (const ModelContact& mc : c.models) {
-      ordered_json mj{{"model", mc.label},
-                      {"mean_summit_height_m", number(mc.mean_summit_height)},
-                      {"served", mc.served},
-                      {"note", mc.note},
-                      {"surface",
-                       {{"distribution", asperity::to_string(mc.surface.distribution)},
-                        {"side", asperity::to_string(mc.surface.side)},
-                        {"shape", number(mc.surface.distribution == Distribution::weibull ? mc.surface.shape : NAN)},
-                        {"height_scale_m", mc.surface.height_scale},
-                        {"summit_radius_m", mc.surface.summit_radius},
-                        {"summit_density_per_m2", mc.surface.summit_density}}}};
-      ordered_json at = ordered_json::array();
-      for (std::size_t k = 0; k < mc.at_pressures.size(); ++k) {
-        ordered_json sj = state_json(mc.at_pressures[k]);
-        sj["stiffness_per_area_N_per_m3"] = number(mc.at_pressures[k].stiffness / c.nominal_area);
-        if (gaussian && gaussian->served && k < gaussian->at_pressures.size()) {
-          const PhysicalState& ref = gaussian->at_pressures[k];
-          sj["stiffness_over_gaussian"] = number(ratio(mc.at_pressures[k].stiffness, ref.stiffness));
-          sj["area_over_gaussian"] = number(ratio(mc.at_pressures[k].real_area, ref.real_area));
-          sj["mean_separation_minus_gaussian_m"] = number(mc.at_pressures[k].mean_separation - ref.mean_separation);
-        }
-        if (k < mc.stiffness_over_measured.size()) {
-          sj["stiffness_over_measured_summits"] = number(mc.stiffness_over_measured[k]);
-          sj["mean_separation_minus_measured_summits_m"] = number(mc.separation_minus_measured[k]);
-        }
-        if (k < mc.stiffness_over_exact.size()) {
-          sj["stiffness_over_exact"] = number(mc.stiffness_over_exact[k]);
-          sj["area_over_exact"] = number(mc.area_over_exact[k]);
-          sj["mean_separation_minus_exact_m"] = number(mc.separation_minus_exact[k]);
-        }
-        at.push_back(sj);
-      }
-      mj["at_pressures"] = at;
-      ordered_json curve = ordered_json::array();
-      for (const PhysicalState& st : mc.curve) curve.push_back(state_json(st));
-      mj["curve"] = curve;
-      models.push_back(mj);
-    }
-    j["contact"] = {{"contact_modulus_Pa", c.options.contact_modulus},
-                    {"nominal_area_m2", c.nominal_area},
-                    {"pressures_Pa", c.pressures},
-                    {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
-                    {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes " +
-                                   format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) +
-                                   ") or, with a given table, that table (the default serves 0.5-20)"},
-                    {"models", models},
-                    {"measured_summits_spread",
-                     {{"meaning", "relative standard deviation of the measured-summit stiffness, and the standard "
-                                  "deviation of its mean separation [m], over the surrogate ensemble: the "
-                                  "uncertainty of every ratio to it"},
-                      {"stiffness_relative", c.measured_stiffness_spread},
-                      {"mean_separation_m", c.measured_separation_spread}}},
-                    {"closest_fitted_model", c.closest},
-                    {"headline", c.headline},
-                    {"references",
-                     {{"persson", c.options.persson},
-                      {"exact", c.options.exact},
-                      {"exact_method", c.exact_method},
-                      {"closest_to_exact", c.closest_to_exact},
-                      {"exact_headline", c.exact_headline}}}};
-    ordered_json sampling_contact = ordered_json::array();
-    for (const SamplingContact& r : c.sampling)
-      sampling_contact.push_back({{"factor", r.factor}, {"stiffness_over_finest", r.stiffness_over_finest}});
-    j["contact"]["measured_summits_sampling_dependence"] = sampling_contact;
-    if (a.law) {
-      const LawContact& law = *a.law;
-      ordered_json at = ordered_json::array();
-      for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
-        ordered_json lj = state_json(law.at_pressures[k]), ej = state_json(law.elastic_at_pressures[k]);
-        lj["stiffness_per_area_N_per_m3"] = number(law.at_pressures[k].stiffness / c.nominal_area);
-        ej["stiffness_per_area_N_per_m3"] = number(law.elastic_at_pressures[k].stiffness / c.nominal_area);
-        at.push_back({{"pressure_Pa", c.pressures[k]},
-                      {"law", lj},
-                      {"elastic", ej},
-                      {"mean_separation_minus_elastic_m", number(law.separation_minus_elastic[k])},
-                      {"area_over_elastic", number(law.area_over_elastic[k])},
-                      {"stiffness_over_elastic", number(law.stiffness_over_elastic[k])}});
-      }
-      ordered_json curve = ordered_json::array();
-      for (const PhysicalState& st : law.curve) curve.push_back(state_json(st));
-      j["contact"]["law"] = {
-          {"law", law.law},
-          {"model", law.model},
-          {"model_reason", law.model_reason},
-          {"plasticity",
-           {{"summit_height_standard_deviation_m", number(law.summit_height_sd)},
-            {"summit_radius_m", number(law.summit_radius)},
-            {"contact_modulus_Pa", number(law.contact_modulus)},
-            {"hardness_Pa", number(law.hardness)},
-            {"critical_interference_m", number(law.critical_interference)},
-            {"valid_up_to_m", number(law.valid_up_to)},
-            {"psi", number(law.plasticity_index)},
-            {"psi_definition", "(sigma_s / omega_c)^1/2 with the law's omega_c (Kogut-Etsion 2003's with the CEB/KE "
-                               "omega_c; Jackson-Green's with theirs)"},
-            {"psi_gw", number(law.gw_plasticity_index)},
-            {"psi_gw_definition", "(E*/H)(sigma_s/R)^1/2 (Greenwood-Williamson 1966; H: the law's hardness, "
-                                  "Kogut-Etsion's 2.8 Y)"},
-            {"regime", law.regime}}},
-          {"adhesion",
-           law.adhesive ? ordered_json{{"adhesion_parameter", number(law.adhesion_parameter)},
-                                       {"adhesion_parameter_definition",
-                                        "sigma_s / delta_c, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (Fuller-Tabor 1975)"},
-                                       {"length_scale_m", number(law.adhesion_length)},
-                                       {"branch", "approach (loading)"},
-                                       {"pull_off_pressure_Pa", number(law.pull_off_pressure)},
-                                       {"pull_off_mean_separation_m", number(law.pull_off_mean_separation)}}
-                        : ordered_json(nullptr)},
-          {"served", law.served},
-          {"note", law.note},
-          {"separation_range", {number(law.separation_min), number(law.separation_max)}},
-          {"nodes", law.nodes},
-          {"max_rel_error",
-           {{"pressure", number(law.max_rel_error[0])},
-            {"stiffness", number(law.max_rel_error[1])},
-            {"area_fraction", number(law.max_rel_error[2])}}},
-          {"at_pressures", at},
-          {"curve", curve},
-          {"warnings", law.warnings}};
-    }
+    j["contact"] = contact_json(*a.contact);
+    if (a.law) j["contact"]["law"] = law_json(*a.law, *a.contact);
   }
   // a source or note that is not UTF-8 (a path's bytes) is replaced, not an exception
   return j.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
@@ -581,6 +614,239 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
   return out.str();
 }
 
+namespace {
+
+// the map as read and its statistics
+void markdown_surface(std::ostream& md, const SurfaceAnalysis& a) {
+  const HeightMap& map = a.map;
+  md << "# Surface report: " << detail::printable(std::filesystem::path(map.source).filename().string(), 200) << "\n\n";
+  md << "Written by `asperity surface`. Every number below is in `report.json`; the curves are in `curves.csv`, "
+        "the summits in `summits.csv`.\n\n";
+  md << "## The surface\n\n| | |\n|---|---|\n";
+  md << "| file | `" << detail::printable(map.source, 4096) << "` (" << map.format << ") |\n";
+  md << "| grid | " << map.nx << " x " << map.ny << " points, sampling " << g(map.dx) << " m x " << g(map.dy) << " m (" << g(map.width())
+     << " m x " << g(map.length()) << " m) |\n";
+  md << "| missing points | " << a.statistics.missing_points << " |\n";
+  md << "| leveling | " << (a.leveled ? "least-squares plane subtracted (slopes " + g(a.plane.slope_x) + ", " + g(a.plane.slope_y) + ")" : "none") << " |\n";
+  for (const std::string& note : map.notes) md << "| note | " << note << " |\n";
+  md << "\n## Statistics\n\n| Sq [m] | Sa [m] | Ssk | Sku | m0 [m²] | m2 | m4 [1/m²] | Nayak α |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  md << "| " << g(a.statistics.rms) << " | " << g(a.statistics.mean_absolute) << " | " << g(a.statistics.skewness, 3) << " | "
+     << g(a.statistics.kurtosis, 3) << " | " << g(a.moments.m0) << " | " << g(a.moments.m2) << " | " << g(a.moments.m4) << " | "
+     << g(a.moments.alpha, 3) << " |\n\n";
+}
+
+// the spectral moments, the summits and their dependence on the sampling interval
+void markdown_summits(std::ostream& md, const SurfaceAnalysis& a) {
+  md << "Spectral moments at the file's sampling interval by one consistent scheme (slopes by forward differences, "
+        "curvatures by second differences); m2 and m4 are the equivalent isotropic moments (geometric means along the "
+        "principal directions, McCool 1986). Anisotropy (ratio of the principal slope variances) "
+     << g(a.moments.anisotropy, 3) << ", steepest at " << g(a.moments.principal_angle * 57.29577951308232, 3)
+     << "° from x"
+     << (a.moments.anisotropy > max_isotropic_anisotropy
+             ? ": **not isotropic** (above " + g(max_isotropic_anisotropy, 2) +
+                   "): Nayak-McCool's Gaussian from the moments assumes an isotropic surface and does not hold here"
+             : "")
+     << ". They grow as the sampling interval shrinks on a rough surface, see below.\n\n";
+  md << "## Summits\n\n" << a.summits.list.size() << " summits (" << (a.summits.options.window == 1 ? "8-neighbour maxima" : "maxima within " + std::to_string(a.summits.options.window) + " points")
+     << (a.summits.options.min_drop > 0 ? ", at least " + g(a.summits.options.min_drop) + " m above the mean of their neighbours" : "")
+     << "): density " << g(a.summits.density) << " /m², radius R = 1/⟨κ_m⟩ = " << g(a.summits.radius)
+     << " m (mean curvature −(h_xx + h_yy)/2 from 3-point second differences, averaged over the summits).\n\n";
+  md << "Dependence on the sampling interval (every k-th point):\n\n| k | dx [m] | summits | density [1/m²] | R [m] | m2 | m4 [1/m²] | α | anisotropy |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const SamplingRow& r : a.sampling)
+    md << "| " << r.factor << " | " << g(r.dx) << " | " << r.summits << " | " << g(r.density) << " | " << g(r.radius) << " | "
+       << g(r.m2) << " | " << g(r.m4) << " | " << g(r.alpha, 3) << " | " << g(r.anisotropy, 3) << " |\n";
+}
+
+// a sample's fits: each model's parameters, shape interval, tests and AIC
+void markdown_fits_table(std::ostream& md, const SampleAssessment& s) {
+  md << "\n| model | location [m] | scale [m] | shape [" << g(100 * s.options.confidence, 3) << "% interval] | A² | AD p | KS D | KS p | AIC | ΔAIC | Akaike weight |\n"
+     << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  // a bound with three digits: two could round it below 1/(B + 1)
+  const auto p_cell = [](double p, bool bound) { return std::isfinite(p) ? (bound ? "≤ " + g(p, 3) : g(p, 2)) : std::string("–"); };
+  for (const ModelAssessment& m : s.models) {
+    const HeightDistribution& d = m.fit.distribution;
+    std::string shape = "–";
+    if (d.model != HeightModel::gaussian) {
+      shape = g(d.shape, 3);
+      if (!m.shape_identified) shape += " (not identified)";
+      else if (std::isfinite(m.shape.lo)) shape += " [" + g(m.shape.lo, 3) + ", " + g(m.shape.hi, 3) + "]";
+    }
+    md << "| " << describe(d.model) << " | " << g(d.location) << " | " << g(d.scale) << " | " << shape << " | "
+       << g(m.anderson_darling, 3) << " | " << p_cell(m.anderson_darling_p, m.p_at_floor) << " | "
+       << g(m.kolmogorov_smirnov, 3) << " | " << p_cell(m.kolmogorov_smirnov_p, m.kolmogorov_smirnov_p_at_floor) << " | " << g(m.aic, 6) << " | "
+       << g(m.delta_aic, 3) << " | " << g(m.akaike_weight, 3) << " |\n";
+  }
+}
+
+// the verdict, the fits of both samples and how they were tested
+void markdown_fits(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
+  md << "\n## Is it Gaussian? Which Weibull?\n\n**Verdict.** " << a.verdict.text << "\n";
+  md << "\nThe summit heights (what the asperity model integrates; a Gaussian surface's summit heights are not "
+        "Gaussian themselves, which the surrogates account for):\n";
+  markdown_fits_table(md, a.summit_heights);
+  if (a.heights) {
+    md << "\nThe heights (a fixed random sample of " << a.heights->n << " points: the marginal of the whole surface, "
+          "whose bound a wear process makes):\n";
+    markdown_fits_table(md, *a.heights);
+  }
+  md << "\nMethod: the Gaussian by maximum likelihood; each three-parameter Weibull by maximum product of spacings "
+        "(well-posed for every shape, including shapes below 1 where maximum likelihood diverges). The null "
+        "distribution of every statistic and the shape intervals come from "
+     << a.surrogates << " surrogate surfaces (seed " << a.summit_heights.options.seed
+     << "): Gaussian random fields with the spectrum of the map's own heights, given each model's marginal, on which "
+        "every statistic is computed exactly as on the map (summits found the same way), so the tests carry the "
+        "surface's correlation. A p-value shown as ≤ is at its floor 1/(B + 1). A shape whose interval reaches the "
+        "fit's bounds (0.05, 100) or with over a tenth of its refits there is not identified. Akaike weights over all "
+        "three models.\n";
+  if (plots) md << "\n![fits](fits.svg)\n";
+}
+
+// each model against the exact contact of the map, where it was solved
+void markdown_exact(std::ostream& md, const ContactComparison& c) {
+  const ModelContact* exact = c.find(ContactModelKind::exact);
+  if (exact && exact->served) {
+    md << "\n### Each model against the exact contact of this map\n\nThe exact elastic contact: " << c.exact_method
+       << ". It neglects neither the summits' coalescence nor their elastic interaction: what every model is judged "
+          "against.\n\n**" << c.exact_headline << ".**\n\n| model | nominal pressure [Pa] | mean separation − exact's [m] | "
+          "real area / exact's | stiffness / exact's |\n|---|---:|---:|---:|---:|\n";
+    for (const ModelContact& mc : c.models) {
+      if (!mc.served || mc.kind == ContactModelKind::exact || mc.stiffness_over_exact.empty()) continue;
+      for (std::size_t k = 0; k < c.pressures.size(); ++k)
+        md << "| " << mc.label << " | " << g(c.pressures[k]) << " | " << g(mc.separation_minus_exact[k], 3) << " | "
+           << g(mc.area_over_exact[k], 3) << " | " << g(mc.stiffness_over_exact[k], 3) << " |\n";
+    }
+  } else if (exact) {
+    md << "\nThe exact contact: " << exact->note << ".\n";
+  }
+}
+
+// the contact law's curves beside the elastic ones
+void markdown_law(std::ostream& md, const LawContact& law, const ContactComparison& c, bool plots) {
+  md << "\n### Under the contact law: " << law.law << "\n\nThe law's rough-surface curves on the " << law.model
+     << " fit (" << law.model_reason << "), with the measured summit density and radius, next to the same fit's "
+        "elastic (Hertz) curves above.\n\n| | |\n|---|---|\n";
+  md << "| σs: standard deviation of the measured summit heights | " << g(law.summit_height_sd) << " m |\n";
+  md << "| R: the measured summit radius | " << g(law.summit_radius) << " m |\n";
+  md << "| E* | " << g(law.contact_modulus) << " Pa |\n";
+  if (!law.adhesive) {  // an adhesive law is elastic: no hardness, no ω_c, no plasticity index
+    md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
+    md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";
+    md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
+    md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
+  }
+  md << "| the law's source range | " << (std::isfinite(law.valid_up_to) ? "ω up to " + g(law.valid_up_to) + " m" : "every ω") << " |\n";
+  if (law.adhesive) {
+    md << "| adhesion parameter σs/δc (Fuller–Tabor 1975) | " << g(law.adhesion_parameter, 3) << " |\n";
+    md << "| the law's length scale | " << g(law.adhesion_length) << " m |\n";
+    md << "| pull-off: greatest tension of the approach branch | "
+       << (std::isfinite(law.pull_off_pressure)
+               ? g(law.pull_off_pressure) + " Pa at mean separation " + g(law.pull_off_mean_separation) + " m"
+               : std::string("none measurable (see the warning below)"))
+       << " |\n";
+  }
+  md << "| its curves | " << law.note << " |\n\n**" << law.regime << ".**\n";
+  if (law.served) {
+    md << "\n| nominal pressure [Pa] | mean separation, elastic [m] | under the law [m] | law − elastic [m] | area "
+          "fraction, elastic | under the law | law / elastic | stiffness / A0, elastic [N/m³] | under the law | law / "
+          "elastic |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
+      const PhysicalState &l = law.at_pressures[k], &e = law.elastic_at_pressures[k];
+      md << "| " << g(c.pressures[k]) << " | " << g(e.mean_separation) << " | " << g(l.mean_separation) << " | "
+         << g(law.separation_minus_elastic[k], 3) << " | " << g(e.area_fraction, 3) << " | " << g(l.area_fraction, 3)
+         << " | " << g(law.area_over_elastic[k], 3) << " | " << g(e.stiffness / c.nominal_area) << " | "
+         << g(l.stiffness / c.nominal_area) << " | " << g(law.stiffness_over_elastic[k], 3) << " |\n";
+    }
+  }
+  for (const std::string& warning : law.warnings) md << "\n**Warning:** " << warning << ".\n";
+  if (plots && law.served) md << "\n![law](law.svg)\n";
+}
+
+// the contact with a rigid flat: each model's states at the asked pressures
+void markdown_contact(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
+  const ContactComparison& c = *a.contact;
+  md << "\n## What it changes: contact with a rigid flat\n\nE* = " << g(c.options.contact_modulus) << " Pa, nominal area A0 = "
+     << g(c.nominal_area) << " m². Separations from each model's mean summit height; stiffness per nominal area. "
+        "An asperity model is a statistical statement: where only a few summits are in contact over A0, its "
+        "prediction rests on the few highest summits measured, not on the fitted law.\n\n";
+  if (!c.headline.empty()) md << "**" << c.headline << ".**\n\n";
+  md << "| model | table |\n|---|---|\n";
+  for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
+  const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
+  for (std::size_t k = 0; k < c.pressures.size(); ++k) {
+    md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const ModelContact& mc : c.models) {
+      if (!mc.served) {
+        md << "| " << mc.label << " | – | – | – | – | – | – | – |\n";
+        continue;
+      }
+      const PhysicalState& s = mc.at_pressures[k];
+      std::string versus = k < mc.stiffness_over_measured.size() ? g(mc.stiffness_over_measured[k], 3) : "–";
+      if (mc.kind == ContactModelKind::measured_summits && k < c.measured_stiffness_spread.size())
+        versus = "1 (±" + g(100 * c.measured_stiffness_spread[k], 2) + "%)";
+      md << "| " << mc.label << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
+         << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | " << versus << " | "
+         << (gaussian && gaussian->served ? g(ratio(s.stiffness, gaussian->at_pressures[k].stiffness), 3) : "–") << " |\n";
+    }
+  }
+  if (!c.sampling.empty()) {
+    md << "\nGW on the measured summits at a coarser sampling (every k-th point), its stiffness over the answer at the "
+          "file's sampling, at each pressure: ";
+    for (const SamplingContact& r : c.sampling) {
+      md << "k = " << r.factor << ":";
+      for (double ratio_k : r.stiffness_over_finest) md << " " << g(ratio_k, 3);
+      md << (&r == &c.sampling.back() ? ".\n" : "; ");
+    }
+  }
+  if (!c.measured_stiffness_spread.empty())
+    md << "\n± on the measured summits: the relative standard deviation of their stiffness over the surrogate "
+          "ensemble (surfaces of the same statistics), the uncertainty of each ratio to them.\n";
+  markdown_exact(md, c);
+  if (plots) md << "\n![contact](contact.svg)\n";
+  if (a.law) markdown_law(md, *a.law, c, plots);
+}
+
+std::string markdown_report(const SurfaceAnalysis& a, const ReportOutcome& outcome) {
+  std::ostringstream md;
+  markdown_surface(md, a);
+  if (a.noise_floor.reached) {
+    md << "**Noise floor.** " << a.noise_floor.text << ".\n";
+  } else {
+    markdown_summits(md, a);
+    markdown_fits(md, a, outcome.plots);
+    if (a.contact) markdown_contact(md, a, outcome.plots);
+  }
+  if (!outcome.plots) md << "\n_" << outcome.plot_note << "._\n";
+  return md.str();
+}
+
+// summits.csv: every summit's position, height and curvatures
+std::string summits_csv(const SurfaceAnalysis& a) {
+  std::ostringstream summits;
+  summits << "i,j,x_m,y_m,height_m,mean_curvature_per_m,kappa1_per_m,kappa2_per_m\n";
+  summits.precision(10);
+  for (const Summit& s : a.summits.list)
+    summits << s.i << ',' << s.j << ',' << static_cast<double>(s.i) * a.map.dx << ',' << static_cast<double>(s.j) * a.map.dy
+            << ',' << s.height << ',' << s.mean_curvature << ',' << s.kappa1 << ',' << s.kappa2 << '\n';
+  return summits.str();
+}
+
+// curves.csv: each model's curve, a row a physical state (its record's columns, as `asperity
+// contact` writes them) and its stiffness per nominal area; the law's rows are model "law:NAME"
+// (the fit it is on: report.json's contact.law.model)
+std::string curves_csv(const SurfaceAnalysis& a) {
+  const ContactComparison& c = *a.contact;
+  std::string csv = "model," + csv_header<PhysicalState>() + ",stiffness_per_area_N_per_m3\n";
+  const auto rows = [&](const std::string& model, const std::vector<PhysicalState>& curve) {
+    for (const PhysicalState& s : curve)
+      csv += model + "," + csv_row(s) + "," + format_double(s.stiffness / c.nominal_area) + "\n";
+  };
+  for (const ModelContact& mc : c.models) rows(mc.label, mc.curve);
+  if (a.law) rows("law:" + a.law->law, a.law->curve);
+  return csv;
+}
+
+}  // namespace
+
 OutputPlan report_plan(const std::string& directory, const std::string& input, bool overwrite) {
   OutputPlan plan(overwrite);
   if (!input.empty()) plan.input(input);
@@ -601,34 +867,8 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   };
   ReportOutcome outcome;
   outcome.files.push_back(write("report.json", analysis_json(a)));
-
-  std::ostringstream summits;
-  summits << "i,j,x_m,y_m,height_m,mean_curvature_per_m,kappa1_per_m,kappa2_per_m\n";
-  summits.precision(10);
-  for (const Summit& s : a.summits.list)
-    summits << s.i << ',' << s.j << ',' << static_cast<double>(s.i) * a.map.dx << ',' << static_cast<double>(s.j) * a.map.dy
-            << ',' << s.height << ',' << s.mean_curvature << ',' << s.kappa1 << ',' << s.kappa2 << '\n';
-  outcome.files.push_back(write("summits.csv", summits.str()));
-
-  if (a.contact) {
-    std::ostringstream curves;
-    curves.precision(10);
-    curves << "model,pressure_Pa,load_N,mean_separation_m,separation_m,area_fraction,real_area_m2,stiffness_N_per_m,"
-              "stiffness_per_area_N_per_m3,stiffness_over_load_per_m,summits_in_contact\n";
-    for (const ModelContact& mc : a.contact->models)
-      for (const PhysicalState& s : mc.curve)
-        curves << mc.label << ',' << s.pressure << ',' << s.load << ',' << s.mean_separation << ',' << s.separation << ','
-               << s.area_fraction << ',' << s.real_area << ',' << s.stiffness << ','
-               << s.stiffness / a.contact->nominal_area << ',' << s.stiffness_over_load << ',' << s.count << '\n';
-    // the law's curve: rows of model "law:NAME" (the fit it is on: report.json's contact.law.model)
-    if (a.law)
-      for (const PhysicalState& s : a.law->curve)
-        curves << "law:" << a.law->law << ',' << s.pressure << ',' << s.load << ',' << s.mean_separation << ','
-               << s.separation << ',' << s.area_fraction << ',' << s.real_area << ',' << s.stiffness << ','
-               << s.stiffness / a.contact->nominal_area << ',' << s.stiffness_over_load << ',' << s.count << '\n';
-    outcome.files.push_back(write("curves.csv", curves.str()));
-  }
-
+  outcome.files.push_back(write("summits.csv", summits_csv(a)));
+  if (a.contact) outcome.files.push_back(write("curves.csv", curves_csv(a)));
   // plots, drawn here (svg_plot.hpp): nothing is run
   if (!a.noise_floor.reached) {
     outcome.files.push_back(write("fits.svg", fits_svg(a)));
@@ -638,180 +878,7 @@ ReportOutcome write_report(const SurfaceAnalysis& a, const std::string& director
   } else {
     outcome.plot_note = "no plots: " + a.noise_floor.text;
   }
-
-  // the Markdown report
-  std::ostringstream md;
-  const HeightMap& map = a.map;
-  md << "# Surface report: " << detail::printable(std::filesystem::path(map.source).filename().string(), 200) << "\n\n";
-  md << "Written by `asperity surface`. Every number below is in `report.json`; the curves are in `curves.csv`, "
-        "the summits in `summits.csv`.\n\n";
-  md << "## The surface\n\n| | |\n|---|---|\n";
-  md << "| file | `" << detail::printable(map.source, 4096) << "` (" << map.format << ") |\n";
-  md << "| grid | " << map.nx << " x " << map.ny << " points, sampling " << g(map.dx) << " m x " << g(map.dy) << " m (" << g(map.width())
-     << " m x " << g(map.length()) << " m) |\n";
-  md << "| missing points | " << a.statistics.missing_points << " |\n";
-  md << "| leveling | " << (a.leveled ? "least-squares plane subtracted (slopes " + g(a.plane.slope_x) + ", " + g(a.plane.slope_y) + ")" : "none") << " |\n";
-  for (const std::string& note : map.notes) md << "| note | " << note << " |\n";
-  md << "\n## Statistics\n\n| Sq [m] | Sa [m] | Ssk | Sku | m0 [m²] | m2 | m4 [1/m²] | Nayak α |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  md << "| " << g(a.statistics.rms) << " | " << g(a.statistics.mean_absolute) << " | " << g(a.statistics.skewness, 3) << " | "
-     << g(a.statistics.kurtosis, 3) << " | " << g(a.moments.m0) << " | " << g(a.moments.m2) << " | " << g(a.moments.m4) << " | "
-     << g(a.moments.alpha, 3) << " |\n\n";
-  if (a.noise_floor.reached) md << "**Noise floor.** " << a.noise_floor.text << ".\n";
-  if (!a.noise_floor.reached) {
-  md << "Spectral moments at the file's sampling interval by one consistent scheme (slopes by forward differences, "
-        "curvatures by second differences); m2 and m4 are the equivalent isotropic moments (geometric means along the "
-        "principal directions, McCool 1986). Anisotropy (ratio of the principal slope variances) "
-     << g(a.moments.anisotropy, 3) << ", steepest at " << g(a.moments.principal_angle * 57.29577951308232, 3)
-     << "° from x"
-     << (a.moments.anisotropy > max_isotropic_anisotropy
-             ? ": **not isotropic** (above " + g(max_isotropic_anisotropy, 2) +
-                   "): Nayak-McCool's Gaussian from the moments assumes an isotropic surface and does not hold here"
-             : "")
-     << ". They grow as the sampling interval shrinks on a rough surface, see below.\n\n";
-  md << "## Summits\n\n" << a.summits.list.size() << " summits (" << (a.summits.options.window == 1 ? "8-neighbour maxima" : "maxima within " + std::to_string(a.summits.options.window) + " points")
-     << (a.summits.options.min_drop > 0 ? ", at least " + g(a.summits.options.min_drop) + " m above the mean of their neighbours" : "")
-     << "): density " << g(a.summits.density) << " /m², radius R = 1/⟨κ_m⟩ = " << g(a.summits.radius)
-     << " m (mean curvature −(h_xx + h_yy)/2 from 3-point second differences, averaged over the summits).\n\n";
-  md << "Dependence on the sampling interval (every k-th point):\n\n| k | dx [m] | summits | density [1/m²] | R [m] | m2 | m4 [1/m²] | α | anisotropy |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const SamplingRow& r : a.sampling)
-    md << "| " << r.factor << " | " << g(r.dx) << " | " << r.summits << " | " << g(r.density) << " | " << g(r.radius) << " | "
-       << g(r.m2) << " | " << g(r.m4) << " | " << g(r.alpha, 3) << " | " << g(r.anisotropy, 3) << " |\n";
-  const auto fits_table = [&](const SampleAssessment& s) {
-    md << "\n| model | location [m] | scale [m] | shape [" << g(100 * s.options.confidence, 3) << "% interval] | A² | AD p | KS D | KS p | AIC | ΔAIC | Akaike weight |\n"
-       << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    // a bound with three digits: two could round it below 1/(B + 1)
-    const auto p_cell = [](double p, bool bound) { return std::isfinite(p) ? (bound ? "≤ " + g(p, 3) : g(p, 2)) : std::string("–"); };
-    for (const ModelAssessment& m : s.models) {
-      const HeightDistribution& d = m.fit.distribution;
-      std::string shape = "–";
-      if (d.model != HeightModel::gaussian) {
-        shape = g(d.shape, 3);
-        if (!m.shape_identified) shape += " (not identified)";
-        else if (std::isfinite(m.shape.lo)) shape += " [" + g(m.shape.lo, 3) + ", " + g(m.shape.hi, 3) + "]";
-      }
-      md << "| " << describe(d.model) << " | " << g(d.location) << " | " << g(d.scale) << " | " << shape << " | "
-         << g(m.anderson_darling, 3) << " | " << p_cell(m.anderson_darling_p, m.p_at_floor) << " | "
-         << g(m.kolmogorov_smirnov, 3) << " | " << p_cell(m.kolmogorov_smirnov_p, m.kolmogorov_smirnov_p_at_floor) << " | " << g(m.aic, 6) << " | "
-         << g(m.delta_aic, 3) << " | " << g(m.akaike_weight, 3) << " |\n";
-    }
-  };
-  md << "\n## Is it Gaussian? Which Weibull?\n\n**Verdict.** " << a.verdict.text << "\n";
-  md << "\nThe summit heights (what the asperity model integrates; a Gaussian surface's summit heights are not "
-        "Gaussian themselves, which the surrogates account for):\n";
-  fits_table(a.summit_heights);
-  if (a.heights) {
-    md << "\nThe heights (a fixed random sample of " << a.heights->n << " points: the marginal of the whole surface, "
-          "whose bound a wear process makes):\n";
-    fits_table(*a.heights);
-  }
-  md << "\nMethod: the Gaussian by maximum likelihood; each three-parameter Weibull by maximum product of spacings "
-        "(well-posed for every shape, including shapes below 1 where maximum likelihood diverges). The null "
-        "distribution of every statistic and the shape intervals come from "
-     << a.surrogates << " surrogate surfaces (seed " << a.summit_heights.options.seed
-     << "): Gaussian random fields with the spectrum of the map's own heights, given each model's marginal, on which "
-        "every statistic is computed exactly as on the map (summits found the same way), so the tests carry the "
-        "surface's correlation. A p-value shown as ≤ is at its floor 1/(B + 1). A shape whose interval reaches the "
-        "fit's bounds (0.05, 100) or with over a tenth of its refits there is not identified. Akaike weights over all "
-        "three models.\n";
-  if (outcome.plots) md << "\n![fits](fits.svg)\n";
-  if (a.contact) {
-    const ContactComparison& c = *a.contact;
-    md << "\n## What it changes: contact with a rigid flat\n\nE* = " << g(c.options.contact_modulus) << " Pa, nominal area A0 = "
-       << g(c.nominal_area) << " m². Separations from each model's mean summit height; stiffness per nominal area. "
-          "An asperity model is a statistical statement: where only a few summits are in contact over A0, its "
-          "prediction rests on the few highest summits measured, not on the fitted law.\n\n";
-    if (!c.headline.empty()) md << "**" << c.headline << ".**\n\n";
-    md << "| model | table |\n|---|---|\n";
-    for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
-    const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
-    for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-      md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
-      for (const ModelContact& mc : c.models) {
-        if (!mc.served) {
-          md << "| " << mc.label << " | – | – | – | – | – | – | – |\n";
-          continue;
-        }
-        const PhysicalState& s = mc.at_pressures[k];
-        std::string versus = k < mc.stiffness_over_measured.size() ? g(mc.stiffness_over_measured[k], 3) : "–";
-        if (mc.kind == ContactModelKind::measured_summits && k < c.measured_stiffness_spread.size())
-          versus = "1 (±" + g(100 * c.measured_stiffness_spread[k], 2) + "%)";
-        md << "| " << mc.label << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
-           << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | " << versus << " | "
-           << (gaussian && gaussian->served ? g(ratio(s.stiffness, gaussian->at_pressures[k].stiffness), 3) : "–") << " |\n";
-      }
-    }
-    if (!c.sampling.empty()) {
-      md << "\nGW on the measured summits at a coarser sampling (every k-th point), its stiffness over the answer at the "
-            "file's sampling, at each pressure: ";
-      for (const SamplingContact& r : c.sampling) {
-        md << "k = " << r.factor << ":";
-        for (double ratio_k : r.stiffness_over_finest) md << " " << g(ratio_k, 3);
-        md << (&r == &c.sampling.back() ? ".\n" : "; ");
-      }
-    }
-    if (!c.measured_stiffness_spread.empty())
-      md << "\n± on the measured summits: the relative standard deviation of their stiffness over the surrogate "
-            "ensemble (surfaces of the same statistics), the uncertainty of each ratio to them.\n";
-    const ModelContact* exact = c.find(ContactModelKind::exact);
-    if (exact && exact->served) {
-      md << "\n### Each model against the exact contact of this map\n\nThe exact elastic contact: " << c.exact_method
-         << ". It neglects neither the summits' coalescence nor their elastic interaction: what every model is judged "
-            "against.\n\n**" << c.exact_headline << ".**\n\n| model | nominal pressure [Pa] | mean separation − exact's [m] | "
-            "real area / exact's | stiffness / exact's |\n|---|---:|---:|---:|---:|\n";
-      for (const ModelContact& mc : c.models) {
-        if (!mc.served || mc.kind == ContactModelKind::exact || mc.stiffness_over_exact.empty()) continue;
-        for (std::size_t k = 0; k < c.pressures.size(); ++k)
-          md << "| " << mc.label << " | " << g(c.pressures[k]) << " | " << g(mc.separation_minus_exact[k], 3) << " | "
-             << g(mc.area_over_exact[k], 3) << " | " << g(mc.stiffness_over_exact[k], 3) << " |\n";
-      }
-    } else if (exact) {
-      md << "\nThe exact contact: " << exact->note << ".\n";
-    }
-    if (outcome.plots) md << "\n![contact](contact.svg)\n";
-    if (a.law) {
-      const LawContact& law = *a.law;
-      md << "\n### Under the contact law: " << law.law << "\n\nThe law's rough-surface curves on the " << law.model
-         << " fit (" << law.model_reason << "), with the measured summit density and radius, next to the same fit's "
-            "elastic (Hertz) curves above.\n\n| | |\n|---|---|\n";
-      md << "| σs: standard deviation of the measured summit heights | " << g(law.summit_height_sd) << " m |\n";
-      md << "| R: the measured summit radius | " << g(law.summit_radius) << " m |\n";
-      md << "| E* | " << g(law.contact_modulus) << " Pa |\n";
-      if (!law.adhesive) {  // an adhesive law is elastic: no hardness, no ω_c, no plasticity index
-        md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
-        md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";
-        md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
-        md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
-      }
-      md << "| the law's source range | " << (std::isfinite(law.valid_up_to) ? "ω up to " + g(law.valid_up_to) + " m" : "every ω") << " |\n";
-      if (law.adhesive) {
-        md << "| adhesion parameter σs/δc (Fuller–Tabor 1975) | " << g(law.adhesion_parameter, 3) << " |\n";
-        md << "| the law's length scale | " << g(law.adhesion_length) << " m |\n";
-        md << "| pull-off: greatest tension of the approach branch | "
-           << (std::isfinite(law.pull_off_pressure)
-                   ? g(law.pull_off_pressure) + " Pa at mean separation " + g(law.pull_off_mean_separation) + " m"
-                   : std::string("none measurable (see the warning below)"))
-           << " |\n";
-      }
-      md << "| its curves | " << law.note << " |\n\n**" << law.regime << ".**\n";
-      if (law.served) {
-        md << "\n| nominal pressure [Pa] | mean separation, elastic [m] | under the law [m] | law − elastic [m] | area "
-              "fraction, elastic | under the law | law / elastic | stiffness / A0, elastic [N/m³] | under the law | law / "
-              "elastic |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-        for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
-          const PhysicalState &l = law.at_pressures[k], &e = law.elastic_at_pressures[k];
-          md << "| " << g(c.pressures[k]) << " | " << g(e.mean_separation) << " | " << g(l.mean_separation) << " | "
-             << g(law.separation_minus_elastic[k], 3) << " | " << g(e.area_fraction, 3) << " | " << g(l.area_fraction, 3)
-             << " | " << g(law.area_over_elastic[k], 3) << " | " << g(e.stiffness / c.nominal_area) << " | "
-             << g(l.stiffness / c.nominal_area) << " | " << g(law.stiffness_over_elastic[k], 3) << " |\n";
-        }
-      }
-      for (const std::string& warning : law.warnings) md << "\n**Warning:** " << warning << ".\n";
-      if (outcome.plots && law.served) md << "\n![law](law.svg)\n";
-    }
-  }
-  }  // not at the noise floor
-  if (!outcome.plots) md << "\n_" << outcome.plot_note << "._\n";
-  outcome.files.insert(outcome.files.begin(), write("report.md", md.str()));
+  outcome.files.insert(outcome.files.begin(), write("report.md", markdown_report(a, outcome)));
   folder.commit();
   return outcome;
 }

@@ -1,4 +1,4 @@
-// The analysis written out: JSON for programs (schema "asperity-surface/2"), a short summary for
+// The analysis written out: JSON for programs (schema surface_json_schema), a short summary for
 // the terminal, and a report folder (Markdown with the plots, JSON, CSV of the curves and of the
 // summits, plots as SVG drawn by the library itself: no program is run).
 #pragma once
@@ -10,6 +10,12 @@
 #include "asperity/topography/analysis.hpp"
 
 namespace asperity::topography {
+
+// The JSON document's schema, its "schema" member: the one spelling (the command's help, Python's
+// asperity.topography.SURFACE_JSON_SCHEMA and the batch read it from here). 3: each physical
+// state (contact.models[].at_pressures and curve, contact.law) keyed by PhysicalState's list
+// (nominal_pressure_Pa, count, ...), as `asperity contact` writes it.
+inline constexpr const char* surface_json_schema = "asperity-surface/3";
 
 std::string analysis_json(const SurfaceAnalysis& analysis);
 std::string analysis_summary(const SurfaceAnalysis& analysis);
