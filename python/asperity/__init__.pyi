@@ -2,7 +2,9 @@
 # python/tests/test_stubs.py checks them against the module: names, parameters, enum members.
 import enum
 import os
-from typing import Callable, Dict, List, Literal, NamedTuple, Optional, Sequence, Tuple, TypeAlias, Union, overload
+from typing import Callable, Dict, List, Literal, NamedTuple, Optional, Sequence, Tuple, TypeAlias, TypedDict, Union, overload
+
+from typing_extensions import Unpack
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -461,9 +463,33 @@ def quantity_twice_order(quantity: str) -> int: ...
 Surface: TypeAlias = SurfaceScales
 PhysicalSurface: TypeAlias = RoughSurface
 
+class _LawCurvesKeywords(TypedDict, total=False):
+    """law_curves' keywords: a [[law]] scene's keys and every law's parameters (the module's
+    law_curves_keywords; test_stubs checks the two agree)."""
+    name: str
+    contact_modulus: float
+    distribution: str
+    shape: float
+    side: str
+    height_scale: float
+    summit_radius: float
+    summit_density: float
+    nominal_area: float
+    separation: Tuple[float, float]
+    max_rel_error: float
+    hardness: float
+    yield_strength: float
+    poisson: float
+    pressure_factor: float
+    geometric_hardness: str
+    work_of_adhesion: float
+    maugis_parameter: float
+
+law_curves_keywords: Dict[str, str]  # each law_curves keyword -> "float", "str" or "pair" ((smin, smax))
+
 def law_curves(law: str, *, progress: Optional[Callable[[Dict[str, float]], object]] = None,
-               **kwargs: Union[float, str, Sequence[float]]) -> ContactCurves:
-    """A contact law's rough-surface curves, tabulated now (the keywords are a [[law]] scene's keys;
-    progress: called at most once a second with a dict; Ctrl-C stops it)."""
+               **kwargs: Unpack[_LawCurvesKeywords]) -> ContactCurves:
+    """A contact law's rough-surface curves, tabulated now (the keywords are a [[law]] scene's keys
+    and the law's parameters; progress: called at most once a second with a dict; Ctrl-C stops it)."""
     ...
 def tabulate_law_scene(text: str) -> ContactCurves: ...

@@ -12,6 +12,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "bindings.hpp"
 #include "interrupt.hpp"
@@ -100,6 +101,31 @@ bool read_scene_key(const std::string& key, const py::handle& value, SceneLawInp
   return true;
 }
 
+// A keyword's Python type in the stubs ("float", "str", "pair": (smin, smax)): a [[law]] key's
+// (asperity/scene.hpp's scene_law_keys) or a law parameter's (the registry's)
+const char* scene_key_type(const std::string& key) {
+  if (key == "name" || key == "distribution" || key == "side") return "str";
+  return key == "separation" ? "pair" : "float";
+}
+
+// Every keyword of law_curves and its type: the [[law]] keys but `law`, then every law's parameters
+std::vector<std::pair<std::string, std::string>> law_curves_keywords() {
+  std::vector<std::pair<std::string, std::string>> keywords;
+  for (const SceneLawKey& k : scene_law_keys)
+    if (std::string(k.keyword) != "law") keywords.emplace_back(k.keyword, scene_key_type(k.keyword));
+  for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p)
+    keywords.emplace_back(p->key, p->choices[0] ? "str" : "float");
+  return keywords;
+}
+
+// The surface's and the range's keywords, for messages and the docstring ("contact_modulus, ...")
+std::string scene_keywords_text() {
+  std::string text;
+  for (const SceneLawKey& k : scene_law_keys)
+    if (std::string(k.keyword) != "law") text += std::string(text.empty() ? "" : ", ") + k.keyword;
+  return text;
+}
+
 // The keywords of law_curves as a law scene's typed inputs: each key is a law parameter (the
 // registry's) or a [[law]] key (asperity/scene.hpp's scene_law_keys), nothing else.
 SceneLawInputs law_inputs(const std::string& law, const py::kwargs& keys) {
@@ -110,9 +136,7 @@ SceneLawInputs law_inputs(const std::string& law, const py::kwargs& keys) {
     const std::string key = py::str(item.first);
     if (!read_law_parameter(key, item.second, in) && !read_scene_key(key, item.second, in))
       throw Error("law_curves: '" + quote_text(key) + "' is not a law scene's key (" + law + "'s: " +
-                  law_keys_text(in.law) +
-                  "; the surface's: contact_modulus, distribution, shape, side, height_scale, summit_radius, "
-                  "summit_density, nominal_area; separation, max_rel_error, name)");
+                  law_keys_text(in.law) + "; the surface's and the range's: " + scene_keywords_text() + ")");
   }
   return in;
 }
@@ -169,9 +193,9 @@ void bind_law_curves(py::module_& m) {
       "tabulated now by the generator to max_rel_error with the error measured and stored, as tablegen does a\n"
       "law scene (docs/contact-laws.md section 8), served as an asperity.ContactCurves (write it with .write).\n"
       "law: " + contact_law_names() + ".\n"
-      "The keywords are a [[law]] scene's keys: contact_modulus, distribution, shape, side, height_scale,\n"
-      "summit_radius, summit_density, nominal_area, separation=(smin, smax) (dimensionless, origin convention),\n"
-      "max_rel_error (1e-10 .. 1e-2), name, and the law's parameters:\n" + law_keywords_doc() +
+      "The keywords are a [[law]] scene's keys (all of them, with their types: law_curves_keywords): " +
+      scene_keywords_text() + "\n(separation=(smin, smax): dimensionless, origin convention; max_rel_error: 1e-10 .. 1e-2),\n"
+      "and the law's parameters:\n" + law_keywords_doc() +
       "Raises asperity.Error naming the keyword for a missing, unknown or bad one, or where the curves cannot\n"
       "be tabulated. It runs without the GIL; Ctrl-C stops it (KeyboardInterrupt). progress=callable: called at\n"
       "most once a second with a dict (pass, nodes, checked, intervals, evaluations, elapsed [s]); its\n"
@@ -179,6 +203,9 @@ void bind_law_curves(py::module_& m) {
       "    asperity.law_curves('kogut-etsion', contact_modulus=1.13e11, yield_strength=1e9, poisson=0.3,\n"
       "                        distribution='gaussian', height_scale=1e-6, summit_radius=1e-4,\n"
       "                        summit_density=4e8, nominal_area=1e-4, separation=(0, 4), max_rel_error=1e-6)";
+  py::dict keywords;
+  for (const auto& [key, type] : law_curves_keywords()) keywords[py::str(key)] = type;
+  m.attr("law_curves_keywords") = keywords;
   m.def(
       "law_curves",
       [](const std::string& law, const py::object& progress, const py::kwargs& keys) {

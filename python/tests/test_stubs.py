@@ -237,6 +237,8 @@ def check(stub_file, module, text=None):
     aliases |= {name for name, nodes in entries.items()
                 if isinstance(nodes[0], ast.AnnAssign) and isinstance(nodes[0].annotation, ast.Name)
                 and nodes[0].annotation.id == "TypeAlias" and name not in names}
+    # the stubs' own private types (_LawCurvesKeywords: a TypedDict for **kwargs), checked on their own
+    aliases |= {name for name in entries if name.startswith("_") and name not in names}
     stubbed = set(entries) - aliases
     for name in sorted(names - stubbed):
         problems.append(f"{stub_file}: {name} is in the module, not in the stub")
@@ -279,3 +281,12 @@ def test_the_check_finds_drift():
         assert old in text
         problems = "\n".join(check("__init__.pyi", asperity, text.replace(old, new)))
         assert named in problems, (old, problems)
+
+
+def test_law_curves_keywords_are_the_modules():
+    """The stub's _LawCurvesKeywords (law_curves' **kwargs) names the module's keywords, with their types."""
+    tree = ast.parse((STUBS / "__init__.pyi").read_text())
+    stub_class = next(node for node in tree.body if isinstance(node, ast.ClassDef) and node.name == "_LawCurvesKeywords")
+    stub = {node.target.id: ast.unparse(node.annotation) for node in stub_class.body if isinstance(node, ast.AnnAssign)}
+    python_type = {"float": "float", "str": "str", "pair": "Tuple[float, float]"}
+    assert stub == {key: python_type[kind] for key, kind in asperity.law_curves_keywords.items()}
