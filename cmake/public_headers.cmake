@@ -37,6 +37,6 @@ set(ASPERITY_TOPOGRAPHY_HEADERS
   topography/leveling.hpp topography/statistics.hpp topography/summits.hpp topography/distribution_fit.hpp
   topography/goodness_of_fit.hpp topography/synthetic.hpp topography/surrogates.hpp topography/surface_tests.hpp topography/surface_verdict.hpp
   topography/summit_contact.hpp topography/contact_comparison.hpp topography/law_contact.hpp topography/analysis.hpp
-  topography/surface_report.hpp topography/exact_contact.hpp topography/exact_contact_report.hpp topography/exact_contact_table.hpp topography/self_affine.hpp
+  topography/surface_report.hpp topography/next_steps.hpp topography/exact_contact.hpp topography/exact_contact_report.hpp topography/exact_contact_table.hpp topography/self_affine.hpp
   topography/persson_contact.hpp)
 set(ASPERITY_FORTRAN_SOURCES asperity.f90)

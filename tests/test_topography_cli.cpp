@@ -305,3 +305,74 @@ TEST(TopographyCli, LawLimitsAreStated) {
   EXPECT_NE(softer.out.find("kogut-etsion: no curves over the pressures"), std::string::npos) << softer.out;
   EXPECT_NE(softer.out.find("GW's psi = "), std::string::npos) << softer.out;
 }
+
+namespace {
+// Runs a command the report printed ("asperity ..."), in `directory`, through the shell: the
+// commands are meant to be pasted as they are.
+CommandRun run_printed(const std::string& printed, const std::string& directory) {
+  std::filesystem::create_directories(directory);
+  const std::string command = "(cd " + quoted(directory) + " && " + quoted(ASPERITY_COMMAND) + printed.substr(8) + ")";
+  const std::string out = directory + "/printed-stdout.txt", err = directory + "/printed-stderr.txt";
+  const int status = std::system((command + " >" + quoted(out) + " 2>" + quoted(err)).c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+}
+
+std::vector<std::vector<double>> csv_rows(const std::string& text) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+}  // namespace
+
+// The report ends with what to do next (issue 39): for the model it names, the `asperity contact`
+// command reproduces the report's curve of that model (the default table's shape interpolation
+// against the report's exact-shape scene table: within 1e-4), and its card command writes a card;
+// where no model is named, the exact-contact command runs as printed (fewer steps) and writes its
+// table and card.
+TEST(TopographyCli, NextStepsRunAsPrinted) {
+  const CommandRun r = run({surfaces + "/digitalsurf-650x650.x3p", "--ensemble", "40", "--modulus", "1e11",
+                            "--pressure", "1e6,1e7", "--no-persson", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(r.out);
+  const json& next = j["next_steps"];
+  ASSERT_TRUE(next["model_named"].get<bool>()) << next.dump(1);
+  const std::string model = next["model"];
+  const std::string directory = work + "/next-steps";
+  const CommandRun contact = run_printed(next["contact_command"], directory);
+  ASSERT_EQ(contact.status, 0) << contact.err;
+  const auto rows = csv_rows(contact.out);
+  ASSERT_EQ(rows.size(), 9u);
+  const json& curve = model_of(j["contact"], model)["curve"];
+  for (const auto& [row, state] : {std::pair{rows.front(), curve.front()}, std::pair{rows.back(), curve.back()}}) {
+    EXPECT_LT(relative(row[6], state["nominal_pressure_Pa"]), 1e-9);
+    EXPECT_LT(relative(row[1], state["mean_separation_m"]), 1e-4) << contact.out;
+    EXPECT_LT(relative(row[7], state["stiffness_N_per_m"]), 1e-4) << contact.out;
+  }
+  std::filesystem::remove(directory + "/" + model + ".inp");
+  const CommandRun card = run_printed(next["card_command"], directory);
+  ASSERT_EQ(card.status, 0) << card.err;
+  EXPECT_EQ(read_text(directory + "/" + model + ".inp").rfind("** asperity", 0), 0u);
+  EXPECT_NE(r.out.find("Its pressure-overclosure card"), std::string::npos);
+
+  const CommandRun afm_run = run(with(afm_contact, {"--json"}));
+  ASSERT_EQ(afm_run.status, 0) << afm_run.err;
+  const json afm_next = json::parse(afm_run.out)["next_steps"];
+  std::string exact = afm_next["exact_command"];
+  ASSERT_FALSE(exact.empty());
+  const std::size_t steps = exact.find(":17 ");
+  ASSERT_NE(steps, std::string::npos) << exact;
+  exact.replace(steps, 4, ":3 ");
+  const CommandRun solved = run_printed(exact, directory);
+  ASSERT_EQ(solved.status, 0) << solved.err;
+  EXPECT_TRUE(std::filesystem::exists(directory + "/afm-zsensor-10um-exact.h5"));
+  EXPECT_EQ(read_text(directory + "/afm-zsensor-10um-exact.inp").rfind("** asperity", 0), 0u);
+}

@@ -11,6 +11,7 @@
 #include "topography_helpers.hpp"
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/surface_report.hpp"
+#include "asperity/topography/next_steps.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -49,6 +50,20 @@ void bind_analysis_options(py::module_& m) {
       .def_readonly("model", &topo::SurfaceVerdict::model, "The model named for the contact (when named).")
       .def_readonly("text", &topo::SurfaceVerdict::text)
       .def("__repr__", [](const topo::SurfaceVerdict& v) { return v.text; });
+  py::class_<topo::NextSteps>(m, "NextSteps",
+                              "What to do next with an analysis (next_steps): for the model the verdict names, the\n"
+                              "`asperity contact` command, the Python call and its card's command; the map's exact-contact\n"
+                              "command; where no model is named, why and what to use instead.")
+      .def_readonly("model_named", &topo::NextSteps::model_named)
+      .def_readonly("model", &topo::NextSteps::model, "The named model (\"weibull-tail\"), empty when none.")
+      .def_readonly("why", &topo::NextSteps::why)
+      .def_readonly("contact_command", &topo::NextSteps::contact_command)
+      .def_readonly("python", &topo::NextSteps::python, "Python code building the named model's ContactModel.")
+      .def_readonly("card_command", &topo::NextSteps::card_command)
+      .def_readonly("exact_command", &topo::NextSteps::exact_command)
+      .def_readonly("instead", &topo::NextSteps::instead)
+      .def_readonly("text", &topo::NextSteps::text)
+      .def("__repr__", [](const topo::NextSteps& n) { return n.text; });
   py::class_<topo::AnalysisOptions>(m, "AnalysisOptions", "What analyse_height_map and analyse_surface_file do.")
       .def(py::init([](const std::optional<topo::ReadOptions>& read, bool level,
                        const std::optional<topo::SummitOptions>& summits,
@@ -181,6 +196,8 @@ void bind_report(py::module_& m) {
       "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
       "analysis"_a, "The short summary `asperity surface` prints.");
   m.attr("SURFACE_JSON_SCHEMA") = topo::surface_json_schema;
+  m.def("next_steps", &topo::next_steps, "analysis"_a,
+        "What to do next: the named model's command, Python call and card, the map's exact contact (NextSteps).");
   m.def("write_report", write_report, "analysis"_a, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);
 }
 

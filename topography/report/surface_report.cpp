@@ -13,6 +13,7 @@
 #include "asperity/error.hpp"
 #include "asperity/integrals.hpp"
 #include "asperity/number_text.hpp"
+#include "asperity/topography/next_steps.hpp"
 #include "input/reader_support.hpp"
 #include "record_json.hpp"
 #include "svg_plot.hpp"
@@ -539,6 +540,12 @@ std::string analysis_json(const SurfaceAnalysis& a) {
     j["contact"] = contact_json(*a.contact);
     if (a.law) j["contact"]["law"] = law_json(*a.law, *a.contact);
   }
+  const NextSteps next = next_steps(a);
+  j["next_steps"] = {{"model_named", next.model_named}, {"model", next.model},
+                     {"why", next.why},                 {"contact_command", next.contact_command},
+                     {"python", next.python},           {"card_command", next.card_command},
+                     {"exact_command", next.exact_command}, {"instead", next.instead},
+                     {"text", next.text}};
   // a source or note that is not UTF-8 (a path's bytes) is replaced, not an exception
   return j.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
@@ -611,6 +618,15 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
     if (!law.served) out << "  " << law.law << ": " << law.note << "\n";
     for (const std::string& warning : law.warnings) out << "  " << law.law << ": " << warning << "\n";
   }
+  const NextSteps next = next_steps(a);
+  if (!next.contact_command.empty()) {
+    out << "  next, " << next.why << ":\n    " << next.contact_command << "\n    " << next.card_command << "\n";
+  } else if (!next.exact_command.empty()) {
+    out << "  next: " << next.why << "; use instead " << next.instead << ":\n";
+  } else {
+    out << "  " << next.text << "\n";
+  }
+  if (!next.exact_command.empty()) out << "    " << next.exact_command << "\n";
   return out.str();
 }
 
@@ -805,6 +821,24 @@ void markdown_contact(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
   if (a.law) markdown_law(md, *a.law, c, plots);
 }
 
+// what to do next: the named model's command, Python call and card, the map's exact contact
+void markdown_next_steps(std::ostream& md, const NextSteps& next) {
+  md << "\n## What to do next\n\n";
+  if (next.contact_command.empty() && next.exact_command.empty()) {
+    md << next.text << "\n";
+    return;
+  }
+  md << (next.contact_command.empty() ? "No model: " + next.why + ". Use instead " + next.instead + ":\n"
+                                      : "The model: " + next.why + ". Its curves in your code (separations from its "
+                                        "mean summit height):\n");
+  if (!next.contact_command.empty())
+    md << "\n```sh\n" << next.contact_command << "\n```\n\n```python\n" << next.python
+       << "\n```\n\nIts pressure-overclosure card for CalculiX (or `asperity surface ... --card FILE`):\n\n```sh\n"
+       << next.card_command << "\n```\n\nThe map's own exact contact, what every model is judged against, as a table "
+       << "`asperity contact --table` serves and as a card:\n";
+  md << "\n```sh\n" << next.exact_command << "\n```\n";
+}
+
 std::string markdown_report(const SurfaceAnalysis& a, const ReportOutcome& outcome) {
   std::ostringstream md;
   markdown_surface(md, a);
@@ -816,6 +850,7 @@ std::string markdown_report(const SurfaceAnalysis& a, const ReportOutcome& outco
     if (a.contact) markdown_contact(md, a, outcome.plots);
   }
   if (!outcome.plots) md << "\n_" << outcome.plot_note << "._\n";
+  markdown_next_steps(md, next_steps(a));
   return md.str();
 }
 

@@ -32,11 +32,17 @@ SurfaceVerdict surface_verdict(const SurfaceEvidence& evidence) {
     const double half = significance / 2;
     const bool heights_reject = H && v.p_heights < half, summits_reject = v.p_summits < half;
     v.gaussian_rejected = heights_reject || summits_reject;
+    // each test's answer in words, then which decides: either one rejecting (no contradiction
+    // when one rejects and the other does not)
+    const auto says = [&](const char* sample, double p_value, bool bound, bool rejects) {
+      return std::string(sample) + (rejects ? " reject it (" : " do not (") + p(p_value, bound) + ")";
+    };
     text = std::string("Is it Gaussian? ") + (v.gaussian_rejected ? "No" : "Not rejected") + ": against " +
            std::to_string(evidence.surrogates) + " Gaussian surfaces of the map's own spectrum, ";
-    if (H) text += "its heights give " + p(v.p_heights, v.p_heights_bound) + " and ";
-    text += "its summit heights " + p(v.p_summits, v.p_summits_bound) + " (Anderson-Darling, each at " +
-            three_digits(100 * half) + "% so that the verdict's size is " + three_digits(100 * significance) + "%).";
+    if (H) text += says("its heights", v.p_heights, v.p_heights_bound, heights_reject) + " and ";
+    text += says("its summit heights", v.p_summits, v.p_summits_bound, summits_reject) +
+            " (Anderson-Darling, each at " + three_digits(100 * half) + "%: either one rejecting decides, so that the "
+            "verdict's size is " + three_digits(100 * significance) + "%).";
   }
   // the orientation from the heights' marginal
   if (H) {
@@ -62,7 +68,9 @@ SurfaceVerdict surface_verdict(const SurfaceEvidence& evidence) {
   for (HeightModel model : all_height_models) {
     const ModelAssessment& m = S.model(model);
     std::string why;
-    if (model == HeightModel::gaussian && v.gaussian_rejected) why = "the surface is not Gaussian";
+    if (model == HeightModel::gaussian && v.gaussian_rejected)
+      why = std::string("the surface is not Gaussian (") +
+            (H && v.p_heights < significance / 2 ? "its heights' test" : "its summit heights' test") + ")";
     else if (v.tested && m.rejected) why = "rejected on the summit heights (" + p(m.anderson_darling_p, m.p_at_floor) + ")";
     else if (!m.shape_identified) why = "its shape is " + m.identification;
     else if (evidence.has_contact_curves) {
