@@ -184,8 +184,11 @@ def main():
     if ccx is None:
         fail("CalculiX (%s) is not installed: scripts/setup.sh installs Debian's calculix-ccx" % args.ccx)
 
+    # the mean-summit datum: a card with a clearance, for the cut-off (model B); the default datum
+    # (zero-pressure) has none: examples/calculix/run_examples.py runs it
     export = [args.asperity, "contact"] + SURFACE + ["--export", "calculix", "--units", "mm",
-                                                    "--pressure-range", PRESSURE_RANGE]
+                                                    "--pressure-range", PRESSURE_RANGE,
+                                                    "--overclosure-datum", "mean-summit"]
     card = run(export).stdout
     rows = parse_card(card)
     reach = -rows[0][1]                      # mm: the card's largest clearance
@@ -255,12 +258,12 @@ def main():
         print("B: faces of %.4g mm: contact springs appear at clearance 0.98 x 1e-3 sqrt(A) and not at 1.02 x, for "
               "the interior (A = a^2, cut-off %.4g mm), edge (a^2/2) and corner (a^2/4) nodes" %
               (a, cutoffs["interior"]))
-        warned = run(export + ["--face-size", repr(a * 1e-3)]).stderr
-        if not re.search(r"warning: the card reaches a clearance of .* within a clearance of 1e-3 sqrt\(A\)[^=]*= %s m"
-                         % re.escape("%.4g" % (cutoffs["interior"] * 1e-3)), warned):
-            fail("--face-size %g m gave no cut-off warning naming %.4g m:\n%s" % (a * 1e-3, cutoffs["interior"] * 1e-3,
-                                                                                warned))
-        quiet = run(export + ["--face-size", repr(2.2 * reach / CUTOFF * 1e-3)]).stderr
+        # --face-size in the card's units (mm here)
+        warned = run(export + ["--face-size", repr(a)]).stderr
+        if not re.search(r"warning: the card reaches a clearance of .* within a clearance of 1e-3 sqrt\(A\)[^=]*= %s mm"
+                         % re.escape("%.6g" % cutoffs["interior"]), warned):
+            fail("--face-size %g (mm) gave no cut-off warning naming %.6g mm:\n%s" % (a, cutoffs["interior"], warned))
+        quiet = run(export + ["--face-size", repr(2.2 * reach / CUTOFF)]).stderr
         if "clearance" in quiet:
             fail("a face size whose cut-off covers the card warned:\n" + quiet)
     finally:

@@ -226,7 +226,7 @@ TEST(CardOptions, TabulatedCurveKeepsAtMostMaxPointsWithinTheToleranceItStates) 
   write_tabulated_pressure_overclosure(none, tabulate_points(curve, 400, OverclosureDatum::zero_pressure, NAN),
                                        CardFormat::calculix, CardUnits::si, "", "");
   EXPECT_EQ(none.str().find("mean summit height"), std::string::npos) << none.str();
-  EXPECT_NE(none.str().find("(--overclosure-datum zero-pressure)"), std::string::npos) << none.str();
+  EXPECT_NE(none.str().find("(--overclosure-datum zero-pressure,"), std::string::npos) << none.str();
   // a cap that even a tolerance of 0.1 cannot meet, and caps out of range
   EXPECT_THROW(tabulate_points(curve, 3, OverclosureDatum::mean_summit, 0), Error);
   EXPECT_THROW(tabulate_points(curve, 2, OverclosureDatum::mean_summit, 0), Error);
@@ -265,6 +265,31 @@ TEST(CardOptions, NumbersAreTheShortestThatReadBack) {
       }
     }
   }
+}
+
+// --face-size is in the card's units; the cut-off's warning names the lengths and pressures in them,
+// in the card's header too.
+TEST(CardOptions, FaceSizeCutOffInTheCardsUnits) {
+  EXPECT_EQ(card_length_unit(CardUnits::si), 1.0);
+  EXPECT_EQ(card_length_unit(CardUnits::mm), 1e-3);
+  // a card starting 3 um before contact, its pressure rising linearly to 1e8 Pa at contact
+  const std::vector<PressureOverclosurePoint> rows{{0, -3e-6}, {1e8, 0}};
+  EXPECT_EQ(calculix_cutoff_warning(rows, NAN, CardUnits::mm), "");
+  EXPECT_EQ(calculix_cutoff_warning(rows, 3.1e-3, CardUnits::mm), "");  // 3.1 mm faces: cut-off 3.1 um covers it
+  const std::string mm = calculix_cutoff_warning(rows, 1e-3, CardUnits::mm);  // 1 mm faces: cut-off 1 um
+  EXPECT_NE(mm.find("clearance of 0.003 mm"), std::string::npos) << mm;
+  EXPECT_NE(mm.find("= 0.001 mm for faces of 1 mm"), std::string::npos) << mm;
+  EXPECT_NE(mm.find("below 66.6667 MPa the card never acts"), std::string::npos) << mm;  // 2/3 of the way to 1e8 Pa
+  const std::string si = calculix_cutoff_warning(rows, 1e-3, CardUnits::si);
+  EXPECT_NE(si.find("= 1e-06 m for faces of 0.001 m"), std::string::npos) << si;
+  EXPECT_NE(si.find("below 6.66667e+07 Pa"), std::string::npos) << si;
+  // in the header, and a card without clearance never warns
+  std::ostringstream card;
+  write_tabulated_pressure_overclosure(card, tabulate_points(rows, 200, OverclosureDatum::mean_summit, 0),
+                                       CardFormat::calculix, CardUnits::mm, "", "", 1e-3);
+  EXPECT_NE(card.str().find("**   WARNING: the card reaches a clearance of 0.003 mm"), std::string::npos) << card.str();
+  const std::vector<PressureOverclosurePoint> touching{{0, 0}, {1e8, 3e-6}};
+  EXPECT_EQ(calculix_cutoff_warning(touching, 1e-9, CardUnits::si), "");
 }
 
 }  // namespace

@@ -228,12 +228,14 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
                 " Pa reaches outside the range the table serves for this surface: " + model_range(model, "pressure"));
   const double tolerance = given(options.export_tolerance) ? options.export_tolerance : 1e-3;
   const std::size_t max_points = card_max_points(options.max_points, format);
+  const double face_size = face_size_option(options.face_size, format, units, "--export");  // m
   const PressureOverclosureTable table = tabulate_pressure_overclosure(model, low, high, tolerance, datum, max_points);
   write_pressure_overclosure(std::cout, table, format, units,
                              "asperity " ASPERITY_VERSION_STRING
                              ": the pressure-overclosure law of a rough surface against a flat "
                              "(Greenwood-Williamson)\n" +
-                                 describe(model.surface()));
+                                 describe(model.surface()),
+                             face_size);
   if (table.tolerance != tolerance)
     warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
                       " points: the card is within " + number(table.tolerance) + " of the law instead (--max-points)");
@@ -244,8 +246,7 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
                     " datum");
   if (format == CardFormat::calculix)
     check_spring_cutoff(
-        command, -table.points.front().overclosure, options.face_size,
-        [&](double clearance) { return law_pressure(model, -clearance - table.mean_summit_overclosure); },
+        command, table.points, face_size, units,
         "use --overclosure-datum zero-pressure (and start the model with the surfaces touching), larger faces, or a "
         "higher PMIN");
   warn_past_gw(command, model.at_pressure(high).area_fraction);
@@ -358,14 +359,14 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
   if (!options.export_format.empty()) {
     CardFormat format = CardFormat::csv;
     CardUnits units = CardUnits::si;
-    OverclosureDatum datum = OverclosureDatum::mean_summit;
+    OverclosureDatum datum = OverclosureDatum::zero_pressure;
     if (!parse_card_format(options.export_format, format))
       usage("--export: '" + quote_text(options.export_format) + "' is not calculix, abaqus or csv");
     if (!options.units.empty() && !parse_card_units(options.units, units))
       usage("--units: '" + quote_text(options.units) + "' is not si or mm");
     if (!options.overclosure_datum.empty() && !parse_overclosure_datum(options.overclosure_datum, datum))
       usage("--overclosure-datum: '" + quote_text(options.overclosure_datum) +
-            "' is not mean-summit, origin or zero-pressure");
+            "' is not zero-pressure, mean-summit or origin");
     if (datum == OverclosureDatum::mean_plane)
       usage("--overclosure-datum mean-plane is a Greenwood-Williamson surface's: contact curves take mean-summit, "
             "origin (their separation's datum: " + data.separation_datum + ") or zero-pressure");
@@ -381,6 +382,7 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
     const std::size_t max_points = options.max_points > 0        ? static_cast<std::size_t>(options.max_points)
                                    : format == CardFormat::calculix ? calculix_points_max
                                                                     : card_points_max;
+    const double face_size = face_size_option(options.face_size, format, units, "--export");  // m
     const PressureOverclosureTable table = tabulate_pressure_overclosure(curves, low, high, tolerance, datum, max_points);
     write_pressure_overclosure(std::cout, table, format, units,
                                std::string("asperity " ASPERITY_VERSION_STRING ": the pressure-overclosure law of a ") +
@@ -390,7 +392,12 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                                    data.description + "\nthe table's own error bound (relative, in pressure): " +
                                    approximately(data.max_rel_error[0]) + " (measured at " +
                                    std::to_string(data.check_points) + " exact solves between its nodes, times " +
-                                   approximately(data.safety_factor) + ")");
+                                   approximately(data.safety_factor) + ")",
+                               face_size);
+    if (format == CardFormat::calculix)
+      check_spring_cutoff(command, table.points, face_size, units,
+                          "use --overclosure-datum zero-pressure (and start the model with the surfaces touching), "
+                          "larger faces, or a higher PMIN");
     if (table.tolerance != tolerance)
       warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
                         " points: the card is within " + number(table.tolerance) + " of the curves instead (--max-points)");
@@ -466,7 +473,7 @@ int run_contact(const Options& options, const CLI::App& command) {
                        : "give one query: --separation, --load, --pressure, --real-area, --sweep or --export");
   CardFormat format = CardFormat::csv;
   CardUnits units = CardUnits::si;
-  OverclosureDatum datum = OverclosureDatum::mean_summit;
+  OverclosureDatum datum = OverclosureDatum::zero_pressure;
   SeparationDatum separation_datum = default_separation_datum;
   if (!options.datum.empty() && !parse_separation_datum(options.datum, separation_datum))
     usage("--datum: '" + quote_text(options.datum) + "' is not origin, mean-summit or mean-plane");
@@ -478,7 +485,7 @@ int run_contact(const Options& options, const CLI::App& command) {
     if (!options.units.empty() && !parse_card_units(options.units, units))
       usage("--units: '" + quote_text(options.units) + "' is not si or mm");
     datum = overclosure_datum_option(options.overclosure_datum);
-    check_face_size_option(options.face_size, format, "--export");
+    face_size_option(options.face_size, format, units, "--export");  // checked before any work
     if (options.pressure_range.empty()) throw CLI::RequiredError("--pressure-range (with --export)");
   } else if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance) ||
              options.max_points > 0 || !options.overclosure_datum.empty() || given(options.face_size)) {
@@ -618,14 +625,16 @@ void add_contact_command(CLI::App& app) {
                    "smallest that fits (a warning says which)")
       ->group("FE export");
   add_text(*command, "--overclosure-datum", o.overclosure_datum,
-           "with --export: where overclosure is zero: mean-summit (default; the flat at the mean summit height), "
-           "origin (the separation's origin: the Weibull origin, the Gaussian's mean), zero-pressure (the card's "
-           "first point: every overclosure >= 0) or mean-plane (give --mean-summit-height)")
+           "with --export: where overclosure is zero: zero-pressure (default; the card's first point: every "
+           "overclosure >= 0, start the model with the surfaces touching), mean-summit (the flat at the mean summit "
+           "height), origin (the separation's origin: the Weibull origin, the Gaussian's mean) or mean-plane (give "
+           "--mean-summit-height)")
       ->type_name("DATUM")->group("FE export");
   add_number(*command, "--face-size", o.face_size,
-             "with --export calculix: the slave faces' edge [m]; warns when the card reaches beyond node-to-surface "
-             "contact's spring cut-off, a clearance of 1e-3 times it")
-      ->type_name("M")->group("FE export");
+             "with --export calculix: the slave faces' edge, in the card's units (m; mm with --units mm); warns "
+             "(and the card's header says) when the card reaches beyond node-to-surface contact's spring cut-off, a "
+             "clearance of 1e-3 times it")
+      ->type_name("L")->group("FE export");
   command->footer(
       "Output: CSV, one row per query: separation_m (from the datum, --datum: by default the origin\n"
       "convention, from the Weibull origin or the Gaussian's mean; standard error names the datum),\n"
@@ -636,12 +645,13 @@ void add_contact_command(CLI::App& app) {
       "the real-area fraction exceeds 0.1: GW's asperities are independent Hertz contacts, which holds only\n"
       "while the contacts are sparse (above 1 the answer is impossible).\n"
       "FE export: overclosure is the interpenetration of the surfaces (a clearance is negative),\n"
-      "measured from the rough surface's mean summit height (--overclosure-datum); the card's header\n"
+      "measured from where the card's pressure reaches zero (--overclosure-datum; start the model with\n"
+      "the surfaces touching); the card's header\n"
       "states the units, the datum, the range and the measured interpolation error. CalculiX needs\n"
       "NODE TO SURFACE contact with this card (at most 200 points: the default --max-points; face-to-face,\n"
       "ccx 2.20: crashes above 41 points and gives zero force at clearances, silently), and makes a\n"
       "contact spring only within a clearance of 1e-3 sqrt(slave node area): --face-size L warns when\n"
-      "the card reaches beyond 1e-3 L.\n"
+      "the card reaches beyond 1e-3 L (L in the card's units).\n"
       "A measured surface: --table FILE of contact curves (asperity exact-contact --table) is the surface\n"
       "itself (no --dist ...): --separation (from the table's datum, the map's mean plane), --pressure,\n"
       "--sweep separation|pressure or --export; CSV separation_m, separation_from_mean_summit_m,\n"

@@ -250,29 +250,19 @@ std::string stage_card(OutputTransaction& outputs, const Options& o, const CLI::
         << "  the card interpolates linearly between them: give as many pressures as the analysis needs\n"
         << "first point: zero pressure at first contact (the flat at the map's highest point)";
   std::ostringstream out;
-  write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str());
+  write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str(),
+                                       face_size_option(o.face_size, card_format, card_units, "--card-format"));
   if (o.card != "-") outputs.stage(o.card, out.str());
   if (card.points.size() < card.given_points)
     warn(command, "the card keeps " + std::to_string(card.points.size()) + " of the curve's " +
                       std::to_string(card.given_points) + " points (--max-points " +
                       std::to_string(card.max_points) + "): linear interpolation between its rows is within " +
                       format_double(card.tolerance) + " of the points dropped (relative, in pressure)");
-  if (card_format == CardFormat::calculix) {
-    // the card's pressure at a clearance: its linear interpolation (zero before the first point)
-    const std::vector<PressureOverclosurePoint>& rows = card.points;
-    const auto pressure_at = [&rows](double clearance) {
-      const double h = -clearance;
-      if (!(h > rows.front().overclosure)) return 0.0;
-      for (std::size_t i = 1; i < rows.size(); ++i)
-        if (h <= rows[i].overclosure)
-          return rows[i - 1].pressure + (h - rows[i - 1].overclosure) / (rows[i].overclosure - rows[i - 1].overclosure) *
-                                            (rows[i].pressure - rows[i - 1].pressure);
-      return rows.back().pressure;
-    };
-    check_spring_cutoff(command, -rows.front().overclosure, o.face_size, pressure_at,
+  if (card_format == CardFormat::calculix)
+    check_spring_cutoff(command, card.points, face_size_option(o.face_size, card_format, card_units, "--card-format"),
+                        card_units,
                         "use --overclosure-datum zero-pressure (and start the model with the surfaces touching) "
                         "or larger faces");
-  }
   return out.str();
 }
 
@@ -312,9 +302,9 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   // a measured map has no fitted distribution: no origin (the Weibull origin, the Gaussian's mean)
   if (card_datum == OverclosureDatum::origin)
     usage("--overclosure-datum origin is a fitted distribution's (the Weibull origin, the Gaussian's mean): a "
-          "measured map's exact curve has none; give mean-summit (the map's mean summit height, the default), "
-          "mean-plane (the map's mean plane) or zero-pressure (first contact: the flat at the map's highest point)");
-  check_face_size_option(o.face_size, card_format, "--card-format");
+          "measured map's exact curve has none; give zero-pressure (first contact: the flat at the map's highest "
+          "point, the default), mean-summit (the map's mean summit height) or mean-plane (the map's mean plane)");
+  face_size_option(o.face_size, card_format, card_units, "--card-format");  // checked before any work
   const Steps steps = steps_from(o);
   if (o.table.empty() && given(o.table_safety)) usage("--table-safety goes with --table");
   if (!o.table.empty()) {
@@ -464,7 +454,7 @@ void add_exact_contact_command(CLI::App& app) {
       ->group(solver);
   command->add_flag("--no-stiffness", o.no_stiffness, "skip the incremental solve (stiffness 0)")->group(solver);
   add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(solver);
-  command->add_flag("--quiet", o.quiet, "no progress on standard error")->group(solver);
+  add_quiet_option(*command, &o.quiet)->group(solver);
   const char* output = "Output";
   command->add_flag("--json", o.json, "write JSON (schema asperity-exact-contact/1) instead of CSV")->group(output);
   add_text(*command, "--fields", o.fields,
@@ -472,8 +462,8 @@ void add_exact_contact_command(CLI::App& app) {
            "step-K-gap.pgm: white at the largest value, first row at the top)")
       ->type_name("DIR")->group(output);
   add_text(*command, "--card", o.card,
-           "write the solved curve as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card (overclosure from the "
-           "mean summit height: --overclosure-datum); - writes it to standard output, before the results")
+           "write the solved curve as a *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR card (overclosure from "
+           "first contact: --overclosure-datum); - writes it to standard output, before the results")
       ->type_name("FILE")->group(output);
   add_text(*command, "--table", o.table,
            "write the solved curves as a contact-curves table (HDF5, the tables' format): the pressures asked are "
@@ -495,15 +485,16 @@ void add_exact_contact_command(CLI::App& app) {
                    "between the rows kept is within the smallest tolerance that fits (a warning says which)")
       ->group(output);
   add_text(*command, "--overclosure-datum", o.overclosure_datum,
-           "where the card's overclosure is zero: mean-summit (default; the flat at the map's mean summit height), "
-           "mean-plane (the flat at the map's mean plane: overclosure -mean_gap_m) or zero-pressure (first contact: "
-           "the flat at the map's highest point; every overclosure >= 0). Not origin: a measured map has no "
+           "where the card's overclosure is zero: zero-pressure (default; first contact: the flat at the map's "
+           "highest point; every overclosure >= 0), mean-summit (the flat at the map's mean summit height) or "
+           "mean-plane (the flat at the map's mean plane: overclosure -mean_gap_m). Not origin: a measured map has no "
            "fitted distribution")
       ->type_name("DATUM")->group(output);
   add_number(*command, "--face-size", o.face_size,
-             "with a calculix card: the slave faces' edge [m]; warns when the card reaches beyond node-to-surface "
-             "contact's spring cut-off, a clearance of 1e-3 times it")
-      ->type_name("M")->group(output);
+             "with a calculix card: the slave faces' edge, in the card's units (m; mm with --units mm); warns (and "
+             "the card's header says) when the card reaches beyond node-to-surface contact's spring cut-off, a "
+             "clearance of 1e-3 times it")
+      ->type_name("L")->group(output);
   add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
   command->footer(
       "Output: CSV, one row per step: pressure_Pa (nominal: load over the map's area), load_N,\n"

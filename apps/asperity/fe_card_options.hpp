@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "asperity/pressure_overclosure.hpp"
 
@@ -15,17 +16,18 @@ namespace asperity::cli {
 // contact holds 200 points (calculix_points_max); no cap for Abaqus and CSV.
 std::size_t card_max_points(long long asked, CardFormat format);
 
-// --overclosure-datum's value (empty: mean-summit, the default); a usage error names the datums.
+// --overclosure-datum's value (empty: zero-pressure, the default: the card starts at the surfaces
+// touching, so that every mesh sees all of it); a usage error names the datums.
 OverclosureDatum overclosure_datum_option(const std::string& text);
 
-// --face-size: a positive length, with a CalculiX card (`card_option`: the option that writes one).
-void check_face_size_option(double face_size, CardFormat format, const std::string& card_option);
+// --face-size: a positive length in the card's units (m, or mm with --units mm), with a CalculiX
+// card (`card_option`: the option that writes one). Returns it in metres (NaN: not given).
+double face_size_option(double face_size, CardFormat format, CardUnits units, const std::string& card_option);
 
-// CalculiX's node-to-surface contact makes no spring beyond a clearance of 1e-3 sqrt(A): says
-// what of a card reaching `clearance` [m] never acts for faces of edge `face_size` (NaN: not
-// given, a note asks for it). pressure_at(clearance) is the card's pressure there [Pa];
-// `remedy` ends the warning ("use ...").
-void check_spring_cutoff(const CLI::App& command, double clearance, double face_size,
-                         const std::function<double(double)>& pressure_at, const std::string& remedy);
+// CalculiX's node-to-surface contact makes no spring beyond a clearance of 1e-3 sqrt(A): warns
+// what of the card (rows in SI) never acts for faces of edge `face_size` [m] (NaN: not given, a
+// note asks for it where the card has a clearance); `remedy` ends the warning ("use ...").
+void check_spring_cutoff(const CLI::App& command, const std::vector<PressureOverclosurePoint>& rows, double face_size,
+                         CardUnits units, const std::string& remedy);
 
 }  // namespace asperity::cli

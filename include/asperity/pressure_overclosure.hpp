@@ -3,11 +3,12 @@
 //
 // Overclosure, as both codes define it, is the interpenetration of the two contact surfaces
 // (positive when they overlap; a clearance is a negative overclosure). The flat's surface and a
-// datum of the rough surface are the FE surfaces: by default its mean summit height (GW's and
-// McCool's datum), overclosure h = -(separation of the flat from the mean summit height); or the
-// origin of the separation (docs/model.md section 2), or the card's own first point (zero
-// pressure), so that the whole card lies at overclosure >= 0. The nominal pressure at h is the
-// model's at that separation.
+// datum of the rough surface are the FE surfaces: in the interfaces by default the card's own first point (zero
+// pressure: the whole card lies at overclosure >= 0, so a mesh whose surfaces start touching sees
+// all of it, whatever its faces' size: CalculiX's contact-spring cut-off below); or its mean
+// summit height (GW's and McCool's datum), overclosure h = -(separation of the flat from the mean
+// summit height); or the origin of the separation (docs/model.md section 2). The nominal pressure
+// at h is the model's at that separation.
 //
 // Points are placed by bisection in h until linear interpolation between neighbours is within
 // `tolerance` (relative, in pressure) of the law at every checked point, from pressure_min to
@@ -17,6 +18,7 @@
 // last point Abaqus continues the last slope and CalculiX keeps the last pressure: give a
 // pressure_max above what the analysis reaches.
 #pragma once
+#include <cmath>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -28,8 +30,10 @@ namespace asperity {
 
 enum class CardFormat { calculix, abaqus, csv };
 enum class CardUnits { si, mm };  // overclosure in m and pressure in Pa, or mm and MPa (N/mm^2)
-// Where zero overclosure is: the flat at the mean summit height (default), at the separation's
-// origin (the Weibull origin, the Gaussian's mean), where the card's pressure reaches zero, or at
+// Where zero overclosure is: the flat at the mean summit height (these functions' default, kept
+// for existing callers), at the separation's origin (the Weibull origin, the Gaussian's mean),
+// where the card's pressure reaches zero (the interfaces' default: the command line, Python's
+// and the C API's *_card_options functions), or at
 // the mean plane (a model made with SeparationDatum::mean_plane: it knows the mean summit height
 // above the plane). The first, second and last are asperity/separation_datum.hpp's datums.
 enum class OverclosureDatum { mean_summit, origin, zero_pressure, mean_plane };
@@ -47,7 +51,7 @@ struct PressureOverclosureTable {
   std::size_t max_points = 0;                    // the cap on the rows asked
   double max_error = 0;                          // measured, relative in pressure
   long checked_points = 0;                       // where it was measured
-  OverclosureDatum datum = OverclosureDatum::mean_summit;
+  OverclosureDatum datum = OverclosureDatum::zero_pressure;
   double mean_summit_overclosure = 0;  // m: the overclosure (in this datum) of the flat at the mean summit height
   std::string origin;  // the separation's origin in words, where it is not the model's (contact curves')
 };
@@ -93,11 +97,24 @@ inline constexpr double calculix_spring_cutoff_per_root_area = 1e-3;
 // reads 41 (springforc_f2f.f: an 82-entry plconloc) and crashes beyond.
 inline constexpr std::size_t calculix_points_max = 200;
 
+// The card's length unit in metres: 1 (si) or 1e-3 (mm). Lengths given with a card (face_size)
+// are in its unit.
+double card_length_unit(CardUnits units);
+
+// For CalculiX: what of a card (rows in SI, ascending) never acts in node-to-surface contact with
+// slave faces of edge face_size [m] (interior nodes: cut-off 1e-3 face_size): empty when the
+// card's clearance is within the cut-off, else one sentence with the lengths and pressures in
+// the card's units (the clearance, the cut-off, and the card's pressure at the cut-off, below
+// which it never acts). face_size NaN: empty.
+std::string calculix_cutoff_warning(const std::vector<PressureOverclosurePoint>& points, double face_size,
+                                    CardUnits units);
+
 // The card (or CSV), `description` (one line per '\n') as its comment header. Throws
 // asperity::Error for a CalculiX card whose overclosures are closer than CalculiX keeps them
-// (1e-10 in the card's length unit).
+// (1e-10 in the card's length unit). face_size [m] (NaN: not given): a CalculiX card's header
+// states calculix_cutoff_warning for it, or that the cut-off covers the card.
 void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
-                                CardUnits units, const std::string& description);
+                                CardUnits units, const std::string& description, double face_size = NAN);
 
 // A curve given by its points (a tabulated law: the exact contact of a measured map, `asperity
 // exact-contact`), in the same card: ascending in overclosure, the pressure never falling
@@ -130,7 +147,8 @@ TabulatedCard tabulate_points(const std::vector<PressureOverclosurePoint>& point
                               OverclosureDatum datum, double mean_summit_overclosure);
 // Its card: the header states the datum as the law's card does, `notes`, and the points dropped.
 void write_tabulated_pressure_overclosure(std::ostream& out, const TabulatedCard& card, CardFormat format,
-                                          CardUnits units, const std::string& description, const std::string& notes);
+                                          CardUnits units, const std::string& description, const std::string& notes,
+                                          double face_size = NAN);
 
 bool parse_card_format(const std::string& name, CardFormat& format);
 bool parse_card_units(const std::string& name, CardUnits& units);

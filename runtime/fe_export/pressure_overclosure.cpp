@@ -328,13 +328,41 @@ std::string card_number(double value) {
   return std::string(text, result.ptr);
 }
 
+double card_length_unit(CardUnits units) { return units == CardUnits::mm ? 1e-3 : 1.0; }
+
+std::string calculix_cutoff_warning(const std::vector<PressureOverclosurePoint>& points, double face_size,
+                                    CardUnits units) {
+  if (!std::isfinite(face_size) || points.empty()) return std::string();
+  const double clearance = -points.front().overclosure, cutoff = calculix_spring_cutoff_per_root_area * face_size;
+  if (!(clearance > cutoff)) return std::string();
+  // the card's pressure at overclosure -cutoff: its linear interpolation, as CalculiX reads it
+  double at_cutoff = points.back().pressure;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if (-cutoff <= points[i].overclosure) {
+      const PressureOverclosurePoint &a = points[i - 1], &b = points[i];
+      at_cutoff = a.pressure + (-cutoff - a.overclosure) / (b.overclosure - a.overclosure) * (b.pressure - a.pressure);
+      break;
+    }
+  const double length = 1.0 / card_length_unit(units), pressure = units == CardUnits::mm ? 1e6 : 1.0;
+  const std::string length_unit = units == CardUnits::mm ? " mm" : " m";
+  std::ostringstream text;
+  text << "the card reaches a clearance of " << short_number(clearance * length) << length_unit
+       << ", but CalculiX's node-to-surface\n  contact makes a contact spring only within a clearance of 1e-3 sqrt(A)\n"
+          "  (A the slave node's area) = " << short_number(cutoff * length) << length_unit << " for faces of "
+       << short_number(face_size * length) << length_unit << " (less at the mesh's edges):\n  below "
+       << short_number(at_cutoff / pressure) << (units == CardUnits::mm ? " MPa" : " Pa")
+       << " the card never acts and contact starts at that pressure in one increment";
+  return text.str();
+}
+
 namespace {
 
 // The card (or CSV) of `points` (SI); `datum` (lines without the "** ") says where overclosure
 // is measured from; `notes` go after it, where each kind of table states where its points come
 // from.
 void write_card(std::ostream& out, const std::vector<PressureOverclosurePoint>& points, CardFormat format,
-                CardUnits units, const std::string& description, const std::string& datum, const std::string& notes) {
+                CardUnits units, const std::string& description, const std::string& datum, const std::string& notes,
+                double face_size) {
   const double length = units == CardUnits::mm ? 1e3 : 1.0;     // m -> mm
   const double pressure = units == CardUnits::mm ? 1e6 : 1.0;   // Pa -> MPa = N/mm^2 (divided: 1e8 Pa is 100 MPa)
   const char* length_unit = units == CardUnits::mm ? "mm" : "m";
@@ -374,6 +402,12 @@ void write_card(std::ostream& out, const std::vector<PressureOverclosurePoint>& 
           << ": beyond the cut-off its pressures never act\n";
     else
       out << "**   this card has no clearance (every overclosure >= 0): the cut-off never matters\n";
+    const std::string cutoff = calculix_cutoff_warning(points, face_size, units);
+    if (!cutoff.empty()) comment("  WARNING: " + cutoff);
+    else if (clearance > 0 && std::isfinite(face_size))
+      out << "**   for faces of edge " << card_number(face_size * length) << " " << length_unit << " (cut-off "
+          << card_number(calculix_spring_cutoff_per_root_area * face_size * length) << " " << length_unit
+          << " at interior nodes) the whole card acts\n";
     out << "** beyond the last point CalculiX keeps the last pressure\n";
   } else {
     out << "** beyond the last point Abaqus continues the last slope\n";
@@ -415,7 +449,7 @@ std::string datum_text(OverclosureDatum datum_kind, double mean_summit_overclosu
                   card_number(mean_summit_overclosure * length) + " " + length_unit + ")"
             : std::string();
   if (datum_kind == OverclosureDatum::mean_summit)
-    datum << mean_summit_datum << " (--overclosure-datum mean-summit, the default)";
+    datum << mean_summit_datum << " (--overclosure-datum mean-summit)";
   else if (datum_kind == OverclosureDatum::mean_plane) {
     datum << "  from the mean plane of the surface heights to the flat (--overclosure-datum mean-plane";
     if (known)
@@ -433,8 +467,8 @@ std::string datum_text(OverclosureDatum datum_kind, double mean_summit_overclosu
           << "  highest on the bounded side; the Gaussian's mean) to the flat (--overclosure-datum origin)\n"
           << mean_at;
   else
-    datum << "  from where the card's pressure reaches zero, its first point (--overclosure-datum zero-pressure):\n"
-          << "  start the FE model with the surfaces touching\n"
+    datum << "  from where the card's pressure reaches zero, its first point (--overclosure-datum zero-pressure,\n"
+          << "  the default): start the FE model with the surfaces touching\n"
           << mean_at;
   return datum.str();
 }
@@ -442,7 +476,7 @@ std::string datum_text(OverclosureDatum datum_kind, double mean_summit_overclosu
 }  // namespace
 
 void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTable& table, CardFormat format,
-                                CardUnits units, const std::string& description) {
+                                CardUnits units, const std::string& description, double face_size) {
   const double pressure = units == CardUnits::mm ? 1e6 : 1.0;
   const char* pressure_unit = units == CardUnits::mm ? "MPa" : "Pa";
   const std::string datum = datum_text(table.datum, table.mean_summit_overclosure, units, table.origin);
@@ -455,13 +489,13 @@ void write_pressure_overclosure(std::ostream& out, const PressureOverclosureTabl
     notes << "  (tolerance " << table.asked_tolerance << " asked, loosened to fit at most " << table.max_points
           << " points)\n";
   notes << "first point: zero pressure where the law's tangent at the lowest pressure reaches zero\n";
-  write_card(out, table.points, format, units, description, datum, notes.str());
+  write_card(out, table.points, format, units, description, datum, notes.str(), face_size);
 }
 
 void write_tabulated_pressure_overclosure(std::ostream& out, const std::vector<PressureOverclosurePoint>& points,
                                           CardFormat format, CardUnits units, const std::string& description,
                                           const std::string& notes) {
-  write_card(out, rounded_curve(points), format, units, description, mean_summit_datum, notes);
+  write_card(out, rounded_curve(points), format, units, description, mean_summit_datum, notes, NAN);
 }
 
 namespace {
@@ -534,7 +568,8 @@ TabulatedCard tabulate_points(const std::vector<PressureOverclosurePoint>& point
 }
 
 void write_tabulated_pressure_overclosure(std::ostream& out, const TabulatedCard& card, CardFormat format,
-                                          CardUnits units, const std::string& description, const std::string& notes) {
+                                          CardUnits units, const std::string& description, const std::string& notes,
+                                          double face_size) {
   std::ostringstream all_notes;
   all_notes << notes;
   if (card.points.size() < card.given_points)
@@ -543,7 +578,7 @@ void write_tabulated_pressure_overclosure(std::ostream& out, const TabulatedCard
               << "): linear interpolation between\n  the rows is within " << card.tolerance
               << " (relative, in pressure) of the points dropped: measured " << card.max_error << " at most";
   write_card(out, rounded_curve(card.points), format, units, description,
-             datum_text(card.datum, card.mean_summit_overclosure, units), all_notes.str());
+             datum_text(card.datum, card.mean_summit_overclosure, units), all_notes.str(), face_size);
 }
 
 // The separation datums' names are separation_datum.hpp's; zero-pressure is the card's own.
