@@ -1,11 +1,37 @@
 """Run by pip_install.sh with the interpreter a `pip install .` put asperity under, from a folder
 outside the source and build trees: the package imports from PLACE, carries its own default
-table and compiled module, and answers against a closed form. usage: check_pip_install.py PLACE"""
+table and compiled module, and answers against a closed form. usage: check_pip_install.py PLACE
+
+`check_pip_install.py --prerequisites BACKEND_DIR`: the build backend's lines for what is missing
+(python/packaging/asperity_build.py's missing()), one plain line each, naming the interpreter."""
 import math
-import os
 import sys
 import warnings
 from pathlib import Path
+
+if sys.argv[1] == "--prerequisites":
+    sys.path.insert(0, sys.argv[2])
+    sys.dont_write_bytecode = True   # nothing left in the source tree
+    import asperity_build  # noqa: E402
+
+    python = "/opt/python/bin/python3"
+    everything = asperity_build.missing({}, python, (3, 8), None, False, pybind11_dirs=())
+    expected = [f"asperity needs Python 3.9 or later, not 3.8 ({python})",
+                f"asperity needs numpy for {python}: install python3-numpy (Debian) or `{python} -m pip install numpy`",
+                f"asperity needs pybind11 to build for {python}: install pybind11-dev (Debian) "
+                f"or `{python} -m pip install pybind11`",
+                f"asperity needs Python's headers (Python.h) to build for {python}: install python3-dev (Debian)",
+                "asperity needs CMake to build: install cmake (Debian; scripts/setup.sh installs every C++ dependency)"]
+    assert everything == expected, everything
+    found = {"numpy": "1.24", "pybind11": "/x/share/cmake/pybind11"}
+    assert asperity_build.missing(found, python, (3, 9), "/usr/bin/cmake", True, pybind11_dirs=()) == []
+    # pybind11's CMake package without the Python package (Debian's pybind11-dev), or named to CMake
+    assert asperity_build.missing({"numpy": "1.24"}, python, (3, 13), "cmake", True,
+                                  pybind11_dirs=(sys.argv[2],), cmake_args="") != []
+    assert asperity_build.missing({"numpy": "1.24"}, python, (3, 13), "cmake", True,
+                                  pybind11_dirs=(), cmake_args="-Dpybind11_DIR=/x") == []
+    print("the backend names what is missing:", *everything, sep="\n  ")
+    sys.exit(0)
 
 place = Path(sys.argv[1]).resolve()
 import asperity  # noqa: E402
