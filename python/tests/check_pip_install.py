@@ -50,7 +50,9 @@ curve = table.curve("weibull", "tail", 2.0)
 for s in (0.25, 0.5, 1.0, 2.0):
     value = curve.value("count", s)
     assert abs(value - math.exp(-s * s)) <= 1e-12 * math.exp(-s * s), (s, value)
-model = asperity.ContactModel(table, asperity.RoughSurface("gaussian", shape=None, rms=5e-7))
+model = asperity.ContactModel(table, asperity.RoughSurface(
+    "gaussian", shape=None, rms=5e-7, summit_radius=1e-4, summit_density=1e10, nominal_area=1e-4,
+    contact_modulus=1.15e11))
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
     model.at_real_area(0.5 * model.surface.nominal_area)
