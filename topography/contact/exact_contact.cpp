@@ -277,10 +277,8 @@ std::string smaller_map_advice(ContactBoundary boundary) {
                                               : "");
 }
 
-}  // namespace
-
-ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& options) try : options_(options) {
-  map.validate();
+// The constructor's checks of its options, in their order: the first that fails is thrown.
+void check_contact_options(const ExactContactOptions& options) {
   const double modulus = options.contact_modulus;
   if (!(std::isfinite(modulus) && modulus > 0)) throw Error("the contact modulus must be finite and positive");
   if (!(options.tolerance >= min_contact_tolerance && options.tolerance <= max_contact_tolerance))
@@ -289,6 +287,112 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   if (options.max_iterations < 1) throw Error("max_iterations must be at least 1");
   if (options.love_aliases < 1 || options.love_aliases > 1000) throw Error("love_aliases must be from 1 to 1000");
   if (options.threads < 0 || options.threads > 1024) throw Error("threads must be from 0 to 1024");
+}
+
+// The map's valid heights: how many, their mean, their rms about it and the highest above it.
+struct HeightFigures {
+  std::size_t valid = 0;
+  double mean = 0, rms = 0, max_height = 0;
+};
+
+// Throws for a map whose valid heights are all equal (no contact problem).
+HeightFigures height_figures(const HeightMap& map) {
+  HeightFigures figures;
+  double sum = 0;
+  for (double h : map.heights)
+    if (!std::isnan(h)) {
+      sum += h;
+      ++figures.valid;
+    }
+  const double mean = sum / static_cast<double>(figures.valid);
+  double squares = 0, highest = -std::numeric_limits<double>::infinity(), lowest = -highest;
+  for (double h : map.heights)
+    if (!std::isnan(h)) {
+      squares += (h - mean) * (h - mean);
+      highest = std::max(highest, h);
+      lowest = std::min(lowest, h);
+    }
+  figures.mean = mean;
+  figures.rms = std::sqrt(squares / static_cast<double>(figures.valid));
+  figures.max_height = highest - mean;
+  if (!(highest > lowest && figures.rms > 0)) throw Error(map.source + ": the heights are all equal: a flat has no contact problem to solve");
+  return figures;
+}
+
+// The periodic Love kernel at one wavenumber, times E*/2: the sum over the aliases (m, n) of
+// sinc * sinc / |q + Q| from the aliases' x factors and squared wavenumbers of its column (xf,
+// x2) and those in y of its row, with Richardson's step on M and M/2 (see make_spectral_kernel).
+double love_alias_sum(const double* xf, const double* x2, const std::vector<double>& y_factor,
+                      const std::vector<double>& y_squared, int aliases) {
+  const int inner = aliases / 2, width = 2 * aliases + 1;
+  double outer_sum = 0, inner_sum = 0;
+  for (int n = -aliases; n <= aliases; ++n) {
+    const double yf = y_factor[n + aliases], y2 = y_squared[n + aliases];
+    if (yf == 0) continue;
+    double row = 0, inner_row = 0;
+    for (int m = 0; m < width; ++m) {
+      const double term = xf[m] / std::sqrt(x2[m] + y2);
+      row += term;
+      if (std::abs(m - aliases) <= inner) inner_row += term;
+    }
+    outer_sum += yf * row;
+    if (std::abs(n) <= inner) inner_sum += yf * inner_row;
+  }
+  // error ~ c / M^2: S = S_M + (S_M - S_{M/2}) / 3 when M/2 is exactly half
+  return inner * 2 == aliases && inner > 0 ? outer_sum + (outer_sum - inner_sum) / 3 : outer_sum;
+}
+
+// The map coarsened 2 x 2 for the coarse start: each coarse point the mean of the valid points of
+// its block (NaN if none); an odd last row or column a block of its own.
+HeightMap coarsened_2x2(const HeightMap& map) {
+  const std::size_t nx = map.nx, ny = map.ny;
+  HeightMap coarse;
+  coarse.nx = (nx + 1) / 2;
+  coarse.ny = (ny + 1) / 2;
+  coarse.dx = 2 * map.dx;
+  coarse.dy = 2 * map.dy;
+  coarse.source = map.source;
+  coarse.format = map.format;
+  coarse.heights.assign(coarse.nx * coarse.ny, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t j = 0; j < coarse.ny; ++j)
+    for (std::size_t i = 0; i < coarse.nx; ++i) {
+      double block_sum = 0;
+      int count = 0;
+      for (std::size_t b = 2 * j; b < std::min(2 * j + 2, ny); ++b)
+        for (std::size_t a = 2 * i; a < std::min(2 * i + 2, nx); ++a) {
+          const double h = map.heights[b * nx + a];
+          if (std::isnan(h)) continue;
+          block_sum += h;
+          ++count;
+        }
+      if (count > 0) coarse.heights[j * coarse.nx + i] = block_sum / count;
+    }
+  return coarse;
+}
+
+// The coarse start's options: the same less the stiffness, to a looser tolerance, its progress
+// reported as the coarse start's.
+ExactContactOptions coarse_start_options(const ExactContactOptions& options) {
+  ExactContactOptions coarse_options = options;
+  coarse_options.tolerance = std::max(options.tolerance, coarse_start_tolerance);
+  coarse_options.stiffness = false;
+  if (options.progress)
+    coarse_options.progress = [progress = options.progress](const ContactProgress& reported) {
+      ContactProgress relabelled = reported;
+      if (std::strcmp(reported.stage, "pressure") == 0) relabelled.stage = "coarse pressure";
+      else if (std::strcmp(reported.stage, "gap") == 0) relabelled.stage = "coarse gap";
+      progress(relabelled);
+    };
+  coarse_options.max_memory = 0;  // counted in this map's estimate
+  return coarse_options;
+}
+
+}  // namespace
+
+ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& options) try : options_(options) {
+  map.validate();
+  check_contact_options(options);
+  const double modulus = options.contact_modulus;
   threads_ = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   nx_ = map.nx;
   ny_ = map.ny;
@@ -309,32 +413,50 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
                 " allowed (--max-memory, max_memory): " + smaller_map_advice(options.boundary) + ", or allow more");
   nominal_area_ = map.width() * map.length();
 
-  double sum = 0;
-  for (double h : map.heights)
-    if (!std::isnan(h)) {
-      sum += h;
-      ++valid_points_;
-    }
-  const double mean = sum / static_cast<double>(valid_points_);
-  double squares = 0, highest = -std::numeric_limits<double>::infinity(), lowest = -highest;
-  for (double h : map.heights)
-    if (!std::isnan(h)) {
-      squares += (h - mean) * (h - mean);
-      highest = std::max(highest, h);
-      lowest = std::min(lowest, h);
-    }
-  rms_ = std::sqrt(squares / static_cast<double>(valid_points_));
-  max_height_ = highest - mean;
-  if (!(highest > lowest && rms_ > 0)) throw Error(map.source + ": the heights are all equal: a flat has no contact problem to solve");
+  const HeightFigures heights = height_figures(map);
+  valid_points_ = heights.valid;
+  rms_ = heights.rms;
+  max_height_ = heights.max_height;
 
+  // (centred and found live on to the end, as the memory estimate counts them)
   HeightMap centred = map;
-  for (double& h : centred.heights) h -= mean;
+  for (double& h : centred.heights) h -= heights.mean;
   const Summits found = find_summits(centred);
   summits_ = found.list.size();
   double summit_sum = 0;
   for (const Summit& s : found.list) summit_sum += s.height;
   mean_summit_ = summits_ > 0 ? summit_sum / static_cast<double>(summits_) : std::numeric_limits<double>::quiet_NaN();
 
+  allocate_solve_grid(map, heights.mean);
+  if (options.kernel == ContactKernel::love && options.boundary == ContactBoundary::padded)
+    make_padded_love_kernel(modulus);
+  else
+    make_spectral_kernel(modulus);
+  make_preconditioner_stencil();
+
+  // The coarse start: the map coarsened 2 x 2 (each coarse point the mean of the valid points of
+  // its block; an odd last row or column a block of its own), solved with the same options less
+  // the stiffness and to a looser tolerance, itself started from a coarser map.
+  if (options_.coarse_start && nx_ >= 2 * coarse_start_points && ny_ >= 2 * coarse_start_points) {
+    const HeightMap coarse = coarsened_2x2(map);
+    const ExactContactOptions coarse_options = coarse_start_options(options);
+    try {
+      coarse_ = std::make_unique<ExactContact>(coarse, coarse_options);
+    } catch (const Error&) {
+      // a coarse map the solver refuses (its heights all equal, its pixels too large): no coarse start
+    }
+  }
+  find_pressure_range();
+} catch (const std::bad_alloc&) {
+  // the members are gone here: the figures from the arguments
+  throw Error("out of memory setting up the exact contact of " + map_in_words(map.source, map.nx, map.ny, options.boundary) +
+              ": it needs about " + memory_text(exact_contact_memory(map.nx, map.ny, options)) +
+              " and the system gave less: " + smaller_map_advice(options.boundary));
+}
+
+// The solve grid's arrays: the map's heights about their mean (`mean`) and where it may carry
+// pressure, the solver's work arrays (zero), the spectrum and the kernel (to be made).
+void ExactContact::allocate_solve_grid(const HeightMap& map, double mean) {
   const std::size_t points = sx_ * sy_, half = sx_ / 2 + 1;
   active_.assign(points, 0);
   heights_.assign(points, 0.0);
@@ -359,175 +481,116 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   loop_threads_ = nx_ * ny_ >= (std::size_t{1} << 16) ? threads_ : 1;
   spectrum_.assign(sy_ * half, {0.0, 0.0});
   kernel_.assign(sy_ * half, 0.0);
+}
 
-  if (options.kernel == ContactKernel::love && options.boundary == ContactBoundary::padded) {
-    // Real-space coefficients for every offset within the map, wrapped onto the doubled grid:
-    // the circular convolution is then the linear one (no images).
-    std::vector<double> coefficients(points);
-    const double a = dx_ / 2, b = dy_ / 2;
-    for (std::size_t j = 0; j < sy_; ++j) {
-      const double y = static_cast<double>(j <= ny_ ? j : sy_ - j) * dy_;
-      for (std::size_t i = 0; i < sx_; ++i) {
-        const double x = static_cast<double>(i <= nx_ ? i : sx_ - i) * dx_;
-        coefficients[j * sx_ + i] = love_coefficient(x, y, a, b) / (pi * modulus);
-      }
-    }
-    self_compliance_ = coefficients[0];
-    detail::forward_2d(coefficients.data(), spectrum_.data(), sy_, sx_);
-    for (std::size_t k = 0; k < kernel_.size(); ++k) kernel_[k] = spectrum_[k].real();
-  } else {
-    const bool love = options.kernel == ContactKernel::love;
-    const int aliases = love ? options.love_aliases : 0;
-    const double alias_x = 2 * pi / dx_, alias_y = 2 * pi / dy_;
-    // The periodic Love kernel: the displacement at the pixel centres of the pixel-constant
-    // pressure is the sum over aliases q + Q of 2/(E*|q + Q|) sinc(qx dx/2) sinc(qy dy/2); the
-    // terms of m and -m nearly cancel (the sines alternate), so the sum over the square
-    // |m|, |n| <= M converges like 1/M^2, and Richardson's step on M and M/2 removes that term.
-    const int inner = aliases / 2, width = 2 * aliases + 1;
-    // per column: the aliases' x sinc factors and squared wavenumbers
-    std::vector<double> x_factor(half * width), x_squared(half * width);
-    for (std::size_t kx = 0; kx < half; ++kx)
-      for (int m = -aliases; m <= aliases; ++m) {
-        const double q = wavenumber(kx, sx_, dx_) + m * alias_x;
-        x_factor[kx * width + m + aliases] = sinc(q * dx_ / 2);
-        x_squared[kx * width + m + aliases] = q * q;
-      }
-    // rows ky and sy - ky have the same kernel (it is even in qy): the first half, mirrored
-    const std::size_t rows = sy_ / 2 + 1;
-    in_parallel(threads_, rows, [&](std::size_t first, std::size_t count) {
-      std::vector<double> y_factor(width), y_squared(width);
-      for (std::size_t ky = first; ky < first + count; ++ky) {
-        const double qy = wavenumber(ky, sy_, dy_);
-        for (int n = -aliases; n <= aliases; ++n) {
-          const double q = qy + n * alias_y;
-          y_factor[n + aliases] = sinc(q * dy_ / 2);
-          y_squared[n + aliases] = q * q;
-        }
-        for (std::size_t kx = 0; kx < half; ++kx) {
-          const double qx = wavenumber(kx, sx_, dx_);
-          double value;
-          if (!love) {
-            const double q = std::hypot(qx, qy);
-            value = q > 0 ? 2 / (modulus * q) : 0.0;
-          } else if (kx == 0 && ky == 0) {
-            value = 0;  // the mean: every alias's sinc vanishes, and the mean pressure moves no gap
-          } else {
-            const double* xf = &x_factor[kx * width];
-            const double* x2 = &x_squared[kx * width];
-            double outer_sum = 0, inner_sum = 0;
-            for (int n = -aliases; n <= aliases; ++n) {
-              const double yf = y_factor[n + aliases], y2 = y_squared[n + aliases];
-              if (yf == 0) continue;
-              double row = 0, inner_row = 0;
-              for (int m = 0; m < width; ++m) {
-                const double term = xf[m] / std::sqrt(x2[m] + y2);
-                row += term;
-                if (std::abs(m - aliases) <= inner) inner_row += term;
-              }
-              outer_sum += yf * row;
-              if (std::abs(n) <= inner) inner_sum += yf * inner_row;
-            }
-            // error ~ c / M^2: S = S_M + (S_M - S_{M/2}) / 3 when M/2 is exactly half
-            const double extrapolated =
-                inner * 2 == aliases && inner > 0 ? outer_sum + (outer_sum - inner_sum) / 3 : outer_sum;
-            value = 2 / modulus * extrapolated;
-          }
-          kernel_[ky * half + kx] = value;
-          if (ky > 0 && sy_ - ky != ky) kernel_[(sy_ - ky) * half + kx] = value;
-        }
-      }
-    });
-    // the self-compliance: the real-space kernel at zero offset, the mean of the full spectrum
-    double total = 0;
-    for (std::size_t ky = 0; ky < sy_; ++ky)
-      for (std::size_t kx = 0; kx < half; ++kx) {
-        const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
-        total += (single ? 1.0 : 2.0) * kernel_[ky * half + kx];
-      }
-    self_compliance_ = total / static_cast<double>(points);
-  }
-
-  // The preconditioner's stencil: the inverse Green's function K = 1/G (the elastic stiffness,
-  // E* |q| / 2 for the Fourier kernel) in real space at the offsets (0, 0), (1, 0), (0, 1),
-  // (1, 1), from its spectrum (even in q; the mean, which G leaves unmoved when periodic, taken
-  // as 0).
-  {
-    std::vector<double> cos_x(half), cos_y(sy_);
-    for (std::size_t kx = 0; kx < half; ++kx) cos_x[kx] = std::cos(2 * pi * static_cast<double>(kx) / static_cast<double>(sx_));
-    for (std::size_t ky = 0; ky < sy_; ++ky) cos_y[ky] = std::cos(2 * pi * static_cast<double>(ky) / static_cast<double>(sy_));
-    double centre = 0, along_x = 0, along_y = 0, diagonal = 0;
-    for (std::size_t ky = 0; ky < sy_; ++ky)
-      for (std::size_t kx = 0; kx < half; ++kx) {
-        const double g = kernel_[ky * half + kx];
-        if (!(g > 0)) continue;
-        const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
-        const double k = (single ? 1.0 : 2.0) / g;
-        centre += k;
-        along_x += k * cos_x[kx];
-        along_y += k * cos_y[ky];
-        diagonal += k * cos_x[kx] * cos_y[ky];
-      }
-    stencil_centre_ = centre / static_cast<double>(points);
-    stencil_x_ = along_x / static_cast<double>(points);
-    stencil_y_ = along_y / static_cast<double>(points);
-    stencil_diagonal_ = diagonal / static_cast<double>(points);
-    // positive definite on every contact set if its symbol is positive, which (multilinear in
-    // cos qx dx and cos qy dy) it is if at the four corners of the Brillouin zone
-    stencil_ = std::isfinite(stencil_centre_) && std::isfinite(stencil_x_) && std::isfinite(stencil_y_) &&
-               std::isfinite(stencil_diagonal_);
-    for (double a : {-1.0, 1.0})
-      for (double b : {-1.0, 1.0})
-        if (!(stencil_centre_ + 2 * a * stencil_x_ + 2 * b * stencil_y_ + 4 * a * b * stencil_diagonal_ > 0)) stencil_ = false;
-  }
-
-  // The coarse start: the map coarsened 2 x 2 (each coarse point the mean of the valid points of
-  // its block; an odd last row or column a block of its own), solved with the same options less
-  // the stiffness and to a looser tolerance, itself started from a coarser map.
-  if (options_.coarse_start && nx_ >= 2 * coarse_start_points && ny_ >= 2 * coarse_start_points) {
-    HeightMap coarse;
-    coarse.nx = (nx_ + 1) / 2;
-    coarse.ny = (ny_ + 1) / 2;
-    coarse.dx = 2 * dx_;
-    coarse.dy = 2 * dy_;
-    coarse.source = map.source;
-    coarse.format = map.format;
-    coarse.heights.assign(coarse.nx * coarse.ny, std::numeric_limits<double>::quiet_NaN());
-    for (std::size_t j = 0; j < coarse.ny; ++j)
-      for (std::size_t i = 0; i < coarse.nx; ++i) {
-        double block_sum = 0;
-        int count = 0;
-        for (std::size_t b = 2 * j; b < std::min(2 * j + 2, ny_); ++b)
-          for (std::size_t a = 2 * i; a < std::min(2 * i + 2, nx_); ++a) {
-            const double h = map.heights[b * nx_ + a];
-            if (std::isnan(h)) continue;
-            block_sum += h;
-            ++count;
-          }
-        if (count > 0) coarse.heights[j * coarse.nx + i] = block_sum / count;
-      }
-    ExactContactOptions coarse_options = options;
-    coarse_options.tolerance = std::max(options.tolerance, coarse_start_tolerance);
-    coarse_options.stiffness = false;
-    if (options.progress)
-      coarse_options.progress = [progress = options.progress](const ContactProgress& reported) {
-        ContactProgress relabelled = reported;
-        if (std::strcmp(reported.stage, "pressure") == 0) relabelled.stage = "coarse pressure";
-        else if (std::strcmp(reported.stage, "gap") == 0) relabelled.stage = "coarse gap";
-        progress(relabelled);
-      };
-    coarse_options.max_memory = 0;  // counted in this map's estimate
-    try {
-      coarse_ = std::make_unique<ExactContact>(coarse, coarse_options);
-    } catch (const Error&) {
-      // a coarse map the solver refuses (its heights all equal, its pixels too large): no coarse start
+// The padded Love kernel_ and self_compliance_.
+void ExactContact::make_padded_love_kernel(double modulus) {
+  const std::size_t points = sx_ * sy_;
+  // Real-space coefficients for every offset within the map, wrapped onto the doubled grid:
+  // the circular convolution is then the linear one (no images).
+  std::vector<double> coefficients(points);
+  const double a = dx_ / 2, b = dy_ / 2;
+  for (std::size_t j = 0; j < sy_; ++j) {
+    const double y = static_cast<double>(j <= ny_ ? j : sy_ - j) * dy_;
+    for (std::size_t i = 0; i < sx_; ++i) {
+      const double x = static_cast<double>(i <= nx_ ? i : sx_ - i) * dx_;
+      coefficients[j * sx_ + i] = love_coefficient(x, y, a, b) / (pi * modulus);
     }
   }
-  find_pressure_range();
-} catch (const std::bad_alloc&) {
-  // the members are gone here: the figures from the arguments
-  throw Error("out of memory setting up the exact contact of " + map_in_words(map.source, map.nx, map.ny, options.boundary) +
-              ": it needs about " + memory_text(exact_contact_memory(map.nx, map.ny, options)) +
-              " and the system gave less: " + smaller_map_advice(options.boundary));
+  self_compliance_ = coefficients[0];
+  detail::forward_2d(coefficients.data(), spectrum_.data(), sy_, sx_);
+  for (std::size_t k = 0; k < kernel_.size(); ++k) kernel_[k] = spectrum_[k].real();
+}
+
+// kernel_ and self_compliance_ made in Fourier space: the Fourier kernel, or the periodic Love
+// kernel.
+void ExactContact::make_spectral_kernel(double modulus) {
+  const std::size_t points = sx_ * sy_, half = sx_ / 2 + 1;
+  const bool love = options_.kernel == ContactKernel::love;
+  const int aliases = love ? options_.love_aliases : 0;
+  const double alias_x = 2 * pi / dx_, alias_y = 2 * pi / dy_;
+  // The periodic Love kernel: the displacement at the pixel centres of the pixel-constant
+  // pressure is the sum over aliases q + Q of 2/(E*|q + Q|) sinc(qx dx/2) sinc(qy dy/2); the
+  // terms of m and -m nearly cancel (the sines alternate), so the sum over the square
+  // |m|, |n| <= M converges like 1/M^2, and Richardson's step on M and M/2 removes that term.
+  const int width = 2 * aliases + 1;
+  // per column: the aliases' x sinc factors and squared wavenumbers
+  std::vector<double> x_factor(half * width), x_squared(half * width);
+  for (std::size_t kx = 0; kx < half; ++kx)
+    for (int m = -aliases; m <= aliases; ++m) {
+      const double q = wavenumber(kx, sx_, dx_) + m * alias_x;
+      x_factor[kx * width + m + aliases] = sinc(q * dx_ / 2);
+      x_squared[kx * width + m + aliases] = q * q;
+    }
+  // rows ky and sy - ky have the same kernel (it is even in qy): the first half, mirrored
+  const std::size_t rows = sy_ / 2 + 1;
+  in_parallel(threads_, rows, [&](std::size_t first, std::size_t count) {
+    std::vector<double> y_factor(width), y_squared(width);
+    for (std::size_t ky = first; ky < first + count; ++ky) {
+      const double qy = wavenumber(ky, sy_, dy_);
+      for (int n = -aliases; n <= aliases; ++n) {
+        const double q = qy + n * alias_y;
+        y_factor[n + aliases] = sinc(q * dy_ / 2);
+        y_squared[n + aliases] = q * q;
+      }
+      for (std::size_t kx = 0; kx < half; ++kx) {
+        const double qx = wavenumber(kx, sx_, dx_);
+        double value;
+        if (!love) {
+          const double q = std::hypot(qx, qy);
+          value = q > 0 ? 2 / (modulus * q) : 0.0;
+        } else if (kx == 0 && ky == 0) {
+          value = 0;  // the mean: every alias's sinc vanishes, and the mean pressure moves no gap
+        } else {
+          value = 2 / modulus * love_alias_sum(&x_factor[kx * width], &x_squared[kx * width], y_factor, y_squared, aliases);
+        }
+        kernel_[ky * half + kx] = value;
+        if (ky > 0 && sy_ - ky != ky) kernel_[(sy_ - ky) * half + kx] = value;
+      }
+    }
+  });
+  // the self-compliance: the real-space kernel at zero offset, the mean of the full spectrum
+  double total = 0;
+  for (std::size_t ky = 0; ky < sy_; ++ky)
+    for (std::size_t kx = 0; kx < half; ++kx) {
+      const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
+      total += (single ? 1.0 : 2.0) * kernel_[ky * half + kx];
+    }
+  self_compliance_ = total / static_cast<double>(points);
+}
+
+// The preconditioner's stencil: the inverse Green's function K = 1/G (the elastic stiffness,
+// E* |q| / 2 for the Fourier kernel) in real space at the offsets (0, 0), (1, 0), (0, 1),
+// (1, 1), from its spectrum (even in q; the mean, which G leaves unmoved when periodic, taken
+// as 0).
+void ExactContact::make_preconditioner_stencil() {
+  const std::size_t points = sx_ * sy_, half = sx_ / 2 + 1;
+  std::vector<double> cos_x(half), cos_y(sy_);
+  for (std::size_t kx = 0; kx < half; ++kx) cos_x[kx] = std::cos(2 * pi * static_cast<double>(kx) / static_cast<double>(sx_));
+  for (std::size_t ky = 0; ky < sy_; ++ky) cos_y[ky] = std::cos(2 * pi * static_cast<double>(ky) / static_cast<double>(sy_));
+  double centre = 0, along_x = 0, along_y = 0, diagonal = 0;
+  for (std::size_t ky = 0; ky < sy_; ++ky)
+    for (std::size_t kx = 0; kx < half; ++kx) {
+      const double g = kernel_[ky * half + kx];
+      if (!(g > 0)) continue;
+      const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
+      const double k = (single ? 1.0 : 2.0) / g;
+      centre += k;
+      along_x += k * cos_x[kx];
+      along_y += k * cos_y[ky];
+      diagonal += k * cos_x[kx] * cos_y[ky];
+    }
+  stencil_centre_ = centre / static_cast<double>(points);
+  stencil_x_ = along_x / static_cast<double>(points);
+  stencil_y_ = along_y / static_cast<double>(points);
+  stencil_diagonal_ = diagonal / static_cast<double>(points);
+  // positive definite on every contact set if its symbol is positive, which (multilinear in
+  // cos qx dx and cos qy dy) it is if at the four corners of the Brillouin zone
+  stencil_ = std::isfinite(stencil_centre_) && std::isfinite(stencil_x_) && std::isfinite(stencil_y_) &&
+             std::isfinite(stencil_diagonal_);
+  for (double a : {-1.0, 1.0})
+    for (double b : {-1.0, 1.0})
+      if (!(stencil_centre_ + 2 * a * stencil_x_ + 2 * b * stencil_y_ + 4 * a * b * stencil_diagonal_ > 0)) stencil_ = false;
 }
 
 void ExactContact::out_of_memory(const std::string& doing) const {
@@ -627,9 +690,7 @@ void ExactContact::report(const char* stage, int iteration, double residual, std
 ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   constexpr double max_growth = 0.01;
   constexpr int stall_iterations = 200;
-  const std::size_t points = sx_ * sy_;
   std::vector<double>& p = pressure_;
-  std::vector<double>& u = displacement_;
   std::vector<double>& t = direction_;
   std::vector<double>& g = work_;
   std::vector<double>& w = increment_;
@@ -638,25 +699,7 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   const double total = by_pressure ? target * map_points : 0.0;
   const double tolerance = options_.tolerance;
 
-  auto seed = [&] {
-    if (by_pressure) {
-      double sum = 0;
-      for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
-      if (sum > 0) {
-        for (double& value : p) value *= total / sum;
-      } else {
-        for (std::size_t k = 0; k < points; ++k)
-          p[k] = active_[k] ? total / static_cast<double>(valid_points_) : 0.0;
-      }
-    } else {
-      double sum = 0;
-      for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
-      if (!(sum > 0))
-        for (std::size_t k = 0; k < points; ++k)
-          p[k] = active_[k] ? std::max(heights_[k] - target, 0.0) / self_compliance_ : 0.0;
-    }
-  };
-  seed();
+  seed_pressure(by_pressure, target, total);
   std::fill(t.begin(), t.end(), 0.0);
   bool preconditioned = options_.solver == ContactSolver::preconditioned && stencil_;
   double growth_allowed = options_.solver == ContactSolver::preconditioned ? max_growth : 0.0;
@@ -667,48 +710,16 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   Solve solve;
   // Every pass runs over the map's points only (a padded grid's other three quarters never
   // carry pressure); k = j * sx + i.
-  const std::size_t nx = nx_, sx = sx_;
   for (int iteration = 0;; ++iteration) {
     poll_interrupt();  // an iteration of a large map takes up to a second: Ctrl-C (asperity/interrupt.hpp)
-    apply(p, u);
-    const auto placed = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-      double sum = 0, contact = 0;
-      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-          p[q] *= scale;
-          u[q] *= scale;
-          const bool in = active_[q] && p[q] > 0;
-          sum += in ? u[q] - heights_[q] : 0.0;
-          contact += in;
-        }
-      s[0] = sum;
-      s[1] = contact;
-    });
+    apply(p, displacement_);
+    const PassSums placed = scale_and_sum_contact_gaps(scale);
     scale = 1;
     const std::size_t contact = static_cast<std::size_t>(placed[1]);
     double approach = target;
     if (by_pressure) approach = contact > 0 ? -placed[0] / static_cast<double>(contact) : 0.0;
     // the gaps, and the residual; preconditioned, w takes the gap on the contact set (0 off it)
-    const auto gaps = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-      double weighted = 0, load = 0, squares = 0, penetration = 0;
-      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-          const double gap = active_[q] ? u[q] - heights_[q] + approach : 0.0;
-          g[q] = gap;
-          if (p[q] > 0) {
-            weighted += p[q] * std::fabs(gap);
-            load += p[q];
-            squares += gap * gap;
-          } else if (active_[q]) {
-            penetration = std::max(penetration, -gap);
-          }
-          if (preconditioned) w[q] = p[q] > 0 ? gap : 0.0;
-        }
-      s[0] = weighted;
-      s[1] = load;
-      s[2] = squares;
-      s[5] = penetration;
-    });
+    const PassSums gaps = gaps_and_residual_sums(approach, preconditioned);
     const double weighted = gaps[0], load = gaps[1], squares = gaps[2], penetration = gaps[5];
     const double residual =
         std::max(load > 0 ? weighted / (load * rms_) : (contact == 0 ? 0.0 : INFINITY), penetration / rms_);
@@ -725,8 +736,7 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
                   number(residual) + " (tolerance " + number(tolerance) + ")");
     if (contact == 0) {
       // nothing in contact yet something penetrates (by approach): start again from the overlap
-      for (std::size_t k = 0; k < points; ++k)
-        p[k] = active_[k] ? std::max(heights_[k] - target, 0.0) / self_compliance_ : 0.0;
+      pressure_from_overlap(target);
       conjugate = false;
       continue;
     }
@@ -748,32 +758,11 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     if (!(previous > 0 && source_product > 0)) conjugate = false;
     const double beta = conjugate ? source_product / previous : 0.0;
     previous = source_product;
-    const std::vector<double>& source = preconditioned ? z : g;
-    over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
-      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-          const double value = source[q] - source_mean;
-          t[q] = p[q] > 0 ? (conjugate ? value + beta * t[q] : value) : 0.0;
-        }
-    });
+    set_direction(preconditioned ? z : g, source_mean, conjugate, beta);
     apply(t, w);
     // step = sum g t / sum (w - mean w) t over the contact set (by pressure the mean of w is the
     // flat's move); sum t is near zero, so w's mean enters through a small product
-    const auto products = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-      double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
-      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
-          if (p[q] > 0) {
-            sum_w += w[q];
-            sum_t += t[q];
-            sum_wt += w[q] * t[q];
-            numerator += g[q] * t[q];
-          }
-      s[0] = sum_w;
-      s[1] = sum_t;
-      s[2] = sum_wt;
-      s[3] = numerator;
-    });
+    const PassSums products = step_products();
     const double mean_w = by_pressure ? products[0] / static_cast<double>(contact) : 0.0;
     const double denominator = products[2] - mean_w * products[1], numerator = products[3];
     double step;
@@ -791,32 +780,167 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     // Keer's identity) gives a point amid a patch of uniform gap: the stencil's sum
     const double stencil_sum = stencil_centre_ + 2 * stencil_x_ + 2 * stencil_y_ + 4 * stencil_diagonal_;
     const double overlap_step = step > 0 ? (preconditioned ? step * stencil_sum : step) : 1 / self_compliance_;
-    const auto moved = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-      double total_now = 0, overlaps = 0;
-      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-          double value = p[q] > 0 ? std::max(p[q] - step * t[q], 0.0) : 0.0;
-          if (value == 0 && active_[q] && g[q] < 0) {
-            value = -overlap_step * g[q];
-            ++overlaps;
-          }
-          p[q] = value;
-          total_now += value;
-        }
-      s[0] = total_now;
-      s[1] = overlaps;
-    });
+    const PassSums moved = move_pressure(step, overlap_step);
     const double total_now = moved[0];
     conjugate = moved[1] <= growth_allowed * static_cast<double>(contact);
     if (by_pressure) {
       if (!(total_now > 0)) {
-        seed();
+        seed_pressure(by_pressure, target, total);
         conjugate = false;
       } else {
         scale = total / total_now;
       }
     }
   }
+}
+
+// The constrained solve's start: by pressure the last pressure scaled to the load `total` (or,
+// with none, the load spread evenly); by approach the last pressure, or with none the overlap's.
+void ExactContact::seed_pressure(bool by_pressure, double target, double total) {
+  const std::size_t points = sx_ * sy_;
+  std::vector<double>& p = pressure_;
+  if (by_pressure) {
+    double sum = 0;
+    for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
+    if (sum > 0) {
+      for (double& value : p) value *= total / sum;
+    } else {
+      for (std::size_t k = 0; k < points; ++k)
+        p[k] = active_[k] ? total / static_cast<double>(valid_points_) : 0.0;
+    }
+  } else {
+    double sum = 0;
+    for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
+    if (!(sum > 0)) pressure_from_overlap(target);
+  }
+}
+
+// The pressure of the flat at approach `target` pressed into the undeformed map, each point
+// on its own: its overlap over the self-compliance.
+void ExactContact::pressure_from_overlap(double target) {
+  const std::size_t points = sx_ * sy_;
+  std::vector<double>& p = pressure_;
+  for (std::size_t k = 0; k < points; ++k)
+    p[k] = active_[k] ? std::max(heights_[k] - target, 0.0) / self_compliance_ : 0.0;
+}
+
+// The constrained solve's passes over the map's points (k = j * sx + i), their sums added in
+// over_rows' fixed order.
+
+// Pressure and displacement times `scale` (the load's rescaling); sums [0] the displacement
+// less the height over the contact set, [1] its points.
+ExactContact::PassSums ExactContact::scale_and_sum_contact_gaps(double scale) {
+  std::vector<double>& p = pressure_;
+  std::vector<double>& u = displacement_;
+  const std::size_t nx = nx_, sx = sx_;
+  return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double sum = 0, contact = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        p[q] *= scale;
+        u[q] *= scale;
+        const bool in = active_[q] && p[q] > 0;
+        sum += in ? u[q] - heights_[q] : 0.0;
+        contact += in;
+      }
+    s[0] = sum;
+    s[1] = contact;
+  });
+}
+
+// The gaps g at the flat's `approach` (and, preconditioned, w: the gap on the contact set, 0
+// off it); sums [0] pressure times |gap|, [1] the load, [2] the squared gaps over the contact
+// set, [5] the largest penetration outside it.
+ExactContact::PassSums ExactContact::gaps_and_residual_sums(double approach, bool preconditioned) {
+  const std::vector<double>& p = pressure_;
+  const std::vector<double>& u = displacement_;
+  std::vector<double>& g = work_;
+  std::vector<double>& w = increment_;
+  const std::size_t nx = nx_, sx = sx_;
+  return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double weighted = 0, load = 0, squares = 0, penetration = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        const double gap = active_[q] ? u[q] - heights_[q] + approach : 0.0;
+        g[q] = gap;
+        if (p[q] > 0) {
+          weighted += p[q] * std::fabs(gap);
+          load += p[q];
+          squares += gap * gap;
+        } else if (active_[q]) {
+          penetration = std::max(penetration, -gap);
+        }
+        if (preconditioned) w[q] = p[q] > 0 ? gap : 0.0;
+      }
+    s[0] = weighted;
+    s[1] = load;
+    s[2] = squares;
+    s[5] = penetration;
+  });
+}
+
+// The direction t on the contact set (0 off it): source less source_mean, plus beta times the
+// last direction when `conjugate`.
+void ExactContact::set_direction(const std::vector<double>& source, double source_mean, bool conjugate, double beta) {
+  const std::vector<double>& p = pressure_;
+  std::vector<double>& t = direction_;
+  const std::size_t nx = nx_, sx = sx_;
+  over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        const double value = source[q] - source_mean;
+        t[q] = p[q] > 0 ? (conjugate ? value + beta * t[q] : value) : 0.0;
+      }
+  });
+}
+
+// The step's sums over the contact set: [0] w, [1] t, [2] w t, [3] g t.
+ExactContact::PassSums ExactContact::step_products() {
+  const std::vector<double>& p = pressure_;
+  const std::vector<double>& t = direction_;
+  const std::vector<double>& g = work_;
+  const std::vector<double>& w = increment_;
+  const std::size_t nx = nx_, sx = sx_;
+  return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+        if (p[q] > 0) {
+          sum_w += w[q];
+          sum_t += t[q];
+          sum_wt += w[q] * t[q];
+          numerator += g[q] * t[q];
+        }
+    s[0] = sum_w;
+    s[1] = sum_t;
+    s[2] = sum_wt;
+    s[3] = numerator;
+  });
+}
+
+// The pressure moved by -step t on the contact set, projected on p >= 0, and the points that
+// penetrate outside it added back with -overlap_step g; sums [0] the new load, [1] the points
+// added back.
+ExactContact::PassSums ExactContact::move_pressure(double step, double overlap_step) {
+  std::vector<double>& p = pressure_;
+  const std::vector<double>& t = direction_;
+  const std::vector<double>& g = work_;
+  const std::size_t nx = nx_, sx = sx_;
+  return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double total_now = 0, overlaps = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        double value = p[q] > 0 ? std::max(p[q] - step * t[q], 0.0) : 0.0;
+        if (value == 0 && active_[q] && g[q] < 0) {
+          value = -overlap_step * g[q];
+          ++overlaps;
+        }
+        p[q] = value;
+        total_now += value;
+      }
+    s[0] = total_now;
+    s[1] = overlaps;
+  });
 }
 
 // The incremental problem: the flat moves by a unit approach with the contact set held; the

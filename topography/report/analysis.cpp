@@ -16,24 +16,11 @@
 namespace asperity::topography {
 namespace {
 constexpr double min_roughness = 1e-15;  // [m]
-}  // namespace
 
-SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options) {
-  map.validate();
-  SurfaceAnalysis analysis;
-  analysis.options = options;
-  double largest = 0;  // |h| as read, before leveling
-  for (double h : map.heights)
-    if (!std::isnan(h)) largest = std::max(largest, std::fabs(h));
-  if (options.level) {
-    analysis.plane = fit_plane(map);
-    subtract_plane(map, analysis.plane);
-    analysis.leveled = true;
-    map.notes.push_back("leveled: least-squares plane subtracted");
-  }
-  analysis.statistics = height_statistics(map);
-  const double sq = analysis.statistics.rms;
-  NoiseFloor& floor = analysis.noise_floor;
+// The noise floor of the heights (largest: the largest |h| as read, sq: the rms height):
+// reached when the roughness is zero or at the heights' quantization. Throws for heights all
+// below 1 fm (a wrong unit).
+void find_noise_floor(NoiseFloor& floor, const HeightMap& map, double largest, double sq, bool leveled) {
   // the rounding step of the heights: the file's, and never below what doubles (and the
   // leveling's arithmetic, a few roundings) resolve at the largest height read
   floor.resolution = std::max(map.height_resolution, 4 * (std::nextafter(largest, 2 * largest + 1) - largest));
@@ -43,7 +30,7 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
                 " m (1 fm) in size: a wrong height unit?");
   } else if (sq == 0) {
     floor.reached = true;
-    floor.text = "every valid height is the same" + std::string(options.level ? " after leveling" : "") +
+    floor.text = "every valid height is the same" + std::string(leveled ? " after leveling" : "") +
                  ": no roughness, so no summits, fits or contact curves";
   } else if (sq < floor.rms_limit) {
     floor.reached = true;
@@ -52,18 +39,12 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
                  three_digits(floor.resolution / std::sqrt(12.0)) +
                  " m rms): its summits would be rounding noise, so no summits, fits or contact curves";
   }
-  if (floor.reached) {
-    map.notes.push_back("noise floor: " + floor.text);
-    analysis.map = std::move(map);
-    return analysis;
-  }
-  analysis.moments = spectral_moments(map);
-  analysis.correlation = correlation_lengths(map, 0.1);
-  analysis.summits = find_summits(map, options.summits);
-  if (analysis.summits.list.size() < 5)
-    throw Error(map.source + ": " + std::to_string(analysis.summits.list.size()) +
-                " summits: too few to fit a distribution (a smaller summit window or threshold?)");
+}
 
+// analysis.sampling: the summits and moments at each sampling factor (the map decimated).
+// Returns the summits of the coarser samplings (factor > 1), for the contact's dependence.
+std::vector<std::pair<std::size_t, Summits>> add_sampling_rows(SurfaceAnalysis& analysis, const HeightMap& map,
+                                                               const AnalysisOptions& options) {
   std::vector<std::pair<std::size_t, Summits>> coarse_summits;  // factor > 1: the contact's dependence
   for (std::size_t factor : options.sampling_factors) {
     poll_interrupt();  // each factor: summits of a map (Ctrl-C, asperity/interrupt.hpp)
@@ -88,10 +69,15 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     analysis.sampling.push_back(row);
     if (factor > 1 && !s.list.empty()) coarse_summits.emplace_back(factor, s);
   }
+  return coarse_summits;
+}
 
+// The summit heights to fit: all, or past options.max_fit_sample a reproducible random
+// subsample of them (noted on the map).
+std::vector<double> summit_heights_to_fit(const Summits& summits, HeightMap& map, const AnalysisOptions& options) {
   std::vector<double> summit_heights;
-  summit_heights.reserve(analysis.summits.list.size());
-  for (const Summit& s : analysis.summits.list) summit_heights.push_back(s.height);
+  summit_heights.reserve(summits.list.size());
+  for (const Summit& s : summits.list) summit_heights.push_back(s.height);
   if (options.max_fit_sample > 0 && summit_heights.size() > options.max_fit_sample) {
     // a reproducible random subsample (a partial Fisher-Yates shuffle)
     std::mt19937_64 engine(options.assessment.seed ^ 0x5eed5a3b1e5ull);
@@ -101,8 +87,133 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     }
     summit_heights.resize(options.max_fit_sample);
     map.notes.push_back("fits on a random subsample of " + std::to_string(options.max_fit_sample) + " of the " +
-                        std::to_string(analysis.summits.list.size()) + " summits (max_fit_sample)");
+                        std::to_string(summits.list.size()) + " summits (max_fit_sample)");
   }
+  return summit_heights;
+}
+
+// Throws for an ensemble too small for the verdict's tests (0: no tests).
+void check_ensemble_size(const AnalysisOptions& options) {
+  // the surface verdict tests each sample at half the significance: B must reach that
+  const int ensemble = options.assessment.bootstrap;
+  if (ensemble > 0 && ensemble < minimum_bootstrap(options.assessment.significance / 2))
+    throw Error("an ensemble of " + std::to_string(ensemble) + " surrogate surfaces can never give p below " +
+                three_digits(options.assessment.significance / 2) +
+                " (the verdict tests the heights and the summit heights, each at half the significance; the smallest "
+                "p-value is 1/(B + 1) = " + three_digits(1.0 / (ensemble + 1)) + "): use at least " +
+                std::to_string(minimum_bootstrap(options.assessment.significance / 2)) + ", or 0 for no test");
+  check_bootstrap_size(ensemble, options.assessment.significance);
+}
+
+// The surface tests' options (without on_surrogate).
+SurfaceTestOptions surface_test_options(const AnalysisOptions& options, std::size_t summits) {
+  SurfaceTestOptions tests_options;
+  tests_options.assessment = options.assessment;
+  tests_options.summits = options.summits;
+  tests_options.height_sample = options.max_height_sample;
+  tests_options.max_summits = options.max_fit_sample > 0 ? options.max_fit_sample : summits;
+  tests_options.test_heights = options.fit_heights;
+  tests_options.leveled = options.level;
+  return tests_options;
+}
+
+// The sample standard deviation of v (at least two values).
+double sample_spread(const std::vector<double>& v) {
+  double mean = 0, squares = 0;
+  for (double x : v) mean += x;
+  mean /= static_cast<double>(v.size());
+  for (double x : v) squares += (x - mean) * (x - mean);
+  return std::sqrt(squares / static_cast<double>(v.size() - 1));
+}
+
+// The spread of the measured-summit answer over the ensemble (each surrogate's stiffness and
+// separation at c's pressures; a surrogate without them left out).
+void add_ensemble_spread(ContactComparison& c, const std::vector<std::vector<double>>& surrogate_stiffness,
+                         const std::vector<std::vector<double>>& surrogate_separation) {
+  for (std::size_t k = 0; k < c.pressures.size(); ++k) {
+    std::vector<double> stiffness, separation;
+    for (std::size_t b = 0; b < surrogate_stiffness.size(); ++b)
+      if (surrogate_stiffness[b].size() == c.pressures.size()) {
+        stiffness.push_back(std::log(surrogate_stiffness[b][k]));
+        separation.push_back(surrogate_separation[b][k]);
+      }
+    if (stiffness.size() < 2) break;
+    c.measured_stiffness_spread.push_back(sample_spread(stiffness));  // of ln K: relative
+    c.measured_separation_spread.push_back(sample_spread(separation));
+  }
+}
+
+// The measured-summit answer at coarser samplings, over the finest's.
+void add_sampling_contact(ContactComparison& c, const std::vector<std::pair<std::size_t, Summits>>& coarse_summits,
+                          double contact_modulus) {
+  const ModelContact* finest = c.find(ContactModelKind::measured_summits);
+  for (const auto& [factor, coarse] : coarse_summits) {
+    if (!finest || !finest->served) break;
+    try {
+      const SummitContact contact(coarse, contact_modulus, c.nominal_area);
+      SamplingContact row;
+      row.factor = factor;
+      for (std::size_t k = 0; k < c.pressures.size(); ++k)
+        row.stiffness_over_finest.push_back(contact.at_pressure(c.pressures[k]).stiffness /
+                                            finest->at_pressures[k].stiffness);
+      c.sampling.push_back(row);
+    } catch (const Error&) {
+    }
+  }
+}
+
+// analysis.law: the law on the fit the verdict names for the contact, else the lowest AIC with
+// curves.
+void add_contact_law(SurfaceAnalysis& analysis, const HeightMap& map, const AnalysisOptions& options) {
+  const SurfaceVerdict& v = analysis.verdict;
+  int model = v.named ? static_cast<int>(v.model) : -1;
+  std::string reason = "the verdict's model for the contact";
+  if (model < 0) {
+    for (HeightModel candidate : all_height_models) {
+      const ModelContact* curves = analysis.contact->find(to_string(candidate));
+      if (!curves || !curves->served) continue;
+      if (model < 0 || analysis.summit_heights.model(candidate).aic <
+                           analysis.summit_heights.models[static_cast<std::size_t>(model)].aic)
+        model = static_cast<int>(candidate);
+    }
+    reason = "no model is named by the verdict: the fit of the lowest AIC with elastic curves";
+  }
+  if (model < 0) throw Error(map.source + ": contact law: no fitted model has elastic curves to set the law beside");
+  analysis.law = compare_law(*analysis.contact, analysis.summits, static_cast<HeightModel>(model), reason, options.law);
+}
+
+}  // namespace
+
+SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options) {
+  map.validate();
+  SurfaceAnalysis analysis;
+  analysis.options = options;
+  double largest = 0;  // |h| as read, before leveling
+  for (double h : map.heights)
+    if (!std::isnan(h)) largest = std::max(largest, std::fabs(h));
+  if (options.level) {
+    analysis.plane = fit_plane(map);
+    subtract_plane(map, analysis.plane);
+    analysis.leveled = true;
+    map.notes.push_back("leveled: least-squares plane subtracted");
+  }
+  analysis.statistics = height_statistics(map);
+  NoiseFloor& floor = analysis.noise_floor;
+  find_noise_floor(floor, map, largest, analysis.statistics.rms, options.level);
+  if (floor.reached) {
+    map.notes.push_back("noise floor: " + floor.text);
+    analysis.map = std::move(map);
+    return analysis;
+  }
+  analysis.moments = spectral_moments(map);
+  analysis.correlation = correlation_lengths(map, 0.1);
+  analysis.summits = find_summits(map, options.summits);
+  if (analysis.summits.list.size() < 5)
+    throw Error(map.source + ": " + std::to_string(analysis.summits.list.size()) +
+                " summits: too few to fit a distribution (a smaller summit window or threshold?)");
+
+  const std::vector<std::pair<std::size_t, Summits>> coarse_summits = add_sampling_rows(analysis, map, options);
+  const std::vector<double> summit_heights = summit_heights_to_fit(analysis.summits, map, options);
   analysis.summits_fitted = summit_heights.size();
 
   // the pressures and area of the contact, known before the ensemble: each surrogate's measured-
@@ -115,22 +226,8 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
   }
   std::vector<std::vector<double>> surrogate_stiffness, surrogate_separation;
 
-  // the surface verdict tests each sample at half the significance: B must reach that
-  const int ensemble = options.assessment.bootstrap;
-  if (ensemble > 0 && ensemble < minimum_bootstrap(options.assessment.significance / 2))
-    throw Error("an ensemble of " + std::to_string(ensemble) + " surrogate surfaces can never give p below " +
-                three_digits(options.assessment.significance / 2) +
-                " (the verdict tests the heights and the summit heights, each at half the significance; the smallest "
-                "p-value is 1/(B + 1) = " + three_digits(1.0 / (ensemble + 1)) + "): use at least " +
-                std::to_string(minimum_bootstrap(options.assessment.significance / 2)) + ", or 0 for no test");
-  check_bootstrap_size(ensemble, options.assessment.significance);
-  SurfaceTestOptions tests_options;
-  tests_options.assessment = options.assessment;
-  tests_options.summits = options.summits;
-  tests_options.height_sample = options.max_height_sample;
-  tests_options.max_summits = options.max_fit_sample > 0 ? options.max_fit_sample : analysis.summits.list.size();
-  tests_options.test_heights = options.fit_heights;
-  tests_options.leveled = options.level;
+  check_ensemble_size(options);
+  SurfaceTestOptions tests_options = surface_test_options(options, analysis.summits.list.size());
   if (options.contact && options.assessment.bootstrap > 0) {
     surrogate_stiffness.assign(static_cast<std::size_t>(options.assessment.bootstrap), {});
     surrogate_separation.assign(static_cast<std::size_t>(options.assessment.bootstrap), {});
@@ -165,59 +262,15 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
     mean_summit /= static_cast<double>(analysis.summits.list.size());
     add_reference_contact(c, map, mean_summit, options.exact_progress);
     // the spread of the measured-summit answer over the ensemble
-    for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-      std::vector<double> stiffness, separation;
-      for (std::size_t b = 0; b < surrogate_stiffness.size(); ++b)
-        if (surrogate_stiffness[b].size() == c.pressures.size()) {
-          stiffness.push_back(std::log(surrogate_stiffness[b][k]));
-          separation.push_back(surrogate_separation[b][k]);
-        }
-      if (stiffness.size() < 2) break;
-      const auto spread = [](const std::vector<double>& v) {
-        double mean = 0, squares = 0;
-        for (double x : v) mean += x;
-        mean /= static_cast<double>(v.size());
-        for (double x : v) squares += (x - mean) * (x - mean);
-        return std::sqrt(squares / static_cast<double>(v.size() - 1));
-      };
-      c.measured_stiffness_spread.push_back(spread(stiffness));  // of ln K: relative
-      c.measured_separation_spread.push_back(spread(separation));
-    }
+    add_ensemble_spread(c, surrogate_stiffness, surrogate_separation);
     // the measured-summit answer at coarser samplings
-    const ModelContact* finest = c.find(ContactModelKind::measured_summits);
-    for (const auto& [factor, coarse] : coarse_summits) {
-      if (!finest || !finest->served) break;
-      try {
-        const SummitContact contact(coarse, options.contact->contact_modulus, c.nominal_area);
-        SamplingContact row;
-        row.factor = factor;
-        for (std::size_t k = 0; k < c.pressures.size(); ++k)
-          row.stiffness_over_finest.push_back(contact.at_pressure(c.pressures[k]).stiffness /
-                                              finest->at_pressures[k].stiffness);
-        c.sampling.push_back(row);
-      } catch (const Error&) {
-      }
-    }
+    add_sampling_contact(c, coarse_summits, options.contact->contact_modulus);
     conclude_contact(c);
   }
   analysis.verdict = surface_verdict(analysis);
   if (options.law && analysis.contact) {
     // the law on the fit the verdict names for the contact, else the lowest AIC with curves
-    const SurfaceVerdict& v = analysis.verdict;
-    int model = v.named ? static_cast<int>(v.model) : -1;
-    std::string reason = "the verdict's model for the contact";
-    if (model < 0) {
-      for (HeightModel candidate : all_height_models) {
-        const ModelContact* curves = analysis.contact->find(to_string(candidate));
-        if (!curves || !curves->served) continue;
-        if (model < 0 || analysis.summit_heights.model(candidate).aic <
-                             analysis.summit_heights.models[static_cast<std::size_t>(model)].aic)
-          model = static_cast<int>(candidate);
-      }
-      reason = "no model is named by the verdict: the fit of the lowest AIC with elastic curves";
-    }
-    if (model < 0) throw Error(map.source + ": contact law: no fitted model has elastic curves to set the law beside");
-    analysis.law = compare_law(*analysis.contact, analysis.summits, static_cast<HeightModel>(model), reason, options.law);
+    add_contact_law(analysis, map, options);
   }
   analysis.map = std::move(map);
   return analysis;

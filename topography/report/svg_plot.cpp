@@ -102,8 +102,20 @@ bool clip(double& x0, double& y0, double& x1, double& y1, double w, double h) {
   return true;
 }
 
-void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::size_t index) {
+// A panel's plot area: its axes fitted to the data and its frame's corner on the page.
+struct PanelFrame {
   Axis ax, ay;
+  double px = 0, py = 0;   // the top left corner of the plot area
+  bool empty = false;      // no usable data point
+  double to_x(double v) const { return ax.fraction(v) * plot_width; }
+  double to_y(double v) const { return (1 - ay.fraction(v)) * plot_height; }
+};
+
+// The panel's axes, fitted to its usable series points and bars.
+PanelFrame fit_panel(const PlotPanel& panel, double origin_x) {
+  PanelFrame frame;
+  Axis& ax = frame.ax;
+  Axis& ay = frame.ay;
   ax.log = panel.log_x;
   ay.log = panel.log_y;
   double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
@@ -121,23 +133,27 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::
     take(panel.bars.edges[k + 1], panel.bars.heights[k]);
     if (!ay.log) take(panel.bars.edges[k], 0);
   }
-  const bool empty = !(x_lo <= x_hi);
+  frame.empty = !(x_lo <= x_hi);
   ax.fit(x_lo, x_hi);
   ay.fit(y_lo, y_hi);
   // a density's axis starts at 0
   if (!ay.log && !panel.bars.edges.empty() && y_lo >= 0) ay.lo = 0;
+  frame.px = origin_x + left_margin;
+  frame.py = top_margin;
+  return frame;
+}
 
-  const double px = origin_x + left_margin, py = top_margin;
-  const auto to_x = [&](double v) { return ax.fraction(v) * plot_width; };
-  const auto to_y = [&](double v) { return (1 - ay.fraction(v)) * plot_height; };
-
+// The title, the plot area's background, the grid with its ticks, the axis labels and, without
+// data, "no data".
+void draw_axes(std::string& svg, const PlotPanel& panel, const PanelFrame& frame, double origin_x) {
+  const double px = frame.px, py = frame.py;
   svg += "<text x=\"" + number(px + plot_width / 2) + "\" y=\"18\" font-size=\"12\" text-anchor=\"middle\" " + font +
          " fill=\"#000000\">" + escaped(panel.title) + "</text>\n";
   svg += "<rect x=\"" + number(px) + "\" y=\"" + number(py) + "\" width=\"" + number(plot_width) + "\" height=\"" +
          number(plot_height) + "\" fill=\"#ffffff\"/>\n";
   // grid and ticks
-  for (const auto& [value, text] : ax.ticks()) {
-    const double x = px + to_x(value);
+  for (const auto& [value, text] : frame.ax.ticks()) {
+    const double x = px + frame.to_x(value);
     if (x < px - 0.5 || x > px + plot_width + 0.5) continue;
     svg += "<line x1=\"" + number(x) + "\" y1=\"" + number(py) + "\" x2=\"" + number(x) + "\" y2=\"" +
            number(py + plot_height) + "\" stroke=\"#e0e0e0\" stroke-width=\"1\"/>\n";
@@ -146,8 +162,8 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::
     svg += "<text x=\"" + number(x) + "\" y=\"" + number(py + plot_height + 16) +
            "\" font-size=\"10\" text-anchor=\"middle\" " + font + " fill=\"#000000\">" + escaped(text) + "</text>\n";
   }
-  for (const auto& [value, text] : ay.ticks()) {
-    const double y = py + to_y(value);
+  for (const auto& [value, text] : frame.ay.ticks()) {
+    const double y = py + frame.to_y(value);
     if (y < py - 0.5 || y > py + plot_height + 0.5) continue;
     svg += "<line x1=\"" + number(px) + "\" y1=\"" + number(y) + "\" x2=\"" + number(px + plot_width) + "\" y2=\"" +
            number(y) + "\" stroke=\"#e0e0e0\" stroke-width=\"1\"/>\n";
@@ -164,14 +180,19 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::
   // rotate's centre (rotate(-90 x y)) and drew no y label
   svg += std::string("<text x=\"0\" y=\"0\" font-size=\"11\" text-anchor=\"middle\" ") + font + " fill=\"#000000\" transform=\"translate(" +
          number(label_x) + " " + number(label_y) + ") rotate(-90)\">" + escaped(panel.y_label) + "</text>\n";
-  if (empty) {
+  if (frame.empty) {
     svg += "<text x=\"" + number(px + plot_width / 2) + "\" y=\"" + number(py + plot_height / 2) +
            "\" font-size=\"11\" text-anchor=\"middle\" " + font + " fill=\"#808080\">no data</text>\n";
   }
+}
 
-  // the data: bars, reference lines and series, grouped (a plain <g>, which every renderer knows) so
-  // that a test can tell them from the legend
-  svg += "<g id=\"data-" + std::to_string(index) + "\">\n";
+// The bars (clamped to the plot area) and the dashed reference lines.
+void draw_bars_and_marks(std::string& svg, const PlotPanel& panel, const PanelFrame& frame) {
+  const Axis& ax = frame.ax;
+  const Axis& ay = frame.ay;
+  const double px = frame.px, py = frame.py;
+  const auto to_x = [&](double v) { return frame.to_x(v); };
+  const auto to_y = [&](double v) { return frame.to_y(v); };
   // bars
   const auto& bars = panel.bars;
   for (std::size_t k = 0; k + 1 < bars.edges.size() && k < bars.heights.size(); ++k) {
@@ -192,50 +213,56 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::
     if (ay.usable(v) && to_y(v) >= 0 && to_y(v) <= plot_height)
       svg += "<line x1=\"" + number(px) + "\" y1=\"" + number(py + to_y(v)) + "\" x2=\"" + number(px + plot_width) +
              "\" y2=\"" + number(py + to_y(v)) + "\" stroke=\"#a0a0a0\" stroke-width=\"1\" stroke-dasharray=\"2,3\"/>\n";
-  // series, clipped to the frame
-  for (const PlotSeries& s : panel.series) {
-    const std::size_t n = std::min(s.x.size(), s.y.size());
-    if (s.points) {
-      for (std::size_t k = 0; k < n; ++k) {
-        if (!ax.usable(s.x[k]) || !ay.usable(s.y[k])) continue;
-        const double x = to_x(s.x[k]), y = to_y(s.y[k]);
-        if (x < 0 || x > plot_width || y < 0 || y > plot_height) continue;
-        svg += "<circle cx=\"" + number(px + x) + "\" cy=\"" + number(py + y) + "\" r=\"1.3\" fill=\"" + s.colour +
-               "\"/>\n";
-      }
+}
+
+// One series, clipped to the frame: its points as dots, or its line as polylines.
+void draw_series(std::string& svg, const PlotSeries& s, const PanelFrame& frame) {
+  const Axis& ax = frame.ax;
+  const Axis& ay = frame.ay;
+  const double px = frame.px, py = frame.py;
+  const auto to_x = [&](double v) { return frame.to_x(v); };
+  const auto to_y = [&](double v) { return frame.to_y(v); };
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  if (s.points) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!ax.usable(s.x[k]) || !ay.usable(s.y[k])) continue;
+      const double x = to_x(s.x[k]), y = to_y(s.y[k]);
+      if (x < 0 || x > plot_width || y < 0 || y > plot_height) continue;
+      svg += "<circle cx=\"" + number(px + x) + "\" cy=\"" + number(py + y) + "\" r=\"1.3\" fill=\"" + s.colour +
+             "\"/>\n";
+    }
+    return;
+  }
+  std::string points;
+  const std::string style = "\" fill=\"none\" stroke=\"" + s.colour + "\" stroke-width=\"1.4\"" +
+                            (s.dashed ? " stroke-dasharray=\"5,3\"" : "") + "/>\n";
+  const auto flush = [&] {
+    if (points.find(' ') != std::string::npos) svg += "<polyline points=\"" + points + style;
+    points.clear();
+  };
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (!ax.usable(s.x[k]) || !ay.usable(s.y[k]) || !ax.usable(s.x[k + 1]) || !ay.usable(s.y[k + 1])) {
+      flush();
       continue;
     }
-    std::string points;
-    const std::string style = "\" fill=\"none\" stroke=\"" + s.colour + "\" stroke-width=\"1.4\"" +
-                              (s.dashed ? " stroke-dasharray=\"5,3\"" : "") + "/>\n";
-    const auto flush = [&] {
-      if (points.find(' ') != std::string::npos) svg += "<polyline points=\"" + points + style;
-      points.clear();
-    };
-    for (std::size_t k = 0; k + 1 < n; ++k) {
-      if (!ax.usable(s.x[k]) || !ay.usable(s.y[k]) || !ax.usable(s.x[k + 1]) || !ay.usable(s.y[k + 1])) {
-        flush();
-        continue;
-      }
-      double x0 = to_x(s.x[k]), y0 = to_y(s.y[k]), x1 = to_x(s.x[k + 1]), y1 = to_y(s.y[k + 1]);
-      const bool start_inside = x0 >= 0 && x0 <= plot_width && y0 >= 0 && y0 <= plot_height;
-      const bool end_inside = x1 >= 0 && x1 <= plot_width && y1 >= 0 && y1 <= plot_height;
-      if (!clip(x0, y0, x1, y1, plot_width, plot_height)) {
-        flush();
-        continue;
-      }
-      if (!start_inside) flush();
-      if (points.empty()) points = number(px + x0) + "," + number(py + y0);
-      points += " " + number(px + x1) + "," + number(py + y1);
-      if (!end_inside) flush();
+    double x0 = to_x(s.x[k]), y0 = to_y(s.y[k]), x1 = to_x(s.x[k + 1]), y1 = to_y(s.y[k + 1]);
+    const bool start_inside = x0 >= 0 && x0 <= plot_width && y0 >= 0 && y0 <= plot_height;
+    const bool end_inside = x1 >= 0 && x1 <= plot_width && y1 >= 0 && y1 <= plot_height;
+    if (!clip(x0, y0, x1, y1, plot_width, plot_height)) {
+      flush();
+      continue;
     }
-    flush();
+    if (!start_inside) flush();
+    if (points.empty()) points = number(px + x0) + "," + number(py + y0);
+    points += " " + number(px + x1) + "," + number(py + y1);
+    if (!end_inside) flush();
   }
-  svg += "</g>\n";
-  // the frame (the axes) over the data, so that no bar or curve hides it
-  svg += "<rect x=\"" + number(px) + "\" y=\"" + number(py) + "\" width=\"" + number(plot_width) + "\" height=\"" +
-         number(plot_height) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
-  // the legend, below the axes and their labels: never on the data
+  flush();
+}
+
+// The legend, below the axes and their labels: never on the data.
+void draw_legend(std::string& svg, const PlotPanel& panel, const PanelFrame& frame, std::size_t index) {
+  const double px = frame.px, py = frame.py;
   svg += "<g id=\"legend-" + std::to_string(index) + "\">\n";
   double row = py + plot_height + axis_room;
   const auto legend = [&](const std::string& label, const std::string& colour, bool points, bool dashed, bool bar) {
@@ -253,10 +280,27 @@ void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::
     svg += "<text x=\"" + number(x + 24) + "\" y=\"" + number(row) + "\" font-size=\"10\" " + font +
            " fill=\"#000000\">" + escaped(label) + "</text>\n";
   };
-  if (!bars.label.empty()) legend(bars.label, "", false, false, true);
+  if (!panel.bars.label.empty()) legend(panel.bars.label, "", false, false, true);
   for (const PlotSeries& s : panel.series)
     if (!s.label.empty()) legend(s.label, s.colour, s.points, s.dashed, false);
   svg += "</g>\n";
+}
+
+void draw_panel(std::string& svg, const PlotPanel& panel, double origin_x, std::size_t index) {
+  const PanelFrame frame = fit_panel(panel, origin_x);
+  draw_axes(svg, panel, frame, origin_x);
+
+  // the data: bars, reference lines and series, grouped (a plain <g>, which every renderer knows) so
+  // that a test can tell them from the legend
+  svg += "<g id=\"data-" + std::to_string(index) + "\">\n";
+  draw_bars_and_marks(svg, panel, frame);
+  // series, clipped to the frame
+  for (const PlotSeries& s : panel.series) draw_series(svg, s, frame);
+  svg += "</g>\n";
+  // the frame (the axes) over the data, so that no bar or curve hides it
+  svg += "<rect x=\"" + number(frame.px) + "\" y=\"" + number(frame.py) + "\" width=\"" + number(plot_width) +
+         "\" height=\"" + number(plot_height) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+  draw_legend(svg, panel, frame, index);
 }
 
 }  // namespace

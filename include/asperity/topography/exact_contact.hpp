@@ -33,6 +33,7 @@
 // of the solve grid (O(N)), and a third more for the coarsened maps of the coarse start; each
 // iteration costs two convolutions (O(N log N)) and a few passes over the points (O(N)).
 #pragma once
+#include <array>
 #include <complex>
 #include <cstddef>
 #include <functional>
@@ -234,6 +235,16 @@ class ExactContact {
     double residual = 0, approach = 0;
   };
   Solve constrained(bool by_pressure, double target);
+  // constrained's parts (exact_contact.cpp): its start, and its passes over the map's points,
+  // each returning its sums (PassSums: [0..4] added, [5] the largest)
+  using PassSums = std::array<double, 6>;
+  void seed_pressure(bool by_pressure, double target, double total);
+  void pressure_from_overlap(double target);
+  PassSums scale_and_sum_contact_gaps(double scale);
+  PassSums gaps_and_residual_sums(double approach, bool preconditioned);
+  void set_direction(const std::vector<double>& source, double source_mean, bool conjugate, double beta);
+  PassSums step_products();
+  PassSums move_pressure(double step, double overlap_step);
   void stiffness_of(ContactStep& step);
   ContactStep describe(const Solve& solve);
   void report(const char* stage, int iteration, double residual, std::size_t contact) const;
@@ -244,6 +255,11 @@ class ExactContact {
   ContactStep solve_pressure(double pressure);
   ContactStep solve_mean_gap(double mean_gap);
   [[noreturn]] void out_of_memory(const std::string& doing) const;
+  // the constructor's parts (exact_contact.cpp)
+  void allocate_solve_grid(const HeightMap& map, double mean);
+  void make_padded_love_kernel(double modulus);
+  void make_spectral_kernel(double modulus);  // Fourier, or periodic Love
+  void make_preconditioner_stencil();
 
   ExactContactOptions options_;
   std::size_t nx_ = 0, ny_ = 0, sx_ = 0, sy_ = 0;  // map grid; solve grid
