@@ -141,15 +141,29 @@ double sweep_value(const Sweep& sweep, long k) {
   if (k == sweep.count - 1) return sweep.to;
   const double fraction = static_cast<double>(k) / static_cast<double>(sweep.count - 1);
   if (sweep.kind == "separation") return sweep.from + (sweep.to - sweep.from) * fraction;
-  const double log_from = std::log(sweep.from), log_to = std::log(sweep.to);
-  return std::exp(log_from + (log_to - log_from) * fraction);
+  // in decimal logarithms: a sweep over decades lands on its powers of ten exactly (1e3:1e6:4 gives
+  // 1e4 and 1e5, where natural logarithms give 9999.99999999999)
+  const double log_from = std::log10(sweep.from), log_to = std::log10(sweep.to);
+  return std::pow(10.0, log_from + (log_to - log_from) * fraction);
 }
 
+// The state at a query; the quantity asked is written as asked (solving for the separation and
+// evaluating there gives it back within a few ulps: 999999.9999999995 for 1e6 in shortest form)
 PhysicalState query(const ContactModel& model, const std::string& kind, double value) {
   if (kind == "separation") return model.at_separation(value);
-  if (kind == "load") return model.at_load(value);
-  if (kind == "pressure") return model.at_pressure(value);
-  return model.at_real_area(value);
+  PhysicalState state;
+  const double area = model.surface().nominal_area;  // pressure = load / A0: both as asked
+  if (kind == "load") {
+    state = model.at_load(value);
+    if (std::isfinite(state.separation)) state.load = value, state.pressure = value / area;
+  } else if (kind == "pressure") {
+    state = model.at_pressure(value);
+    if (std::isfinite(state.separation)) state.pressure = value, state.load = value * area;
+  } else {
+    state = model.at_real_area(value);
+    if (std::isfinite(state.separation)) state.real_area = value;
+  }
+  return state;
 }
 
 // A load, pressure or real area asked of a Greenwood-Williamson surface: positive (at 0 or below
@@ -185,16 +199,10 @@ void check_answered(const ContactModel& model, const std::string& option, const 
               " (a scene table serves its scene's range: a full table, such as the default, serves every one)");
 }
 
-// The CSVs' numbers: ten significant digits
-std::string ten_digits(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
 
 // the CSV's columns: the physical state's fields (physical_state_fields.hpp), in their order
 void print_header() { std::printf("%s\n", csv_header<PhysicalState>().c_str()); }
-void print(const PhysicalState& state) { std::printf("%s\n", csv_row(state, ten_digits).c_str()); }
+void print(const PhysicalState& state) { std::printf("%s\n", csv_row(state).c_str()); }
 
 void warn_past_gw(const CLI::App& command, double area_fraction) {
   const std::string warning = gw_area_fraction_warning(area_fraction);
@@ -417,7 +425,7 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
   const std::size_t columns = RecordFields<ContactCurvesRow>::count - (curves.counts_summits() ? 0 : 1);
   std::printf("%s\n", csv_header<ContactCurvesRow>(columns).c_str());
   const auto row = [&](const ContactCurvesState& state) {
-    std::printf("%s\n", csv_row(curves.row(state), ten_digits, columns).c_str());
+    std::printf("%s\n", csv_row(curves.row(state), [](double value) { return format_double(value); }, columns).c_str());
   };
   const auto at = [&](const std::string& kind, double value) {
     if (kind == "separation") return curves.at_separation(value);
@@ -563,6 +571,7 @@ void add_contact_command(CLI::App& app) {
                  "separation, a load, a pressure or a real area (CSV), or its pressure-overclosure law for FE codes");
   Options& o = *options;
   add_table_option(*command, o.table);
+  add_quiet_option(*command);
   add_text(*command, "--dist", o.dist, "summit heights: weibull or gaussian (required)")->type_name("NAME")->group("Surface (SI units)");
   add_text(*command, "--side", o.side, "tail (default; GW's approach) or bounded (Weibull only: worn surfaces)")->type_name("SIDE")->group("Surface (SI units)");
   add_number(*command, "--shape", o.shape, "Weibull shape a, " + format_double(weibull_shape_min) + " to " + format_double(weibull_shape_max) + " (required for the Weibull)")->type_name("A")->group("Surface (SI units)");

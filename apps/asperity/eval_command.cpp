@@ -28,6 +28,7 @@ void add_eval_command(CLI::App& app) {
       ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
                              ""));
   add_table_option(*command, options->table);
+  add_quiet_option(*command);
   command->footer(
       "Input: CSV with the header dist,side,shape,sep; dist is weibull or gaussian, side tail or\n"
       "bounded, shape the Weibull shape (empty or ignored for the Gaussian), sep the separation from\n"

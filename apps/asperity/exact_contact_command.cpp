@@ -121,7 +121,7 @@ Steps steps_from(const Options& o) {
       const double value = k == 0       ? from
                            : k == n - 1 ? to
                            : steps.by_pressure
-                               ? std::exp(std::log(from) + fraction * (std::log(to) - std::log(from)))
+                               ? std::pow(10.0, std::log10(from) + fraction * (std::log10(to) - std::log10(from)))
                                : from + fraction * (to - from);
       steps.values.push_back(value);
     }

@@ -33,9 +33,14 @@ int summary(const Table& table) {
       const double separation = row.side == Side::tail ? origin_from_standardized(curve, position) : position;
       ContactState state;
       contact_at(curve, unit, separation, state);
-      std::printf("%-9s %-8s %6.2g %9.4f %9.4f %12.5g %12.5g %12.5g %12.5g %10.4g\n", to_string(row.distribution),
-                  to_string(row.side), row.shape, separation, standardized_from_origin(curve, separation),
-                  state.count, state.area, state.load, state.stiffness, state.stiffness_ratio);
+      // the Gaussian has neither a side nor a shape: dashes, not the Weibull's defaults
+      const bool weibull = row.distribution == Distribution::weibull;
+      char shape[16];
+      std::snprintf(shape, sizeof shape, "%6.2g", row.shape);
+      std::printf("%-9s %-8s %6s %9.4f %9.4f %12.5g %12.5g %12.5g %12.5g %10.4g\n", to_string(row.distribution),
+                  weibull ? to_string(row.side) : "-", weibull ? shape : "-", separation,
+                  standardized_from_origin(curve, separation), state.count, state.area, state.load, state.stiffness,
+                  state.stiffness_ratio);
     }
   }
   return exit_success;

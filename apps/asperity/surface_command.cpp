@@ -197,7 +197,7 @@ int run_surface(const Options& o) {
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start).count();
     const double since = std::chrono::duration<double>(now - last).count();
-    if (elapsed < 1 || (since < (terminal ? 0.2 : 5) && done < total)) return;
+    if (quiet() || elapsed < 1 || (since < (terminal ? 0.2 : 5) && done < total)) return;
     last = now;
     const double left = elapsed / static_cast<double>(done) * static_cast<double>(total - done);
     std::fprintf(stderr, "%sasperity surface: ensemble %zu/%zu surrogate surfaces, about %.0f s left%s",
@@ -210,7 +210,7 @@ int run_surface(const Options& o) {
     if (done == 1) *exact_start = now;  // the first step includes setting up the solver
     const double elapsed = std::chrono::duration<double>(now - *exact_start).count();
     const double since = std::chrono::duration<double>(now - last).count();
-    if (since < (terminal ? 0.2 : 5) && done < total) return;
+    if (quiet() || (since < (terminal ? 0.2 : 5) && done < total)) return;
     last = now;
     const double left = done > 1 ? elapsed / static_cast<double>(done - 1) * static_cast<double>(total - done) : 0;
     std::fprintf(stderr, "%sasperity surface: exact contact, load step %zu/%zu, about %.0f s left%s",
@@ -334,6 +334,7 @@ void add_surface_command(CLI::App& app) {
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
       ->type_name("DIR")->group(output);
+  add_quiet_option(*command)->group(output);
   command->add_flag("--json", o.json,
                     std::string("write the JSON (schema ") + topo::surface_json_schema + ") instead of the summary")
       ->group(output);

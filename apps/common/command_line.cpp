@@ -180,7 +180,24 @@ void warn(const CLI::App& command, const std::string& message) {
   std::fprintf(stderr, "%s: warning: %s\n", command_name(command).c_str(), terminal_text(message).c_str());
 }
 
+namespace {
+bool quiet_asked = false;  // --quiet (add_quiet_option): one command runs in a process
+}  // namespace
+
+CLI::Option* add_quiet_option(CLI::App& command, bool* quiet_flag) {
+  return command.add_flag_callback(
+      "--quiet",
+      [quiet_flag] {
+        quiet_asked = true;
+        if (quiet_flag) *quiet_flag = true;
+      },
+      "no information lines and no progress on standard error (warnings and errors are still written)");
+}
+
+bool quiet() { return quiet_asked; }
+
 void note(const CLI::App& command, const std::string& message) {
+  if (quiet_asked) return;
   std::fprintf(stderr, "%s: %s\n", command_name(command).c_str(), terminal_text(message).c_str());
 }
 

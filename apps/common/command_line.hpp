@@ -61,6 +61,11 @@ std::string command_name(const CLI::App& command);
 void warn(const CLI::App& command, const std::string& message);
 void note(const CLI::App& command, const std::string& message);
 
+// --quiet, the same in every command: no notes (information lines) and no progress on standard
+// error; warnings and errors are still written. `quiet_flag` is set too (a command's own progress).
+CLI::Option* add_quiet_option(CLI::App& command, bool* quiet_flag = nullptr);
+bool quiet();
+
 // `asperity --version`: the version, the table a command would use, and that table's schema.
 int print_version();
 

@@ -3,8 +3,9 @@ when a figure is drawn; Debian: python3-matplotlib):
 
     import asperity, asperity.plot
     table = asperity.Table.open_default()
-    gaussian = asperity.ContactModel(table, asperity.RoughSurface("gaussian", shape=None, rms=5e-7))
-    weibull = asperity.ContactModel(table, asperity.RoughSurface("weibull", shape=1.6, rms=5e-7))
+    common = dict(rms=5e-7, summit_radius=1e-4, summit_density=1e10, nominal_area=1e-4, contact_modulus=1e11)
+    gaussian = asperity.ContactModel(table, asperity.RoughSurface("gaussian", **common))
+    weibull = asperity.ContactModel(table, asperity.RoughSurface("weibull", shape=1.6, **common))
     figure, axes = asperity.plot.contact_figure({"Gaussian": gaussian, "Weibull a = 1.6": weibull})
     figure.savefig("contact.svg")
 

@@ -16,7 +16,17 @@ namespace asperity::python {
 void bind_errors(py::module_& m) {
   // asperity::Error as asperity.Error with the library's message; a message naming a file whose
   // name is not UTF-8 keeps those bytes as \xNN escapes (pybind11's own translation would fail).
-  static PyObject* const error_type = py::exception<Error>(m, "Error", PyExc_RuntimeError).release().ptr();  // kept
+  // A ValueError (what Python code expects of a bad value, as a typo's ValueError is) and a
+  // RuntimeError (what it was before: `except RuntimeError` still catches it).
+  static PyObject* const error_type = [] {
+    PyObject* bases = PyTuple_Pack(2, PyExc_ValueError, PyExc_RuntimeError);
+    if (!bases) throw py::error_already_set();
+    PyObject* type = PyErr_NewException("asperity.Error", bases, nullptr);
+    Py_DECREF(bases);
+    if (!type) throw py::error_already_set();
+    return type;  // kept for the module's life
+  }();
+  m.attr("Error") = py::reinterpret_borrow<py::object>(error_type);
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       if (thrown) std::rethrow_exception(thrown);
@@ -52,7 +62,8 @@ void bind_errors(py::module_& m) {
   m.attr("gw_area_fraction_limit") = gw_area_fraction_limit;
   m.attr("Error").attr("__doc__") =
       "An error of the asperity library (a missing or bad table or scene, a shape outside the table, a bad "
-      "physical parameter); its message is the library's.";
+      "physical parameter); its message is the library's. A ValueError (as a misspelled keyword's) and a "
+      "RuntimeError.";
 }
 
 }  // namespace asperity::python

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "bindings.hpp"
 #include "helpers.hpp"
@@ -24,34 +26,48 @@ void bind_surface(py::module_& m) {
                               "of shape a and scale sigma_s, or Gaussian (rms sigma), summit radius and density, "
                               "nominal area, contact modulus (PhysicalSurface is its former name; SurfaceScales, "
                               "formerly Surface, is the lower level's four scales for contact_at).")
-      .def(py::init([](const DistributionName& distribution, const SideName& side, std::optional<double> given_shape,
-                       std::optional<double> height_scale, double summit_radius, double summit_density,
-                       double nominal_area, double contact_modulus, std::optional<double> rms) {
+      .def(py::init([](const DistributionName& distribution, const std::optional<SideName>& side,
+                       std::optional<double> given_shape, std::optional<double> height_scale,
+                       std::optional<double> summit_radius, std::optional<double> summit_density,
+                       std::optional<double> nominal_area, std::optional<double> contact_modulus,
+                       std::optional<double> rms) {
              RoughSurface s;
              s.distribution = to_distribution(distribution.object);
-             s.side = to_side(side.object);
+             const bool weibull = s.distribution == Distribution::weibull;
+             s.side = side ? to_side(side->object) : Side::tail;  // GW's approach, as --side's default
+             if (!weibull && s.side != Side::tail)
+               throw py::value_error("the Gaussian has no bounded side (side='tail' or None)");
              // the Gaussian has no shape: None (or any shape) is taken, as Table.curve takes it
-             if (!given_shape && s.distribution == Distribution::weibull)
+             if (!given_shape && weibull)
                throw py::value_error("a Weibull surface needs its shape (shape=None is for the Gaussian)");
-             const double shape = given_shape.value_or(2.0);
-             s.shape = shape;
+             s.shape = weibull ? *given_shape : 2.0;
              if (height_scale && rms) throw py::value_error("give the height scale once: height_scale or rms");
-             s.height_scale = rms ? height_scale_from_rms(s.distribution, shape, *rms) : height_scale.value_or(1e-6);
-             s.summit_radius = summit_radius;
-             s.summit_density = summit_density;
-             s.nominal_area = nominal_area;
-             s.contact_modulus = contact_modulus;
+             // no physical value has a default: a forgotten one is an error, not a silent 1e-4 m
+             std::string missing;
+             const std::pair<const char*, bool> required[] = {
+                 {"height_scale (or rms)", height_scale || rms}, {"summit_radius", summit_radius.has_value()},
+                 {"summit_density", summit_density.has_value()}, {"nominal_area", nominal_area.has_value()},
+                 {"contact_modulus", contact_modulus.has_value()}};
+             for (const auto& [name, given] : required)
+               if (!given) missing += std::string(missing.empty() ? "" : ", ") + name;
+             if (!missing.empty()) throw py::value_error("RoughSurface needs " + missing + " (physical values have no default)");
+             s.height_scale = rms ? height_scale_from_rms(s.distribution, s.shape, *rms) : *height_scale;
+             s.summit_radius = *summit_radius;
+             s.summit_density = *summit_density;
+             s.nominal_area = *nominal_area;
+             s.contact_modulus = *contact_modulus;
              return s;
            }),
-           "distribution"_a = "weibull", "side"_a = "tail", "shape"_a = 2.0, "height_scale"_a = py::none(),
-           "summit_radius"_a = 1e-4, "summit_density"_a = 1e10, "nominal_area"_a = 1e-4, "contact_modulus"_a = 1e11,
-           py::kw_only(), "rms"_a = py::none(),
-           "The physical surface a ContactModel takes (PhysicalSurface is its former name). shape: the Weibull\n"
-           "shape a (ignored for the Gaussian, which takes None). height_scale sigma_s [m]: the Weibull scale (not\n"
-           "its rms), or the Gaussian's rms summit height (default\n"
-           "1e-6); or instead rms [m], the rms summit height GW users measure, which sets height_scale through\n"
-           "height_scale_from_rms (for a = 1.6, rms = 0.574 sigma_s). summit_radius R [m], summit_density [1/m^2],\n"
-           "nominal_area A0 [m^2], contact_modulus E* [Pa] (plane strain).")
+           "distribution"_a, "side"_a = py::none(), "shape"_a = py::none(), "height_scale"_a = py::none(),
+           "summit_radius"_a = py::none(), "summit_density"_a = py::none(), "nominal_area"_a = py::none(),
+           "contact_modulus"_a = py::none(), py::kw_only(), "rms"_a = py::none(),
+           "The physical surface a ContactModel takes (PhysicalSurface is its former name); every physical value is\n"
+           "required (no defaults). side: 'tail' (GW's approach; None means it) or 'bounded' (the Weibull's worn\n"
+           "side). shape: the Weibull shape a (required; None for the Gaussian, which has none). height_scale\n"
+           "sigma_s [m]: the Weibull scale (not its rms), or the Gaussian's rms summit height; or instead rms [m],\n"
+           "the rms summit height GW users measure, which sets height_scale through height_scale_from_rms (for\n"
+           "a = 1.6, rms = 0.574 sigma_s). summit_radius R [m], summit_density [1/m^2], nominal_area A0 [m^2],\n"
+           "contact_modulus E* [Pa] (plane strain). A missing or conflicting value raises ValueError.")
       .def_property(
           "distribution", [](const RoughSurface& s) { return s.distribution; },
           [](RoughSurface& s, const DistributionName& value) { s.distribution = to_distribution(value.object); })
@@ -75,10 +91,14 @@ void bind_surface(py::module_& m) {
       .def_property_readonly("summit_count", &RoughSurface::summit_count, "summit_density * nominal_area")
       .def("validate", &RoughSurface::validate, "Raises asperity.Error naming the first bad parameter.")
       .def("__repr__", [](const RoughSurface& s) {
-        return py::str("RoughSurface(distribution='{}', side='{}', shape={!r}, height_scale={!r}, summit_radius={!r}, "
-                       "summit_density={!r}, nominal_area={!r}, contact_modulus={!r})")
-            .format(to_string(s.distribution), to_string(s.side), s.shape, s.height_scale, s.summit_radius,
-                    s.summit_density, s.nominal_area, s.contact_modulus);
+        // what applies only: the Gaussian has no side and no shape
+        const std::string heights =
+            s.distribution == Distribution::weibull
+                ? std::string(py::str("'weibull', side='{}', shape={!r}").format(to_string(s.side), s.shape))
+                : std::string("'gaussian'");
+        return py::str("RoughSurface({}, height_scale={!r}, summit_radius={!r}, summit_density={!r}, nominal_area={!r}, "
+                       "contact_modulus={!r})")
+            .format(heights, s.height_scale, s.summit_radius, s.summit_density, s.nominal_area, s.contact_modulus);
       });
   m.def("contact_modulus_from", py::vectorize(&contact_modulus_from), "young1"_a, "poisson1"_a, "young2"_a, "poisson2"_a,
         "E* from 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (broadcasts); raises asperity.Error for E <= 0 or nu\n"

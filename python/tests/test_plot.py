@@ -123,7 +123,8 @@ def test_without_matplotlib_the_error_says_what_to_install():
     code = ("import sys; sys.modules['matplotlib'] = None; sys.modules['matplotlib.pyplot'] = None\n"
             "import asperity, asperity.plot\n"   # importing needs no matplotlib
             "t = asperity.Table.open_default()\n"
-            "m = asperity.ContactModel(t, asperity.RoughSurface('gaussian', shape=None))\n"
+            "m = asperity.ContactModel(t, asperity.RoughSurface('gaussian', rms=5e-7, summit_radius=1e-4,\n"
+            "    summit_density=1e10, nominal_area=1e-4, contact_modulus=1e11))\n"
             "try:\n    asperity.plot.area_load(m)\nexcept ImportError as e:\n    print('ImportError:', e)\n")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=dict(os.environ))
     assert result.returncode == 0, result.stderr
