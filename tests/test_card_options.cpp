@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/asperity.h"
 #include "asperity/contact_model.hpp"
 #include "asperity/error.hpp"
 #include "asperity/pressure_overclosure.hpp"
@@ -290,6 +291,54 @@ TEST(CardOptions, FaceSizeCutOffInTheCardsUnits) {
   EXPECT_NE(card.str().find("**   WARNING: the card reaches a clearance of 0.003 mm"), std::string::npos) << card.str();
   const std::vector<PressureOverclosurePoint> touching{{0, 0}, {1e8, 3e-6}};
   EXPECT_EQ(calculix_cutoff_warning(touching, 1e-9, CardUnits::si), "");
+}
+
+// The C API's card with the command line's options: datum zero-pressure and 200 rows for calculix
+// by default, the cap and the face size (in the card's units) as asked; the old function unchanged.
+TEST(CardOptions, CApiCardOptionsAsTheCommandLine) {
+  char err[512] = "";
+  asperity_table* c_table = nullptr;
+  ASSERT_EQ(asperity_table_load(ASPERITY_TEST_TABLE, &c_table, err, sizeof err), ASPERITY_OK) << err;
+  asperity_model* model =
+      asperity_model_open(c_table, "weibull", "tail", 2, 1e-6, 1e-4, 1e10, 1e-4, 1.15e11, err, sizeof err);
+  ASSERT_NE(model, nullptr) << err;
+  const auto card = [&](const char* units, const char* datum, size_t max_points, double face_size) {
+    size_t length = 0;
+    asperity_model_pressure_overclosure_card_options(model, 1e3, 1e8, 1e-3, "calculix", units, datum, max_points,
+                                                     face_size, nullptr, nullptr, 0, &length, err, sizeof err);
+    std::string text(length + 1, '\0');
+    EXPECT_EQ(asperity_model_pressure_overclosure_card_options(model, 1e3, 1e8, 1e-3, "calculix", units, datum,
+                                                               max_points, face_size, nullptr, text.data(),
+                                                               text.size(), &length, err, sizeof err),
+              ASPERITY_OK)
+        << err;
+    text.resize(length);
+    return text;
+  };
+  const std::string standard = card("mm", nullptr, 0, NAN);
+  EXPECT_EQ(rows_of(standard).size(), calculix_points_max);
+  EXPECT_NE(standard.find("TABULAR\n0,0\n"), std::string::npos) << standard;  // zero-pressure: the default
+  const std::string capped = card("mm", "mean-summit", 41, NAN);
+  EXPECT_EQ(rows_of(capped).size(), 41u);
+  EXPECT_NE(capped.find("(--overclosure-datum mean-summit)"), std::string::npos);
+  // faces of 1 mm with a card in mm: the cut-off is 1e-3 mm, and the card reaches 3 um
+  EXPECT_NE(card("mm", "mean-summit", 0, 1).find("WARNING: the card reaches a clearance"), std::string::npos);
+  EXPECT_EQ(card("mm", "mean-summit", 0, 100).find("WARNING"), std::string::npos);  // 100 mm faces: 0.1 mm
+  EXPECT_EQ(card("mm", nullptr, 0, 1).find("WARNING"), std::string::npos);  // zero-pressure: no clearance
+  EXPECT_EQ(asperity_model_pressure_overclosure_card_options(model, 1e3, 1e8, 1e-3, "calculix", "si", "mean", 0, NAN,
+                                                             nullptr, nullptr, 0, nullptr, err, sizeof err),
+            ASPERITY_BAD_NAME);
+  // the old function: mean-summit, no cap
+  size_t length = 0;
+  asperity_model_pressure_overclosure_card(model, 1e3, 1e8, 1e-3, "calculix", "si", nullptr, nullptr, 0, &length, err,
+                                           sizeof err);
+  std::string old(length + 1, '\0');
+  ASSERT_EQ(asperity_model_pressure_overclosure_card(model, 1e3, 1e8, 1e-3, "calculix", "si", nullptr, old.data(),
+                                                     old.size(), &length, err, sizeof err),
+            ASPERITY_OK);
+  EXPECT_NE(old.find("(--overclosure-datum mean-summit)"), std::string::npos);
+  asperity_model_close(model);
+  asperity_table_close(c_table);
 }
 
 }  // namespace

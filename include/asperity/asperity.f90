@@ -113,6 +113,7 @@ module asperity
   public :: asperity_model_at_pressure, asperity_model_at_real_area
   public :: asperity_contact_modulus_given
   public :: asperity_model_pressure_overclosure_card, asperity_tabulated_pressure_overclosure_card
+  public :: asperity_model_pressure_overclosure_card_options, asperity_contact_curves_pressure_overclosure_card_options
   public :: asperity_model_open_datum, asperity_model_datum, asperity_model_warnings
   public :: asperity_model_at_separation_batch
   public :: asperity_contact_curves_load, asperity_contact_curves_close, asperity_contact_curves_get_info
@@ -329,6 +330,37 @@ module asperity
       integer(c_size_t), value :: buffer_size, err_size
       integer(c_size_t), intent(out) :: length
       integer(c_int) :: asperity_model_pressure_overclosure_card
+    end function
+
+    ! The card with the command line's options and defaults: datum c_null_ptr (zero-pressure, the
+    ! default) or c_loc of a NUL-terminated name; max_points 0 for the default cap (200 for calculix);
+    ! face_size in the card's units (NaN: not given).
+    function asperity_model_pressure_overclosure_card_options(model, pressure_min, pressure_max, tolerance, format, &
+                                                              units, datum, max_points, face_size, description, &
+                                                              buffer, buffer_size, length, err, err_size) &
+        bind(c, name="asperity_model_pressure_overclosure_card_options")
+      import :: c_ptr, c_char, c_double, c_int, c_size_t
+      type(c_ptr), value :: model, datum, description, buffer
+      real(c_double), value :: pressure_min, pressure_max, tolerance, face_size
+      character(kind=c_char), dimension(*) :: format, units, err
+      integer(c_size_t), value :: max_points, buffer_size, err_size
+      integer(c_size_t), intent(out) :: length
+      integer(c_int) :: asperity_model_pressure_overclosure_card_options
+    end function
+
+    ! The same for contact curves.
+    function asperity_contact_curves_pressure_overclosure_card_options(curves, pressure_min, pressure_max, tolerance, &
+                                                                       format, units, datum, max_points, face_size, &
+                                                                       description, buffer, buffer_size, length, err, &
+                                                                       err_size) &
+        bind(c, name="asperity_contact_curves_pressure_overclosure_card_options")
+      import :: c_ptr, c_char, c_double, c_int, c_size_t
+      type(c_ptr), value :: curves, datum, description, buffer
+      real(c_double), value :: pressure_min, pressure_max, tolerance, face_size
+      character(kind=c_char), dimension(*) :: format, units, err
+      integer(c_size_t), value :: max_points, buffer_size, err_size
+      integer(c_size_t), intent(out) :: length
+      integer(c_int) :: asperity_contact_curves_pressure_overclosure_card_options
     end function
 
     ! The same card for a curve given by count points (ascending in overclosure [m], pressures [Pa]).

@@ -226,6 +226,19 @@ int asperity_model_pressure_overclosure_card(const asperity_model *model, double
                                              double tolerance, const char *format, const char *units,
                                              const char *description, char *buffer, size_t buffer_size,
                                              size_t *length, char *err, size_t err_size);
+/* The card with the command line's options and defaults (asperity contact --export): datum
+ * "zero-pressure" (NULL: the default, the card starts with the surfaces touching), "mean-summit"
+ * (asperity_model_pressure_overclosure_card's), "origin" or "mean-plane"; max_points the cap on
+ * the card's rows (0: the default, 200 for calculix, what its node-to-surface contact holds; none
+ * for abaqus and csv; a tolerance that needs more is loosened to the smallest that fits, as the
+ * header says); face_size the slave faces' edge in the card's units (m, or mm with units "mm";
+ * NaN: not given): a calculix card's header warns where its clearance reaches beyond CalculiX's
+ * contact-spring cut-off 1e-3 face_size. Statuses as above (ASPERITY_BAD_NAME for the datum). */
+int asperity_model_pressure_overclosure_card_options(const asperity_model *model, double pressure_min,
+                                                     double pressure_max, double tolerance, const char *format,
+                                                     const char *units, const char *datum, size_t max_points,
+                                                     double face_size, const char *description, char *buffer,
+                                                     size_t buffer_size, size_t *length, char *err, size_t err_size);
 /* The same card for a curve given by its points (a tabulated law, e.g. the exact contact of a
  * measured map): count >= 2 points, ascending in overclosure [m], pressures [Pa] never falling;
  * notes (may be NULL): more header lines. */
@@ -297,6 +310,15 @@ int asperity_contact_curves_pressure_overclosure_card(const asperity_contact_cur
                                                       double pressure_max, double tolerance, const char *format,
                                                       const char *units, const char *description, char *buffer,
                                                       size_t buffer_size, size_t *length, char *err, size_t err_size);
+/* With the command line's options and defaults, as asperity_model_pressure_overclosure_card_options
+ * (datum "zero-pressure" by default, "mean-summit" or "origin"). */
+int asperity_contact_curves_pressure_overclosure_card_options(const asperity_contact_curves *curves,
+                                                              double pressure_min, double pressure_max,
+                                                              double tolerance, const char *format, const char *units,
+                                                              const char *datum, size_t max_points, double face_size,
+                                                              const char *description, char *buffer,
+                                                              size_t buffer_size, size_t *length, char *err,
+                                                              size_t err_size);
 
 /* A message for a status code (static storage). */
 const char *asperity_status_string(int status);

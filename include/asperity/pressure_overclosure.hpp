@@ -96,6 +96,11 @@ inline constexpr double calculix_spring_cutoff_per_root_area = 1e-3;
 // springforc_n2f.f: xiso(200), yiso(200)): a longer card runs past them. Face-to-face contact
 // reads 41 (springforc_f2f.f: an 82-entry plconloc) and crashes beyond.
 inline constexpr std::size_t calculix_points_max = 200;
+// The cap on a card's rows where none is asked (every interface's default): calculix_points_max
+// for CalculiX, card_points_max for Abaqus and CSV.
+inline std::size_t default_card_points(CardFormat format) {
+  return format == CardFormat::calculix ? calculix_points_max : card_points_max;
+}
 
 // The card's length unit in metres: 1 (si) or 1e-3 (mm). Lengths given with a card (face_size)
 // are in its unit.

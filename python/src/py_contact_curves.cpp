@@ -17,6 +17,13 @@ namespace py = pybind11;
 using namespace pybind11::literals;
 
 namespace asperity::python {
+
+// py_fe_export.cpp: the cards' options as the command line has them
+std::size_t card_points_option(std::optional<long long> max_points, CardFormat format);
+double face_size_option(std::optional<double> face_size, CardFormat format, CardUnits units);
+void warn_spring_cutoff(const std::vector<PressureOverclosurePoint>& rows, double face_size, CardUnits units);
+
+
 namespace {
 
 // map_scalar for contact curves: values of x outside [lo, hi] (NaN aside) counted and warned
@@ -80,23 +87,32 @@ void bind_contact_curves_queries(py::class_<ContactCurves>& contact_curves) {
           "pressure_overclosure_card",
           [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,
              double tolerance, const std::string& format, const std::string& units, const std::string& description,
-             const std::string& datum) {
+             const std::string& datum, std::optional<long long> max_points, std::optional<double> face_size) {
             OverclosureDatum which;
             if (!parse_overclosure_datum(datum, which))
-              throw Error("unknown overclosure datum '" + datum + "' (mean-summit, origin, zero-pressure, mean-plane)");
+              throw py::value_error("unknown overclosure datum '" + datum +
+                                    "' (zero-pressure, mean-summit, origin, mean-plane)");
+            const CardFormat card = card_format(format);
+            const CardUnits card_unit = card_units(units);
+            const std::size_t cap = card_points_option(max_points, card);
+            const double face = face_size_option(face_size, card, card_unit);
             const PressureOverclosureTable table = tabulate_pressure_overclosure(
                 curves, pressure_min.value_or(curves.min_pressure()), pressure_max.value_or(curves.max_pressure()),
-                tolerance, which);
+                tolerance, which, cap);
             std::ostringstream out;
-            write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
+            write_pressure_overclosure(out, table, card, card_unit, description, face);
+            if (card == CardFormat::calculix) warn_spring_cutoff(table.points, face, card_unit);
             return out.str();
           },
           "pressure_min"_a = py::none(), "pressure_max"_a = py::none(), "tolerance"_a = 1e-3, "format"_a = "calculix",
-          "units"_a = "si", "description"_a = "", "datum"_a = "mean-summit",
+          "units"_a = "si", "description"_a = "", "datum"_a = "zero-pressure", "max_points"_a = py::none(),
+          "face_size"_a = py::none(),
           "FE export: the served pressure as the tabular pressure-overclosure card of CalculiX or Abaqus (or CSV),\n"
-          "overclosure from the mean summit height (datum 'mean-summit'), or 'origin' (the separation's datum) or\n"
-          "'zero-pressure'; the pressures default to the whole range served. Raises asperity.Error for a range\n"
-          "beyond the curves' or a bad tolerance.");
+          "as `asperity contact --table FILE --export` writes it: overclosure from where the card's pressure\n"
+          "reaches zero (datum 'zero-pressure', the default), or 'mean-summit' (the mean summit height) or\n"
+          "'origin' (the separation's datum); the pressures default to the whole range served; max_points and\n"
+          "face_size as ContactModel.pressure_overclosure_card's. Raises asperity.Error for a range beyond the\n"
+          "curves' or a bad tolerance, ValueError for a bad option.");
 }
 
 // the table's bounds, provenance and nodes

@@ -22,6 +22,11 @@ namespace py = pybind11;
 using namespace pybind11::literals;
 
 namespace asperity::python {
+
+// py_fe_export.cpp: the cards' options as the command line has them
+std::size_t card_points_option(std::optional<long long> max_points, CardFormat format);
+double face_size_option(std::optional<double> face_size, CardFormat format, CardUnits units);
+void warn_spring_cutoff(const std::vector<PressureOverclosurePoint>& rows, double face_size, CardUnits units);
 namespace {
 
 // asperity.ImplausibleValueWarning (a UserWarning), made once at import (bind_contact_model).
@@ -137,6 +142,7 @@ void bind_contact_model_queries(py::class_<ContactModel>& contact_model) {
 }
 
 // what a model gives beyond its answers: its surface and curve, its FE card, copies, s from d
+
 void bind_contact_model_export(py::class_<ContactModel>& contact_model) {
   contact_model
       .def_property_readonly("surface", &ContactModel::surface, py::return_value_policy::copy,
@@ -147,27 +153,38 @@ void bind_contact_model_export(py::class_<ContactModel>& contact_model) {
           "pressure_overclosure_card",
           [](const ContactModel& model, double pressure_min, double pressure_max, double tolerance,
              const std::string& format, const std::string& units, const std::string& description,
-             const std::string& overclosure_datum) {
+             const std::string& overclosure_datum, std::optional<long long> max_points,
+             std::optional<double> face_size) {
             OverclosureDatum datum;
             if (!parse_overclosure_datum(overclosure_datum, datum))
               throw py::value_error("unknown overclosure_datum '" + overclosure_datum +
-                                    "': expected 'mean-summit', 'origin', 'zero-pressure' or 'mean-plane'");
+                                    "': expected 'zero-pressure', 'mean-summit', 'origin' or 'mean-plane'");
+            const CardFormat card = card_format(format);
+            const CardUnits card_unit = card_units(units);
+            const std::size_t cap = card_points_option(max_points, card);
+            const double face = face_size_option(face_size, card, card_unit);
             const PressureOverclosureTable table =
-                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance, datum);
+                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance, datum, cap);
             std::ostringstream out;
-            write_pressure_overclosure(out, table, card_format(format), card_units(units), description);
+            write_pressure_overclosure(out, table, card, card_unit, description, face);
+            if (card == CardFormat::calculix) warn_spring_cutoff(table.points, face, card_unit);
             warn_past_gw(model.at_pressure(pressure_max).area_fraction);  // the command's check
             return out.str();
           },
           "pressure_min"_a, "pressure_max"_a, "tolerance"_a = 1e-3, "format"_a = "calculix", "units"_a = "si",
-          "description"_a = "", "overclosure_datum"_a = "mean-summit",
+          "description"_a = "", "overclosure_datum"_a = "zero-pressure", "max_points"_a = py::none(),
+          "face_size"_a = py::none(),
           "FE export: the contact-pressure law as the tabular pressure-overclosure card of CalculiX or Abaqus\n"
-          "(format 'calculix', 'abaqus' or 'csv'; units 'si' for m and Pa, 'mm' for mm and MPa) as text, the\n"
-          "overclosure from overclosure_datum ('mean-summit', the default: the mean summit height; 'origin';\n"
-          "'zero-pressure': the card's first point; 'mean-plane': a model made with datum='mean-plane'),\n"
-          "whatever the model's separation datum; linear interpolation within `tolerance` (relative, in\n"
-          "pressure) of the law from pressure_min to pressure_max [Pa]. Raises asperity.Error for a bad range\n"
-          "or tolerance.")
+          "(format 'calculix', 'abaqus' or 'csv'; units 'si' for m and Pa, 'mm' for mm and MPa) as text, as\n"
+          "`asperity contact --export` writes it: the overclosure from overclosure_datum ('zero-pressure', the\n"
+          "default: the card's first point, start the model with the surfaces touching; 'mean-summit': the mean\n"
+          "summit height; 'origin'; 'mean-plane': a model made with datum='mean-plane'), whatever the model's\n"
+          "separation datum; linear interpolation within `tolerance` (relative, in pressure) of the law from\n"
+          "pressure_min to pressure_max [Pa], in at most max_points rows (None: 200 for calculix, what its\n"
+          "node-to-surface contact holds, no cap otherwise; a tolerance that needs more is loosened, as the\n"
+          "header says). face_size: the slave faces' edge in the card's units (calculix only): warns (UserWarning,\n"
+          "and in the header) where the card reaches beyond CalculiX's contact-spring cut-off 1e-3 face_size.\n"
+          "Raises asperity.Error for a bad range or tolerance, ValueError for a bad option.")
       .def("__copy__", [](const ContactModel& model) { return model; })
       .def("__deepcopy__", [](const ContactModel& model, py::dict) { return model; }, "memo"_a)
       .def(

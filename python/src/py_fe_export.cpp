@@ -4,6 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +18,36 @@ namespace py = pybind11;
 using namespace pybind11::literals;
 
 namespace asperity::python {
+
+// The card options of ContactModel's and ContactCurves' cards, as the command line has them:
+// max_points None is the format's cap (200 for calculix); face_size in the card's units, returned
+// in metres (NaN: None). ValueError for a bad value.
+std::size_t card_points_option(std::optional<long long> max_points, CardFormat format) {
+  if (!max_points) return default_card_points(format);
+  if (*max_points < static_cast<long long>(card_points_min) || *max_points > static_cast<long long>(card_points_max))
+    throw py::value_error("max_points must be from " + std::to_string(card_points_min) + " to " +
+                          std::to_string(card_points_max) + ", got " + std::to_string(*max_points));
+  return static_cast<std::size_t>(*max_points);
+}
+
+double face_size_option(std::optional<double> face_size, CardFormat format, CardUnits units) {
+  if (!face_size) return NAN;
+  if (!(*face_size > 0 && std::isfinite(*face_size)))
+    throw py::value_error("face_size must be a positive length in the card's units (m; mm with units='mm')");
+  if (format != CardFormat::calculix)
+    throw py::value_error("face_size checks CalculiX's contact-spring cut-off: it goes with format='calculix'");
+  return *face_size * card_length_unit(units);
+}
+
+// Warns (UserWarning) where a CalculiX card reaches beyond the contact-spring cut-off of faces of
+// face_size [m], as the command line does; the card's header says it too.
+void warn_spring_cutoff(const std::vector<PressureOverclosurePoint>& rows, double face_size, CardUnits units) {
+  std::string text = calculix_cutoff_warning(rows, face_size, units);
+  if (text.empty()) return;
+  for (std::size_t at; (at = text.find("\n  ")) != std::string::npos;) text.replace(at, 3, " ");
+  text += "; use overclosure_datum='zero-pressure' (and start the model with the surfaces touching) or larger faces";
+  if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) < 0) throw py::error_already_set();
+}
 
 void bind_fe_export(py::module_& m) {
   m.def(
