@@ -664,7 +664,7 @@ void add_contact_command(CLI::App& app) {
       "A measured surface: --table FILE of contact curves (asperity exact-contact --table) is the surface\n"
       "itself (no --dist ...): --separation (from the table's datum, the map's mean plane), --pressure,\n"
       "--sweep separation|pressure or --export; CSV separation_m, separation_from_mean_summit_m,\n"
-      "nominal_pressure_Pa, stiffness_per_area_Pa_per_m, area_fraction. A query outside the range a table\n"
+      "nominal_pressure_Pa, stiffness_per_area_N_per_m3, area_fraction. A query outside the range a table\n"
       "serves (a contact-curves table's, or a scene table's for a surface) is refused with that range.\n"
       "--load, --pressure and --real-area of a surface (--dist) must be positive.\n" +
       std::string(exit_status_help));

@@ -43,7 +43,7 @@ namespace asperity {
 #define ASPERITY_CONTACT_CURVES_STATE_FIELDS(X)                                                             \
   X(double, separation, "separation_m", "[m], from the table's datum (ContactCurvesData::separation_datum)") \
   X(double, pressure, "nominal_pressure_Pa", "[Pa], mean nominal pressure")                                 \
-  X(double, stiffness, "stiffness_per_area_Pa_per_m", "-dp/d(separation) [Pa/m]")                           \
+  X(double, stiffness, "stiffness_per_area_N_per_m3", "-dp/d(separation) [N/m^3 = Pa/m]")                           \
   X(double, area_fraction, "area_fraction", "real contact area / nominal area")
 
 struct ContactCurvesState {
@@ -58,7 +58,7 @@ ASPERITY_DEFINE_RECORD(ContactCurvesState, ASPERITY_CONTACT_CURVES_STATE_FIELDS)
   X(double, separation, "separation_m", "[m], from the table's datum (ContactCurvesData::separation_datum)")     \
   X(double, separation_from_mean_summit, "separation_from_mean_summit_m", "[m], from the mean summit height")   \
   X(double, pressure, "nominal_pressure_Pa", "[Pa], mean nominal pressure")                                     \
-  X(double, stiffness, "stiffness_per_area_Pa_per_m", "-dp/d(separation) [Pa/m]")                               \
+  X(double, stiffness, "stiffness_per_area_N_per_m3", "-dp/d(separation) [N/m^3 = Pa/m]")                               \
   X(double, area_fraction, "area_fraction", "real contact area / nominal area")                                 \
   X(double, summits_in_contact, "summits_in_contact_per_m2", "summits in contact per m^2 of nominal area (NaN: not stored)")
 
