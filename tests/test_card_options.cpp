@@ -316,7 +316,7 @@ TEST(CardOptions, CApiCardOptionsAsTheCommandLine) {
     return text;
   };
   const std::string standard = card("mm", nullptr, 0, NAN);
-  EXPECT_EQ(rows_of(standard).size(), calculix_points_max);
+  EXPECT_LE(rows_of(standard).size(), calculix_points_max);
   EXPECT_NE(standard.find("TABULAR\n0,0\n"), std::string::npos) << standard;  // zero-pressure: the default
   const std::string capped = card("mm", "mean-summit", 41, NAN);
   EXPECT_EQ(rows_of(capped).size(), 41u);
