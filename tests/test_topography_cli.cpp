@@ -362,6 +362,14 @@ TEST(TopographyCli, NextStepsRunAsPrinted) {
   ASSERT_EQ(card.status, 0) << card.err;
   EXPECT_EQ(read_text(directory + "/" + model + ".inp").rfind("** asperity", 0), 0u);
   EXPECT_NE(r.out.find("Its pressure-overclosure card"), std::string::npos);
+  // surface --card writes that card: the same rows
+  const std::string card_path = directory + "/surface-card.inp";
+  std::filesystem::remove(card_path);
+  const CommandRun with_card = run({surfaces + "/digitalsurf-650x650.x3p", "--ensemble", "40", "--modulus", "1e11",
+                                    "--pressure", "1e6,1e7", "--no-persson", "--quiet", "--card", card_path});
+  ASSERT_EQ(with_card.status, 0) << with_card.err;
+  const auto rows_of = [](const std::string& card) { return card.substr(card.find("*SURFACE BEHAVIOR")); };
+  EXPECT_EQ(rows_of(read_text(card_path)), rows_of(read_text(directory + "/" + model + ".inp")));
 
   const CommandRun afm_run = run(with(afm_contact, {"--json"}));
   ASSERT_EQ(afm_run.status, 0) << afm_run.err;

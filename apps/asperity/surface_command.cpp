@@ -21,6 +21,12 @@
 #include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/surface_report.hpp"
 #include "asperity/topography/units.hpp"
+#include "asperity/topography/next_steps.hpp"
+#include "asperity/contact_model.hpp"
+#include "asperity/output.hpp"
+#include "asperity/pressure_overclosure.hpp"
+#include "asperity/table.hpp"
+#include "fe_card_options.hpp"
 #include "command_line.hpp"
 #include "option_helpers.hpp"
 #include "law_options.hpp"
@@ -34,7 +40,7 @@ constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
   std::string file, format, pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report,
-      exact_boundary, exact_kernel;
+      exact_boundary, exact_kernel, card, card_format;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given, area = not_given,
          confidence = not_given;
   long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
@@ -124,7 +130,38 @@ std::string summary_text(topo::SurfaceAnalysis& analysis) {
   return text;
 }
 
-int run_surface(const Options& o) {
+// --card FILE: the pressure-overclosure card of the model the verdict names, what next_steps'
+// card command writes (the default table, the card's defaults, the contact's pressure range);
+// none named: refused, naming the exact contact's card instead.
+void write_named_card(const topo::SurfaceAnalysis& a, const Options& o, const CLI::App& command, CardFormat format) {
+  const topo::NextSteps next = topo::next_steps(a);
+  const topo::ModelContact* curves = next.model_named && a.contact ? a.contact->find(next.model) : nullptr;
+  if (!curves || !curves->served)
+    throw Error("--card: " + next.why + (next.exact_command.empty() ? "" : "; the map's exact contact has a card: " +
+                                                                         next.exact_command));
+  const Table table = o.table.empty() ? Table::open_default() : Table::open(o.table);
+  const ContactModel model(table, curves->surface);
+  const topo::ContactComparison& c = *a.contact;
+  const OverclosureDatum datum = cli::overclosure_datum_option("");
+  const PressureOverclosureTable card = tabulate_pressure_overclosure(
+      model, c.pressure_min, c.pressure_max, 1e-3, datum, cli::card_max_points(0, format));
+  std::ostringstream out;
+  write_pressure_overclosure(out, card, format, CardUnits::si,
+                             "asperity " ASPERITY_VERSION_STRING ": the pressure-overclosure law (Greenwood-Williamson) "
+                             "of the model asperity surface names for " + a.map.source + ": " + next.why);
+  OutputPlan plan(o.overwrite);
+  plan.input(o.file);
+  plan.file("--card", o.card, output_kinds::card);
+  plan.check();
+  OutputTransaction outputs(plan);
+  outputs.stage(o.card, out.str());
+  outputs.commit();
+  note(command, "--card " + o.card + ": " + next.model + ", " + std::to_string(card.points.size()) +
+                    " points from " + format_double(c.pressure_min) + " to " + format_double(c.pressure_max) +
+                    " Pa, overclosure from the " + datum_name(datum) + " datum (the same card: " + next.card_command + ")");
+}
+
+int run_surface(const Options& o, const CLI::App& command) {
   topo::AnalysisOptions options;
   options.read = read_options(o);
   options.level = !o.no_level;
@@ -145,9 +182,9 @@ int run_surface(const Options& o) {
   const bool exact_options = !o.exact_boundary.empty() || !o.exact_kernel.empty() || given(o.exact_tolerance);
   if (exact_options && !o.exact) usage("--exact-boundary, --exact-kernel and --exact-tolerance go with --exact");
   const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area) ||
-                       o.exact || o.no_persson || !o.law.law.empty();
+                       o.exact || o.no_persson || !o.law.law.empty() || !o.card.empty();
   if (contact && !given(modulus))
-    usage("the contact curves (--pressure, --load, --area, --table, --exact, --law) need the contact modulus: --modulus "
+    usage("the contact curves (--pressure, --load, --area, --table, --exact, --law, --card) need the contact modulus: --modulus "
           "E* [Pa] or --e1 --nu1 --e2 --nu2");
   check_no_law_options(o.law);
   if (!o.law.law.empty()) law_values(o.law);  // the law and its material checked before the analysis
@@ -158,6 +195,17 @@ int run_surface(const Options& o) {
   const std::size_t memory_limit = topo::memory_limit_option(o.max_memory, "--max-memory");
   // the report folder checked before any work (the output policy: docs/reliability.md)
   if (!o.report.empty()) topo::report_plan(o.report, o.file, o.overwrite);
+  CardFormat card_format = CardFormat::calculix;
+  if (!o.card.empty()) {
+    if (!o.card_format.empty() && !parse_card_format(o.card_format, card_format))
+      usage("--card-format: calculix, abaqus or csv, not '" + quote_text(o.card_format) + "'");
+    OutputPlan plan(o.overwrite);  // checked before any work too
+    plan.input(o.file);
+    plan.file("--card", o.card, output_kinds::card);
+    plan.check();
+  } else if (!o.card_format.empty()) {
+    usage("--card-format goes with --card FILE");
+  }
   topo::HeightMap map = topo::read_height_map(o.file, options.read);
   if (contact) {
     topo::ContactOptions curves;
@@ -238,6 +286,7 @@ int run_surface(const Options& o) {
                 << " files)\n";
   }
   // statistics only: what was asked beyond them (summits, fits, curves) does not exist
+  if (!o.card.empty() && !analysis.noise_floor.reached) write_named_card(analysis, o, command, card_format);
   if (analysis.noise_floor.reached) throw Error(quote_text(analysis.map.source, 4096) + ": " + analysis.noise_floor.text);
   return exit_success;
 }
@@ -335,6 +384,12 @@ void add_surface_command(CLI::App& app) {
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")
       ->type_name("DIR")->group(output);
   add_quiet_option(*command)->group(output);
+  add_text(*command, "--card", o.card,
+           "write the pressure-overclosure card of the model the verdict names for the contact (what the summary's "
+           "next steps print as its card command; needs --modulus); none named: refused, naming the exact contact's card")
+      ->type_name("FILE")->group(output);
+  add_text(*command, "--card-format", o.card_format, "with --card: calculix (default), abaqus or csv")
+      ->type_name("FORMAT")->group(output);
   command->add_flag("--json", o.json,
                     std::string("write the JSON (schema ") + topo::surface_json_schema + ") instead of the summary")
       ->group(output);
@@ -361,7 +416,7 @@ void add_surface_command(CLI::App& app) {
   CLI::App* self = command;
   set_action(*command, [options, self] {
     try {
-      return run_surface(*options);
+      return run_surface(*options, *self);
     } catch (const std::bad_alloc&) {  // the analysis's own name its estimate
       throw Error("out of memory reading '" + quote_text(options->file, 4096) + "': give a smaller map");
     }

@@ -1,5 +1,6 @@
 #include "asperity/topography/next_steps.hpp"
 
+#include <cstdio>
 #include <filesystem>
 
 #include "asperity/integrals.hpp"
@@ -22,6 +23,13 @@ std::string shell_word(const std::string& word) {
 }
 
 std::string number(double value) { return format_double(value); }
+
+// a pressure range's end: six digits (the range is a choice, not a result to reproduce)
+std::string pressure_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
 
 // The options that read the map as the analysis read it (format, sampling, units, leveling)
 std::string read_options(const SurfaceAnalysis& a) {
@@ -63,8 +71,8 @@ std::string python_call(const RoughSurface& s) {
 std::string exact_command(const SurfaceAnalysis& a, const ContactComparison& c) {
   const std::string stem = std::filesystem::path(a.map.source).stem().string();
   return "asperity exact-contact " + shell_word(a.map.source) + read_options(a) + " --modulus " +
-         number(c.options.contact_modulus) + " --boundary padded --kernel love --sweep pressure:" + number(c.pressure_min) +
-         ":" + number(c.pressure_max) + ":17 --table " + shell_word(stem + "-exact.h5") + " --card " +
+         number(c.options.contact_modulus) + " --boundary padded --kernel love --sweep pressure:" + pressure_text(c.pressure_min) +
+         ":" + pressure_text(c.pressure_max) + ":17 --table " + shell_word(stem + "-exact.h5") + " --card " +
          shell_word(stem + "-exact.inp");
 }
 
@@ -96,10 +104,10 @@ NextSteps next_steps(const SurfaceAnalysis& a) {
   if (curves && curves->served) {
     const std::string options = surface_options(curves->surface);
     next.contact_command = "asperity contact" + options + " --datum mean-summit --sweep pressure:" +
-                           number(c.pressure_min) + ":" + number(c.pressure_max) + ":9";
+                           pressure_text(c.pressure_min) + ":" + pressure_text(c.pressure_max) + ":9";
     next.python = python_call(curves->surface);
-    next.card_command = "asperity contact" + options + " --export calculix --pressure-range " + number(c.pressure_min) +
-                        ":" + number(c.pressure_max) + " > " + shell_word(next.model + ".inp");
+    next.card_command = "asperity contact" + options + " --export calculix --pressure-range " + pressure_text(c.pressure_min) +
+                        ":" + pressure_text(c.pressure_max) + " > " + shell_word(next.model + ".inp");
     next.text = "Next: " + next.why + ". Its curves in your code: `" + next.contact_command + "`; in Python:\n\n" +
                 next.python + "\n\nIts pressure-overclosure card for CalculiX: `" + next.card_command +
                 "` (or `asperity surface ... --card FILE`). The map's own exact contact, what every model is judged "
