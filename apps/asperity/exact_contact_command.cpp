@@ -38,7 +38,7 @@ struct Options {
   std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, method, fields,
       card, card_format, units, table, overclosure_datum;
   double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
-         tolerance = not_given, table_safety = not_given, face_size = not_given;
+         tolerance = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
   bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false, overwrite = false;
@@ -212,12 +212,64 @@ std::string stage_table(OutputTransaction& outputs, const Options& o, topo::Exac
   return line.str();
 }
 
+// --card-tolerance: solves added where the card's curve bends. Between neighbouring solved
+// points (from the lowest pressure solved up) one more solve at the middle mean gap measures
+// linear interpolation's error there (relative, in pressure); where it exceeds `tolerance` both
+// halves are split again. Every such solve becomes a point. At most `budget` solves; returns the
+// note for the card's header (the solves, the largest error measured where it ended within it).
+std::string refine_for_card(topo::ExactContact& solver, std::vector<topo::ContactStep>& results, double tolerance,
+                            std::size_t budget, const CLI::App& command) {
+  std::vector<topo::ContactStep> sorted = results;  // by mean gap, descending: overclosure ascending
+  std::sort(sorted.begin(), sorted.end(),
+            [](const topo::ContactStep& a, const topo::ContactStep& b) { return a.mean_gap > b.mean_gap; });
+  std::vector<std::pair<topo::ContactStep, topo::ContactStep>> pending;
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i - 1].pressure > 0 && sorted[i].mean_gap < sorted[i - 1].mean_gap)
+      pending.push_back({sorted[i - 1], sorted[i]});
+  std::size_t solves = 0, within = 0, beyond = 0;
+  double worst_within = 0, worst_left = 0;
+  while (!pending.empty()) {
+    const auto [a, b] = pending.back();
+    pending.pop_back();
+    if (solves >= budget) {
+      ++beyond;
+      continue;
+    }
+    const topo::ContactStep mid = solver.at_mean_gap(0.5 * (a.mean_gap + b.mean_gap));
+    ++solves;
+    results.push_back(mid);
+    const double chord = 0.5 * (a.pressure + b.pressure);
+    const double error = mid.pressure > 0 ? std::fabs(chord - mid.pressure) / mid.pressure : INFINITY;
+    if (error > tolerance) {
+      worst_left = std::max(worst_left, error);
+      pending.push_back({mid, b});
+      pending.push_back({a, mid});
+    } else {
+      ++within;
+      worst_within = std::max(worst_within, error);
+    }
+  }
+  std::ostringstream note;
+  note << "--card-tolerance " << tolerance << ": " << solves
+       << " solves added at the middle of intervals (in mean gap) where linear interpolation\n"
+       << "  between solved points missed the middle's solve by more than that; at the " << within
+       << " middles where it ended,\n  the error measured was " << worst_within
+       << " at most (before the middle became a row)";
+  if (beyond > 0) {
+    note << "\n  WARNING: " << beyond << " intervals left unchecked after " << budget
+         << " solves (the largest error measured there: " << worst_left << ")";
+    warn(command, "--card-tolerance: " + std::to_string(beyond) + " intervals left unchecked after " +
+                      std::to_string(budget) + " added solves; give more pressures or a larger tolerance");
+  }
+  return note.str();
+}
+
 // The pressure-overclosure card of the solved curve, staged (warnings on standard error);
 // returns its text.
 std::string stage_card(OutputTransaction& outputs, const Options& o, const CLI::App& command, const topo::ExactContact& solver,
                 const topo::HeightMap& map, const std::vector<topo::ContactStep>& results,
                 const topo::ExactContactOptions& options, CardFormat card_format, CardUnits card_units,
-                OverclosureDatum card_datum) {
+                OverclosureDatum card_datum, const std::string& refinement) {
   const std::string boundary = topo::contact_boundary_name(options.boundary);
   const std::string kernel = topo::contact_kernel_name(options.kernel);
   // overclosure in the card's datum: -(mean gap) from the map's mean plane, shifted
@@ -249,6 +301,7 @@ std::string stage_card(OutputTransaction& outputs, const Options& o, const CLI::
         << options.tolerance << ");\n"
         << "  the card interpolates linearly between them: give as many pressures as the analysis needs\n"
         << "first point: zero pressure at first contact (the flat at the map's highest point)";
+  if (!refinement.empty()) notes << "\n" << refinement;
   std::ostringstream out;
   write_tabulated_pressure_overclosure(out, card, card_format, card_units, description.str(), notes.str(),
                                        face_size_option(o.face_size, card_format, card_units, "--card-format"));
@@ -296,8 +349,10 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
     usage("--card-format: '" + quote_text(o.card_format) + "' is not calculix, abaqus or csv");
   if (!o.units.empty() && !parse_card_units(o.units, card_units)) usage("--units: '" + quote_text(o.units) + "' is not si or mm");
   if (o.card.empty() && (!o.card_format.empty() || !o.units.empty() || o.max_points > 0 ||
-                         !o.overclosure_datum.empty() || given(o.face_size)))
-    usage("--card-format, --units, --max-points, --overclosure-datum and --face-size go with --card");
+                         !o.overclosure_datum.empty() || given(o.face_size) || given(o.card_tolerance)))
+    usage("--card-format, --units, --max-points, --overclosure-datum, --face-size and --card-tolerance go with --card");
+  if (given(o.card_tolerance) && !(o.card_tolerance >= card_tolerance_min && o.card_tolerance <= card_tolerance_max))
+    usage("--card-tolerance must be from 1e-06 to 0.1");
   const OverclosureDatum card_datum = overclosure_datum_option(o.overclosure_datum);
   // a measured map has no fitted distribution: no origin (the Weibull origin, the Gaussian's mean)
   if (card_datum == OverclosureDatum::origin)
@@ -358,8 +413,18 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
     table_note = stage_table(outputs, o, solver, map, results, steps.values, options);
   }
   std::string card;
-  if (!o.card.empty())
-    card = stage_card(outputs, o, command, solver, map, results, options, card_format, card_units, card_datum);
+  if (!o.card.empty()) {
+    std::vector<topo::ContactStep> card_points = results;
+    std::string refinement;
+    if (given(o.card_tolerance))
+      refinement = refine_for_card(solver, card_points, o.card_tolerance,
+                                   card_max_points(o.max_points, card_format) > results.size() + 1
+                                       ? card_max_points(o.max_points, card_format) - 1 - results.size()
+                                       : 0,
+                                   command);
+    card = stage_card(outputs, o, command, solver, map, card_points, options, card_format, card_units, card_datum,
+                      refinement);
+  }
   outputs.commit();
   if (!table_note.empty()) note(command, table_note);  // what the table states, not progress: also with --quiet
   if (o.card == "-") std::cout << card;
@@ -495,6 +560,11 @@ void add_exact_contact_command(CLI::App& app) {
              "the card's header says) when the card reaches beyond node-to-surface contact's spring cut-off, a "
              "clearance of 1e-3 times it")
       ->type_name("L")->group(output);
+  add_number(*command, "--card-tolerance", o.card_tolerance,
+             "with --card: solve more where the curve bends: between neighbouring solved points one more solve at "
+             "the middle mean gap, split again where linear interpolation misses it by more than REL (relative, in "
+             "pressure); the card's header states the solves added and the error measured")
+      ->type_name("REL")->group(output);
   add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
   command->footer(
       "Output: CSV, one row per step: pressure_Pa (nominal: load over the map's area), load_N,\n"

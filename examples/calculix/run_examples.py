@@ -9,6 +9,8 @@ against asperity's law at the same overclosure.
   exact  `asperity exact-contact --card` of the AFM map (tests/data), 13 pressures from 0.1 to
          100 MPa: ccx against the exact curve solved at 49 pressures over the same range; fails
          beyond EXACT_TOLERANCE (the card interpolates linearly between its 13 solved points).
+  exact-refined  the same with --card-tolerance 0.01 (solves added where the curve bends) against
+         the curve refined to --card-tolerance 0.001; fails beyond REFINED_TOLERANCE.
   datum  the gw card with --overclosure-datum mean-summit and the slave placed at the card's
          clearance (the first point): the faces (0.5 mm) give a contact-spring cut-off of 5e-4 mm at
          interior nodes, below the card's clearance, so nothing acts until the pressure jumps;
@@ -34,6 +36,7 @@ SURFACE = ["--dist", "weibull", "--shape", "2", "--rms", "5e-7", "--radius", "1e
 PRESSURE_RANGE = "1e3:1e8"  # Pa: the README's card
 DIGITS = 5e-7               # ccx prints CSTR and CDIS with 7 digits: half a unit of the 7th, relative
 EXACT_TOLERANCE = 0.08      # the 13-point exact card's linear interpolation against the 49-point curve (0.070 measured)
+REFINED_TOLERANCE = 0.012   # --card-tolerance 0.01 against the curve refined to 1e-3
 INCREMENTS = 40             # two_blocks.inp: 0.025 of the step each
 
 
@@ -209,6 +212,19 @@ def main():
         rows, law = rows_of(card), rows_of(open(law_path).read())
         results = run_deck(ccx, directory, "exact", card, 0.995 * rows[-1][1])
         compare("exact", results, rows, law, EXACT_TOLERANCE, rows[1][1])
+
+        # exact-refined: the same 13 pressures with --card-tolerance 0.01 (solves added where the curve
+        # bends), against the curve refined to 1e-3 (its own midpoint solves within 1e-3)
+        law_path = os.path.join(directory, "exact-fine.csv")
+        run(exact + ["--sweep", "pressure:1e5:1e8:13", "--card", card_path, "--overwrite", "--card-tolerance",
+                     "0.01"])
+        run(exact + ["--sweep", "pressure:1e5:1e8:13", "--card", law_path, "--card-format", "csv", "--overwrite",
+                     "--card-tolerance", "0.001", "--max-points", "2000"])
+        card = open(card_path).read()
+        rows, law = rows_of(card), rows_of(open(law_path).read())
+        results = run_deck(ccx, directory, "exact-refined", card, 0.995 * rows[-1][1])
+        print("exact-refined: the card has %d rows" % len(rows))
+        compare("exact-refined", results, rows, law, REFINED_TOLERANCE, rows[1][1])
 
         # datum: the mean-summit card, the slave placed at its clearance (its first point)
         card = run(export + ["--overclosure-datum", "mean-summit"]).stdout
