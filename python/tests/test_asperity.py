@@ -549,7 +549,8 @@ def test_fe_export_card_from_python(table):
     model = asperity.ContactModel(table, asperity.PhysicalSurface("weibull", shape=2.0, height_scale=1e-6, summit_radius=1e-4,
                                                                    summit_density=1e10, nominal_area=1e-4,
                                                                    contact_modulus=1.15e11))
-    card = model.pressure_overclosure_card(1e3, 1e8, 1e-3, "calculix", "si", "from Python")
+    card = model.pressure_overclosure_card(1e3, 1e8, 1e-3, "calculix", "si", "from Python",
+                                           overclosure_datum="mean-summit")
     lines = card.splitlines()
     start = lines.index("*SURFACE BEHAVIOR,PRESSURE-OVERCLOSURE=TABULAR")
     points = [tuple(map(float, line.split(","))) for line in lines[start + 1:] if line and line[0] in "-0123456789"]

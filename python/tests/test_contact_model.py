@@ -108,7 +108,7 @@ def test_at_separations_is_at_separation_element_by_element(table, datum):
 def test_the_card_takes_the_datum_names(table):
     plane = asperity.ContactModel(table, steel(), datum="mean-plane", mean_summit_height=3e-7)
     default = plane.pressure_overclosure_card(1e3, 1e8, format="abaqus")
-    assert "--overclosure-datum mean-summit, the default" in default
+    assert "(--overclosure-datum zero-pressure,\n**   the default)" in default
     assert default == asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, format="abaqus")
     card = plane.pressure_overclosure_card(1e3, 1e8, format="abaqus", overclosure_datum="mean-plane")
     assert "from the mean plane of the surface heights" in card and "summit height is 3e-07 m above it" in card
@@ -116,6 +116,25 @@ def test_the_card_takes_the_datum_names(table):
         asperity.ContactModel(table, steel()).pressure_overclosure_card(1e3, 1e8, overclosure_datum="mean-plane")
     with pytest.raises(ValueError, match="unknown overclosure_datum"):
         plane.pressure_overclosure_card(1e3, 1e8, overclosure_datum="plane")
+
+
+def test_the_card_takes_max_points_and_face_size_as_the_command(table):
+    # the command line's defaults: 200 rows for calculix, none for abaqus; face_size in the card's units
+    model = asperity.ContactModel(table, steel())
+    rows = lambda card: [line for line in card.splitlines() if line[:1].isdigit()]
+    assert len(rows(model.pressure_overclosure_card(1e3, 1e8, 1e-5, units="mm"))) <= 200  # loosened to fit
+    assert len(rows(model.pressure_overclosure_card(1e3, 1e8, max_points=41, units="mm"))) == 41
+    assert len(rows(model.pressure_overclosure_card(1e3, 1e8, 1e-5, format="abaqus"))) > 200
+    with pytest.raises(ValueError, match="max_points"):
+        model.pressure_overclosure_card(1e3, 1e8, max_points=2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the default datum has no clearance: no warning for any face
+        model.pressure_overclosure_card(1e3, 1e8, units="mm", face_size=1e-3)
+    with pytest.warns(UserWarning, match=r"= 0\.001 mm for faces of 1 mm"):  # 1 mm, not 1 m
+        card = model.pressure_overclosure_card(1e3, 1e8, units="mm", overclosure_datum="mean-summit", face_size=1)
+    assert "**   WARNING: the card reaches a clearance of" in card
+    with pytest.raises(ValueError, match="face_size"):
+        model.pressure_overclosure_card(1e3, 1e8, format="abaqus", face_size=1)
 
 
 def test_a_full_tables_model_answers_everything(table):
