@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -231,3 +232,21 @@ TEST(OutputPolicy, SignalsLeaveNoTemporary) {
 }
 
 }  // namespace
+
+// `--report out/` where out does not exist yet: the trailing separator names the folder (it was
+// refused as "'out' is not a directory"), as does a relative path whose first folder is missing
+// too (it read the status of a path that failed).
+TEST(OutputPolicy, AFolderToMakeMayEndInASeparator) {
+  const std::string dir = test_directory("folder-separator");
+  for (const std::string& folder : {dir + "/out/", dir + "/new/deeper/"}) {
+    OutputPlan plan(false);
+    plan.folder("--report", folder, {{"report.md", &kinds::report_file}});
+    EXPECT_NO_THROW(plan.check()) << folder;
+  }
+  const std::string here = std::filesystem::current_path().string();
+  std::filesystem::current_path(dir);
+  OutputPlan relative(false);
+  relative.folder("--report", "first/second/", {{"report.md", &kinds::report_file}});
+  EXPECT_NO_THROW(relative.check());
+  std::filesystem::current_path(here);
+}

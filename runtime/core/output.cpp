@@ -278,12 +278,16 @@ std::string folder_problem(const std::string& path, bool& made_later) {
   if (error == ENOTDIR) return "cannot be made: a part of its path is not a directory";
   if (error != ENOENT) return "cannot be examined: " + reason(error);
   // the nearest folder above that exists must take a new one
-  fs::path above = fs::path(path).lexically_normal().parent_path();
+  // ("out/" names the folder out: its trailing separator is no file name)
+  fs::path folder = fs::path(path).lexically_normal();
+  if (!folder.has_filename()) folder = folder.parent_path();
+  fs::path above = folder.parent_path();
   if (above.empty()) above = ".";
   while (::stat(above.c_str(), &status) != 0) {
     if (errno != ENOENT) { const int error = errno; return "cannot be made: '" + printable_path(above.string()) + "': " + reason(error); }
-    if (above == above.parent_path() || above.parent_path().empty()) break;
-    above = above.parent_path();
+    // a relative path's first folder missing too: the working directory must take it
+    if (above == above.parent_path() || above == ".") return "cannot be made: no folder above it exists";
+    above = above.parent_path().empty() ? fs::path(".") : above.parent_path();
   }
   if (!S_ISDIR(status.st_mode)) return "cannot be made: '" + printable_path(above.string()) + "' is not a directory";
   if (::access(above.c_str(), W_OK | X_OK) != 0)
