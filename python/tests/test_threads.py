@@ -116,7 +116,9 @@ def test_curves_tables_and_distributions_from_many_threads():
     table = asperity.Table.open_default()
     curve = table.curve("weibull", "tail", 1.6)
     surface = asperity.Surface(summit_count=1e4, summit_radius=1e-4, height_scale=1e-6, contact_modulus=1e11)
-    model = asperity.ContactModel(table, asperity.PhysicalSurface("weibull", "tail", shape=1.6))
+    model = asperity.ContactModel(table, asperity.PhysicalSurface(
+        "weibull", "tail", shape=1.6, height_scale=1e-6, summit_radius=1e-4, summit_density=1e10, nominal_area=1e-4,
+        contact_modulus=1e11))
     inverse = asperity.InverseCurve(curve, 3)
     law = asperity.PerssonLaw(beta=0.5)
     distribution = topography.HeightDistribution("weibull_tail", 0.0, 1e-8, 1.5)
