@@ -495,14 +495,14 @@ bool card_options(const char* datum, size_t max_points, double face_size, asperi
   face_size_m = std::isnan(face_size) ? face_size : face_size * asperity::card_length_unit(card_units);
   return true;
 }
-}  // namespace
 
-int asperity_model_pressure_overclosure_card_options(const asperity_model* model, double pressure_min,
-                                                     double pressure_max, double tolerance, const char* format,
-                                                     const char* units, const char* datum, size_t max_points,
-                                                     double face_size, const char* description, char* buffer,
-                                                     size_t buffer_size, size_t* length, char* err, size_t err_size) {
-  if (!model) return ASPERITY_BAD_HANDLE;
+// The card of a model or of contact curves with the _options functions' names and values (C++
+// linkage: a template, inside the extern "C" block)
+extern "C++" template <class Source>
+int card_with_options(const Source& source, double pressure_min, double pressure_max, double tolerance,
+                      const char* format, const char* units, const char* datum, size_t max_points, double face_size,
+                      const char* description, char* buffer, size_t buffer_size, size_t* length, char* err,
+                      size_t err_size) {
   asperity::CardFormat card_format;
   asperity::CardUnits card_units;
   if (!card_names(format, units, card_format, card_units, err, err_size)) return ASPERITY_BAD_NAME;
@@ -515,11 +515,22 @@ int asperity_model_pressure_overclosure_card_options(const asperity_model* model
       [&](std::ostream& out) {
         if (!(std::isnan(face_size) || face_size > 0)) throw asperity::Error("the face size must be positive");
         const asperity::PressureOverclosureTable table = asperity::tabulate_pressure_overclosure(
-            model->model, pressure_min, pressure_max, tolerance, card_datum, cap);
+            source, pressure_min, pressure_max, tolerance, card_datum, cap);
         asperity::write_pressure_overclosure(out, table, card_format, card_units, description ? description : "",
                                              face_size_m);
       },
       buffer, buffer_size, length, err, err_size);
+}
+}  // namespace
+
+int asperity_model_pressure_overclosure_card_options(const asperity_model* model, double pressure_min,
+                                                     double pressure_max, double tolerance, const char* format,
+                                                     const char* units, const char* datum, size_t max_points,
+                                                     double face_size, const char* description, char* buffer,
+                                                     size_t buffer_size, size_t* length, char* err, size_t err_size) {
+  if (!model) return ASPERITY_BAD_HANDLE;
+  return card_with_options(model->model, pressure_min, pressure_max, tolerance, format, units, datum, max_points,
+                           face_size, description, buffer, buffer_size, length, err, err_size);
 }
 
 asperity_status asperity_contact_curves_load(const char* path, asperity_contact_curves** curves, char* err,
@@ -632,23 +643,8 @@ int asperity_contact_curves_pressure_overclosure_card_options(const asperity_con
                                                               size_t buffer_size, size_t* length, char* err,
                                                               size_t err_size) {
   if (!curves) return ASPERITY_BAD_HANDLE;
-  asperity::CardFormat card_format;
-  asperity::CardUnits card_units;
-  if (!card_names(format, units, card_format, card_units, err, err_size)) return ASPERITY_BAD_NAME;
-  asperity::OverclosureDatum card_datum;
-  std::size_t cap;
-  double face_size_m;
-  if (!card_options(datum, max_points, face_size, card_format, card_units, card_datum, cap, face_size_m, err, err_size))
-    return ASPERITY_BAD_NAME;
-  return card_out(
-      [&](std::ostream& out) {
-        if (!(std::isnan(face_size) || face_size > 0)) throw asperity::Error("the face size must be positive");
-        const asperity::PressureOverclosureTable table = asperity::tabulate_pressure_overclosure(
-            curves->curves, pressure_min, pressure_max, tolerance, card_datum, cap);
-        asperity::write_pressure_overclosure(out, table, card_format, card_units, description ? description : "",
-                                             face_size_m);
-      },
-      buffer, buffer_size, length, err, err_size);
+  return card_with_options(curves->curves, pressure_min, pressure_max, tolerance, format, units, datum, max_points,
+                           face_size, description, buffer, buffer_size, length, err, err_size);
 }
 
 int asperity_tabulated_pressure_overclosure_card(const double* pressures, const double* overclosures, size_t count,
