@@ -41,6 +41,7 @@ inline constexpr double PhysicalState::*const physical_state_members[] = {
 enum class ContactQuantity { count, real_area, area_fraction, load, pressure, stiffness };
 inline constexpr int contact_quantity_count = 6;
 const char* contact_quantity_name(ContactQuantity quantity) noexcept;
+// The name as contact_quantity_name spells it, or as PhysicalState's field does ("real_area").
 bool parse_contact_quantity(const std::string& name, ContactQuantity& quantity) noexcept;
 
 // Above this real-area fraction A/A0 the model is past its validity: GW's asperities are

@@ -73,7 +73,7 @@ void bind_contact_model_queries(py::class_<ContactModel>& contact_model) {
             if (!parse_contact_quantity(quantity, q))
               throw py::value_error("unknown quantity '" + quantity +
                                     "': expected 'count', 'real-area', 'area-fraction', 'load', 'pressure' or "
-                                    "'stiffness'");
+                                    "'stiffness' (or the field's spelling: 'real_area', 'area_fraction')");
             // outside a scene table's range (answered NaN) counted first (the answer may overwrite
             // the input); a full table's model serves every separation: no pass
             const bool everywhere = model.min_separation() == -HUGE_VAL && model.max_separation() == HUGE_VAL;

@@ -98,6 +98,8 @@ def test_at_separations_is_at_separation_element_by_element(table, datum):
         assert model.at_separations(quantity, float(d[5])) == got[5]  # a number gives a float
         out = np.empty_like(d)
         assert model.at_separations(quantity, d, out=out) is out
+        # the field's spelling names the same quantity (issue 39: 'real-area' but the field real_area)
+        np.testing.assert_array_equal(model.at_separations(quantity.replace("-", "_"), d), got)
         np.testing.assert_array_equal(out, got)
     grid = d[:996].reshape(12, 83)
     assert model.at_separations("load", grid).shape == (12, 83)

@@ -30,8 +30,15 @@ const char* contact_quantity_name(ContactQuantity quantity) noexcept {
 }
 
 bool parse_contact_quantity(const std::string& name, ContactQuantity& quantity) noexcept {
+  // the command's spelling ("real-area") or the record's field ("real_area"): one quantity
+  const auto same = [&name](const char* spelling) noexcept {
+    std::size_t k = 0;
+    for (; spelling[k] && k < name.size(); ++k)
+      if (name[k] != spelling[k] && !(name[k] == '_' && spelling[k] == '-')) return false;
+    return !spelling[k] && k == name.size();
+  };
   for (int k = 0; k < contact_quantity_count; ++k)
-    if (name == contact_quantity_name(static_cast<ContactQuantity>(k))) {
+    if (same(contact_quantity_name(static_cast<ContactQuantity>(k)))) {
       quantity = static_cast<ContactQuantity>(k);
       return true;
     }
