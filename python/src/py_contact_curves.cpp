@@ -19,9 +19,20 @@ using namespace pybind11::literals;
 namespace asperity::python {
 
 // py_fe_export.cpp: the cards' options as the command line has them
-std::size_t card_points_option(std::optional<long long> max_points, CardFormat format);
-double face_size_option(std::optional<double> face_size, CardFormat format, CardUnits units);
-void warn_spring_cutoff(const std::vector<PressureOverclosurePoint>& rows, double face_size, CardUnits units);
+// The card's options (ValueError naming a bad one, `datum_keyword` the datum's keyword) and the
+// card written with them (a UserWarning where a CalculiX card passes the spring cut-off).
+struct CardSettings {
+  CardFormat format = CardFormat::calculix;
+  CardUnits units = CardUnits::si;
+  OverclosureDatum datum = OverclosureDatum::zero_pressure;
+  std::size_t max_points = 0;
+  double face_size = 0;  // m; NaN: not given
+};
+CardSettings card_settings(const std::string& format, const std::string& units, const char* datum_keyword,
+                           const std::string& datum, std::optional<long long> max_points,
+                           std::optional<double> face_size);
+std::string card_text(const PressureOverclosureTable& table, const CardSettings& settings,
+                      const std::string& description);
 
 
 namespace {
@@ -88,21 +99,11 @@ void bind_contact_curves_queries(py::class_<ContactCurves>& contact_curves) {
           [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,
              double tolerance, const std::string& format, const std::string& units, const std::string& description,
              const std::string& datum, std::optional<long long> max_points, std::optional<double> face_size) {
-            OverclosureDatum which;
-            if (!parse_overclosure_datum(datum, which))
-              throw py::value_error("unknown overclosure datum '" + datum +
-                                    "' (zero-pressure, mean-summit, origin, mean-plane)");
-            const CardFormat card = card_format(format);
-            const CardUnits card_unit = card_units(units);
-            const std::size_t cap = card_points_option(max_points, card);
-            const double face = face_size_option(face_size, card, card_unit);
+            const CardSettings settings = card_settings(format, units, "datum", datum, max_points, face_size);
             const PressureOverclosureTable table = tabulate_pressure_overclosure(
                 curves, pressure_min.value_or(curves.min_pressure()), pressure_max.value_or(curves.max_pressure()),
-                tolerance, which, cap);
-            std::ostringstream out;
-            write_pressure_overclosure(out, table, card, card_unit, description, face);
-            if (card == CardFormat::calculix) warn_spring_cutoff(table.points, face, card_unit);
-            return out.str();
+                tolerance, settings.datum, settings.max_points);
+            return card_text(table, settings, description);
           },
           "pressure_min"_a = py::none(), "pressure_max"_a = py::none(), "tolerance"_a = 1e-3, "format"_a = "calculix",
           "units"_a = "si", "description"_a = "", "datum"_a = "zero-pressure", "max_points"_a = py::none(),

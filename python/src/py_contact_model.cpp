@@ -24,9 +24,20 @@ using namespace pybind11::literals;
 namespace asperity::python {
 
 // py_fe_export.cpp: the cards' options as the command line has them
-std::size_t card_points_option(std::optional<long long> max_points, CardFormat format);
-double face_size_option(std::optional<double> face_size, CardFormat format, CardUnits units);
-void warn_spring_cutoff(const std::vector<PressureOverclosurePoint>& rows, double face_size, CardUnits units);
+// The card's options (ValueError naming a bad one, `datum_keyword` the datum's keyword) and the
+// card written with them (a UserWarning where a CalculiX card passes the spring cut-off).
+struct CardSettings {
+  CardFormat format = CardFormat::calculix;
+  CardUnits units = CardUnits::si;
+  OverclosureDatum datum = OverclosureDatum::zero_pressure;
+  std::size_t max_points = 0;
+  double face_size = 0;  // m; NaN: not given
+};
+CardSettings card_settings(const std::string& format, const std::string& units, const char* datum_keyword,
+                           const std::string& datum, std::optional<long long> max_points,
+                           std::optional<double> face_size);
+std::string card_text(const PressureOverclosureTable& table, const CardSettings& settings,
+                      const std::string& description);
 namespace {
 
 // asperity.ImplausibleValueWarning (a UserWarning), made once at import (bind_contact_model).
@@ -155,21 +166,13 @@ void bind_contact_model_export(py::class_<ContactModel>& contact_model) {
              const std::string& format, const std::string& units, const std::string& description,
              const std::string& overclosure_datum, std::optional<long long> max_points,
              std::optional<double> face_size) {
-            OverclosureDatum datum;
-            if (!parse_overclosure_datum(overclosure_datum, datum))
-              throw py::value_error("unknown overclosure_datum '" + overclosure_datum +
-                                    "': expected 'zero-pressure', 'mean-summit', 'origin' or 'mean-plane'");
-            const CardFormat card = card_format(format);
-            const CardUnits card_unit = card_units(units);
-            const std::size_t cap = card_points_option(max_points, card);
-            const double face = face_size_option(face_size, card, card_unit);
-            const PressureOverclosureTable table =
-                tabulate_pressure_overclosure(model, pressure_min, pressure_max, tolerance, datum, cap);
-            std::ostringstream out;
-            write_pressure_overclosure(out, table, card, card_unit, description, face);
-            if (card == CardFormat::calculix) warn_spring_cutoff(table.points, face, card_unit);
+            const CardSettings settings =
+                card_settings(format, units, "overclosure_datum", overclosure_datum, max_points, face_size);
+            const PressureOverclosureTable table = tabulate_pressure_overclosure(
+                model, pressure_min, pressure_max, tolerance, settings.datum, settings.max_points);
+            const std::string card = card_text(table, settings, description);
             warn_past_gw(model.at_pressure(pressure_max).area_fraction);  // the command's check
-            return out.str();
+            return card;
           },
           "pressure_min"_a, "pressure_max"_a, "tolerance"_a = 1e-3, "format"_a = "calculix", "units"_a = "si",
           "description"_a = "", "overclosure_datum"_a = "zero-pressure", "max_points"_a = py::none(),

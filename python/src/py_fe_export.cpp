@@ -19,6 +19,15 @@ using namespace pybind11::literals;
 
 namespace asperity::python {
 
+// The card's options (ValueError naming a bad one, `datum_keyword` the datum's keyword) and the
+// card written with them (a UserWarning where a CalculiX card passes the spring cut-off).
+struct CardSettings {
+  CardFormat format = CardFormat::calculix;
+  CardUnits units = CardUnits::si;
+  OverclosureDatum datum = OverclosureDatum::zero_pressure;
+  std::size_t max_points = 0;
+  double face_size = 0;  // m; NaN: not given
+};
 // The card options of ContactModel's and ContactCurves' cards, as the command line has them:
 // max_points None is the format's cap (200 for calculix); face_size in the card's units, returned
 // in metres (NaN: None). ValueError for a bad value.
@@ -37,6 +46,30 @@ double face_size_option(std::optional<double> face_size, CardFormat format, Card
   if (format != CardFormat::calculix)
     throw py::value_error("face_size checks CalculiX's contact-spring cut-off: it goes with format='calculix'");
   return *face_size * card_length_unit(units);
+}
+
+void warn_spring_cutoff(const std::vector<PressureOverclosurePoint>& rows, double face_size, CardUnits units);
+
+CardSettings card_settings(const std::string& format, const std::string& units, const char* datum_keyword,
+                           const std::string& datum, std::optional<long long> max_points,
+                           std::optional<double> face_size) {
+  CardSettings settings;
+  if (!parse_overclosure_datum(datum, settings.datum))
+    throw py::value_error(std::string("unknown ") + datum_keyword + " '" + datum +
+                          "': expected 'zero-pressure', 'mean-summit', 'origin' or 'mean-plane'");
+  settings.format = card_format(format);
+  settings.units = card_units(units);
+  settings.max_points = card_points_option(max_points, settings.format);
+  settings.face_size = face_size_option(face_size, settings.format, settings.units);
+  return settings;
+}
+
+std::string card_text(const PressureOverclosureTable& table, const CardSettings& settings,
+                      const std::string& description) {
+  std::ostringstream out;
+  write_pressure_overclosure(out, table, settings.format, settings.units, description, settings.face_size);
+  if (settings.format == CardFormat::calculix) warn_spring_cutoff(table.points, settings.face_size, settings.units);
+  return out.str();
 }
 
 // Warns (UserWarning) where a CalculiX card reaches beyond the contact-spring cut-off of faces of
