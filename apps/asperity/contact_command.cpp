@@ -37,7 +37,7 @@ struct Options {
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
          nu2 = not_given;
-  double separation = not_given, load = not_given, pressure = not_given, real_area = not_given;
+  std::vector<double> separations, loads, pressures, real_areas;  // the queries (lists); empty: not given
   double export_tolerance = not_given, face_size = not_given, mean_summit_height = not_given;
   long long max_points = 0;  // 0: not given
 };
@@ -147,6 +147,47 @@ double sweep_value(const Sweep& sweep, long k) {
   return std::pow(10.0, log_from + (log_to - log_from) * fraction);
 }
 
+// The queries asked: one kind (separation, load, pressure or real-area) and its values, from that
+// kind's list option or from --sweep (whose values are computed as they are asked for: a sweep
+// may have a million)
+struct Queries {
+  std::string kind;
+  std::vector<double> values;  // a list's
+  Sweep sweep;
+  bool swept = false;
+  long size() const { return swept ? sweep.count : static_cast<long>(values.size()); }
+  double at(long k) const { return swept ? sweep_value(sweep, k) : values[static_cast<std::size_t>(k)]; }
+  // the k-th value's name in a message
+  std::string option(long k) const {
+    const std::string place = "(query " + std::to_string(k + 1) + " of " + std::to_string(size()) + ")";
+    if (swept) return "--sweep " + kind + " " + place;
+    return "--" + kind + (size() > 1 ? " " + place : "");
+  }
+};
+
+// How many of the query options are given (--export not counted)
+int queries_given(const Options& options) {
+  return !options.separations.empty() + !options.loads.empty() + !options.pressures.empty() +
+         !options.real_areas.empty() + !options.sweep.empty();
+}
+
+// The one query option given (queries_given is 1)
+Queries queries_from(const Options& options) {
+  Queries queries;
+  if (!options.sweep.empty()) {
+    queries.sweep = sweep_from(options.sweep);
+    queries.kind = queries.sweep.kind;
+    queries.swept = true;
+    return queries;
+  }
+  const std::pair<const char*, const std::vector<double>*> lists[] = {
+      {"separation", &options.separations}, {"load", &options.loads},
+      {"pressure", &options.pressures}, {"real-area", &options.real_areas}};
+  for (const auto& [kind, values] : lists)
+    if (!values->empty()) queries.kind = kind, queries.values = *values;
+  return queries;
+}
+
 // The state at a query; the quantity asked is written as asked (solving for the separation and
 // evaluating there gives it back within a few ulps: 999999.9999999995 for 1e6 in shortest form)
 PhysicalState query(const ContactModel& model, const std::string& kind, double value) {
@@ -168,10 +209,11 @@ PhysicalState query(const ContactModel& model, const std::string& kind, double v
 
 // A load, pressure or real area asked of a Greenwood-Williamson surface: positive (at 0 or below
 // there is no contact, which no finite separation answers: the tail side's is infinite).
-void require_positive_query(const char* name, double value, const char* unit) {
-  if (given(value) && !(value > 0))
-    usage(std::string(name) + " must be positive, got " + number(value) + " " + unit +
-          " (no contact: no finite separation carries it)");
+void require_positive_query(const char* name, const std::vector<double>& values, const char* unit) {
+  for (const double value : values)
+    if (!(value > 0))
+      usage(std::string(name) + " must be positive, got " + number(value) + " " + unit +
+            " (no contact: no finite separation carries it)");
 }
 
 const char* query_unit(const std::string& kind) {
@@ -272,11 +314,10 @@ void check_curve_queries(const Options& options, const std::string& what) {
     usage(what + " are served from their own separation datum (standard error names it; the CSV's "
                  "separation_from_mean_summit_m is from the mean summit height): --datum and --mean-summit-height "
                  "go with a Greenwood-Williamson surface (--dist ...)");
-  if (given(options.load) || given(options.real_area))
+  if (!options.loads.empty() || !options.real_areas.empty())
     usage(what + " are served at a separation or a nominal pressure: --separation, --pressure, --sweep "
                  "separation|pressure, or --export");
-  const int queries =
-      given(options.separation) + given(options.pressure) + !options.sweep.empty() + !options.export_format.empty();
+  const int queries = queries_given(options) + !options.export_format.empty();
   if (queries != 1)
     usage(queries == 0 ? "a query is required: --separation, --pressure, --sweep or --export"
                        : "give one query: --separation, --pressure, --sweep or --export");
@@ -334,11 +375,11 @@ int run_contact_curves(const Options& options, const CLI::App& command) {
 // Contact curves (a contact-curves table's, or a law's made by --law) at separations or
 // pressures, or their card
 int serve_contact_curves(const Options& options, const CLI::App& command, const ContactCurves& curves) {
-  Sweep sweep;
-  if (!options.sweep.empty()) {
-    sweep = sweep_from(options.sweep);
-    if (sweep.kind != "separation" && sweep.kind != "pressure")
-      usage("--sweep: contact curves sweep separation or pressure, not " + sweep.kind);
+  Queries queries;
+  if (options.export_format.empty()) {
+    queries = queries_from(options);
+    if (queries.swept && queries.kind != "separation" && queries.kind != "pressure")
+      usage("--sweep: contact curves sweep separation or pressure, not " + queries.kind);
   }
   const ContactCurvesData& data = curves.data();
   note(command, "contact curves of " + data.source + ": " + data.description);
@@ -448,18 +489,8 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                 (separation ? " m" : " Pa") +
                 (curves.has_tension() && !separation ? " (the stable branch, up to the pull-off)" : ""));
   };
-  if (!options.sweep.empty()) {
-    for (long k = 0; k < sweep.count; ++k)
-      check("--sweep " + sweep.kind + " (query " + std::to_string(k + 1) + " of " + std::to_string(sweep.count) + ")",
-            sweep.kind, sweep_value(sweep, k));
-    for (long k = 0; k < sweep.count; ++k) row(at(sweep.kind, sweep_value(sweep, k)));
-  } else if (given(options.separation)) {
-    check("--separation", "separation", options.separation);
-    row(at("separation", options.separation));
-  } else {
-    check("--pressure", "pressure", options.pressure);
-    row(at("pressure", options.pressure));
-  }
+  for (long k = 0; k < queries.size(); ++k) check(queries.option(k), queries.kind, queries.at(k));
+  for (long k = 0; k < queries.size(); ++k) row(at(queries.kind, queries.at(k)));
   return exit_success;
 }
 
@@ -474,10 +505,9 @@ int run_contact(const Options& options, const CLI::App& command) {
     return run_contact_curves(options, command);
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
-  const int queries = given(options.separation) + given(options.load) + given(options.pressure) +
-                      given(options.real_area) + !options.sweep.empty() + !options.export_format.empty();
-  if (queries != 1)
-    usage(queries == 0 ? "a query is required: --separation, --load, --pressure, --real-area, --sweep or --export"
+  const int asked = queries_given(options) + !options.export_format.empty();
+  if (asked != 1)
+    usage(asked == 0 ? "a query is required: --separation, --load, --pressure, --real-area, --sweep or --export"
                        : "give one query: --separation, --load, --pressure, --real-area, --sweep or --export");
   CardFormat format = CardFormat::csv;
   CardUnits units = CardUnits::si;
@@ -509,11 +539,11 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!mean_plane && given(options.mean_summit_height))
     usage("--mean-summit-height goes with --datum mean-plane (or --overclosure-datum mean-plane)");
   if (mean_plane) separation_datum = SeparationDatum::mean_plane;
-  require_positive_query("--load", options.load, "N");
-  require_positive_query("--pressure", options.pressure, "Pa");
-  require_positive_query("--real-area", options.real_area, "m^2");
-  Sweep sweep;
-  if (!options.sweep.empty()) sweep = sweep_from(options.sweep);
+  require_positive_query("--load", options.loads, "N");
+  require_positive_query("--pressure", options.pressures, "Pa");
+  require_positive_query("--real-area", options.real_areas, "m^2");
+  Queries queries;
+  if (options.export_format.empty()) queries = queries_from(options);
 
   const Table table = open_table(options.table);
   const ContactModel model(table, surface, separation_datum, options.mean_summit_height);
@@ -524,25 +554,12 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!given_scale.empty()) note(command, given_scale);
   if (!options.export_format.empty()) return export_law(options, model, command, format, units, datum);
 
-  // every query answered before any row is written: one outside the range is refused whole
-  std::string kind = "real-area", option = "--real-area";
-  double value = options.real_area;
-  if (given(options.separation)) kind = "separation", option = "--separation", value = options.separation;
-  else if (given(options.load)) kind = "load", option = "--load", value = options.load;
-  else if (given(options.pressure)) kind = "pressure", option = "--pressure", value = options.pressure;
-  PhysicalState single{};
-  // (a full table's model answers every finite query: its sweep needs no pass of checks)
+  // every query answered before any row is written: one outside the range is refused whole (a
+  // full table's model answers every finite query: its sweep needs no pass of checks)
   const bool everything = model.min_separation() == -HUGE_VAL && model.max_separation() == HUGE_VAL;
-  if (!options.sweep.empty()) {
-    for (long k = 0; k < sweep.count && !everything; ++k) {
-      const double at = sweep_value(sweep, k);
-      check_answered(model, "--sweep " + sweep.kind + " (query " + std::to_string(k + 1) + " of " +
-                                std::to_string(sweep.count) + ")", sweep.kind, at, query(model, sweep.kind, at));
-    }
-  } else {
-    single = query(model, kind, value);
-    check_answered(model, option, kind, value, single);
-  }
+  if (!(queries.swept && everything))
+    for (long k = 0; k < queries.size(); ++k)
+      check_answered(model, queries.option(k), queries.kind, queries.at(k), query(model, queries.kind, queries.at(k)));
 
   note(command, "separation_m (and --separation, --sweep separation): " +
                     describe_separation_datum(separation_datum, options.mean_summit_height) +
@@ -553,11 +570,7 @@ int run_contact(const Options& options, const CLI::App& command) {
     print(state);
     if (state.area_fraction > largest_fraction) largest_fraction = state.area_fraction;
   };
-  if (!options.sweep.empty()) {
-    for (long k = 0; k < sweep.count; ++k) row(query(model, sweep.kind, sweep_value(sweep, k)));
-  } else {
-    row(single);
-  }
+  for (long k = 0; k < queries.size(); ++k) row(query(model, queries.kind, queries.at(k)));
   warn_past_gw(command, largest_fraction);
   return exit_success;
 }
@@ -600,10 +613,13 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--law-range", o.law_range,
            "with --law: the dimensionless separations s tabulated (origin convention; required)")
       ->type_name("SMIN:SMAX")->group("Contact law");
-  add_number(*command, "--separation", o.separation, "at a separation [m] from the datum (--datum)")->type_name("M")->group("Query (one)");
-  add_number(*command, "--load", o.load, "at a load [N]")->type_name("N")->group("Query (one)");
-  add_number(*command, "--pressure", o.pressure, "at a nominal pressure [Pa]")->type_name("PA")->group("Query (one)");
-  add_number(*command, "--real-area", o.real_area, "at a real contact area [m^2]")->type_name("M2")->group("Query (one)");
+  add_numbers(*command, "--separation", o.separations, "at separations [m] from the datum (--datum), comma-separated")
+      ->type_name("M[,M...]")->group("Query (one)");
+  add_numbers(*command, "--load", o.loads, "at loads [N], comma-separated")->type_name("N[,N...]")->group("Query (one)");
+  add_numbers(*command, "--pressure", o.pressures, "at nominal pressures [Pa], comma-separated")
+      ->type_name("PA[,PA...]")->group("Query (one)");
+  add_numbers(*command, "--real-area", o.real_areas, "at real contact areas [m^2], comma-separated")
+      ->type_name("M2[,M2...]")->group("Query (one)");
   add_text(*command, "--sweep", o.sweep,
            "COUNT queries from FROM to TO: KIND separation (linear), load, pressure or real-area (logarithmic)")
       ->type_name("KIND:FROM:TO:COUNT")->group("Query (one)");
@@ -645,7 +661,7 @@ void add_contact_command(CLI::App& app) {
              "clearance of 1e-3 times it")
       ->type_name("L")->group("FE export");
   command->footer(
-      "Output: CSV, one row per query: separation_m (from the datum, --datum: by default the origin\n"
+      "Output: CSV, one row per query (a list's values in order): separation_m (from the datum, --datum: by default the origin\n"
       "convention, from the Weibull origin or the Gaussian's mean; standard error names the datum),\n"
       "mean_separation_m (from the mean summit height), count, real_area_m2, area_fraction, load_N,\n"
       "nominal_pressure_Pa, stiffness_N_per_m, stiffness_over_load_per_m.\n"

@@ -141,6 +141,17 @@ CLI::Option* add_number(CLI::App& command, const std::string& name, double& valu
       ->type_name("X");
 }
 
+CLI::Option* add_numbers(CLI::App& command, const std::string& name, std::vector<double>& values,
+                         const std::string& description) {
+  return add_once(command, name, description,
+                  [name, &values](const std::string& text) {
+                    values.clear();
+                    for (const std::string& part : split(text, ','))
+                      values.push_back(number_from_text(part, name));
+                  })
+      ->type_name("X[,X...]");
+}
+
 CLI::Option* add_whole_number(CLI::App& command, const std::string& name, long long& value, long long lo,
                               long long hi, const std::string& description) {
   return add_once(command, name, description,

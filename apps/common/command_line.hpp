@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "asperity/table.hpp"
 
@@ -39,6 +40,10 @@ int run(CLI::App& app, int argc, const char* const* argv);
 // number, a whole number within [lo, hi].
 CLI::Option* add_text(CLI::App& command, const std::string& name, std::string& value, const std::string& description);
 CLI::Option* add_number(CLI::App& command, const std::string& name, double& value, const std::string& description);
+// A comma-separated list of numbers ("1e5,1e6"), each read as add_number reads one; left empty
+// when the option is not given.
+CLI::Option* add_numbers(CLI::App& command, const std::string& name, std::vector<double>& values,
+                         const std::string& description);
 CLI::Option* add_whole_number(CLI::App& command, const std::string& name, long long& value, long long lo,
                               long long hi, const std::string& description);
 
