@@ -45,6 +45,11 @@ Kind make_kind(Distribution distribution, Side side, double shape, double lo = N
   surface.distribution = distribution;
   surface.side = side;
   surface.shape = shape;
+  surface.height_scale = 1e-6;
+  surface.summit_radius = 1e-4;
+  surface.summit_density = 1e10;
+  surface.nominal_area = 1e-4;
+  surface.contact_modulus = 1e11;
   Kind kind{ContactModel(table(), surface), {}, {}};
   const Curve& curve = kind.model.curve();
   kind.s = bench::uniform(std::isnan(lo) ? curve.table_min_separation() : lo,

@@ -283,6 +283,11 @@ const ContactModel& physical_model() {
   static const ContactModel model(table(), [] {
     RoughSurface surface;
     surface.shape = 2.0;
+    surface.height_scale = 1e-6;
+    surface.summit_radius = 1e-4;
+    surface.summit_density = 1e10;
+    surface.nominal_area = 1e-4;
+    surface.contact_modulus = 1e11;
     return surface;
   }());
   return model;

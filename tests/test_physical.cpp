@@ -36,30 +36,62 @@ std::string error_of(const RoughSurface& surface) {
   return "";
 }
 
-TEST(RoughSurface, ValidationNamesTheParameter) {
+// A complete surface (the values the struct once defaulted to)
+RoughSurface example_surface() {
   RoughSurface surface;
+  surface.shape = 2;
+  surface.height_scale = 1e-6;
+  surface.summit_radius = 1e-4;
+  surface.summit_density = 1e10;
+  surface.nominal_area = 1e-4;
+  surface.contact_modulus = 1e11;
+  return surface;
+}
+
+TEST(RoughSurface, ValidationNamesTheParameter) {
+  RoughSurface surface = example_surface();
   EXPECT_EQ(error_of(surface), "");
   surface.height_scale = -1e-6;
   EXPECT_NE(error_of(surface).find("height scale"), std::string::npos);
-  surface = RoughSurface{};
+  surface = example_surface();
   surface.summit_radius = 0;
   EXPECT_NE(error_of(surface).find("summit radius"), std::string::npos);
-  surface = RoughSurface{};
-  surface.summit_density = NAN;
+  surface = example_surface();
+  surface.summit_density = INFINITY;
   EXPECT_NE(error_of(surface).find("summit density"), std::string::npos);
-  surface = RoughSurface{};
+  surface = example_surface();
   surface.nominal_area = -2;
   EXPECT_NE(error_of(surface).find("nominal area"), std::string::npos);
-  surface = RoughSurface{};
+  surface = example_surface();
   surface.contact_modulus = INFINITY;
   EXPECT_NE(error_of(surface).find("contact modulus"), std::string::npos);
-  surface = RoughSurface{};
+  surface = example_surface();
   surface.shape = 0.2;
   EXPECT_NE(error_of(surface).find("shape"), std::string::npos);
-  surface = RoughSurface{};
+  surface = example_surface();
   surface.distribution = Distribution::gaussian;
   surface.side = Side::bounded;
   EXPECT_NE(error_of(surface).find("no bounded side"), std::string::npos);
+}
+
+// No physical value has a default (issue 39): each left out is named, never silently the example's
+TEST(RoughSurface, PhysicalValuesHaveNoDefault) {
+  EXPECT_EQ(error_of(RoughSurface{}), "surface: shape is not given (a RoughSurface's physical values have no default)");
+  double RoughSurface::*const values[] = {&RoughSurface::height_scale, &RoughSurface::summit_radius,
+                                          &RoughSurface::summit_density, &RoughSurface::nominal_area,
+                                          &RoughSurface::contact_modulus};
+  const char* names[] = {"height scale", "summit radius", "summit density", "nominal area", "contact modulus"};
+  for (int i = 0; i < 5; ++i) {
+    RoughSurface surface = example_surface();
+    surface.*values[i] = RoughSurface{}.*values[i];
+    const std::string error = error_of(surface);
+    EXPECT_NE(error.find(names[i]), std::string::npos) << error;
+    EXPECT_NE(error.find("is not given"), std::string::npos) << error;
+  }
+  RoughSurface gaussian = example_surface();  // the Gaussian needs no shape
+  gaussian.distribution = Distribution::gaussian;
+  gaussian.shape = RoughSurface{}.shape;
+  EXPECT_EQ(error_of(gaussian), "");
 }
 
 TEST(RoughSurface, ContactModulusAndMoments) {
@@ -351,10 +383,10 @@ TEST(RoughSurface, RmsAndScaleAndTheFactorsOfTheModel) {
   EXPECT_EQ(height_scale_from_rms(Distribution::gaussian, 0, 2e-6), 2e-6);
   EXPECT_THROW(height_scale_from_rms(Distribution::weibull, 1.6, -1), Error);
   // parameters whose products underflow or overflow are refused, naming the factor
-  RoughSurface tiny;
+  RoughSurface tiny = example_surface();
   tiny.height_scale = 1e-300;
   EXPECT_NE(error_of(tiny).find("factor"), std::string::npos) << error_of(tiny);
-  RoughSurface stiff;
+  RoughSurface stiff = example_surface();
   stiff.contact_modulus = 1e308;
   EXPECT_NE(error_of(stiff).find("factor"), std::string::npos) << error_of(stiff);
 }

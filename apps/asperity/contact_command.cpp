@@ -188,23 +188,12 @@ Queries queries_from(const Options& options) {
   return queries;
 }
 
-// The state at a query; the quantity asked is written as asked (solving for the separation and
-// evaluating there gives it back within a few ulps: 999999.9999999995 for 1e6 in shortest form)
+// The state at a query (the model's inverses give the quantity asked back as asked)
 PhysicalState query(const ContactModel& model, const std::string& kind, double value) {
   if (kind == "separation") return model.at_separation(value);
-  PhysicalState state;
-  const double area = model.surface().nominal_area;  // pressure = load / A0: both as asked
-  if (kind == "load") {
-    state = model.at_load(value);
-    if (std::isfinite(state.separation)) state.load = value, state.pressure = value / area;
-  } else if (kind == "pressure") {
-    state = model.at_pressure(value);
-    if (std::isfinite(state.separation)) state.pressure = value, state.load = value * area;
-  } else {
-    state = model.at_real_area(value);
-    if (std::isfinite(state.separation)) state.real_area = value;
-  }
-  return state;
+  if (kind == "load") return model.at_load(value);
+  if (kind == "pressure") return model.at_pressure(value);
+  return model.at_real_area(value);
 }
 
 // A load, pressure or real area asked of a Greenwood-Williamson surface: positive (at 0 or below

@@ -68,7 +68,8 @@ class ContactModel {
   // load, pressure and stiffness 0 and stiffness_over_load NaN (0/0), at separation +inf (tail
   // side) or 0 (bounded side: first contact). Infinite contact (a load, pressure or area of
   // +inf, or a separation of -inf) gives every summit in contact and infinite area, load and
-  // stiffness.
+  // stiffness. The inverses give the quantity asked back exactly as asked (at_pressure(p).pressure
+  // is p; load and pressure differ by the nominal area's rounding), where they find a separation.
   PhysicalState at_separation(double separation) const noexcept;
   PhysicalState at_load(double load) const noexcept;
   PhysicalState at_pressure(double pressure) const noexcept;

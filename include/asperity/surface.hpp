@@ -3,22 +3,27 @@
 // Gaussian summit heights (rms sigma), possibly from the profile's spectral moments through
 // Nayak and McCool.
 #pragma once
+#include <limits>
+
 #include "asperity/integrals.hpp"
 
 namespace asperity {
 
+// The physical values have no default (NaN: not given): validate() names the first left out, so a
+// surface is never silently the example one (issue 39; Python's RoughSurface requires them too).
 struct RoughSurface {
+  static constexpr double not_given = std::numeric_limits<double>::quiet_NaN();
   Distribution distribution = Distribution::weibull;
-  Side side = Side::tail;
-  double shape = 2;              // Weibull a (the Gaussian: unused)
-  double height_scale = 1e-6;    // sigma_s [m] (Gaussian: sigma, the rms summit height)
-  double summit_radius = 1e-4;   // R [m]
-  double summit_density = 1e10;  // summits per unit nominal area [1/m^2]
-  double nominal_area = 1e-4;    // A0 [m^2]
-  double contact_modulus = 1e11; // E* [Pa], plane strain: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+  Side side = Side::tail;        // GW's approach: the flat meets the upper tail
+  double shape = not_given;            // Weibull a (the Gaussian: unused)
+  double height_scale = not_given;     // sigma_s [m] (Gaussian: sigma, the rms summit height)
+  double summit_radius = not_given;    // R [m]
+  double summit_density = not_given;   // summits per unit nominal area [1/m^2]
+  double nominal_area = not_given;     // A0 [m^2]
+  double contact_modulus = not_given;  // E* [Pa], plane strain: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
 
   double summit_count() const noexcept { return summit_density * nominal_area; }
-  // Throws asperity::Error naming the first bad parameter (not finite, or <= 0; a Weibull shape
+  // Throws asperity::Error naming the first bad parameter (not given, not finite, or <= 0; a Weibull shape
   // outside 0.3..50; a bounded side for the Gaussian), or the first factor of docs/model.md section 3
   // (N, pi N R sigma_s, (4/3) N E* R^1/2 sigma_s^3/2, 2 N E* R^1/2 sigma_s^1/2) that falls outside
   // [1e-250, 1e250], where its products would underflow or overflow.

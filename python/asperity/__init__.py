@@ -47,6 +47,7 @@ from ._asperity import (  # noqa: F401
     ORDER_COUNT,
     AreaFractionWarning,
     ContactCurves,
+    ContactCurvesState,
     ContactModel,
     ContactState,
     Curve,
@@ -109,7 +110,7 @@ from . import plot  # noqa: E402,F401 (pure Python; imports matplotlib only when
 
 __all__ = [
     "ImplausibleValueWarning", "implausible_values",
-    "ALL_ORDERS", "ORDER_COUNT", "AreaFractionWarning", "ContactCurves", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
+    "ALL_ORDERS", "ORDER_COUNT", "AreaFractionWarning", "ContactCurves", "ContactCurvesState", "ContactModel", "ContactState", "Curve", "CurveOptions", "CurveSet",
     "Distribution", "Error", "InstructionSet", "InverseCurve", "OutOfRangeWarning", "PerssonLaw", "PhysicalState",
     "PhysicalSurface", "RoughSurface", "Scene", "SceneCurve", "SceneCurveView", "Side", "Surface", "SurfaceScales", "Table", "bandwidth_alpha",
     "batch", "best_instruction_set", "contact_at", "contact_modulus_from", "contact_modulus_given", "gaussian_log_density",

@@ -27,7 +27,7 @@ inline constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 // The record types (collections.namedtuple, made once at import by bind_records): fields are
 // floats for a number in, arrays for an array in.
-inline py::handle contact_state_type, physical_state_type;
+inline py::handle contact_state_type, physical_state_type, contact_curves_state_type;
 
 
 inline Distribution to_distribution(const py::handle& value) {

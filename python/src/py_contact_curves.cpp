@@ -52,9 +52,50 @@ FloatOrArray map_served(py::handle input, const char* name, double lo, double hi
   return answer;
 }
 
+// The state (ContactCurvesState: floats, or arrays shaped like the input) at separations or pressures
+// `input`, as map_served warns of those outside [lo, hi]
+template <class Answer>
+py::object curves_states(py::handle input, const char* name, double lo, double hi, const char* unit, Answer answer) {
+  constexpr std::size_t fields = RecordFields<ContactCurvesState>::count;
+  std::size_t total = 0, outside = 0;
+  py::object record = make_record(contact_curves_state_type,
+                                  map_records<fields>(input, name, [&](double x, double** out, std::size_t i) {
+                                    ++total;
+                                    outside += !std::isnan(x) && !(x >= lo && x <= hi);
+                                    ContactCurvesState state = answer(x);
+                                    std::size_t k = 0;
+                                    RecordFields<ContactCurvesState>::for_each(
+                                        state, [&](const RecordField&, double& value) { out[k++][i] = value; });
+                                  }));
+  if (outside > 0)
+    warn_out_of_range(outside, total, (std::string(name) + "s").c_str(),
+                      std::string(name) + "s " + g(lo) + " to " + g(hi) + " " + unit);
+  return record;
+}
+
 // the served curves and their inverse at separations (pressures), and the FE card
 void bind_contact_curves_queries(py::class_<ContactCurves>& contact_curves) {
   contact_curves
+      .def(
+          "at_separation",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return curves_states(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
+                                 [&](double v) { return curves.at_separation(v); });
+          },
+          "separation"_a,
+          "The ContactCurvesState (separation, pressure, stiffness per area, area_fraction) at separations [m]\n"
+          "(float or array), as ContactModel.at_separation gives a PhysicalState; NaN outside the range\n"
+          "(asperity.OutOfRangeWarning).")
+      .def(
+          "at_pressure",
+          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+            return curves_states(x.object, "pressure", curves.min_pressure(), curves.max_pressure(), "Pa",
+                                 [&](double v) { return curves.at_pressure(v); });
+          },
+          "pressure"_a,
+          "The ContactCurvesState at nominal pressures [Pa] (float or array), as ContactModel.at_pressure gives a\n"
+          "PhysicalState: the separation where the served pressure is that (adhesive curves: on the stable\n"
+          "branch) and the curves there; NaN outside [min_pressure, max_pressure] (asperity.OutOfRangeWarning).")
       .def(
           "pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
@@ -98,22 +139,38 @@ void bind_contact_curves_queries(py::class_<ContactCurves>& contact_curves) {
           "pressure_overclosure_card",
           [](const ContactCurves& curves, std::optional<double> pressure_min, std::optional<double> pressure_max,
              double tolerance, const std::string& format, const std::string& units, const std::string& description,
-             const std::string& datum, std::optional<long long> max_points, std::optional<double> face_size) {
-            const CardSettings settings = card_settings(format, units, "datum", datum, max_points, face_size);
+             const std::string& overclosure_datum, std::optional<long long> max_points, std::optional<double> face_size,
+             std::optional<std::string> datum) {
+            // `datum`: this method's keyword before ContactModel's name was taken for both
+            const char* keyword = "overclosure_datum";
+            std::string chosen = overclosure_datum;
+            if (datum) {
+              if (overclosure_datum != "zero-pressure" && *datum != overclosure_datum)
+                throw py::value_error("give the overclosure datum once: overclosure_datum ('datum' is its old name)");
+              PyErr_WarnEx(PyExc_DeprecationWarning,
+                           "ContactCurves.pressure_overclosure_card: 'datum' is now 'overclosure_datum' (as "
+                           "ContactModel's and the command's --overclosure-datum)",
+                           1);
+              if (PyErr_Occurred()) throw py::error_already_set();
+              keyword = "datum";
+              chosen = *datum;
+            }
+            const CardSettings settings = card_settings(format, units, keyword, chosen, max_points, face_size);
             const PressureOverclosureTable table = tabulate_pressure_overclosure(
                 curves, pressure_min.value_or(curves.min_pressure()), pressure_max.value_or(curves.max_pressure()),
                 tolerance, settings.datum, settings.max_points);
             return card_text(table, settings, description);
           },
           "pressure_min"_a = py::none(), "pressure_max"_a = py::none(), "tolerance"_a = 1e-3, "format"_a = "calculix",
-          "units"_a = "si", "description"_a = "", "datum"_a = "zero-pressure", "max_points"_a = py::none(),
-          "face_size"_a = py::none(),
+          "units"_a = "si", "description"_a = "", "overclosure_datum"_a = "zero-pressure", "max_points"_a = py::none(),
+          "face_size"_a = py::none(), "datum"_a = py::none(),
           "FE export: the served pressure as the tabular pressure-overclosure card of CalculiX or Abaqus (or CSV),\n"
           "as `asperity contact --table FILE --export` writes it: overclosure from where the card's pressure\n"
-          "reaches zero (datum 'zero-pressure', the default), or 'mean-summit' (the mean summit height) or\n"
-          "'origin' (the separation's datum); the pressures default to the whole range served; max_points and\n"
-          "face_size as ContactModel.pressure_overclosure_card's. Raises asperity.Error for a range beyond the\n"
-          "curves' or a bad tolerance, ValueError for a bad option.");
+          "reaches zero (overclosure_datum 'zero-pressure', the default), or 'mean-summit' (the mean summit height)\n"
+          "or 'origin' (the separation's datum); the pressures default to the whole range served; max_points and\n"
+          "face_size as ContactModel.pressure_overclosure_card's ('datum' is overclosure_datum's old name:\n"
+          "DeprecationWarning). Raises asperity.Error for a range beyond the curves' or a bad tolerance, ValueError\n"
+          "for a bad option.");
 }
 
 // the table's bounds, provenance and nodes

@@ -1,4 +1,5 @@
-// The answers' record types asperity.ContactState and asperity.PhysicalState (namedtuples).
+// The answers' record types asperity.ContactState, asperity.PhysicalState and
+// asperity.ContactCurvesState (namedtuples).
 #include <pybind11/pybind11.h>
 
 #include <string>
@@ -6,6 +7,7 @@
 #include "bindings.hpp"
 #include "helpers.hpp"
 #include "asperity/contact.hpp"
+#include "asperity/contact_curves.hpp"
 #include "asperity/record_fields.hpp"
 
 namespace py = pybind11;
@@ -39,6 +41,20 @@ void bind_records(py::module_& m) {
   physical_state.attr("__doc__") = physical_state_doc;
   m.attr("PhysicalState") = physical_state;
   physical_state_type = physical_state.release();
+  // ContactCurves' answer: the fields of ContactCurvesState's one list (contact_curves.hpp)
+  py::list curves_state_names;
+  std::string curves_state_doc = "ContactCurves' answer at_separation / at_pressure (floats, or arrays shaped like the "
+                                 "input), SI units:";
+  for (const RecordField& field : RecordFields<ContactCurvesState>::fields) {
+    curves_state_names.append(field.name);
+    curves_state_doc += std::string(" ") + field.name + " (" + field.meaning + "),";
+  }
+  curves_state_doc.back() = '.';
+  py::object curves_state = collections.attr("namedtuple")("ContactCurvesState", py::tuple(curves_state_names),
+                                                           "module"_a = "asperity");
+  curves_state.attr("__doc__") = curves_state_doc;
+  m.attr("ContactCurvesState") = curves_state;
+  contact_curves_state_type = curves_state.release();
 }
 
 }  // namespace asperity::python

@@ -81,6 +81,38 @@ def test_arrays_inverse_and_range(written):
     assert isinstance(curves.pressure(float(u[3])), float)
 
 
+def test_states_at_separations_and_pressures_as_contact_model_names_them(written):
+    # ContactModel.at_separation / at_pressure give a PhysicalState; ContactCurves the same verbs, a
+    # ContactCurvesState (issue 39: one vocabulary), its fields the C++ record's
+    curves = asperity.ContactCurves(written[0])
+    assert asperity.ContactCurvesState._fields == ("separation", "pressure", "stiffness", "area_fraction")
+    u = np.linspace(curves.min_separation, curves.max_separation, 7)
+    state = curves.at_separation(u)
+    assert np.array_equal(state.separation, u) and np.array_equal(state.pressure, curves.pressure(u))
+    assert np.array_equal(state.stiffness, curves.stiffness(u))
+    assert np.array_equal(state.area_fraction, curves.area_fraction(u))
+    single = curves.at_pressure(1e7)
+    assert isinstance(single.pressure, float) and single.pressure == 1e7  # as asked, exactly
+    assert single.separation == curves.separation_at_pressure(1e7)
+    assert single.stiffness == curves.stiffness(single.separation)
+    with pytest.warns(asperity.OutOfRangeWarning, match=r"1 of 2 pressures"):
+        states = curves.at_pressure([1e7, 1e9])
+    assert np.isnan(states.separation[1]) and np.isnan(states.stiffness[1]) and states.pressure[0] == 1e7
+
+
+def test_card_datum_keyword_is_the_models(written):
+    # overclosure_datum, as ContactModel's card and the command's --overclosure-datum; `datum` is its
+    # old name, still read, with a DeprecationWarning
+    curves = asperity.ContactCurves(written[0])
+    card = curves.pressure_overclosure_card(format="csv", overclosure_datum="mean-summit")
+    with pytest.warns(DeprecationWarning, match="'datum' is now 'overclosure_datum'"):
+        assert curves.pressure_overclosure_card(format="csv", datum="mean-summit") == card
+    with pytest.raises(ValueError, match="give the overclosure datum once"):
+        curves.pressure_overclosure_card(format="csv", overclosure_datum="origin", datum="mean-summit")
+    with pytest.raises(ValueError, match="overclosure_datum"):
+        curves.pressure_overclosure_card(format="csv", overclosure_datum="plane")
+
+
 def test_card(written):
     curves = asperity.ContactCurves(written[0])
     card = curves.pressure_overclosure_card(format="abaqus", units="mm")

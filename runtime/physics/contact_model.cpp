@@ -199,22 +199,31 @@ void ContactModel::at_separations(ContactQuantity quantity, const double* separa
   }
 }
 
+// The inverses give the quantity asked back as asked (the curve at the separation found gives it
+// to a few ulp: 999999.9999999995 for 1e6), in every interface alike.
 PhysicalState ContactModel::at_load(double load) const noexcept {
   if (std::isnan(load)) return state_at_dimensionless(nan);
   if (load <= 0) return no_contact();
   if (load == std::numeric_limits<double>::infinity()) return infinite_contact();
-  return state_at_dimensionless(load_inverse_.separation_at_log(std::log(load) - std::log(scales_.load)));
+  PhysicalState state = state_at_dimensionless(load_inverse_.separation_at_log(std::log(load) - std::log(scales_.load)));
+  if (std::isfinite(state.separation)) state.load = load, state.pressure = load / surface_.nominal_area;
+  return state;
 }
 
 PhysicalState ContactModel::at_pressure(double pressure) const noexcept {
-  return at_load(pressure * surface_.nominal_area);
+  PhysicalState state = at_load(pressure * surface_.nominal_area);
+  if (std::isfinite(state.separation)) state.pressure = pressure;
+  return state;
 }
 
 PhysicalState ContactModel::at_real_area(double real_area) const noexcept {
   if (std::isnan(real_area)) return state_at_dimensionless(nan);
   if (real_area <= 0) return no_contact();
   if (real_area == std::numeric_limits<double>::infinity()) return infinite_contact();
-  return state_at_dimensionless(area_inverse_.separation_at_log(std::log(real_area) - std::log(scales_.area)));
+  PhysicalState state =
+      state_at_dimensionless(area_inverse_.separation_at_log(std::log(real_area) - std::log(scales_.area)));
+  if (std::isfinite(state.separation)) state.real_area = real_area, state.area_fraction = real_area / surface_.nominal_area;
+  return state;
 }
 
 // The range: the curve's served separations (a scene table's), as the model's physical ones

@@ -10,6 +10,8 @@
 namespace asperity {
 namespace {
 void require_positive(double value, const char* name) {
+  if (std::isnan(value))  // RoughSurface's physical values have no default
+    throw Error(std::string("surface: ") + name + " is not given (a RoughSurface's physical values have no default)");
   if (!(std::isfinite(value) && value > 0)) {
     std::ostringstream message;
     message << "surface: " << name << " must be a positive number, got " << value;

@@ -18,7 +18,12 @@ int main() {
     std::printf("X_0(0.75) = %.17g, expected %.17g\n", value, exact);
     return 1;
   }
-  asperity::RoughSurface surface;
+  asperity::RoughSurface surface;  // the README's quick start: a Weibull tail of shape 2
+  surface.shape = 2;
+  surface.height_scale = 1e-6;
+  surface.summit_radius = 1e-4;
+  surface.summit_density = 1e10;
+  surface.nominal_area = 1e-4;
   surface.contact_modulus = asperity::contact_modulus_from(2.1e11, 0.3, 2.1e11, 0.3);
   const asperity::ContactModel model(table, surface);
   const asperity::PhysicalState state = model.at_load(1.0);
