@@ -92,24 +92,53 @@ struct Tabulation {
   long checked = 0;
 };
 
+// The next point after `a` toward `b` by bisection: b halved toward a until the chord is within
+// 0.8 of the tolerance at 7 interior points (or the card's digits cannot split it).
+Node bisected_next(const DatumLaw& law, const Node& a, Node b, double tolerance) {
+  Node mid;
+  while (!(chord_error(law, a, b, 7) <= 0.8 * tolerance) && middle(law, a, b, mid)) b = mid;
+  return b;
+}
+
+// The farthest next point after `a` (toward `high`) whose chord is within 0.8 of the tolerance at 7
+// interior points, from a first step `step`. A chord's error grows as the square of its step, so a
+// step is rescaled by the square root of (target / error) until its error lies in [0.5, 0.8] of
+// the tolerance; bisection leaves intervals anywhere in [0.2, 0.8] of it and needs about 1.3 times
+// the rows (212 against 168 for the README's card at 1e-3). Bisection where 8 tries find no step.
+Node next_point(const DatumLaw& law, const Node& a, const Node& high, double step, double tolerance) {
+  Node best{};
+  bool found = false;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const bool last = a.overclosure + step >= high.overclosure;
+    const Node b = last ? high : node_at(law, a.overclosure + step);
+    if (!(b.overclosure > a.overclosure)) break;  // below the card's digits
+    const double error = chord_error(law, a, b, 7);
+    if (error <= 0.8 * tolerance) {
+      best = b, found = true;
+      if (last || error >= 0.5 * tolerance) break;
+      step *= std::min(4.0, std::sqrt(0.65 * tolerance / std::max(error, 1e-300)));
+    } else {
+      if (found) break;  // a shorter step was within: keep it
+      step *= std::isfinite(error) ? std::max(0.1, std::sqrt(0.65 * tolerance / error)) : 0.1;
+    }
+  }
+  return found ? best : bisected_next(law, a, high, tolerance);
+}
+
 // Places points from low to high for `tolerance` and verifies them; false as soon as more than
 // `limit` points would be needed.
 bool tabulate_once(const DatumLaw& law, const Node& low, const Node& high, double tolerance, std::size_t limit,
                    Tabulation& result) {
-  // Place: bisect until the chord is within 0.8 of the tolerance at 7 interior points (the verification
-  // below splits what exceeds 0.9 of it: 0.5 here gave twice the error-free margin and 1.3 times the rows).
-  std::vector<Node> placed{low}, pending{high};  // pending: right ends still to reach, nearest last
-  while (!pending.empty()) {
+  // Place (the verification below splits what exceeds 0.9 of the tolerance: 0.8 here leaves it
+  // little to do)
+  std::vector<Node> placed{low};
+  double step = (high.overclosure - low.overclosure) / 16;
+  while (placed.back().overclosure < high.overclosure) {
     const Node& a = placed.back();
-    const Node b = pending.back();
-    Node mid;
-    if (chord_error(law, a, b, 7) <= 0.8 * tolerance || !middle(law, a, b, mid)) {
-      placed.push_back(b);
-      pending.pop_back();
-    } else {
-      pending.push_back(mid);
-    }
-    if (placed.size() + pending.size() > limit) return false;
+    const Node b = next_point(law, a, high, step, tolerance);
+    step = b.overclosure - a.overclosure;
+    placed.push_back(b);
+    if (placed.size() > limit) return false;
   }
   // Verify every interval at 32 interior points; split and check again where it fails.
   double worst = 0;
