@@ -20,10 +20,13 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "asperity/error.hpp"
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
 #include "asperity/topography/surface_report.hpp"
+#include "asperity/topography/surrogates.hpp"
 #include "asperity/topography/synthetic.hpp"
 #ifdef ASPERITY_TEST_LAW  // with the commands: a law made as `asperity surface --law` makes it
 #include "law_options.hpp"
@@ -477,3 +480,173 @@ TEST(TopographyReport, AnAdhesiveLawReportsItsAdhesionNotPlasticity) {
   EXPECT_EQ(ke.find("nan"), std::string::npos) << ke;
 }
 #endif
+
+// ---- issue 40: labels from the code that runs; "closest" only where summits carry it ----
+
+namespace {
+
+nlohmann::json parsed_json(const t::SurfaceAnalysis& a) { return nlohmann::json::parse(t::analysis_json(a)); }
+
+// the FFT's sizes: the least n' >= n of factors 2, 3 and 5 (as surrogates.cpp pads)
+std::size_t smooth_size(std::size_t n) {
+  for (;; ++n) {
+    std::size_t m = n;
+    for (std::size_t f : {2, 3, 5})
+      while (m % f == 0) m /= f;
+    if (m == 1) return n;
+  }
+}
+
+}  // namespace
+
+// Every method label of report.json and report.md is made from what the code reads (issue 40,
+// item 6): the surrogates' words from the window and constants SurrogateFields uses, each
+// sample's intervals from the ShapeInterval its intervals were made by. A label naming another
+// method (the old "periodogram ... Hann window ... 3 x 3", "percentile intervals" for the
+// bias-corrected heights) fails here.
+TEST(TopographyReport, MethodLabelsComeFromTheCodeThatRuns) {
+  using S = t::SurrogateSpectrum;
+  // the window SurrogateFields applies is Tukey's split cosine bell, as its words say
+  for (double u = 0; u <= 1.2; u += 0.01) {
+    const double tukey = u >= 1 ? 0 : u <= S::window_flat ? 1 : 0.5 * (1 + std::cos(M_PI * (u - S::window_flat) / (1 - S::window_flat)));
+    EXPECT_NEAR(t::surrogate_lag_window(u), tukey, 1e-15) << u;
+  }
+  EXPECT_EQ(t::surrogate_lag_window(0.5), 1.0);
+  EXPECT_NEAR(t::surrogate_lag_window(0.75), 0.5, 1e-15);
+  const std::string method = t::surrogate_method();
+  for (const char* words : {"Blackman and Tukey", "Tukey's lag window", "unbiased autocovariance", "1 to 0.5 of the largest lag",
+                            "6 correlation lengths", "at most 3/4 of the map", "F^-1(Phi(g))"})
+    EXPECT_NE(method.find(words), std::string::npos) << words << " in " << method;
+  for (const char* stale : {"periodogram", "Hann", "Parzen", "3 x 3", "two correlation lengths"})
+    EXPECT_EQ(method.find(stale), std::string::npos) << stale << " in " << method;
+
+  t::HeightMap map = t::gaussian_random_field(96, 80, 1e-7, 1e-7, {{1.5, 4e-16}}, 3);
+  map.source = "labels";
+  t::AnalysisOptions options;
+  options.assessment.bootstrap = 40;
+  options.assessment.threads = 2;
+  options.fit_heights = true;
+  const t::SurfaceAnalysis a = t::analyse_height_map(map, options);
+  const nlohmann::json j = parsed_json(a);
+  EXPECT_EQ(j["ensemble"]["method"], method);
+  // the padded grid is the map plus the largest lag the words state, from the constants they name
+  const auto largest_lag = [](std::size_t points, std::size_t length) {
+    return std::max<std::size_t>(2, std::min(S::largest_lag_map_numerator * points / S::largest_lag_map_denominator,
+                                             S::largest_lag_lengths * std::max<std::size_t>(1, length)));
+  };
+  EXPECT_EQ(j["ensemble"]["padded_grid"][0], smooth_size(96 + largest_lag(96, a.correlation.x)));
+  EXPECT_EQ(j["ensemble"]["padded_grid"][1], smooth_size(80 + largest_lag(80, a.correlation.y)));
+
+  // each sample's intervals: the words of the method its Weibull intervals were made by
+  ASSERT_TRUE(a.heights);
+  const struct {
+    const char* key;
+    const t::SampleAssessment* sample;
+    t::ShapeInterval expected;
+  } samples[] = {{"summit_heights", &a.summit_heights, t::ShapeInterval::centred_on_estimate},
+                 {"heights", &*a.heights, t::ShapeInterval::bias_corrected}};
+  for (const auto& s : samples) {
+    for (const t::ModelAssessment& m : s.sample->models) EXPECT_EQ(m.shape_interval, s.expected) << s.key;
+    EXPECT_EQ(j["fits"][s.key]["intervals"], t::interval_method(s.expected)) << s.key;
+    for (const auto& m : j["fits"][s.key]["models"]) EXPECT_EQ(m["interval_shape_method"], t::to_string(s.expected)) << s.key;
+  }
+  // the bias-corrected interval is the one that measures a bias slope; the others do not
+  for (t::HeightModel model : {t::HeightModel::weibull_tail, t::HeightModel::weibull_bounded}) {
+    EXPECT_TRUE(std::isfinite(a.heights->model(model).bias_slope));
+    EXPECT_TRUE(std::isnan(a.summit_heights.model(model).bias_slope));
+  }
+  const std::string bias = t::interval_method(t::ShapeInterval::bias_corrected);
+  EXPECT_NE(bias.find("corrected for a bias"), std::string::npos) << bias;
+  EXPECT_EQ(bias.find("shape: percentile"), std::string::npos) << bias;
+  EXPECT_NE(t::interval_method(t::ShapeInterval::percentile).find("shape: percentile"), std::string::npos);
+  EXPECT_NE(t::interval_method(t::ShapeInterval::centred_on_estimate), t::interval_method(t::ShapeInterval::percentile));
+  // an i.i.d. bootstrap's intervals are percentile ones, and say so
+  std::vector<double> values;
+  for (int k = 0; k < 200; ++k) values.push_back(std::sqrt(-std::log(1 - (k + 0.5) / 200)));
+  t::AssessmentOptions iid;
+  iid.bootstrap = 20;
+  iid.threads = 2;
+  for (const t::ModelAssessment& m : t::assess_sample("iid", values, iid).models)
+    EXPECT_EQ(m.shape_interval, t::ShapeInterval::percentile);
+  // report.md gives the same words
+  const std::string dir = folder("labels");
+  t::write_report(a, dir);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find(method), std::string::npos);
+  EXPECT_NE(md.find(t::interval_method(t::ShapeInterval::centred_on_estimate)), std::string::npos);
+  EXPECT_NE(md.find(bias), std::string::npos);
+  // no ensemble: no intervals, and the label says so
+  options.assessment.bootstrap = 0;
+  options.fit_heights = false;
+  const nlohmann::json none = parsed_json(t::analyse_height_map(map, options));
+  EXPECT_EQ(none["fits"]["summit_heights"]["intervals"], t::interval_method(t::ShapeInterval::none));
+}
+
+// How many measured summits carry the answer at each pressure (issue 40, item 4): counted, written
+// in every output, and below min_summits_to_compare no model is named closest at that pressure.
+TEST(TopographyReport, ClosestModelOnlyWhereEnoughSummitsAreInContact) {
+  const t::SurfaceAnalysis& base = analysis();
+  ASSERT_TRUE(base.contact);
+  const t::ContactComparison& c = *base.contact;
+  const t::ModelContact* measured = c.find(t::ContactModelKind::measured_summits);
+  ASSERT_TRUE(measured && measured->served);
+  ASSERT_EQ(c.measured_summits_in_contact.size(), c.pressures.size());
+  const double scale = c.nominal_area / base.summits.area_searched;
+  for (std::size_t k = 0; k < c.pressures.size(); ++k) {
+    // the count is the measured summits', not scaled to the nominal area
+    EXPECT_NEAR(static_cast<double>(c.measured_summits_in_contact[k]), measured->at_pressures[k].count / scale, 1e-6);
+    EXPECT_EQ(c.compared_at(k), c.measured_summits_in_contact[k] >= t::min_summits_to_compare);
+  }
+  const nlohmann::json j = parsed_json(base);
+  EXPECT_EQ(j["contact"]["measured_summits_in_contact"].get<std::vector<std::size_t>>(), c.measured_summits_in_contact);
+  EXPECT_EQ(j["contact"]["min_measured_summits_to_compare"], t::min_summits_to_compare);
+  ASSERT_EQ(j["contact"]["compared_at_pressures"].size(), c.pressures.size());
+
+  // the same comparison with too few summits at the first pressure, then at every pressure
+  t::SurfaceAnalysis a = base;
+  t::ContactComparison& few = *a.contact;
+  ASSERT_GE(few.pressures.size(), 2u);
+  for (std::size_t& n : few.measured_summits_in_contact) n = std::max<std::size_t>(n, t::min_summits_to_compare);
+  few.measured_summits_in_contact[0] = t::min_summits_to_compare - 1;
+  t::conclude_contact(few);
+  EXPECT_FALSE(few.closest.empty());
+  EXPECT_NE(few.headline.find("Closest to GW on the measured summits"), std::string::npos) << few.headline;
+  EXPECT_NE(few.headline.find("only " + std::to_string(t::min_summits_to_compare - 1) +
+                              " measured summits in contact: too few to compare models"),
+            std::string::npos)
+      << few.headline;
+  // the closest is the nearest at the pressures compared only
+  double best = INFINITY;
+  std::string nearest;
+  for (const t::ModelContact& m : few.models) {
+    if (!m.served || !t::is_fitted(m.kind)) continue;
+    double worst = 0;
+    for (std::size_t k = 1; k < few.pressures.size(); ++k) worst = std::max(worst, std::fabs(std::log(m.stiffness_over_measured[k])));
+    if (worst < best) {
+      best = worst;
+      nearest = m.label;
+    }
+  }
+  EXPECT_EQ(few.closest, nearest);
+
+  for (std::size_t& n : few.measured_summits_in_contact) n = 1;
+  t::conclude_contact(few);
+  EXPECT_EQ(few.closest, "");
+  EXPECT_EQ(few.headline.rfind("No model is named closest to GW on the measured summits: at ", 0), 0u) << few.headline;
+  EXPECT_NE(few.headline.find("only 1 measured summit in contact"), std::string::npos) << few.headline;
+  EXPECT_EQ(few.headline.find("Closest to"), std::string::npos) << few.headline;
+  a.verdict = t::surface_verdict(a);
+  const nlohmann::json fj = parsed_json(a);
+  EXPECT_EQ(fj["contact"]["closest_fitted_model"], "");
+  for (const auto& compared : fj["contact"]["compared_at_pressures"]) EXPECT_EQ(compared, false);
+  const std::string summary = t::analysis_summary(a);
+  EXPECT_NE(summary.find("Pa (1 measured summit in contact: too few to compare models): stiffness per area"), std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("No model is named closest"), std::string::npos) << summary;  // the verdict carries the headline
+  const std::string dir = folder("few-summits");
+  t::write_report(a, dir);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("Pa (1 measured summit in contact: too few to compare models; the ratios below are that handful's):"),
+            std::string::npos);
+  EXPECT_NE(md.find("**No model is named closest"), std::string::npos);
+}

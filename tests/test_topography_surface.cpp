@@ -238,8 +238,9 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
   struct Case {
     std::string file;
     std::size_t summits;
+    std::vector<std::size_t> in_contact;  // measured summits in contact at 1e6 and 1e7 Pa
   };
-  for (const Case& c : {Case{"digitalsurf-650x650.x3p", 2482}, Case{"afm-zsensor-10um.txt", 1670}}) {
+  for (const Case& c : {Case{"digitalsurf-650x650.x3p", 2482, {27, 129}}, Case{"afm-zsensor-10um.txt", 1670, {1, 1}}}) {
     t::AnalysisOptions options;
     options.assessment.bootstrap = 40;
     options.sampling_factors = {1, 2};
@@ -275,6 +276,14 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
       EXPECT_NEAR(m.at_pressures[0].pressure / 1e6, 1, 1e-9) << m.label;
     }
     EXPECT_GE(served, 3) << c.file;
+    // issue 40, item 4: the AFM map has about one measured summit in contact at both pressures, so
+    // no model is named closest there; the X3P map has enough at both
+    EXPECT_EQ(a.contact->measured_summits_in_contact, c.in_contact) << c.file;
+    const bool enough = c.in_contact.front() >= t::min_summits_to_compare;
+    EXPECT_EQ(a.contact->closest.empty(), !enough) << c.file << ": " << a.contact->headline;
+    EXPECT_EQ(a.contact->headline.find("only 1 measured summit in contact: too few to compare models") != std::string::npos,
+              !enough)
+        << a.contact->headline;
   }
 }
 

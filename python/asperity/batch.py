@@ -69,8 +69,8 @@ COLUMNS = [
                   ("shape", "shape_lo", "shape_hi", "shape_identified", "ad_p", "ad_p_is_bound", "akaike_weight"))
 ] + ["verdict_text", "contact_closest_model", "contact_headline", "contact_closest_to_exact"]
 """The table's fixed columns, in order. With contact curves, each pressure k (0, 1, ...) adds
-pressure_{k}_Pa, measured_summits_stiffness_spread_{k} and, for each model m compared with the
-measured summits, stiffness_over_measured_{k}_{m}; with the exact contact solved, for each curve m
+pressure_{k}_Pa, measured_summits_stiffness_spread_{k}, measured_summits_in_contact_{k} and, for
+each model m compared with the measured summits, stiffness_over_measured_{k}_{m}; with the exact contact solved, for each curve m
 stiffness_over_exact_{k}_{m} and area_over_exact_{k}_{m}: see row_from_json."""
 
 # Where each fixed column is in a surface's JSON document (SURFACE_JSON_SCHEMA): one table, read by
@@ -315,7 +315,9 @@ def row_from_json(document, source=None, name=None) -> dict:
     columns of COLUMNS (status "analysed", error None, seconds None: analyse_files fills them) and,
     with contact curves, for each pressure k: pressure_{k}_Pa, measured_summits_stiffness_spread_{k}
     (the relative spread of GW over the measured summits across the ensemble: the uncertainty of the
-    ratios) and stiffness_over_measured_{k}_{model} for gaussian-moments, gaussian, weibull-tail,
+    ratios), measured_summits_in_contact_{k} (how many measured summits carry that answer: below
+    asperity.topography.MIN_SUMMITS_TO_COMPARE no model is named closest there) and
+    stiffness_over_measured_{k}_{model} for gaussian-moments, gaussian, weibull-tail,
     weibull-bounded, measured-summits-own-radii, persson and exact (None where a model has no
     curve); with the exact contact solved, stiffness_over_exact_{k}_{model} and
     area_over_exact_{k}_{model} for measured-summits and the others but exact. Missing values (a
@@ -346,16 +348,20 @@ def row_from_json(document, source=None, name=None) -> dict:
                 row[prefix + "shape_identified"] = m["shape_identified"]
     contact = d.get("contact")
     if contact:
-        row["contact_closest_model"] = contact["closest_fitted_model"]
+        # None where no model is named (too few measured summits in contact at every pressure), as
+        # the CSV reads an empty cell back
+        row["contact_closest_model"] = contact["closest_fitted_model"] or None
         row["contact_headline"] = contact["headline"]
         references = contact.get("references", {})
         exact_solved = bool(references.get("exact")) and _models_served(contact, _EXACT)
         row["contact_closest_to_exact"] = references.get("closest_to_exact") or None
         models = {m["model"]: m for m in contact["models"]}
         spread = contact["measured_summits_spread"]["stiffness_relative"]
+        in_contact = contact.get("measured_summits_in_contact", [])
         for k, pressure in enumerate(contact["pressures_Pa"]):
             row[f"pressure_{k}_Pa"] = pressure
             row[f"measured_summits_stiffness_spread_{k}"] = spread[k] if k < len(spread) else None
+            row[f"measured_summits_in_contact_{k}"] = in_contact[k] if k < len(in_contact) else None
             for label in _CONTACT_MODELS:
                 at = models.get(label, {}).get("at_pressures", [])
                 value = at[k].get("stiffness_over_measured_summits") if k < len(at) and models[label]["served"] else None

@@ -75,6 +75,8 @@ void bind_persson_contact(py::module_& m) {
   py::list contact_model_names;
   for (topo::ContactModelKind kind : topo::all_contact_model_kinds) contact_model_names.append(topo::to_string(kind));
   m.attr("contact_model_names") = py::tuple(contact_model_names);
+  // the fewest measured summits in contact at a pressure for a closest model to be named there
+  m.attr("MIN_SUMMITS_TO_COMPARE") = topo::min_summits_to_compare;
   py::class_<topo::PerssonState> persson_state(m, "PerssonState", "Persson's theory at one nominal pressure (SI units).");
   // its fields from their one list (PerssonState's, persson_contact.hpp), each with its meaning
 #define ASPERITY_BIND_FIELD(type, name, column, meaning) persson_state.def_readonly(#name, &topo::PerssonState::name, meaning);
@@ -182,7 +184,20 @@ void bind_contact_comparison(py::module_& m) {
       .def_readonly("pressure_max", &topo::ContactComparison::pressure_max)
       .def_readonly("nominal_area", &topo::ContactComparison::nominal_area)
       .def_readonly("models", &topo::ContactComparison::models)
-      .def_readonly("closest", &topo::ContactComparison::closest, "The fitted model nearest the measured summits.")
+      .def_property_readonly(
+          "measured_summits_in_contact",
+          [](const topo::ContactComparison& c) { return std::vector<std::size_t>(c.measured_summits_in_contact); },
+          "The measured summits in contact at each pressure (not scaled to the nominal area).")
+      .def_property_readonly(
+          "compared_at_pressures",
+          [](const topo::ContactComparison& c) {
+            std::vector<bool> compared;
+            for (std::size_t k = 0; k < c.pressures.size(); ++k) compared.push_back(c.compared_at(k));
+            return compared;
+          },
+          "At each pressure: at least MIN_SUMMITS_TO_COMPARE measured summits in contact, so models are compared there.")
+      .def_readonly("closest", &topo::ContactComparison::closest,
+                    "The fitted model nearest the measured summits at the pressures compared ('' where none is).")
       .def_readonly("headline", &topo::ContactComparison::headline)
       .def_readonly("exact_method", &topo::ContactComparison::exact_method, "How the exact contact was solved.")
       .def_readonly("closest_to_exact", &topo::ContactComparison::closest_to_exact)

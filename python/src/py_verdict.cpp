@@ -209,7 +209,7 @@ void bind_assessment(py::module_& m) {
       .def_readwrite("confidence", &topo::AssessmentOptions::confidence)
       .def_readwrite("significance", &topo::AssessmentOptions::significance)
       .def_readwrite("fit", &topo::AssessmentOptions::fit);
-  py::class_<topo::Interval>(m, "Interval", "A percentile bootstrap interval [lo, hi].")
+  py::class_<topo::Interval>(m, "Interval", "A bootstrap interval [lo, hi] (ModelAssessment.shape_interval says how it was made).")
       .def_readonly("lo", &topo::Interval::lo)
       .def_readonly("hi", &topo::Interval::hi)
       .def("__repr__", &repr_interval);
@@ -240,6 +240,12 @@ void bind_assessment(py::module_& m) {
       .def_readonly("bias_slope", &topo::ModelAssessment::bias_slope,
                     "The heights' Weibull shape: d(bias of ln a)/d(ln a) on the surrogates, which its interval "
                     "corrects for (NaN where not measured).")
+      .def_property_readonly(
+          "shape_interval", [](const topo::ModelAssessment& m) { return std::string(topo::to_string(m.shape_interval)); },
+          "How the intervals were made: 'percentile', 'centred-on-estimate', 'bias-corrected', or 'none' (no refits).")
+      .def_property_readonly(
+          "interval_method", [](const topo::ModelAssessment& m) { return topo::interval_method(m.shape_interval); },
+          "The same in words, as report.json's fits.*.intervals gives it.")
       .def("__repr__", [](const topo::ModelAssessment& m) {
         // the p-values as the reports write them: a bound where they are one ("p <= 0.005")
         return "<asperity.topography.ModelAssessment " + std::string(topo::to_string(m.fit.distribution.model)) +

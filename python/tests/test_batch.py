@@ -169,9 +169,10 @@ def test_each_row_holds_its_surfaces_json(first_run):
                     assert [row[column + "_shape_lo"], row[column + "_shape_hi"]] == m["interval_shape"]
                     assert row[column + "_shape_identified"] == m["shape_identified"]
         c = d["contact"]
-        assert c["pressures_Pa"] == [1e6, 1e7] and row["contact_closest_model"] == c["closest_fitted_model"]
+        assert c["pressures_Pa"] == [1e6, 1e7] and row["contact_closest_model"] == (c["closest_fitted_model"] or None)
         for k in range(2):
             assert row[f"pressure_{k}_Pa"] == c["pressures_Pa"][k]
+            assert row[f"measured_summits_in_contact_{k}"] == c["measured_summits_in_contact"][k]
             for m in c["models"]:
                 column = f"stiffness_over_measured_{k}_{m['model']}"
                 if m["model"] == "measured-summits":
@@ -197,8 +198,9 @@ def test_the_csv_is_the_table(first_run):
     with open(out / "surfaces.csv", newline="") as f:
         header = next(csv.reader(f))
     assert header[:len(batch.COLUMNS)] == batch.COLUMNS
-    assert header[len(batch.COLUMNS):len(batch.COLUMNS) + 3] == [
-        "pressure_0_Pa", "measured_summits_stiffness_spread_0", "stiffness_over_measured_0_gaussian-moments"]
+    assert header[len(batch.COLUMNS):len(batch.COLUMNS) + 4] == [
+        "pressure_0_Pa", "measured_summits_stiffness_spread_0", "measured_summits_in_contact_0",
+        "stiffness_over_measured_0_gaussian-moments"]
     table = batch.read_table(out / "surfaces.csv")
     assert len(table) == len(rows)
     for read, row in zip(table, rows):

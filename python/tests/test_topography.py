@@ -456,6 +456,17 @@ def test_analyse_the_real_afm_map(tmp_path):
     model = asperity.ContactModel(asperity.Table.open_default(), gaussian.surface)
     assert math.isclose(model.at_pressure(1e5).stiffness, gaussian.at_pressures.stiffness[0], rel_tol=1e-9)
     assert "summits" in analysis.summary()
+    # how many measured summits carry the answer, and no closest model where too few do (issue 40)
+    counts = comparison.measured_summits_in_contact
+    assert counts == document["contact"]["measured_summits_in_contact"] and len(counts) == 1
+    assert comparison.compared_at_pressures == [counts[0] >= topography.MIN_SUMMITS_TO_COMPARE]
+    assert document["contact"]["min_measured_summits_to_compare"] == topography.MIN_SUMMITS_TO_COMPARE == 25
+    if not comparison.compared_at_pressures[0]:
+        assert comparison.closest == "" and "too few to compare models" in comparison.headline
+    # each sample's intervals say the method that made them
+    for m in analysis.summit_heights.models:
+        assert m.shape_interval == "centred-on-estimate"
+        assert m.interval_method == document["fits"]["summit_heights"]["intervals"]
 
     outcome = analysis.write_report(tmp_path / "report")
     assert outcome.plots and outcome.plot_note == ""

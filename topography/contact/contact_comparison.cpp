@@ -231,6 +231,60 @@ std::vector<double> contact_pressures(const ContactOptions& options) {
   return pressures;
 }
 
+namespace {
+
+// "1 measured summit", "27 measured summits"
+std::string summits_text(std::size_t n) {
+  return std::to_string(n) + (n == 1 ? " measured summit" : " measured summits");
+}
+
+// The headline against the measured summits: the closest fitted model (nullptr: none) at the
+// pressures compared, and at each pressure not compared why not.
+std::string measured_headline(const ContactComparison& comparison, const ModelContact* closest, double worst) {
+  std::ostringstream text;
+  text.precision(3);
+  const std::vector<double>& pressures = comparison.pressures;
+  std::vector<std::size_t> compared, too_few;
+  for (std::size_t k = 0; k < pressures.size(); ++k) (comparison.compared_at(k) ? compared : too_few).push_back(k);
+  const auto why_not = [&] {
+    for (std::size_t n = 0; n < too_few.size(); ++n) {
+      const std::size_t k = too_few[n];
+      text << (n ? ", " : "") << "at " << pressures[k] << " Pa only "
+           << summits_text(k < comparison.measured_summits_in_contact.size() ? comparison.measured_summits_in_contact[k] : 0)
+           << " in contact";
+    }
+    text << ": too few to compare models (at least " << min_summits_to_compare
+         << ": below that the answer rests on a handful of summits, its sampling spread ~1/sqrt(n) above 20%)";
+  };
+  if (compared.empty()) {
+    text << "No model is named closest to GW on the measured summits: ";
+    why_not();
+    return text.str();
+  }
+  if (!closest) return "no fitted model has contact curves to compare with the measured summits";
+  text << "Closest to GW on the measured summits (no law fitted): " << closest->label << ", stiffness ";
+  for (std::size_t n = 0; n < compared.size(); ++n) {
+    const std::size_t k = compared[n];
+    text << (n ? ", " : "") << closest->stiffness_over_measured[k] << "x";
+    if (k < comparison.measured_stiffness_spread.size()) text << " (+-" << 100 * comparison.measured_stiffness_spread[k] << "%)";
+    text << " at " << pressures[k] << " Pa (" << summits_text(comparison.measured_summits_in_contact[k]) << " in contact)";
+  }
+  text << "; mean separation ";
+  for (std::size_t n = 0; n < compared.size(); ++n) text << (n ? ", " : "") << closest->separation_minus_measured[compared[n]] << " m";
+  text << " from the measured summits'";
+  if (!comparison.measured_stiffness_spread.empty())
+    text << " (the +- is the measured-summit answer's spread over the surrogate ensemble)";
+  if (worst > std::log(1.25))
+    text << "; no fitted model is within 25% at every pressure" << (too_few.empty() ? "" : " compared");
+  if (!too_few.empty()) {
+    text << "; " << (too_few.size() == 1 ? "one pressure is" : "some pressures are") << " not compared: ";
+    why_not();
+  }
+  return text.str();
+}
+
+}  // namespace
+
 void conclude_contact(ContactComparison& comparison) {
   conclude_against_exact(comparison);
   const ModelContact* measured = comparison.find(ContactModelKind::measured_summits);
@@ -245,42 +299,27 @@ void conclude_contact(ContactComparison& comparison) {
                                                 measured->at_pressures[k].mean_separation);
     }
   }
-  // the fitted model whose worst stiffness ratio over the pressures is nearest 1
+  // the fitted model whose worst stiffness ratio over the pressures compared (enough measured
+  // summits in contact: compared_at) is nearest 1; none where no pressure is compared
   double best = std::numeric_limits<double>::infinity();
   comparison.closest.clear();
   const ModelContact* closest_model = nullptr;
   for (const ModelContact& model : comparison.models) {
     if (!model.served || !is_fitted(model.kind)) continue;
     double worst = 0;
-    for (double ratio : model.stiffness_over_measured) worst = std::max(worst, std::fabs(std::log(ratio)));
-    if (worst < best) {
+    bool any = false;
+    for (std::size_t k = 0; k < model.stiffness_over_measured.size(); ++k)
+      if (comparison.compared_at(k)) {
+        worst = std::max(worst, std::fabs(std::log(model.stiffness_over_measured[k])));
+        any = true;
+      }
+    if (any && worst < best) {
       best = worst;
       closest_model = &model;
       comparison.closest = model.label;
     }
   }
-  std::ostringstream text;
-  text.precision(3);
-  if (!closest_model) {
-    text << "no fitted model has contact curves to compare with the measured summits";
-  } else {
-    const ModelContact& closest = *closest_model;
-    text << "Closest to GW on the measured summits (no law fitted): " << closest.label << ", stiffness ";
-    for (std::size_t k = 0; k < comparison.pressures.size(); ++k) {
-      text << (k ? ", " : "") << closest.stiffness_over_measured[k] << "x";
-      if (k < comparison.measured_stiffness_spread.size())
-        text << " (+-" << 100 * comparison.measured_stiffness_spread[k] << "%)";
-      text << " at " << comparison.pressures[k] << " Pa";
-    }
-    text << "; mean separation ";
-    for (std::size_t k = 0; k < comparison.pressures.size(); ++k)
-      text << (k ? ", " : "") << closest.separation_minus_measured[k] << " m";
-    text << " from the measured summits'";
-    if (!comparison.measured_stiffness_spread.empty())
-      text << " (the +- is the measured-summit answer's spread over the surrogate ensemble)";
-    if (best > std::log(1.25)) text << "; no fitted model is within 25% at every pressure";
-  }
-  comparison.headline = text.str();
+  comparison.headline = measured_headline(comparison, closest_model, best);
 }
 
 const ModelContact* ContactComparison::find(ContactModelKind kind) const {
@@ -362,7 +401,10 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
       const SummitContact contact(summits, e_star, area, own_radii);
       model.mean_summit_height = contact.mean_summit_height();
       for (double p : curve_pressures(comparison)) model.curve.push_back(contact.at_pressure(p));
-      for (double p : comparison.pressures) model.at_pressures.push_back(contact.at_pressure(p));
+      for (double p : comparison.pressures) {
+        model.at_pressures.push_back(contact.at_pressure(p));
+        if (!own_radii) comparison.measured_summits_in_contact.push_back(contact.in_contact(model.at_pressures.back().separation));
+      }
       model.served = true;
       model.surface.summit_radius = summits.radius;
       model.surface.summit_density = summits.density;
@@ -371,6 +413,9 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
       model.note = std::to_string(summits.list.size()) + " measured summits, " +
                    (own_radii ? "each with its own radius 1/kappa_m" : "GW's one radius 1/<kappa_m>") + ", no law fitted";
     } catch (const Error& error) {
+      model.at_pressures.clear();
+      model.curve.clear();
+      if (!own_radii) comparison.measured_summits_in_contact.clear();
       model.note = std::string("no curve: ") + error.what();
     }
     comparison.models.push_back(std::move(model));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -56,6 +57,12 @@ PhysicalState SummitContact::at_separation(double d) const noexcept {
   state.stiffness = static_cast<double>(stiffness) * scale_;
   state.stiffness_over_load = state.stiffness / state.load;
   return state;
+}
+
+std::size_t SummitContact::in_contact(double separation) const noexcept {
+  // descending: the summits above d (those at_separation counts) are a prefix
+  return static_cast<std::size_t>(std::lower_bound(heights_.begin(), heights_.end(), separation, std::greater<double>()) -
+                                  heights_.begin());
 }
 
 PhysicalState SummitContact::at_pressure(double pressure) const {

@@ -14,6 +14,7 @@
 #include "asperity/integrals.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/topography/next_steps.hpp"
+#include "asperity/topography/surrogates.hpp"
 #include "input/reader_support.hpp"
 #include "record_json.hpp"
 #include "svg_plot.hpp"
@@ -53,6 +54,7 @@ ordered_json assessment_json(const SampleAssessment& a) {
                       {"interval_location_m", {number(m.location.lo), number(m.location.hi)}},
                       {"interval_scale_m", {number(m.scale.lo), number(m.scale.hi)}},
                       {"interval_shape", {number(m.shape.lo), number(m.shape.hi)}},
+                      {"interval_shape_method", to_string(m.shape_interval)},
                       {"shape_bias_slope", number(m.bias_slope)},
                       {"anderson_darling", number(m.anderson_darling)},
                       {"anderson_darling_p", number(m.anderson_darling_p)},
@@ -75,9 +77,7 @@ ordered_json assessment_json(const SampleAssessment& a) {
                       {"significance", a.options.significance},
                       {"null_distributions", "from surrogate surfaces of the map's own spectrum with each model's "
                                              "marginal, every statistic computed on them as on the map"},
-                      {"intervals", a.name.rfind("summit", 0) == 0
-                                        ? "the ensemble's refitted shapes, their spread centred on the estimate"
-                                        : "percentile intervals of the ensemble's refitted shapes"},
+                      {"intervals", interval_method(a.model(HeightModel::weibull_tail).shape_interval)},
                       {"models", models},
                       {"verdict",
                        {{"gaussian_rejected", a.verdict.gaussian_rejected},
@@ -107,6 +107,14 @@ ordered_json histogram_json(const HeightMap& map, int bins) {
 
 // the ratio of a model's prediction to the Gaussian fit's at each pressure of interest
 double ratio(double a, double b) { return (std::isfinite(a) && std::isfinite(b) && b != 0) ? a / b : NAN; }
+
+// how many measured summits carry the answer at pressure k, and whether models are compared there
+std::string in_contact_text(const ContactComparison& c, std::size_t k) {
+  if (k >= c.measured_summits_in_contact.size()) return "measured summits in contact: not known";
+  const std::size_t n = c.measured_summits_in_contact[k];
+  return std::to_string(n) + (n == 1 ? " measured summit" : " measured summits") + " in contact" +
+         (c.compared_at(k) ? "" : ": too few to compare models");
+}
 
 // The unit of the plots' heights: nm for sub-micrometre roughness, else um
 struct HeightUnit {
@@ -370,10 +378,7 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
   j["height_histogram"] = histogram_json(map, 60);
   j["ensemble"] = {{"surrogates", a.surrogates},
                    {"padded_grid", {a.padded_nx, a.padded_ny}},
-                   {"method",
-                    "Gaussian random fields with the periodogram of the map's normal scores (Hann window, "
-                    "padded by two correlation lengths, smoothed over 3 x 3 wavevectors), cut to the map; "
-                    "each model's marginal by F^-1(Phi(g))"}};
+                   {"method", surrogate_method()}};
 }
 
 ordered_json verdict_json(const SurfaceVerdict& v) {
@@ -437,9 +442,15 @@ ordered_json model_contact_json(const ModelContact& mc, const ContactComparison&
 ordered_json contact_json(const ContactComparison& c) {
   ordered_json models = ordered_json::array();
   for (const ModelContact& mc : c.models) models.push_back(model_contact_json(mc, c));
+  // at each pressure: enough measured summits in contact to name a closest model there
+  std::vector<bool> compared;
+  for (std::size_t k = 0; k < c.pressures.size(); ++k) compared.push_back(c.compared_at(k));
   ordered_json contact{{"contact_modulus_Pa", c.options.contact_modulus},
                        {"nominal_area_m2", c.nominal_area},
                        {"pressures_Pa", c.pressures},
+                       {"measured_summits_in_contact", c.measured_summits_in_contact},
+                       {"compared_at_pressures", compared},
+                       {"min_measured_summits_to_compare", min_summits_to_compare},
                        {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
                        {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes " +
                                       format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) +
@@ -574,7 +585,8 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
     const ContactComparison& c = *a.contact;
     const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
     for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-      out << "  at " << g(c.pressures[k]) << " Pa: stiffness per area [N/m^3] (x the measured summits')";
+      out << "  at " << g(c.pressures[k]) << " Pa (" << in_contact_text(c, k)
+          << "): stiffness per area [N/m^3] (x the measured summits')";
       for (const ModelContact& mc : c.models) {
         if (mc.kind == ContactModelKind::measured_summits_own_radii) continue;
         out << "  " << mc.label << " ";
@@ -708,12 +720,14 @@ void markdown_fits(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
   md << "\nMethod: the Gaussian by maximum likelihood; each three-parameter Weibull by maximum product of spacings "
         "(well-posed for every shape, including shapes below 1 where maximum likelihood diverges). The null "
         "distribution of every statistic and the shape intervals come from "
-     << a.surrogates << " surrogate surfaces (seed " << a.summit_heights.options.seed
-     << "): Gaussian random fields with the spectrum of the map's own heights, given each model's marginal, on which "
-        "every statistic is computed exactly as on the map (summits found the same way), so the tests carry the "
-        "surface's correlation. A p-value shown as ≤ is at its floor 1/(B + 1). A shape whose interval reaches the "
-        "fit's bounds (0.05, 100) or with over a tenth of its refits there is not identified. Akaike weights over all "
-        "three models.\n";
+     << a.surrogates << " surrogate surfaces (seed " << a.summit_heights.options.seed << "): " << surrogate_method()
+     << "; on each every statistic is computed exactly as on the map (summits found the same way), so the tests carry "
+        "the surface's correlation. A p-value shown as ≤ is at its floor 1/(B + 1). Intervals of the summit heights: "
+     << interval_method(a.summit_heights.model(HeightModel::weibull_tail).shape_interval) << ".";
+  if (a.heights)
+    md << " Intervals of the heights: " << interval_method(a.heights->model(HeightModel::weibull_tail).shape_interval) << ".";
+  md << " A shape whose interval reaches the fit's bounds (0.05, 100) or with over a tenth of its refits there is not "
+        "identified. Akaike weights over all three models.\n";
   if (plots) md << "\n![fits](fits.svg)\n";
 }
 
@@ -789,7 +803,9 @@ void markdown_contact(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
   for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
   const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
   for (std::size_t k = 0; k < c.pressures.size(); ++k) {
-    md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa:\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa (" << in_contact_text(c, k)
+       << (c.compared_at(k) || k >= c.measured_summits_in_contact.size() ? "" : "; the ratios below are that handful's")
+       << "):\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModelContact& mc : c.models) {
       if (!mc.served) {
         md << "| " << mc.label << " | – | – | – | – | – | – | – |\n";

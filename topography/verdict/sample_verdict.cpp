@@ -85,6 +85,7 @@ void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const Assess
   }
   m.bootstrap = static_cast<int>(refits.size());
   if (ok == 0) return;
+  m.shape_interval = interval;  // what the outputs say of these intervals (interval_method)
   m.anderson_darling_p = static_cast<double>(1 + exceed_a2) / (ok + 1);
   m.kolmogorov_smirnov_p = static_cast<double>(1 + exceed_d) / (ok + 1);
   m.p_at_floor = exceed_a2 == 0;
@@ -97,7 +98,8 @@ void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const Assess
   if (model == HeightModel::gaussian) return;
   const double lo = percentile(shapes, tail), hi = percentile(shapes, 1 - tail);
   const double a = m.fit.distribution.shape;
-  if (interval == ShapeInterval::percentile) {
+  if (interval == ShapeInterval::percentile || interval == ShapeInterval::none) {
+    m.shape_interval = ShapeInterval::percentile;
     m.shape = {lo, hi};
   } else if (interval == ShapeInterval::centred_on_estimate) {
     // the spread of the refits around their own centre, carried to the estimate (in ln shape)
@@ -149,7 +151,6 @@ void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const Assess
     m.identification = text;
   }
 }
-
 
 void judge(SampleAssessment& sample, NullSamples null_samples) {
   weigh_models(sample);
@@ -204,3 +205,39 @@ void judge(SampleAssessment& sample, NullSamples null_samples) {
 }
 
 }  // namespace asperity::topography::verdict
+
+namespace asperity::topography {
+
+const char* to_string(ShapeInterval interval) {
+  switch (interval) {
+    case ShapeInterval::none: return "none";
+    case ShapeInterval::percentile: return "percentile";
+    case ShapeInterval::centred_on_estimate: return "centred-on-estimate";
+    case ShapeInterval::bias_corrected: return "bias-corrected";
+  }
+  return "?";
+}
+
+// The words of each branch of verdict::conclude above: kept beside it, read by every output.
+std::string interval_method(ShapeInterval interval) {
+  const std::string refits = "location and scale: percentile intervals of the refits; shape: ";
+  switch (interval) {
+    case ShapeInterval::none: return "none: no refits (no ensemble), so no intervals";
+    case ShapeInterval::percentile: return refits + "percentile interval of the refitted shapes (refits drawn at the estimate)";
+    case ShapeInterval::centred_on_estimate:
+      return refits + "the refitted shapes' spread about their median carried to the estimate, in ln shape "
+                      "(a m / q_hi to a m / q_lo)";
+    case ShapeInterval::bias_corrected: {
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "the basic interval in ln shape corrected for a bias that changes with the shape: the bias "
+                    "measured on the same surrogate fields at the estimate and at the estimate times e^-%g, its "
+                    "slope beta, ln a = ln a_hat - (b0 + e) / (1 + beta); not identified where 1 + beta < %g",
+                    verdict::bias_step, verdict::min_sensitivity);
+      return refits + text;
+    }
+  }
+  return "?";
+}
+
+}  // namespace asperity::topography

@@ -36,15 +36,13 @@ Refit refit(HeightModel model, const std::vector<double>& sorted, const HeightDi
 // until concluded.
 ModelAssessment observed(HeightModel model, const std::vector<double>& sorted, const FitOptions& options);
 
-// How a Weibull's shape interval is made from the refitted shapes.
-enum class ShapeInterval {
-  percentile,           // the refits' percentiles (i.i.d. bootstrap: drawn at the estimate)
-  centred_on_estimate,  // the refits' spread about their median carried to the estimate (summits)
-  bias_corrected,       // the basic interval in ln a corrected for a bias that changes with a (heights)
-};
+// How a Weibull's shape interval is made from the refitted shapes (goodness_of_fit.hpp: the
+// enum, and interval_method, its words in every output, defined beside conclude).
+using topography::ShapeInterval;
 
-// p-values, intervals and identification of one model from its refits. `stepped`: the refits of
-// the same null fields at the shape a_hat e^-0.1 (bias_corrected only).
+// p-values, intervals and identification of one model from its refits, the intervals made as
+// `interval` says (recorded in m.shape_interval). `stepped`: the refits of the same null fields at
+// the shape a_hat e^-bias_step (bias_corrected only).
 void conclude(ModelAssessment& m, const std::vector<Refit>& refits, const AssessmentOptions& options,
               ShapeInterval interval, const std::vector<Refit>* stepped = nullptr);
 

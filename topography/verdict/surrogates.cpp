@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 #include "asperity/detail/parallel_for.hpp"
@@ -48,7 +49,47 @@ class Xoshiro256 {
   std::uint64_t state_[4];
 };
 
+// the least size >= n of factors 2, 3 and 5 (the FFT's fastest)
+std::size_t smooth(std::size_t n) {
+  for (;; ++n) {
+    std::size_t m = n;
+    for (std::size_t f : {2, 3, 5})
+      while (m % f == 0) m /= f;
+    if (m == 1) return n;
+  }
+}
+
+// the largest lag along an axis of `points` points and correlation length `length` (points)
+std::size_t largest_lag(std::size_t points, std::size_t length) {
+  using S = SurrogateSpectrum;
+  return std::max<std::size_t>(2, std::min(S::largest_lag_map_numerator * points / S::largest_lag_map_denominator,
+                                           S::largest_lag_lengths * std::max<std::size_t>(1, length)));
+}
+
 }  // namespace
+
+double surrogate_lag_window(double u) noexcept {
+  constexpr double flat = SurrogateSpectrum::window_flat;
+  if (!(u < 1)) return 0;
+  return u <= flat ? 1 : 0.5 * (1 + std::cos(pi * (u - flat) / (1 - flat)));
+}
+
+std::string surrogate_method() {
+  using S = SurrogateSpectrum;
+  const auto text = [](double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", v);
+    return std::string(buffer);
+  };
+  return "Gaussian random fields with the spectrum of the map's normal scores estimated by Blackman and Tukey: "
+         "the unbiased autocovariance (each lag over its pairs of valid points, the variance the mean and the "
+         "leveling took restored) times Tukey's lag window (1 to " +
+         text(S::window_flat) + " of the largest lag, a cosine taper to 0 at it; the largest lag " +
+         std::to_string(S::largest_lag_lengths) + " correlation lengths, at most " +
+         std::to_string(S::largest_lag_map_numerator) + "/" + std::to_string(S::largest_lag_map_denominator) +
+         " of the map), on a grid the map plus the largest lag wide, cut to the map; each model's marginal by "
+         "F^-1(Phi(g))";
+}
 
 double normal_quantile(double p) { return -std::sqrt(2.0) * boost::math::erfc_inv(2 * p); }
 double normal_cdf(double z) { return 0.5 * boost::math::erfc(-z / std::sqrt(2.0)); }
@@ -82,7 +123,7 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
   // The spectrum by Blackman and Tukey: the scores' autocovariance at every lag (x, y) by FFT,
   // each lag divided by the pairs of valid points it has (unbiased: the periodogram's own
   // division by N tapers the long lags, and took 2-4x from the spread of a surrogate's mean),
-  // times a lag window (Parzen's, radial, zero beyond the largest lag), laid on the
+  // times a lag window (Tukey's, surrogate_lag_window: radial, zero beyond the largest lag), laid on the
   // surrogates' periodic grid and transformed: a spectrum whose surrogates have that
   // autocovariance at every lag up to the largest. The largest lag is six correlation lengths
   // (the autocorrelation is then ~1e-6 for an exponential one), at most three quarters of the
@@ -90,16 +131,7 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
   // process's; at three quarters 0.8-1.1, the variance's 1.0-1.2: measured over 8 maps in
   // test_topography_ensemble); the grid is the map plus that lag (so the periodic wrap adds no
   // correlation inside the map), rounded up to sizes of factors 2, 3 and 5 (the FFT's fastest).
-  const auto smooth = [](std::size_t n) {
-    for (;; ++n) {
-      std::size_t m = n;
-      for (std::size_t f : {2, 3, 5})
-        while (m % f == 0) m /= f;
-      if (m == 1) return n;
-    }
-  };
-  const std::size_t lag_x = std::max<std::size_t>(2, std::min(3 * nx_ / 4, 6 * std::max<std::size_t>(1, lengths.x)));
-  const std::size_t lag_y = std::max<std::size_t>(2, std::min(3 * ny_ / 4, 6 * std::max<std::size_t>(1, lengths.y)));
+  const std::size_t lag_x = largest_lag(nx_, lengths.x), lag_y = largest_lag(ny_, lengths.y);
   px_ = smooth(nx_ + lag_x);
   py_ = smooth(ny_ + lag_y);
   // Autocorrelations on a grid twice the map (no lag wraps onto another), by FFT: of a field
@@ -243,7 +275,7 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
       if (u >= 1) continue;
       // a flat-topped window (Tukey's: 1 to half the largest lag, a cosine to 0 beyond), so that
       // the correlation a surrogate carries is the map's at every lag that matters
-      const double window = u <= 0.5 ? 1 : 0.5 * (1 + std::cos(3.14159265358979323846 * (2 * u - 1)));
+      const double window = surrogate_lag_window(u);
       const std::size_t sx = static_cast<std::size_t>((rx + static_cast<long>(ax)) % static_cast<long>(ax));
       const std::size_t sy = static_cast<std::size_t>((ry + static_cast<long>(ay)) % static_cast<long>(ay));
       const double pairs = std::round(mask[sy * ax + sx]);

@@ -66,6 +66,16 @@ struct ContactOptions {
 
 inline constexpr int min_exact_points = 2, max_exact_points = 1000;
 
+// The fewest measured summits in contact at a pressure for a model to be named closest to GW on
+// the measured summits there. Below it the answer there is that handful's: its stiffness is a sum
+// over n summits, whose relative sampling spread is about 1/sqrt(n) (a count's Poisson spread;
+// each summit's own Hertz term spreads too), so with fewer than 25 summits a difference of 20%
+// between two models cannot be told from the luck of which summits were measured (at 25 the
+// surrogate ensemble's spread of the answer is itself ~25%: the X3P map at 1 MPa, 27 summits). At
+// such a pressure the ratios are still reported, but no model is named from them
+// (docs/surfaces.md, section 5).
+inline constexpr std::size_t min_summits_to_compare = 25;
+
 // Which curve a comparison holds, each named once (to_string: the name in JSON, the report, the
 // batch's table and Python): GW on the measured summits (one radius, or each its own), the
 // Gaussian from the spectral moments, the fitted height models (HeightModel's names), and the
@@ -118,8 +128,19 @@ struct ContactComparison {
   // the uncertainty of every ratio to it. Empty without an ensemble.
   std::vector<double> measured_stiffness_spread, measured_separation_spread;
   std::vector<SamplingContact> sampling;
-  // The fitted model nearest to the measured summits at the pressures of interest (largest
-  // |ln stiffness ratio| smallest), and the headline in words.
+  // The measured summits in contact at each pressure of interest (GW on the measured summits with
+  // GW's one radius; not scaled to the nominal area): how many carry the answer there. Empty
+  // without that curve.
+  std::vector<std::size_t> measured_summits_in_contact;
+  // At least min_summits_to_compare measured summits are in contact at pressure k: the models are
+  // compared there.
+  bool compared_at(std::size_t k) const noexcept {
+    return k < measured_summits_in_contact.size() && measured_summits_in_contact[k] >= min_summits_to_compare;
+  }
+  // The fitted model nearest to the measured summits at the pressures of interest compared
+  // (compared_at; largest |ln stiffness ratio| smallest), empty where none is; and the headline in
+  // words, which says how many summits are in contact at each pressure and why no model is named
+  // where too few are.
   std::string closest;
   std::string headline;
   // Against the exact contact (when solved): how it was solved, the curve nearest to it (of all,

@@ -7,7 +7,8 @@
 // size n are drawn from the fitted distribution, each is refitted with the same estimator, and
 // its A^2 and D against its own refit are the null sample; p = (1 + #{A*^2 >= A^2}) / (B + 1).
 // The refits give the confidence intervals too: percentile intervals of the refitted
-// parameters (for the Weibull models the shape, which is what the contact curves depend on).
+// parameters (for the Weibull models the shape, which is what the contact curves depend on);
+// a surface's samples make their shape intervals otherwise (ShapeInterval below, surface_tests.hpp).
 // AIC = 2k - 2 ln L at the estimate (MPS for the Weibull models, ML for the Gaussian). With a
 // shape below 1, ln L is finite at the MPS estimate but grows as the location nears the
 // smallest value: the AIC of such a fit leans toward it; the verdict rests on the tests first.
@@ -57,14 +58,31 @@ struct Interval {
   double lo = 0, hi = 0;
 };
 
+// How a Weibull's shape interval is made from the refitted shapes: the enum the interval's code
+// switches on (verdict::conclude, sample_verdict.cpp) and every output's words for it
+// (interval_method), so that a label cannot say another method than the one that ran.
+enum class ShapeInterval {
+  none,                 // no refits (no ensemble or bootstrap): no interval
+  percentile,           // the refits' percentiles (assess_sample's i.i.d. bootstrap: drawn at the estimate)
+  centred_on_estimate,  // the refits' spread about their median carried to the estimate (a surface's summit heights)
+  bias_corrected,       // the basic interval in ln a corrected for a bias that changes with a (a surface's heights)
+};
+// "none", "percentile", "centred-on-estimate", "bias-corrected"
+const char* to_string(ShapeInterval interval);
+// The intervals of a sample whose Weibull shapes were made so, in words (report.json's
+// fits.*.intervals, report.md): the location's and scale's percentiles and the shape's method.
+std::string interval_method(ShapeInterval interval);
+
 struct ModelAssessment {
   FitResult fit;
   double anderson_darling = 0, anderson_darling_p = 0;
   double kolmogorov_smirnov = 0, kolmogorov_smirnov_p = 0;
   double log_likelihood = 0, aic = 0, delta_aic = 0, akaike_weight = 0;
-  // location and scale: percentile intervals of the refits; shape (Weibull only): percentile
-  // (assess_sample), or as surface_tests.hpp says for a surface's samples
+  // location and scale: percentile intervals of the refits; shape (Weibull only): made as
+  // shape_interval says (percentile for assess_sample; a surface's samples: surface_tests.hpp)
   Interval location, scale, shape;
+  // how the intervals were made: set by the code that made them (none until then)
+  ShapeInterval shape_interval = ShapeInterval::none;
   int bootstrap = 0, failed_refits = 0;
   bool rejected = false;            // the Anderson-Darling p-value is below the significance
   // p at its floor 1/(B' + 1) (B' the refits that succeeded; no refit reached the statistic): then

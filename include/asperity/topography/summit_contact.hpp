@@ -11,6 +11,7 @@
 // handful's (the count says so), and like every summit statistic it depends on the sampling
 // interval (the analysis gives it at 2 dx and 4 dx too).
 #pragma once
+#include <cstddef>
 #include <vector>
 
 #include "asperity/contact_model.hpp"
@@ -29,6 +30,10 @@ class SummitContact {
   PhysicalState at_separation(double separation) const noexcept;
   // The separation that carries a nominal pressure [Pa] (Brent's method on the monotone sum).
   PhysicalState at_pressure(double pressure) const;
+  // The measured summits in contact at a separation d (those above it), not scaled to the nominal
+  // area: how many summits carry the answer there (PhysicalState::count is this times A0 / the
+  // area searched).
+  std::size_t in_contact(double separation) const noexcept;
   double mean_summit_height() const noexcept { return mean_height_; }
 
  private:

@@ -9,9 +9,11 @@
 // marginal), estimated by Blackman and Tukey: the scores' autocovariance at every lag by FFT,
 // divided by each lag's pairs (missing points left out), with the variance the analysis took
 // from the map (its mean, and its plane when leveled) restored from the long lags' bias, under a
-// flat-topped lag window to six correlation lengths (at most three quarters of the map), laid on
-// a grid the map plus that lag wide (so a surrogate is not periodic across the map) and
-// transformed (surrogates.cpp says why each step).
+// flat-topped lag window (Tukey's: 1 to half the largest lag, a cosine taper to 0 at it) to six
+// correlation lengths (at most three quarters of the map), laid on a grid the map plus that lag
+// wide (so a surrogate is not periodic across the map) and transformed (surrogates.cpp says why
+// each step). The constants below are what the code reads, and surrogate_method() the words every
+// output gives for it, made from them.
 // A surrogate is a Gaussian random field with that spectrum (complex normal Fourier
 // coefficients, one inverse FFT), of unit variance in expectation, cut to the map's grid, and
 // missing where the map is. Its mean and variance over the map fluctuate from surrogate to
@@ -29,12 +31,32 @@
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "asperity/topography/height_map.hpp"
 #include "asperity/topography/statistics.hpp"
 
 namespace asperity::topography {
+
+// The spectrum estimate's constants, read by SurrogateFields and by surrogate_method().
+struct SurrogateSpectrum {
+  // the largest lag along each axis: this many correlation lengths (CorrelationLengths) ...
+  static constexpr std::size_t largest_lag_lengths = 6;
+  // ... at most this fraction of the map's points along it (numerator / denominator)
+  static constexpr std::size_t largest_lag_map_numerator = 3, largest_lag_map_denominator = 4;
+  // Tukey's lag window is 1 up to this fraction of the largest lag
+  static constexpr double window_flat = 0.5;
+};
+
+// The lag window at u = the lag's elliptical radius over the largest lag ((rx/Lx)^2 + (ry/Ly)^2)^1/2:
+// Tukey's (a split cosine bell), 1 for u <= window_flat, (1 + cos(pi (u - flat) / (1 - flat))) / 2
+// beyond, 0 from u = 1. What SurrogateFields multiplies the autocovariance by.
+double surrogate_lag_window(double u) noexcept;
+
+// The surrogates in words, made from the constants above and the window (report.json's
+// ensemble.method, report.md).
+std::string surrogate_method();
 
 class SurrogateFields {
  public:
