@@ -575,11 +575,22 @@ TEST(TopographyReport, MethodLabelsComeFromTheCodeThatRuns) {
   EXPECT_NE(md.find(method), std::string::npos);
   EXPECT_NE(md.find(t::interval_method(t::ShapeInterval::centred_on_estimate)), std::string::npos);
   EXPECT_NE(md.find(bias), std::string::npos);
-  // no ensemble: no intervals, and the label says so
+  EXPECT_EQ(j["leveling"]["method"], "least-squares plane subtracted");
+  // the tables named are those that served the curves: here the given one (small_analysis)
+  const nlohmann::json given = parsed_json(analysis());
+  EXPECT_NE(given["contact"]["tables"].get<std::string>().find(std::string("the given table ") + ASPERITY_TEST_TABLE),
+            std::string::npos)
+      << given["contact"]["tables"];
+  EXPECT_NE(analysis().contact->find(t::ContactModelKind::weibull_tail)->note.find("table " ASPERITY_TEST_TABLE),
+            std::string::npos);
+  // no ensemble: no intervals, and the label says so; not leveled: nor does the leveling's
   options.assessment.bootstrap = 0;
   options.fit_heights = false;
+  options.level = false;
   const nlohmann::json none = parsed_json(t::analyse_height_map(map, options));
   EXPECT_EQ(none["fits"]["summit_heights"]["intervals"], t::interval_method(t::ShapeInterval::none));
+  EXPECT_EQ(none["leveling"]["leveled"], false);
+  EXPECT_EQ(none["leveling"]["method"], "none: the heights as read");
 }
 
 // How many measured summits carry the answer at each pressure (issue 40, item 4): counted, written

@@ -312,7 +312,7 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
       {"rule", "Sq under 10 times the rms of rounding to the heights' quantization step (q / sqrt(12))"},
       {"text", a.noise_floor.text}};
   j["leveling"] = {{"leveled", a.leveled},
-                   {"method", "least-squares plane subtracted"},
+                   {"method", a.leveled ? "least-squares plane subtracted" : "none: the heights as read"},
                    {"offset_m", a.plane.offset},
                    {"slope_x", a.plane.slope_x},
                    {"slope_y", a.plane.slope_y}};
@@ -438,6 +438,15 @@ ordered_json model_contact_json(const ModelContact& mc, const ContactComparison&
   return mj;
 }
 
+// which tables served the fitted models' curves, as compare_contact chooses them
+std::string tables_text(const ContactOptions& options) {
+  if (!options.table_path.empty())
+    return "every fitted model (gaussian-moments, gaussian, weibull-tail, weibull-bounded): the given table " +
+           options.table_path + " (a Weibull between its grid shapes by interpolation)";
+  return "gaussian-moments and gaussian: the default table; each Weibull: an exact-shape scene table at the fitted "
+         "shape (shapes " + format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) + ")";
+}
+
 // the contact comparison: every model's curves beside the measured summits' (and the exact's)
 ordered_json contact_json(const ContactComparison& c) {
   ordered_json models = ordered_json::array();
@@ -452,9 +461,7 @@ ordered_json contact_json(const ContactComparison& c) {
                        {"compared_at_pressures", compared},
                        {"min_measured_summits_to_compare", min_summits_to_compare},
                        {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
-                       {"tables", "Gaussian: the default table; Weibull: exact-shape scene tables (shapes " +
-                                      format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) +
-                                      ") or, with a given table, that table (the default serves 0.5-20)"},
+                       {"tables", tables_text(c.options)},
                        {"models", models},
                        {"measured_summits_spread",
                         {{"meaning",
