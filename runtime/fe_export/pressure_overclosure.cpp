@@ -109,6 +109,10 @@ Node next_point(const DatumLaw& law, const Node& a, const Node& high, double ste
   Node best{};
   bool found = false;
   for (int attempt = 0; attempt < 8; ++attempt) {
+    // no sliver before the range's end (CalculiX moves overclosures closer than 1e-10 apart): a step
+    // that would leave less than half of itself there takes half of what is left instead
+    const double left = high.overclosure - a.overclosure;
+    if (step < left && left - step < 0.5 * step) step = 0.5 * left;
     const bool last = a.overclosure + step >= high.overclosure;
     const Node b = last ? high : node_at(law, a.overclosure + step);
     if (!(b.overclosure > a.overclosure)) break;  // below the card's digits
