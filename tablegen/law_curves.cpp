@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <limits>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "asperity/interrupt.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/plausibility.hpp"
+#include "asperity/detail/parallel_for.hpp"
 #include "asperity/detail/table_schema.hpp"
 
 namespace asperity::generator {
@@ -223,15 +225,30 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s) {
   if (!weibull) out.count = 0.5 * std::erfc(s / std::sqrt(2.0));
   else if (tail) out.count = std::exp(-std::pow(std::max(s, 0.0), scene.shape));
   else out.count = -std::expm1(-std::pow(-s, scene.shape));
-  out.area = integrate([&](double omega) { return asperity_response(law, omega).area; });
   const bool adhesive = is_adhesive(law.kind);
   double compressive = 0, compressive_stiffness = 0;
   if (adhesive) {
-    compressive = integrate([&](double omega) { return asperity_load_split(law, omega).compressive; });
-    out.tensile_load = integrate([&](double omega) { return asperity_load_split(law, omega).tensile; });
-    compressive_stiffness = integrate([&](double omega) { return asperity_load_split(law, omega).compressive_stiffness; });
-    out.tensile_stiffness = integrate([&](double omega) { return asperity_load_split(law, omega).tensile_stiffness; });
+    // An adhesive law's response solves for its state (Maugis-Dugdale: a root per interference):
+    // each interference's is kept, so the five integrals, whose quadratures visit the same
+    // abscissae, solve it once
+    struct Split {
+      double area;
+      AsperityLoadSplit load;
+    };
+    std::unordered_map<double, Split> solved;
+    const auto split = [&](double omega) -> const Split& {
+      auto found = solved.find(omega);
+      if (found == solved.end())
+        found = solved.emplace(omega, Split{asperity_response(law, omega).area, asperity_load_split(law, omega)}).first;
+      return found->second;
+    };
+    out.area = integrate([&](double omega) { return split(omega).area; });
+    compressive = integrate([&](double omega) { return split(omega).load.compressive; });
+    out.tensile_load = integrate([&](double omega) { return split(omega).load.tensile; });
+    compressive_stiffness = integrate([&](double omega) { return split(omega).load.compressive_stiffness; });
+    out.tensile_stiffness = integrate([&](double omega) { return split(omega).load.tensile_stiffness; });
   } else {
+    out.area = integrate([&](double omega) { return asperity_response(law, omega).area; });
     compressive = integrate([&](double omega) { return asperity_response(law, omega).load; });
     compressive_stiffness = integrate([&](double omega) { return asperity_response(law, omega).stiffness; });
   }
@@ -261,19 +278,65 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s) {
 }
 }  // namespace
 
-LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options,
-                                    const std::function<void(const LawCurvesProgress&)>& progress) {
-  const double sigma = law.height_scale, eta = law.summit_density;
-  const double tolerance = law.max_rel_error;
-  const std::string name = law.name.empty() ? std::string("the law") : "law '" + law.name + "'";
-  std::map<double, LawMeans> exact;  // by s
-  auto at = [&](double s) -> const LawMeans& {
-    auto found = exact.find(s);
-    if (found == exact.end()) found = exact.emplace(s, law_means(law, s)).first;
-    return found->second;
-  };
+namespace {
 
-  // the nodes: uniform, and knots where the integrals are not smooth (a Weibull density's edge)
+// The exact means at separations s, computed once each (law_means). compute(wanted) computes those
+// not yet known on the machine's threads (an s a job: the results do not depend on the threads), in
+// chunks; a failure is the lowest s's, as one thread would meet it. Given per_interval (a pass's
+// check points: that many an interval, in order), progress is reported between the chunks.
+class ExactMeans {
+ public:
+  ExactMeans(const SceneLaw& law, const std::function<void(const LawCurvesProgress&)>& progress)
+      : law_(law), progress_(progress) {}
+  const LawMeans& at(double s) {
+    auto found = means_.find(s);
+    if (found == means_.end()) found = means_.emplace(s, law_means(law_, s)).first;
+    return found->second;
+  }
+  std::size_t size() const { return means_.size(); }
+  void next_pass(std::size_t nodes) { ++pass_, nodes_ = nodes; }
+  void compute(std::vector<double> wanted, std::size_t per_interval = 0) {
+    wanted.erase(std::remove_if(wanted.begin(), wanted.end(), [&](double s) { return means_.count(s) > 0; }),
+                 wanted.end());
+    std::sort(wanted.begin(), wanted.end());
+    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+    const std::size_t chunk = 64;
+    for (std::size_t first = 0; first < wanted.size(); first += chunk) {
+      const std::size_t count = std::min(chunk, wanted.size() - first);
+      std::vector<LawMeans> means(count);
+      std::vector<std::exception_ptr> failures(count);
+      detail::parallel_for(count, 0, [&](std::size_t i) {
+        try {
+          means[i] = law_means(law_, wanted[first + i]);
+        } catch (const Interrupted&) {
+          throw;
+        } catch (...) {
+          failures[i] = std::current_exception();
+        }
+      });
+      for (std::size_t i = 0; i < count; ++i) {
+        if (failures[i]) std::rethrow_exception(failures[i]);
+        means_.emplace(wanted[first + i], means[i]);
+      }
+      if (progress_ && per_interval > 0 && nodes_ > 1) {
+        const std::size_t intervals = nodes_ - 1, done = (first + count) / per_interval;
+        progress_({pass_, static_cast<int>(nodes_), static_cast<int>(std::clamp<std::size_t>(done, 1, intervals)),
+                   static_cast<int>(intervals), static_cast<int>(means_.size())});
+      }
+    }
+  }
+
+ private:
+  const SceneLaw& law_;
+  const std::function<void(const LawCurvesProgress&)>& progress_;
+  std::map<double, LawMeans> means_;  // by s
+  int pass_ = 0;
+  std::size_t nodes_ = 0;
+};
+
+// The first nodes: uniform, and knots where the integrals are not smooth (a Weibull density's edge)
+std::vector<double> starting_nodes(const SceneLaw& law) {
+  const double sigma = law.height_scale;
   std::vector<double> nodes;
   const int uniform = 9;
   for (int i = 0; i + 1 < uniform; ++i)
@@ -288,9 +351,12 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
   }
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
 
-  LawCurvesResult result;
-  ContactCurvesData& data = result.data;
+// The curves' provenance and conventions: generator, source, description, datum, scales
+void describe(const SceneLaw& law, const std::string& generator_options, ContactCurvesData& data) {
+  const double sigma = law.height_scale, eta = law.summit_density;
   data.generator = std::string("asperity ") + ASPERITY_VERSION_STRING + " tablegen";
   data.generator_options = generator_options;
   data.source = std::string("contact-law ") + contact_law_name(law.law.kind);
@@ -330,6 +396,22 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     data.mean_summit_height = (law.side == Side::tail ? 1 : -1) * sigma * weibull_mean(law.shape);
     if (law.side == Side::bounded) data.max_height = 0;
   }
+}
+
+}  // namespace
+
+LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options,
+                                    const std::function<void(const LawCurvesProgress&)>& progress) {
+  const double sigma = law.height_scale, eta = law.summit_density;
+  const double tolerance = law.max_rel_error;
+  const std::string name = law.name.empty() ? std::string("the law") : "law '" + law.name + "'";
+  ExactMeans exact(law, progress);
+  const auto at = [&](double s) -> const LawMeans& { return exact.at(s); };
+  std::vector<double> nodes = starting_nodes(law);
+
+  LawCurvesResult result;
+  ContactCurvesData& data = result.data;
+  describe(law, generator_options, data);
 
   const bool adhesive = is_adhesive(law.law.kind);
   auto fill = [&]() {
@@ -372,6 +454,8 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
   int checks = 0, pass = 0;
   for (;;) {
     ++pass;
+    exact.next_pass(nodes.size());
+    exact.compute(nodes);
     fill();
     const ContactCurves curves(data);
     std::vector<double> halves;
@@ -381,6 +465,12 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     // that part is a rounding of the other (DMT's tension where every summit touches already)
     double worst[4] = {0, 0, 0, 0};
     checks = 0;
+    {
+      std::vector<double> points;
+      for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
+        for (double fraction : check_fractions) points.push_back(nodes[i] + fraction * (nodes[i + 1] - nodes[i]));
+      exact.compute(std::move(points), std::size(check_fractions));
+    }
     for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
       const double h = nodes[i + 1] - nodes[i];
       bool split = false;

@@ -279,6 +279,29 @@ TEST(ContactLaw, MaugisDugdaleEquations) {
   }
 }
 
+// The response at an interference solves D(t) = omega / d_s for t (Newton's method from a grid of
+// ln t, issue 41): at interferences made from t by the closed form, the load is the closed form's
+// at that t, over Maugis' lambda from DMT-like to JKR-like and t from the far Hertz end (1e-40) to
+// close to the stable branch's end (where D is flat, so the load at a D is sensitive: 0.9 of it).
+TEST(ContactLaw, MaugisDugdaleResponseSolvesItsParameter) {
+  const double gamma = 0.05;
+  for (double lambda : {1e-4, 0.01, 0.3, 1.0, 30.0, 1000.0, 1e6}) {
+    const ContactLaw law = maugis_dugdale_law(R, E, gamma, lambda);
+    ASSERT_FALSE(std::isnan(law.md_turning)) << lambda;
+    const double end = std::isfinite(law.md_turning) ? 0.9 * law.md_turning : 1e6;
+    for (double t = 1e-40; t < end; t *= 1.37) {
+      for (double at : {t, std::fmin(end, t * 1.0001)}) {
+        const MaugisDugdalePoint p = maugis_dugdale_point(lambda, at);
+        const double w = p.interference * law.critical_interference;
+        const AsperityResponse response = asperity_response(law, w);
+        const double scale = law.critical_load * (1 + p.contact_radius * p.contact_radius * p.contact_radius);
+        EXPECT_LT(std::fabs(response.load - law.critical_load * p.load) / scale, 1e-12)
+            << "lambda " << lambda << " t " << at;
+      }
+    }
+  }
+}
+
 TEST(ContactLaw, MaugisDugdaleLimits) {
   const double gamma = 0.05;
   const ContactLaw dmt = dmt_law(R, E, gamma), jkr = jkr_law(R, E, gamma);

@@ -106,7 +106,8 @@ def test_a_surface_analysis_stops_at_ctrl_c(large_map, tmp_path):
 
 def test_law_curves_reports_progress_and_its_exception_stops_it():
     seen = []
-    curves = asperity.law_curves("maugis-dugdale", **dict(MAUGIS_DUGDALE, max_rel_error=1e-4), progress=seen.append)
+    # (1e-9: a few seconds since Maugis-Dugdale's tabulation is fast, issue 41; 1e-4 is now under 0.1 s)
+    curves = asperity.law_curves("maugis-dugdale", **dict(MAUGIS_DUGDALE, max_rel_error=1e-9), progress=seen.append)
     assert curves.max_separation > 0
     assert seen, "no progress in a tabulation of seconds"
     assert set(seen[0]) == {"pass", "nodes", "checked", "intervals", "evaluations", "elapsed"}
