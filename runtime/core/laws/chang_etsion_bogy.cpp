@@ -29,7 +29,8 @@ ContactLaw make(double radius, double modulus, const LawValues& v) noexcept {
 AsperityResponse response(const ContactLaw& law, double w) noexcept {
   const double r = law.radius, wc = law.critical_interference;
   if (w <= wc) return hertz(r, law.modulus, w);
-  const double kh = law.pressure_factor * law.hardness, area = pi * r * (2 * w - wc);
+  // A = pi R (2 w - w_c) as 2 pi R (w - w_c/2): the same double, without 2 w overflowing at huge w
+  const double kh = law.pressure_factor * law.hardness, area = 2 * pi * r * (w - 0.5 * wc);
   return {kh * area, area, 2 * pi * r * kh};
 }
 

@@ -37,8 +37,13 @@ AsperityResponse response(const ContactLaw& law, double w) noexcept {
     cp = 1.03, ep = 1.425, ca = 0.93, ea = 1.136;
   } else if (w <= 110 * wc) {
     cp = 1.40, ep = 1.263, ca = 0.94, ea = 1.146;
-  } else {
-    cp = 3 / law.pressure_factor, ep = 1, ca = 2, ea = 1;  // fully plastic: A = 2 pi R w, P = H A
+  } else if (std::isfinite(x) || !(wc > 0)) {  // fully plastic: A = 2 pi R w, P = H A, dP/dw = 2 pi R H
+    // (x^0 = 1; an omega_c that underflowed to 0 stays NaN, 0 inf: the law divides by it)
+    const double plastic = 3 / law.pressure_factor;  // P/P_c = (3/K) x, A/A_c = 2 x
+    return {pc * plastic * x, ac * 2 * x, pc / wc * plastic};
+  } else {  // w / w_c beyond the doubles (w > 1e300 m or so): the same in physical units (A may not overflow)
+    const double area = 2 * pi * law.radius * w;
+    return {law.hardness * area, area, 2 * pi * law.radius * law.hardness};
   }
   const double power = std::pow(x, ep);
   return {pc * cp * power, ac * ca * std::pow(x, ea), pc / wc * cp * ep * power / x};

@@ -17,6 +17,7 @@ namespace {
 struct MdState {
   double a, d, p;     // A, D, Pbar
   double da, dd, dp;  // their derivatives in t
+  double tension, dtension;  // lambda A^2 [t + m^2 atan t] = A^3 - Pbar and its derivative in t
 };
 
 // t - atan t without cancellation for small t
@@ -47,8 +48,10 @@ MdState md_state(double lambda, double t) noexcept {
   st.da = -(alphap * st.a * st.a + betap * st.a) / (2 * alpha * st.a + beta);
   st.d = st.a * st.a - (4.0 / 3.0) * st.a * lambda * t;
   st.dd = 2 * st.a * st.da - (4.0 / 3.0) * lambda * (st.da * t + st.a);
-  st.p = st.a * st.a * st.a - lambda * st.a * st.a * g;
-  st.dp = 3 * st.a * st.a * st.da - lambda * (2 * st.a * st.da * g + st.a * st.a * gp);
+  st.tension = lambda * st.a * st.a * g;
+  st.dtension = lambda * (2 * st.a * st.da * g + st.a * st.a * gp);
+  st.p = st.a * st.a * st.a - st.tension;
+  st.dp = 3 * st.a * st.a * st.da - st.dtension;
   return st;
 }
 
@@ -165,24 +168,71 @@ double md_parameter_solved(double lambda, double turning, double d) noexcept {
   return md_parameter_bracketed(lambda, t_high, d);
 }
 
+// Far into contact (t -> 0) Maugis-Dugdale becomes Hertz. There, with eps = A^(-1/3) and
+// t = s eps^2, the first equation is (2/3) lambda s^3 + (2/3) lambda^2 eps s^2 = 1 (t's leading
+// terms; the next are t^2 below them), the tension is lambda A^2 (t + m^2 atan t) = 2 lambda s
+// A^(4/3) and D = A^2 less (4/3) lambda s eps^5 of it. Where both shares, 2 lambda s eps^5, are
+// below 1e-17 (D over about 1e24 for lambda <= 1; D = omega / d_s may overflow there while Hertz's
+// area and stiffness do not), the load, area and stiffness are Hertz's and the tension its
+// asymptote: true = Hertz's regime, with the tension [N] and its slope [N/m].
+struct MdTension {
+  double tension, slope;
+};
+bool md_hertz_regime(const ContactLaw& law, double w, MdTension& out) noexcept {
+  const double lambda = law.maugis_parameter, wc = law.critical_interference;
+  if (!(w / wc > 1e20)) return false;
+  const double eps = std::pow(wc, 1.0 / 6) / std::pow(w, 1.0 / 6);  // D^(-1/6), D not formed
+  const double c3 = (2.0 / 3) * lambda, c2 = (2.0 / 3) * lambda * lambda * eps;
+  // Newton from above on an increasing convex cubic: from the smaller one-term root
+  double s = std::fmin(std::cbrt(1 / c3), std::sqrt(1 / c2));
+  for (int i = 0; i < 100; ++i) {
+    const double step = (c3 * s * s * s + c2 * s * s - 1) / (3 * c3 * s * s + 2 * c2 * s);
+    if (!(step > 1e-17 * s)) break;
+    s -= step;
+  }
+  if (!(2 * lambda * s * std::pow(eps, 5) < 1e-17)) return false;
+  // tension T = 2 lambda s D^(2/3) P_c; dT/dD = (T/D) (2/3 - (eps / (6 s)) ds/deps)
+  const double ds_deps = -(c2 / eps) * s * s / (3 * c3 * s * s + 2 * c2 * s);
+  const double d23 = std::pow(w, 2.0 / 3) / std::pow(wc, 2.0 / 3);
+  out.tension = law.critical_load * 2 * lambda * s * d23;
+  out.slope = out.tension / w * (2.0 / 3 - eps / (6 * s) * ds_deps);
+  return true;
+}
+
 ContactLaw make(double radius, double modulus, const LawValues& v) noexcept {
   return maugis_dugdale_law(radius, modulus, v[LawParameter::work_of_adhesion], v[LawParameter::maugis_parameter]);
 }
 
+// t at omega: the branch's end at the lowest interference (D is flat in t at a turning point, so
+// that solving for t from a D rounded near it would lose half the digits of P)
+double md_parameter_of(const ContactLaw& law, double w) noexcept {
+  if (w <= law.lowest_interference) return std::isfinite(law.md_turning) ? law.md_turning : md_t_max;
+  return md_parameter_at(law.maugis_parameter, law.md_turning, w / law.critical_interference);
+}
+
 AsperityResponse response(const ContactLaw& law, double w) noexcept {
-  const double t = md_parameter_at(law.maugis_parameter, law.md_turning, w / law.critical_interference);
+  MdTension far;
+  if (md_hertz_regime(law, w, far)) return hertz(law.radius, law.modulus, w);
+  const double t = md_parameter_of(law, w);
   if (std::isnan(t)) return {nan, nan, nan};
   const MdState st = md_state(law.maugis_parameter, t);
+  // at the turning point (the fixed-grips pull-off) dD/dt = 0: the load falls as omega rises from there
+  if (t == law.md_turning) return adhesive_response(law, st.a, st.p, -inf);
   return adhesive_response(law, st.a, st.p, st.dp / st.dd);
 }
 
-AsperityLoadSplit load_split(const ContactLaw& law, double w, const AsperityResponse&) noexcept {
-  const double t = md_parameter_at(law.maugis_parameter, law.md_turning, w / law.critical_interference);
+AsperityLoadSplit load_split(const ContactLaw& law, double w, const AsperityResponse& r) noexcept {
+  MdTension far;
+  if (md_hertz_regime(law, w, far)) return {r.load + far.tension, far.tension, r.stiffness + far.slope, far.slope};
+  const double t = md_parameter_of(law, w);
   if (std::isnan(t)) return {nan, nan, nan, nan};
   const MdState st = md_state(law.maugis_parameter, t);
   const double pc = law.critical_load, kc = law.critical_load / law.critical_interference;
-  const double compressive = st.a * st.a * st.a, dcompressive = 3 * st.a * st.a * st.da / st.dd;
-  return {pc * compressive, pc * (compressive - st.p), kc * dcompressive, kc * (dcompressive - st.dp / st.dd)};
+  const double compressive = st.a * st.a * st.a;
+  // the tension as computed, not A^3 - Pbar (which cancels far into contact)
+  if (t == law.md_turning) return {pc * compressive, pc * st.tension, inf, inf};  // both grow without bound
+  const double dcompressive = 3 * st.a * st.a * st.da / st.dd;
+  return {pc * compressive, pc * st.tension, kc * dcompressive, kc * st.dtension / st.dd};
 }
 
 constexpr LawParameterUse parameters[] = {{LawParameter::work_of_adhesion, true, 0},
@@ -210,6 +260,7 @@ ContactLaw maugis_dugdale_law(double radius, double modulus, double work_of_adhe
   law.md_turning = detail::md_turning_point(maugis_parameter);
   if (std::isnan(law.md_turning)) return detail::bad_law(kind);
   const double t_end = std::isfinite(law.md_turning) ? law.md_turning : detail::md_t_max;
+  // the branch's end, where the asperity is still in contact (the response there is the end's)
   law.lowest_interference = detail::md_state(maugis_parameter, t_end).d * law.critical_interference;
   return law;
 }
