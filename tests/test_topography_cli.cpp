@@ -69,10 +69,12 @@ TEST(TopographyCli, JsonAndReport) {
   EXPECT_EQ(r.out.rfind("{", 0), 0u);
   EXPECT_NE(r.out.find("\"schema\": \"asperity-surface/3\""), std::string::npos);
   EXPECT_NE(r.out.find("\"window_points\": 2"), std::string::npos);
-  // standard error holds at most the ensemble's progress (a run over a second)
+  // standard error holds at most the progress of the ensemble and of the exact contact (solved by
+  // default on this 256 x 256 map: a run over a second)
   std::istringstream lines(r.err);
   for (std::string line; std::getline(lines, line);)
-    EXPECT_EQ(line.rfind("asperity surface: ensemble ", 0), 0u) << line;
+    EXPECT_TRUE(line.rfind("asperity surface: ensemble ", 0) == 0 || line.find("asperity surface: exact contact, load step") != std::string::npos)
+        << line;
   for (const char* name : {"report.md", "report.json", "curves.csv", "summits.csv", "fits.svg", "contact.svg"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + name)) << name;
   const std::string text = read_text(dir + "/report.md");

@@ -248,6 +248,7 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
     contact.contact_modulus = 1e11;
     contact.pressures = {1e6, 1e7};
     contact.curve_points = 9;
+    contact.exact_auto = false;  // the asperity models' curves here (the exact contact: test_exact_contact)
     options.contact = contact;
     const t::SurfaceAnalysis a = t::analyse_surface_file(surfaces + "/" + c.file, options);
     EXPECT_EQ(a.summits.list.size(), c.summits) << c.file;

@@ -46,7 +46,8 @@ struct Options {
   long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
   double exact_tolerance = not_given;
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
-  bool json = false, no_level = false, no_height_fit = false, exact = false, no_persson = false, overwrite = false;
+  bool json = false, no_level = false, no_height_fit = false, exact = false, no_exact = false, no_persson = false,
+       overwrite = false;
   LawOptions law;  // a contact law beside the elastic curves (law_options.hpp)
 };
 
@@ -92,7 +93,7 @@ SurfaceMemory surface_memory(const topo::HeightMap& map, const topo::AnalysisOpt
     total += ensemble;
   }
   if (options.contact) total += 80e6;
-  if (options.contact && options.contact->exact) {
+  if (options.contact && topo::exact_contact_wanted(*options.contact, map.nx * map.ny)) {
     topo::ExactContactOptions exact;
     exact.boundary = options.contact->exact_boundary;
     exact.kernel = options.contact->exact_kernel;
@@ -180,9 +181,11 @@ int run_surface(const Options& o, const CLI::App& command) {
 
   const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
   const bool exact_options = !o.exact_boundary.empty() || !o.exact_kernel.empty() || given(o.exact_tolerance);
-  if (exact_options && !o.exact) usage("--exact-boundary, --exact-kernel and --exact-tolerance go with --exact");
+  if (o.exact && o.no_exact) usage("--exact and --no-exact: give one");
+  if (exact_options && o.no_exact)
+    usage("--exact-boundary, --exact-kernel and --exact-tolerance set the exact contact: not with --no-exact");
   const bool contact = given(modulus) || !o.pressures.empty() || !o.loads.empty() || !o.table.empty() || given(o.area) ||
-                       o.exact || o.no_persson || !o.law.law.empty() || !o.card.empty();
+                       o.exact || o.no_exact || o.no_persson || !o.law.law.empty() || !o.card.empty();
   if (contact && !given(modulus))
     usage("the contact curves (--pressure, --load, --area, --table, --exact, --law, --card) need the contact modulus: --modulus "
           "E* [Pa] or --e1 --nu1 --e2 --nu2");
@@ -215,6 +218,7 @@ int run_surface(const Options& o, const CLI::App& command) {
     curves.threads = options.assessment.threads;
     curves.persson = !o.no_persson;
     curves.exact = o.exact;
+    curves.exact_auto = !o.no_exact;
     curves.exact_points = static_cast<int>(o.exact_points);
     if (!o.exact_boundary.empty() && !topo::parse_contact_boundary(o.exact_boundary, curves.exact_boundary))
       usage("--exact-boundary: periodic or padded, not '" + quote_text(o.exact_boundary) + "'");
@@ -361,9 +365,12 @@ void add_surface_command(CLI::App& app) {
            "for the fitted shapes)")
       ->type_name("FILE")->group(contact);
   command->add_flag("--exact", o.exact,
-                    "also solve the exact elastic contact of the map (boundary elements, docs/exact-contact.md) and "
-                    "compare every model with it: seconds to minutes")
+                    "solve the exact elastic contact of the map (boundary elements, docs/exact-contact.md) and "
+                    "compare every model with it at any size (by default it is solved for maps of at most " +
+                        std::to_string(topo::exact_auto_max_points) + " points: 256 x 256 adds about 2 s; larger "
+                        "maps take seconds to minutes)")
       ->group(contact);
+  command->add_flag("--no-exact", o.no_exact, "leave out the exact contact even on a small map")->group(contact);
   add_text(*command, "--exact-boundary", o.exact_boundary,
            "padded (default: the map as a patch of a half-space; a measured map is not periodic) or periodic")
       ->type_name("NAME")->group(contact);

@@ -438,6 +438,7 @@ class RadialPowerSpectrum:
 def radial_power_spectrum(map: HeightMap, edges: str = "periodic_component") -> RadialPowerSpectrum: ...
 
 contact_model_names: Tuple[str, ...]  # ModelContact.label's: "measured-summits", ..., "persson", "exact"
+EXACT_AUTO_MAX_POINTS: int  # 262144 (512 x 512): ContactOptions(exact=None) solves the exact contact up to that size
 MIN_SUMMITS_TO_COMPARE: int  # 25: fewer measured summits in contact at a pressure and no model is named closest there
 
 class PerssonState:
@@ -471,14 +472,14 @@ class ContactOptions:
     table_path: str
     threads: int
     persson: bool
-    exact: bool
+    exact: Optional[bool]
     exact_boundary: str
     exact_kernel: str
     exact_points: int
     exact_tolerance: float
     def __init__(self, contact_modulus: float, nominal_area: float = 0.0, pressures: Sequence[float] = ...,
                  curve_points: int = 61, scene_tolerance: float = 1e-8, table_path: PathLike = "",
-                 threads: int = 0, persson: bool = True, exact: bool = False, exact_boundary: str = "padded",
+                 threads: int = 0, persson: bool = True, exact: Optional[bool] = None, exact_boundary: str = "padded",
                  exact_kernel: str = "love", exact_points: int = 13, exact_tolerance: float = 1e-8) -> None: ...
 
 class ModelContact:

@@ -77,6 +77,7 @@ void bind_persson_contact(py::module_& m) {
   m.attr("contact_model_names") = py::tuple(contact_model_names);
   // the fewest measured summits in contact at a pressure for a closest model to be named there
   m.attr("MIN_SUMMITS_TO_COMPARE") = topo::min_summits_to_compare;
+  m.attr("EXACT_AUTO_MAX_POINTS") = topo::exact_auto_max_points;
   py::class_<topo::PerssonState> persson_state(m, "PerssonState", "Persson's theory at one nominal pressure (SI units).");
   // its fields from their one list (PerssonState's, persson_contact.hpp), each with its meaning
 #define ASPERITY_BIND_FIELD(type, name, column, meaning) persson_state.def_readonly(#name, &topo::PerssonState::name, meaning);
@@ -102,7 +103,8 @@ void bind_contact_comparison(py::module_& m) {
   // ---- contact curves of the fits (contact_comparison.hpp) ----
   py::class_<topo::ContactOptions>(m, "ContactOptions", "The contact curves of each fit.")
       .def(py::init([](double contact_modulus, double nominal_area, std::vector<double> pressures, int curve_points,
-                       double scene_tolerance, const PathName& table_path, int threads, bool persson, bool exact,
+                       double scene_tolerance, const PathName& table_path, int threads, bool persson,
+                       std::optional<bool> exact,
                        const std::string& exact_boundary, const std::string& exact_kernel, int exact_points,
                        double exact_tolerance) {
              topo::ContactOptions options;
@@ -114,7 +116,8 @@ void bind_contact_comparison(py::module_& m) {
              options.table_path = to_path(table_path.object, "table_path");
              options.threads = threads;
              options.persson = persson;
-             options.exact = exact;
+             options.exact = exact.value_or(false);  // None: by the map's size (exact_auto)
+             options.exact_auto = !exact.has_value();
              if (!topo::parse_contact_boundary(exact_boundary, options.exact_boundary))
                throw py::value_error("exact_boundary must be 'periodic' or 'padded', not '" + exact_boundary + "'");
              if (!topo::parse_contact_kernel(exact_kernel, options.exact_kernel))
@@ -124,14 +127,15 @@ void bind_contact_comparison(py::module_& m) {
              return options;
            }),
            "contact_modulus"_a, "nominal_area"_a = 0.0, "pressures"_a = std::vector<double>{}, "curve_points"_a = 61,
-           "scene_tolerance"_a = 1e-8, "table_path"_a = "", "threads"_a = 0, "persson"_a = true, "exact"_a = false,
+           "scene_tolerance"_a = 1e-8, "table_path"_a = "", "threads"_a = 0, "persson"_a = true, "exact"_a = py::none(),
            "exact_boundary"_a = "padded", "exact_kernel"_a = "love", "exact_points"_a = 13, "exact_tolerance"_a = 1e-8,
            "contact_modulus E* [Pa] (plane strain); nominal_area A0 [m^2] (0: the measured area); pressures of\n"
            "interest [Pa] (empty: E* x 1e-5, 1e-4, 1e-3); table_path: a full table for the Weibull curves\n"
            "instead of exact-shape scene tables made for the fitted shapes; persson: Persson's theory of the\n"
            "map's spectrum beside them; exact: the exact elastic contact of the map (boundary elements,\n"
            "exact_boundary 'padded' or 'periodic', exact_kernel 'love' or 'fourier', exact_points solves along\n"
-           "the pressure range), which every curve is then compared with.")
+           "the pressure range), which every curve is then compared with: True at any size, False never, None\n"
+           "(the default) where the map has at most EXACT_AUTO_MAX_POINTS points.")
       .def_readwrite("contact_modulus", &topo::ContactOptions::contact_modulus)
       .def_readwrite("nominal_area", &topo::ContactOptions::nominal_area)
       .def_readwrite("pressures", &topo::ContactOptions::pressures)
@@ -142,7 +146,18 @@ void bind_contact_comparison(py::module_& m) {
           [](topo::ContactOptions& o, const PathName& value) { o.table_path = to_path(value.object, "table_path"); })
       .def_readwrite("threads", &topo::ContactOptions::threads)
       .def_readwrite("persson", &topo::ContactOptions::persson)
-      .def_readwrite("exact", &topo::ContactOptions::exact)
+      .def_property(
+          "exact",
+          [](const topo::ContactOptions& o) -> std::optional<bool> {
+            if (o.exact) return true;
+            if (!o.exact_auto) return false;
+            return std::nullopt;
+          },
+          [](topo::ContactOptions& o, std::optional<bool> value) {
+            o.exact = value.value_or(false);
+            o.exact_auto = !value.has_value();
+          },
+          "True: solved at any size; False: never; None: where the map has at most EXACT_AUTO_MAX_POINTS points.")
       .def_property(
           "exact_boundary", [](const topo::ContactOptions& o) { return std::string(topo::contact_boundary_name(o.exact_boundary)); },
           [](topo::ContactOptions& o, const std::string& name) {

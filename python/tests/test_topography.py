@@ -444,8 +444,14 @@ def test_analyse_the_real_afm_map(tmp_path):
     assert verdict["best"] == analysis.summit_heights.verdict.best.name.replace("_", "-")
     comparison = analysis.contact
     assert comparison is not None and math.isclose(comparison.nominal_area, analysis.map.width * analysis.map.length)
+    # the exact contact, the referee, by default on a map of at most EXACT_AUTO_MAX_POINTS (issue 40)
+    assert contact.exact is None and 256 * 256 <= topography.EXACT_AUTO_MAX_POINTS == 512 * 512
     assert [m.label for m in comparison.models] == ["measured-summits", "measured-summits-own-radii", "gaussian-moments",
-                                                   "gaussian", "weibull-tail", "weibull-bounded", "persson"]
+                                                   "gaussian", "weibull-tail", "weibull-bounded", "persson", "exact"]
+    assert document["contact"]["references"]["exact"] is True
+    assert comparison.exact_headline.startswith("Against the exact elastic contact of the map at 1e+05 Pa: closest ")
+    never = topography.ContactOptions(2e9, exact=False)
+    assert never.exact is False and topography.ContactOptions(2e9, exact=True).exact is True
     gaussian = comparison.find("gaussian")
     assert gaussian.served and comparison.find("nonsense") is None
     curve = gaussian.curve

@@ -68,6 +68,17 @@ void conclude_against_exact(ContactComparison& comparison) {
   comparison.closest_to_exact.clear();
   comparison.exact_headline.clear();
   const ModelContact* exact = comparison.find(ContactModelKind::exact);
+  const std::size_t points = comparison.map_nx * comparison.map_ny;
+  if (!exact && points > 0 && !exact_contact_wanted(comparison.options, points)) {
+    if (comparison.options.exact_auto) {  // left out for the map's size alone: said, with how to ask
+      std::ostringstream text;
+      text << "The exact elastic contact of the map, the referee of every curve, is not solved: " << comparison.map_nx
+           << " x " << comparison.map_ny << " points is over the " << exact_auto_max_points
+           << " solved by default (--exact, or ContactOptions(exact=True), solves it: seconds to minutes)";
+      comparison.exact_headline = text.str();
+    }
+    return;
+  }
   for (ModelContact& model : comparison.models) {
     model.stiffness_over_exact.clear();
     model.area_over_exact.clear();
@@ -129,7 +140,8 @@ void add_reference_contact(ContactComparison& comparison, const HeightMap& map, 
                            const ExactProgress& progress) {
   const ContactOptions& options = comparison.options;
   const double area = comparison.nominal_area;
-  if (options.exact && (options.exact_points < min_exact_points || options.exact_points > max_exact_points))
+  const bool exact_wanted = exact_contact_wanted(options, map.nx * map.ny);
+  if (exact_wanted && (options.exact_points < min_exact_points || options.exact_points > max_exact_points))
     throw Error("contact: exact_points must be from " + std::to_string(min_exact_points) + " to " +
                 std::to_string(max_exact_points) + ", not " + std::to_string(options.exact_points));
   if (options.persson) {
@@ -159,7 +171,8 @@ void add_reference_contact(ContactComparison& comparison, const HeightMap& map, 
     }
     comparison.models.push_back(std::move(model));
   }
-  if (options.exact) {
+  comparison.map_nx = map.nx, comparison.map_ny = map.ny;
+  if (exact_wanted) {
     ModelContact model = model_of(ContactModelKind::exact);
     model.mean_summit_height = mean_summit_height;
     try {

@@ -474,7 +474,7 @@ ordered_json contact_json(const ContactComparison& c) {
                        {"headline", c.headline},
                        {"references",
                         {{"persson", c.options.persson},
-                         {"exact", c.options.exact},
+                         {"exact", c.find(ContactModelKind::exact) != nullptr},
                          {"exact_method", c.exact_method},
                          {"closest_to_exact", c.closest_to_exact},
                          {"exact_headline", c.exact_headline}}}};

@@ -55,7 +55,11 @@ struct ContactOptions {
   int threads = 0;
   // the references (add_reference_contact)
   bool persson = true;             // Persson's theory of the map's spectrum (cheap)
-  bool exact = false;              // the exact elastic contact of the map: seconds to minutes
+  // The exact elastic contact of the map, the referee every curve is set against: solved when
+  // asked (exact), or by default (exact_auto) where the map has at most exact_auto_max_points
+  // points: 256 x 256 adds about 2 s, 650 x 650 about 20 s on one core (docs/surfaces.md).
+  bool exact = false;
+  bool exact_auto = true;
   // A measured map is not periodic: by default it is solved as a patch of an unloaded half-space
   // (padded), with Love's pixel-constant coefficients (then exactly non-periodic: no images).
   ContactBoundary exact_boundary = ContactBoundary::padded;
@@ -65,6 +69,12 @@ struct ContactOptions {
 };
 
 inline constexpr int min_exact_points = 2, max_exact_points = 1000;
+inline constexpr std::size_t exact_auto_max_points = 512 * 512;
+
+// Whether the exact contact of a map of `points` points is solved with these options.
+inline bool exact_contact_wanted(const ContactOptions& options, std::size_t points) {
+  return options.exact || (options.exact_auto && points <= exact_auto_max_points);
+}
 
 // The fewest measured summits in contact at a pressure for a model to be named closest to GW on
 // the measured summits there. Below it the answer there is that handful's: its stiffness is a sum
@@ -147,7 +157,8 @@ struct ContactComparison {
   // the measured summits and Persson included) and the headline in words.
   std::string exact_method;
   std::string closest_to_exact;
-  std::string exact_headline;
+  std::string exact_headline;  // or, where the map's size alone left it out, that and how to ask
+  std::size_t map_nx = 0, map_ny = 0;  // the map add_reference_contact was given (0: none)
   const ModelContact* find(ContactModelKind kind) const;
   const ModelContact* find(const std::string& label) const;  // by to_string(kind); nullptr for another name
 };
