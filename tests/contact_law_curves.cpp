@@ -11,10 +11,12 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <locale>
 #include <string>
 #include <vector>
 
 #include "asperity/contact_law.hpp"
+#include "asperity/number_text.hpp"
 #include "contact_law_reference.hpp"
 
 namespace {
@@ -42,13 +44,23 @@ std::vector<Law> elastic_plastic() {
           {"jackson-green-2006", jackson_green_law(R, E, Y, NU, JacksonGreenHardness::exponential_2006)}};
 }
 
+// Every double a stream writes in the shortest text that reads back to it (format_double, as the
+// commands and Python's repr write them; it was 10 digits)
+class ShortestDoubles : public std::num_put<char> {
+ protected:
+  iter_type do_put(iter_type out, std::ios_base&, char, double value) const override {
+    const std::string text = format_double(value);
+    return std::copy(text.begin(), text.end(), out);
+  }
+};
+
 std::ofstream open(const std::string& dir, const std::string& name) {
   std::ofstream out(dir + "/" + name);
   if (!out) {
     std::cerr << "contact_law_curves: cannot write " << dir << "/" << name << "\n";
     std::exit(2);
   }
-  out.precision(10);
+  out.imbue(std::locale(out.getloc(), new ShortestDoubles));
   return out;
 }
 
