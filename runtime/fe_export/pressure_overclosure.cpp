@@ -101,11 +101,11 @@ Node bisected_next(const DatumLaw& law, const Node& a, Node b, double tolerance)
 }
 
 // The farthest next point after `a` (toward `high`) whose chord is within 0.8 of the tolerance at 7
-// interior points, from a first step `step`. A chord's error grows as the square of its step, so a
-// step is rescaled by the square root of (target / error) until its error lies in [0.5, 0.8] of
-// the tolerance; bisection leaves intervals anywhere in [0.2, 0.8] of it and needs about 1.3 times
+// interior points, from a first step `step` (in multiples of `unit`). A chord's error grows as the
+// square of its step, so a step is rescaled by the square root of (target / error) until its error
+// lies in [0.5, 0.8] of the tolerance; bisection leaves intervals anywhere in [0.2, 0.8] of it and needs about 1.3 times
 // the rows (212 against 168 for the README's card at 1e-3). Bisection where 8 tries find no step.
-Node next_point(const DatumLaw& law, const Node& a, const Node& high, double step, double tolerance) {
+Node next_point(const DatumLaw& law, const Node& a, const Node& high, double step, double unit, double tolerance) {
   Node best{};
   bool found = false;
   for (int attempt = 0; attempt < 8; ++attempt) {
@@ -113,6 +113,10 @@ Node next_point(const DatumLaw& law, const Node& a, const Node& high, double ste
     // that would leave less than half of itself there takes half of what is left instead
     const double left = high.overclosure - a.overclosure;
     if (step < left && left - step < 0.5 * step) step = 0.5 * left;
+    // Steps are whole multiples of `unit` (2^-20 of the range), so that a law that differs by
+    // rounding (the same surface from another separation datum) places the same points, as
+    // bisection's did: a continuous step would carry that rounding into every point after.
+    step = std::max(unit, std::round(step / unit) * unit);
     const bool last = a.overclosure + step >= high.overclosure;
     const Node b = last ? high : node_at(law, a.overclosure + step);
     if (!(b.overclosure > a.overclosure)) break;  // below the card's digits
@@ -136,10 +140,11 @@ bool tabulate_once(const DatumLaw& law, const Node& low, const Node& high, doubl
   // Place (the verification below splits what exceeds 0.9 of the tolerance: 0.8 here leaves it
   // little to do)
   std::vector<Node> placed{low};
+  const double unit = (high.overclosure - low.overclosure) / 1048576;
   double step = (high.overclosure - low.overclosure) / 16;
   while (placed.back().overclosure < high.overclosure) {
     const Node& a = placed.back();
-    const Node b = next_point(law, a, high, step, tolerance);
+    const Node b = next_point(law, a, high, step, unit, tolerance);
     step = b.overclosure - a.overclosure;
     placed.push_back(b);
     if (placed.size() > limit) return false;
