@@ -79,6 +79,8 @@ int main(int argc, char **argv) {
   CHECK(isnan(asperity_contact_curves_pull_off_pressure(curves)) && isnan(asperity_contact_curves_pull_off_separation(curves)));
   CHECK(isnan(asperity_contact_curves_summit_count(curves, 0.5 * (info.min_separation + info.max_separation))));
   CHECK(isnan(asperity_contact_curves_summit_count(NULL, 1e-7)) && isnan(asperity_contact_curves_pull_off_pressure(NULL)));
+  CHECK(isnan(asperity_contact_curves_summit_count_max_rel_error(curves)));
+  CHECK(isnan(asperity_contact_curves_summit_count_max_rel_error(NULL)));
 
   /* the card: its size first, then into a buffer */
   status = asperity_contact_curves_pressure_overclosure_card(curves, info.min_pressure, info.max_pressure, 1e-3,
@@ -117,6 +119,9 @@ int main(int argc, char **argv) {
     CHECK(asperity_contact_curves_summit_count(curves, info.min_separation) >
           asperity_contact_curves_summit_count(curves, info.max_separation));
     CHECK(asperity_contact_curves_summit_count(curves, info.max_separation) > 0);
+    /* the count's own stored bound (issue 41, item 4): stated, positive, finite */
+    CHECK(asperity_contact_curves_summit_count_max_rel_error(curves) > 0 &&
+          asperity_contact_curves_summit_count_max_rel_error(curves) < 1e-3);
     status = asperity_contact_curves_pressure_overclosure_card(curves, pull_p, info.max_pressure, 1e-3, "calculix",
                                                                "si", NULL, NULL, 0, &length, err, sizeof err);
     CHECK(status != ASPERITY_OK && strstr(err, "tension") != NULL);

@@ -377,6 +377,8 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                     approximately(curves.min_pressure()) + " Pa); stored error bound (relative): pressure " +
                     approximately(data.max_rel_error[0]) + ", stiffness " + approximately(data.max_rel_error[1]) +
                     ", area fraction " + approximately(data.max_rel_error[2]) +
+                    (data.summit_count.empty() ? std::string()
+                                               : ", summit count " + approximately(data.summit_count_max_rel_error)) +
                     (curves.has_tension() ? " (pressure and stiffness relative to the gross, compressive + tensile; " : " (") +
                     approximately(data.safety_factor) + " x the largest measured at " +
                     std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +

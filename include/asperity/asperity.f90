@@ -121,6 +121,7 @@ module asperity
   public :: asperity_contact_curves_separation, asperity_contact_curves_at_separation
   public :: asperity_contact_curves_at_pressure, asperity_contact_curves_pressure_overclosure_card
   public :: asperity_contact_curves_summit_count, asperity_contact_curves_has_tension
+  public :: asperity_contact_curves_summit_count_max_rel_error
   public :: asperity_contact_curves_pull_off_pressure, asperity_contact_curves_pull_off_separation
 
   interface
@@ -475,6 +476,14 @@ module asperity
       type(c_ptr), value :: curves
       real(c_double), value :: separation
       real(c_double) :: asperity_contact_curves_summit_count
+    end function
+
+    ! the summit count's stored relative bound (NaN for a table without the count)
+    function asperity_contact_curves_summit_count_max_rel_error(curves) &
+        bind(c, name="asperity_contact_curves_summit_count_max_rel_error")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double) :: asperity_contact_curves_summit_count_max_rel_error
     end function
 
     ! adhesive curves: 1 with a tensile part (signed pressure), else 0

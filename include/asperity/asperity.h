@@ -288,6 +288,11 @@ double asperity_contact_curves_separation(const asperity_contact_curves *curves,
 /* Summits in contact per m^2 of nominal area (a law's table; NaN for a table without the count,
  * such as a measured surface's exact contact, a NULL handle or outside the range). */
 double asperity_contact_curves_summit_count(const asperity_contact_curves *curves, double separation);
+/* The summit count's stored bound (relative), apart from max_rel_error's three: on a Weibull tail
+ * it may exceed the error asked (docs/contact-laws.md section 8). NaN for a table without the
+ * count or a NULL handle. (A function, not a field of asperity_contact_curves_info: that struct's
+ * size is part of the ABI.) */
+double asperity_contact_curves_summit_count_max_rel_error(const asperity_contact_curves *curves);
 /* Adhesive curves (an adhesive law's table, docs/contact-laws.md section 8): 1 if the curves have
  * a tensile part (the pressure served is then signed, negative: tension; the stored pressure and
  * stiffness bounds are relative to the gross compressive + tensile), else 0 (also for NULL).

@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -200,6 +201,14 @@ void bind_contact_curves_properties(py::class_<ContactCurves>& contact_curves) {
           },
           "The stored bound (relative) of the served (pressure, stiffness, area fraction): measured_rel_error\n"
           "times safety_factor.")
+      .def_property_readonly(
+          "summit_count_max_rel_error",
+          [](const ContactCurves& c) {
+            return c.data().summit_count.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                                 : c.data().summit_count_max_rel_error;
+          },
+          "The stored bound (relative) of the served summit_count (a law's table; NaN for a table without the\n"
+          "count). On a Weibull tail it may exceed the asked error (the count's quadrature there is harder).")
       .def_property_readonly(
           "measured_rel_error",
           [](const ContactCurves& c) {

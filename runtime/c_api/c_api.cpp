@@ -586,6 +586,10 @@ double asperity_contact_curves_separation(const asperity_contact_curves* curves,
 double asperity_contact_curves_summit_count(const asperity_contact_curves* curves, double separation) {
   return curves ? curves->curves.summit_count(separation) : not_a_number;
 }
+double asperity_contact_curves_summit_count_max_rel_error(const asperity_contact_curves* curves) {
+  if (!curves || curves->curves.data().summit_count.empty()) return not_a_number;
+  return curves->curves.data().summit_count_max_rel_error;
+}
 int asperity_contact_curves_has_tension(const asperity_contact_curves* curves) {
   return curves && curves->curves.has_tension() ? 1 : 0;
 }
