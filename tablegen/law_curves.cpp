@@ -354,6 +354,36 @@ std::vector<double> starting_nodes(const SceneLaw& law) {
   return nodes;
 }
 
+// Why the curves are singular near s, for the refusal: the knot nearest s, where the Weibull
+// density's edge (z^(a-1) there) meets first contact or the law's switch point omega_k (a load
+// or a slope that jumps at omega_k). A jump J in the asperity's load there puts J phi(z_k) / sigma_s
+// into the stiffness, z_k the edge's distance, linear in s: a power |s - s_k|^(a-1), unbounded for
+// a < 1 and with an infinite slope for a < 2, which no cubic Hermite interval resolves.
+std::string singular_point(const SceneLaw& law, double s) {
+  std::ostringstream text;
+  text.precision(6);
+  if (law.distribution != Distribution::weibull) {
+    text << "the curves have a singular point there";
+    return text.str();
+  }
+  double knot = 0;  // first contact at the density's edge
+  int nearest = -1;
+  const SwitchPoints points = switch_points(law.law);
+  for (int k = 0; k < points.count; ++k) {
+    const double at = -points.interference[k] / law.height_scale;
+    if (std::fabs(at - s) < std::fabs(knot - s)) knot = at, nearest = k;
+  }
+  text << "at s = " << knot << " the Weibull density's edge, where it behaves as z^(a-1) with a = " << law.shape
+       << ", meets ";
+  if (nearest < 0)
+    text << "first contact" << (is_adhesive(law.law.kind) ? ", where each summit's load jumps from 0 (adhesion)" : "");
+  else
+    text << "the law's switch point omega_" << nearest + 1 << " = " << points.interference[nearest]
+         << " m (s = -omega / sigma_s), where its load or its slope jumps";
+  text << ": the curves vary as a power of |s - " << knot << "| there";
+  return text.str();
+}
+
 // The curves' provenance and conventions: generator, source, description, datum, scales
 void describe(const SceneLaw& law, const std::string& generator_options, ContactCurvesData& data) {
   const double sigma = law.height_scale, eta = law.summit_density;
@@ -516,14 +546,10 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
         ++checks;
       }
       if (split && h < min_interval * (law.range_max - law.range_min)) {
-        // a singular point: where a law's load (or its slope) jumps at omega_k and the Weibull
-        // density is infinite at its edge (a < 1), the stiffness is unbounded (or has an infinite
-        // slope) at s = -omega_k / sigma_s
         std::ostringstream message;
         message << name << ": the curves are not smooth enough near s = " << nodes[i]
-                << " to be tabulated to max_rel_error " << tolerance
-                << " (intervals of 1e-9 of the range still miss it: a switch point of the law meeting the edge of a "
-                   "singular Weibull density, a < 1?); exclude it from the separation range or ask a larger tolerance";
+                << " to be tabulated to max_rel_error " << tolerance << " (intervals of 1e-9 of the range still miss it: "
+                << singular_point(law, nodes[i]) << "); exclude it from the separation range or ask a larger tolerance";
         throw Error(message.str());
       }
       if (split) halves.push_back(nodes[i] + 0.5 * h);

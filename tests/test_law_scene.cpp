@@ -209,6 +209,20 @@ separation = [0.0, 4.0]
     ADD_FAILURE() << "a singular point was tabulated";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("not smooth enough near s = -0.1227"), std::string::npos) << error.what();
+    // the cause named as it is (issue 41: it blamed a switch point for Hertz, and a < 1 at a = 1.5)
+    EXPECT_NE(std::string(error.what()).find("meets the law's switch point omega_1"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("with a = 0.5"), std::string::npos) << error.what();
+  }
+  // CEB's load jumps at omega_c: at a = 1.5 (density ~ z^0.5 at its edge) the stiffness has an infinite
+  // slope where the edge reaches it; the refusal names that, not a < 1
+  try {
+    generator::generate_law_curves(scene_law(chang_etsion_bogy_law(radius, modulus, hardness, 0.3), Distribution::weibull,
+                                             Side::bounded, 1.5, -1.0, -0.001, 1e-6));
+    ADD_FAILURE() << "a singular point was tabulated";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("with a = 1.5, meets the law's switch point omega_1"), std::string::npos)
+        << error.what();
+    EXPECT_EQ(std::string(error.what()).find("a < 1?"), std::string::npos) << error.what();
   }
   // an area fraction beyond 1 inside the range is refused by the generator, with the fix
   SceneLaw crowded = scene_law(hertz_law(radius, modulus), Distribution::gaussian, Side::tail, 2, -3.0, 1.0, 1e-6);
