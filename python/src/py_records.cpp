@@ -15,46 +15,42 @@ using namespace pybind11::literals;
 
 namespace asperity::python {
 
+namespace {
+
+// A record type: a namedtuple `name` of `fields` (each with a name and a meaning) in module
+// asperity, its docstring `doc` followed by each field's meaning unless `doc` says it all already
+template <class Fields>
+py::handle record_type(py::module_& m, const char* name, const Fields& fields, std::string doc, bool list_fields) {
+  py::list names;
+  for (const auto& field : fields) {
+    names.append(field.name);
+    if (list_fields) doc += std::string(" ") + field.name + " (" + field.meaning + "),";
+  }
+  if (list_fields) doc.back() = '.';
+  py::object type = py::module_::import("collections").attr("namedtuple")(name, py::tuple(names), "module"_a = "asperity");
+  type.attr("__doc__") = doc;
+  m.attr(name) = type;
+  return type.release();
+}
+
+}  // namespace
+
 void bind_records(py::module_& m) {
-  auto collections = py::module_::import("collections");
-  // the fields' names from their one list (ContactState's, contact.hpp)
-  py::list contact_state_names;
-  for (const RecordField& field : RecordFields<ContactState>::fields) contact_state_names.append(field.name);
-  py::object contact_state = collections.attr("namedtuple")("ContactState", py::tuple(contact_state_names),
-                                                            "module"_a = "asperity");
-  contact_state.attr("__doc__") =
+  // each from its fields' one list: ContactState's (contact.hpp), PhysicalState's
+  // (physical_state_fields.hpp), ContactCurvesState's (contact_curves.hpp)
+  contact_state_type = record_type(
+      m, "ContactState", RecordFields<ContactState>::fields,
       "contact_at's answer (floats, or arrays shaped like the separations): count N X_0, area pi N R sigma_s X_1, "
       "load (4/3) N E* R^1/2 sigma_s^3/2 X_3/2, stiffness 2 N E* R^1/2 sigma_s^1/2 X_1/2 and the stiffness/load "
-      "ratio (3/2) X_1/2 / X_3/2 (in separation units).";
-  m.attr("ContactState") = contact_state;
-  contact_state_type = contact_state.release();
-  // the fields' names and meanings from their one list (physical_state_fields.hpp)
-  py::list physical_state_names;
-  std::string physical_state_doc = "ContactModel's answer (floats, or arrays shaped like the input), SI units:";
-  for (const PhysicalStateField& field : physical_state_fields) {
-    physical_state_names.append(field.name);
-    physical_state_doc += std::string(" ") + field.name + " (" + field.meaning + "),";
-  }
-  physical_state_doc.back() = '.';
-  py::object physical_state = collections.attr("namedtuple")("PhysicalState", py::tuple(physical_state_names),
-                                                             "module"_a = "asperity");
-  physical_state.attr("__doc__") = physical_state_doc;
-  m.attr("PhysicalState") = physical_state;
-  physical_state_type = physical_state.release();
-  // ContactCurves' answer: the fields of ContactCurvesState's one list (contact_curves.hpp)
-  py::list curves_state_names;
-  std::string curves_state_doc = "ContactCurves' answer at_separation / at_pressure (floats, or arrays shaped like the "
-                                 "input), SI units:";
-  for (const RecordField& field : RecordFields<ContactCurvesState>::fields) {
-    curves_state_names.append(field.name);
-    curves_state_doc += std::string(" ") + field.name + " (" + field.meaning + "),";
-  }
-  curves_state_doc.back() = '.';
-  py::object curves_state = collections.attr("namedtuple")("ContactCurvesState", py::tuple(curves_state_names),
-                                                           "module"_a = "asperity");
-  curves_state.attr("__doc__") = curves_state_doc;
-  m.attr("ContactCurvesState") = curves_state;
-  contact_curves_state_type = curves_state.release();
+      "ratio (3/2) X_1/2 / X_3/2 (in separation units).",
+      false);
+  physical_state_type = record_type(m, "PhysicalState", physical_state_fields,
+                                    "ContactModel's answer (floats, or arrays shaped like the input), SI units:", true);
+  contact_curves_state_type =
+      record_type(m, "ContactCurvesState", RecordFields<ContactCurvesState>::fields,
+                  "ContactCurves' answer at_separation / at_pressure (floats, or arrays shaped like the input), SI "
+                  "units:",
+                  true);
 }
 
 }  // namespace asperity::python
