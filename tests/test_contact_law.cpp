@@ -207,6 +207,42 @@ TEST(ContactLaw, JacksonGreen) {
 }
 
 // Every elastic-plastic law is Hertz below its first yield
+// Jackson-Green's fit starts below Hertz at 1.9 omega_c for S_y/E* above about 0.03 (issue 41,
+// item 5: -2.8% at 0.08, the reporter's psi = 0.5): its load would fall with the interference
+// there, so valid_up_to is just below 1.9 omega_c (the Hertz part); elsewhere where a = R. Up to
+// valid_up_to every law of both forms, S_y/E* 0.001 to 0.8, is finite and its load never falls
+// (before: NaN where a = R comes before 1.9 omega_c, S_y/E* 0.4 and 0.8, served without a word).
+TEST(ContactLaw, JacksonGreenIsSupportedWhereItsLoadRises) {
+  for (auto form : {JacksonGreenHardness::cosine_2005, JacksonGreenHardness::exponential_2006}) {
+    for (double ratio : {0.001, 0.005, 0.0087, 0.02, 0.025, 0.03, 0.04, 0.08, 0.2, 0.4, 0.8}) {
+      const ContactLaw law = jackson_green_law(R, E, ratio * E, NU, form);
+      const double transition = 1.9 * law.critical_interference;
+      const double left = asperity_response(law, std::nextafter(transition, 0.0)).load;
+      const double right = asperity_response(law, transition).load;
+      if (right < left) {  // the Hertz part only (to a = R where that comes first)
+        EXPECT_LT(law.valid_up_to, transition) << ratio;
+        EXPECT_GT(ratio, 0.025) << ratio;
+      } else {
+        EXPECT_GT(law.valid_up_to, ratio < 0.03 ? transition : 0.0) << ratio;
+      }
+      double previous = 0;
+      for (int i = 0; i <= 4000; ++i) {
+        const double w = law.valid_up_to * std::pow(1e-6, 1 - i / 4000.0);
+        const AsperityResponse r = asperity_response(law, w);
+        ASSERT_TRUE(std::isfinite(r.load) && std::isfinite(r.area) && std::isfinite(r.stiffness)) << ratio << " " << w;
+        EXPECT_GE(r.load, previous) << "S_y/E* " << ratio << " at " << w / law.critical_interference << " omega_c";
+        EXPECT_GT(r.stiffness, 0) << ratio << " " << w;
+        previous = r.load;
+      }
+    }
+  }
+  // the reporter's case: S_y/E* = 0.08 (cosine form), the fit 2.85% below Hertz at 1.9 omega_c
+  const ContactLaw law = jackson_green_law(R, E, 0.08 * E, NU);
+  EXPECT_EQ(law.valid_up_to, std::nextafter(1.9 * law.critical_interference, 0.0));
+  const double w = 1.9 * law.critical_interference;
+  EXPECT_NEAR(asperity_response(law, w).load / asperity_response(law, std::nextafter(w, 0.0)).load, 0.9715, 5e-4);
+}
+
 TEST(ContactLaw, HertzBelowFirstYield) {
   const ContactLaw laws[] = {chang_etsion_bogy_law(R, E, H, NU), zhao_maietta_chang_law(R, E, H),
                              kogut_etsion_law(R, E, Y, NU), jackson_green_law(R, E, Y, NU)};
