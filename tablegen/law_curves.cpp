@@ -391,20 +391,21 @@ void describe(const SceneLaw& law, const std::string& generator_options, Contact
   data.generator_options = generator_options;
   data.source = std::string("contact-law ") + contact_law_name(law.law.kind);
   {
-    std::ostringstream text;
-    text.precision(17);
+    std::ostringstream text;  // numbers in shortest round-trip form (0.3, not 0.29999999999999999)
+    const auto n = [](double value) { return format_double(value); };
     const ContactLaw& l = law.law;
-    text << contact_law_name(l.kind) << ": E* = " << l.modulus << " Pa";
+    text << contact_law_name(l.kind) << ": E* = " << n(l.modulus) << " Pa";
     if (find_contact_law(l.kind)->parameter_count > 0) text << ", " << law_parameters_text(l);
     if (is_adhesive(l.kind))
-      text << ", length scale d_s = " << l.critical_interference << " m";
+      text << ", length scale d_s = " << n(l.critical_interference) << " m";
     else if (std::isfinite(l.critical_interference))
-      text << ", omega_c = " << l.critical_interference << " m";
+      text << ", omega_c = " << n(l.critical_interference) << " m";
     text << "; summits " << to_string(law.distribution);
-    if (law.distribution == Distribution::weibull) text << " a = " << law.shape << " " << to_string(law.side) << " side";
-    text << ", sigma_s = " << sigma << " m, R = " << law.summit_radius << " m, density = " << eta
-         << " /m^2, A0 = " << law.nominal_area << " m^2; separations s in [" << law.range_min << ", "
-         << law.range_max << "] (dimensionless)";
+    if (law.distribution == Distribution::weibull)
+      text << " a = " << n(law.shape) << " " << to_string(law.side) << " side";
+    text << ", sigma_s = " << n(sigma) << " m, R = " << n(law.summit_radius) << " m, density = " << n(eta)
+         << " /m^2, A0 = " << n(law.nominal_area) << " m^2; separations s in [" << n(law.range_min) << ", "
+         << n(law.range_max) << "] (dimensionless)";
     if (is_adhesive(l.kind))
       text << "; the approach (loading) branch: a summit touches at omega = 0 and follows its law's stable branch "
               "(pressure = compressive - tensile part, negative: tension; the stored pressure and stiffness bounds "

@@ -136,7 +136,7 @@ TEST(LawRegistry, ANewLawReachesEveryReader) {
   EXPECT_DOUBLE_EQ(asperity_response(law, 1e-7).load, 2e9 * 2 * pi * 1e-4 * 1e-7);
   EXPECT_EQ(asperity_response(law, 0).load, 0);
   EXPECT_EQ(switch_points(law).count, 0);
-  EXPECT_EQ(law_parameters_text(law), "H = 2000000000 Pa");
+  EXPECT_EQ(law_parameters_text(law), "H = 2e+09 Pa");
 
   // a scene file names it, and its keys are checked as any law's
   const std::string surface =
@@ -168,7 +168,7 @@ TEST(LawRegistry, ANewLawReachesEveryReader) {
                       std::fabs(at.stiffness / (2 * pi * eta * r * h * q) - 1)});
   }
   EXPECT_LT(worst, 1e-8) << "asked 1e-8";
-  EXPECT_NE(curves.data().description.find("abbott-firestone: E* = 100000000000 Pa, H = 2000000000 Pa"),
+  EXPECT_NE(curves.data().description.find("abbott-firestone: E* = 1e+11 Pa, H = 2e+09 Pa"),
             std::string::npos)
       << curves.data().description;
 

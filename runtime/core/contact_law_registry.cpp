@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "asperity/number_text.hpp"
+
 #include "laws/law_support.hpp"
 
 namespace asperity {
@@ -189,7 +191,6 @@ std::string law_parameters_text(const ContactLaw& law) {
   const ContactLawDescriptor* descriptor = find_contact_law(law.kind);
   if (!descriptor) return "";
   std::ostringstream text;
-  text.precision(17);
   for (int k = 0; k < descriptor->parameter_count; ++k) {
     const LawParameterInfo& p = law_parameter_info(descriptor->parameters[k].parameter);
     const double value = law_parameter_value(law, p.id);
@@ -197,7 +198,7 @@ std::string law_parameters_text(const ContactLaw& law) {
     if (p.choices[0] && value >= 0 && value < 3 && p.choices[static_cast<int>(value)])
       text << p.choices[static_cast<int>(value)];
     else
-      text << value;
+      text << format_double(value);  // shortest round-trip: 0.3, not 0.29999999999999999
     if (*p.unit) text << " " << p.unit;
   }
   return text.str();

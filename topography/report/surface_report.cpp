@@ -881,10 +881,11 @@ std::string markdown_report(const SurfaceAnalysis& a, const ReportOutcome& outco
 std::string summits_csv(const SurfaceAnalysis& a) {
   std::ostringstream summits;
   summits << "i,j,x_m,y_m,height_m,mean_curvature_per_m,kappa1_per_m,kappa2_per_m\n";
-  summits.precision(10);
-  for (const Summit& s : a.summits.list)
-    summits << s.i << ',' << s.j << ',' << static_cast<double>(s.i) * a.map.dx << ',' << static_cast<double>(s.j) * a.map.dy
-            << ',' << s.height << ',' << s.mean_curvature << ',' << s.kappa1 << ',' << s.kappa2 << '\n';
+  for (const Summit& s : a.summits.list)  // numbers in shortest round-trip form, as every CSV of the project
+    summits << s.i << ',' << s.j << ',' << format_double(static_cast<double>(s.i) * a.map.dx) << ','
+            << format_double(static_cast<double>(s.j) * a.map.dy) << ',' << format_double(s.height) << ','
+            << format_double(s.mean_curvature) << ',' << format_double(s.kappa1) << ',' << format_double(s.kappa2)
+            << '\n';
   return summits.str();
 }
 
