@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <unordered_map>
 #include <sstream>
 #include <vector>
@@ -134,15 +136,14 @@ std::string law_inputs_at_fault(const SceneLaw& scene) {
   throw Error(message.str());
 }
 
-LawMeans integrate_law_means(const SceneLaw& scene, double s);
-
-}  // namespace
+using Integrator = boost::math::quadrature::tanh_sinh<double>;
+LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite);
 
 // Boost.Math's errors (and an allocation's) named by the law's inputs; asperity::Error (and
 // Interrupted) as they are
-LawMeans law_means(const SceneLaw& scene, double s) {
+LawMeans checked_law_means(const SceneLaw& scene, double s, Integrator& finite) {
   try {
-    return integrate_law_means(scene, s);
+    return integrate_law_means(scene, s, finite);
   } catch (const Error&) {
     throw;
   } catch (...) {
@@ -150,9 +151,15 @@ LawMeans law_means(const SceneLaw& scene, double s) {
   }
 }
 
+}  // namespace
+
+LawMeans law_means(const SceneLaw& scene, double s) {
+  Integrator finite;  // its abscissae: a few hundred microseconds (the generator keeps a pool)
+  return checked_law_means(scene, s, finite);
+}
+
 namespace {
-LawMeans integrate_law_means(const SceneLaw& scene, double s) {
-  static thread_local boost::math::quadrature::tanh_sinh<double> finite;
+LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite) {
   const ContactLaw& law = scene.law;
   const double sigma = scene.height_scale;
   const bool tail = scene.side == Side::tail;
@@ -290,7 +297,7 @@ class ExactMeans {
       : law_(law), progress_(progress) {}
   const LawMeans& at(double s) {
     auto found = means_.find(s);
-    if (found == means_.end()) found = means_.emplace(s, law_means(law_, s)).first;
+    if (found == means_.end()) found = means_.emplace(s, means_at(s)).first;
     return found->second;
   }
   std::size_t size() const { return means_.size(); }
@@ -307,7 +314,7 @@ class ExactMeans {
       std::vector<std::exception_ptr> failures(count);
       detail::parallel_for(count, 0, [&](std::size_t i) {
         try {
-          means[i] = law_means(law_, wanted[first + i]);
+          means[i] = means_at(wanted[first + i]);
         } catch (const Interrupted&) {
           throw;
         } catch (...) {
@@ -327,8 +334,31 @@ class ExactMeans {
   }
 
  private:
+  // The means at s with an integrator of the pool (made once each, one per thread at a time: not
+  // thread_local, whose destructors at a worker's exit ThreadSanitizer cannot order with glibc's
+  // reuse of the thread's TLS block)
+  LawMeans means_at(double s) {
+    std::unique_ptr<Integrator> integrator;
+    {
+      std::lock_guard<std::mutex> lock(pool_mutex_);
+      if (!pool_.empty()) integrator = std::move(pool_.back()), pool_.pop_back();
+    }
+    if (!integrator) integrator = std::make_unique<Integrator>();
+    struct Return {  // the integrator back to the pool, also when the means throw
+      ExactMeans& owner;
+      std::unique_ptr<Integrator>& integrator;
+      ~Return() {
+        std::lock_guard<std::mutex> lock(owner.pool_mutex_);
+        owner.pool_.push_back(std::move(integrator));
+      }
+    } back{*this, integrator};
+    return checked_law_means(law_, s, *integrator);
+  }
+
   const SceneLaw& law_;
   const std::function<void(const LawCurvesProgress&)>& progress_;
+  std::mutex pool_mutex_;
+  std::vector<std::unique_ptr<Integrator>> pool_;
   std::map<double, LawMeans> means_;  // by s
   int pass_ = 0;
   std::size_t nodes_ = 0;
