@@ -12,6 +12,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "card_settings.hpp"
 #include "helpers.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/plausibility.hpp"
@@ -23,21 +24,6 @@ using namespace pybind11::literals;
 
 namespace asperity::python {
 
-// py_fe_export.cpp: the cards' options as the command line has them
-// The card's options (ValueError naming a bad one, `datum_keyword` the datum's keyword) and the
-// card written with them (a UserWarning where a CalculiX card passes the spring cut-off).
-struct CardSettings {
-  CardFormat format = CardFormat::calculix;
-  CardUnits units = CardUnits::si;
-  OverclosureDatum datum = OverclosureDatum::zero_pressure;
-  std::size_t max_points = 0;
-  double face_size = 0;  // m; NaN: not given
-};
-CardSettings card_settings(const std::string& format, const std::string& units, const char* datum_keyword,
-                           const std::string& datum, std::optional<long long> max_points,
-                           std::optional<double> face_size);
-std::string card_text(const PressureOverclosureTable& table, const CardSettings& settings,
-                      const std::string& description);
 namespace {
 
 // asperity.ImplausibleValueWarning (a UserWarning), made once at import (bind_contact_model).

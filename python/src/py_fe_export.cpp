@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "card_settings.hpp"
 #include "helpers.hpp"
 #include "asperity/pressure_overclosure.hpp"
 
@@ -19,15 +20,6 @@ using namespace pybind11::literals;
 
 namespace asperity::python {
 
-// The card's options (ValueError naming a bad one, `datum_keyword` the datum's keyword) and the
-// card written with them (a UserWarning where a CalculiX card passes the spring cut-off).
-struct CardSettings {
-  CardFormat format = CardFormat::calculix;
-  CardUnits units = CardUnits::si;
-  OverclosureDatum datum = OverclosureDatum::zero_pressure;
-  std::size_t max_points = 0;
-  double face_size = 0;  // m; NaN: not given
-};
 // The card options of ContactModel's and ContactCurves' cards, as the command line has them:
 // max_points None is the format's cap (200 for calculix); face_size in the card's units, returned
 // in metres (NaN: None). ValueError for a bad value.
