@@ -83,36 +83,30 @@ void bind_contact_curves_queries(py::class_<ContactCurves>& contact_curves) {
           "The ContactCurvesState at nominal pressures [Pa] (float or array), as ContactModel.at_pressure gives a\n"
           "PhysicalState: the separation where the served pressure is that (adhesive curves: on the stable\n"
           "branch) and the curves there; NaN outside [min_pressure, max_pressure] (asperity.OutOfRangeWarning).")
-      .def(
-          "pressure",
-          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
-                              [&](double v) { return curves.pressure(v); });
-          },
-          "separation"_a, "The nominal pressure [Pa] at separations [m] (float or array).")
-      .def(
-          "stiffness",
-          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
-                              [&](double v) { return curves.stiffness(v); });
-          },
-          "separation"_a, "The stiffness per area -dp/du [Pa/m] at separations [m].")
-      .def(
-          "area_fraction",
-          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
-                              [&](double v) { return curves.area_fraction(v); });
-          },
-          "separation"_a, "The real contact area over the nominal area at separations [m].")
-      .def(
-          "summit_count",
-          [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
-            return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
-                              [&](double v) { return curves.summit_count(v); });
-          },
-          "separation"_a,
-          "Summits in contact per m^2 of nominal area at separations [m] (a law's table; NaN for a table without\n"
-          "the count, such as a measured surface's exact contact).")
+;
+  // the served curves at separations [m] (float or array), a binding each from this list
+  using Served = double (ContactCurves::*)(double) const noexcept;
+  const struct {
+    const char* name;
+    Served curve;
+    const char* doc;
+  } curves_at_separations[] = {
+      {"pressure", &ContactCurves::pressure, "The nominal pressure [Pa] at separations [m] (float or array)."},
+      {"stiffness", &ContactCurves::stiffness, "The stiffness per area -dp/du [Pa/m] at separations [m]."},
+      {"area_fraction", &ContactCurves::area_fraction, "The real contact area over the nominal area at separations [m]."},
+      {"summit_count", &ContactCurves::summit_count,
+       "Summits in contact per m^2 of nominal area at separations [m] (a law's table; NaN for a table without\n"
+       "the count, such as a measured surface's exact contact)."},
+  };
+  for (const auto& served : curves_at_separations)
+    contact_curves.def(
+        served.name,
+        [curve = served.curve](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
+          return map_served(x.object, "separation", curves.min_separation(), curves.max_separation(), "m",
+                            [&](double v) { return (curves.*curve)(v); });
+        },
+        "separation"_a, served.doc);
+  contact_curves
       .def(
           "separation_at_pressure",
           [](ContactCurves curves, const ArrayLike& x) {  // a handle by value: read without the GIL
