@@ -35,14 +35,30 @@ struct Options {
   LawOptions law;         // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
   std::string law_range;  // the separations they are tabulated over
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
-         count = not_given, area = not_given, modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given,
-         nu2 = not_given;
+         count = not_given, area = not_given;
+  MaterialOptions material;  // --modulus, or --e1 --nu1 --e2 --nu2
   std::vector<double> separations, loads, pressures, real_areas;  // the queries (lists); empty: not given
   double export_tolerance = not_given, face_size = not_given, mean_summit_height = not_given;
   long long max_points = 0;  // 0: not given
 };
 
 std::string number(double value) { return format_double(value); }
+
+// What a card from `--export` states on standard error: a tolerance loosened to fit --max-points
+// (a warning), then its points, how closely they follow `what` (the law, the served curve) over
+// [low, high] Pa, and the datum.
+void state_card(const CLI::App& command, const PressureOverclosureTable& table, double tolerance,
+                std::size_t max_points, double low, double high, OverclosureDatum datum, const std::string& what) {
+  if (table.tolerance != tolerance)
+    warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
+                      " points: the card is within " + number(table.tolerance) + " of " + what +
+                      " instead (--max-points)");
+  note(command, std::to_string(table.points.size()) + " points; linear interpolation within " +
+                    number(table.tolerance) + " of " + what + " from " + number(low) + " to " + number(high) +
+                    " Pa (measured at most " + approximately(table.max_error) + " at " +
+                    std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
+                    " datum");
+}
 
 // The surface from the options; `given_scale` says which height scale was given and the other.
 RoughSurface surface_from(const Options& options, std::string& given_scale) {
@@ -61,7 +77,7 @@ RoughSurface surface_from(const Options& options, std::string& given_scale) {
 
   if (!given(options.area)) throw CLI::RequiredError("--area");
   surface.nominal_area = options.area;
-  surface.contact_modulus = contact_modulus_option(options.modulus, options.e1, options.nu1, options.e2, options.nu2);
+  surface.contact_modulus = options.material.contact_modulus();
   if (!given(surface.contact_modulus)) usage("give the contact modulus: --modulus, or --e1 --nu1 --e2 --nu2");
 
   if (!options.moments.empty()) {
@@ -275,14 +291,7 @@ int export_law(const Options& options, const ContactModel& model, const CLI::App
                              "(Greenwood-Williamson)\n" +
                                  describe(model.surface()),
                              face_size);
-  if (table.tolerance != tolerance)
-    warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
-                      " points: the card is within " + number(table.tolerance) + " of the law instead (--max-points)");
-  note(command, std::to_string(table.points.size()) + " points; linear interpolation within " +
-                    number(table.tolerance) + " of the law from " + number(low) + " to " + number(high) +
-                    " Pa (measured at most " + approximately(table.max_error) + " at " +
-                    std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
-                    " datum");
+  state_card(command, table, tolerance, max_points, low, high, datum, "the law");
   if (format == CardFormat::calculix)
     check_spring_cutoff(
         command, table.points, face_size, units,
@@ -352,8 +361,7 @@ int run_contact_law(const Options& options, const CLI::App& command) {
 int run_contact_curves(const Options& options, const CLI::App& command) {
   if (!options.side.empty() || given(options.shape) || given(options.sigma) ||
       given(options.rms) || given(options.radius) || given(options.density) || given(options.count) ||
-      given(options.area) || given(options.modulus) || given(options.e1) || given(options.nu1) ||
-      given(options.e2) || given(options.nu2) || !options.moments.empty())
+      given(options.area) || options.material.any_given() || !options.moments.empty())
     usage("the table '" + quote_text(options.table) +
           "' holds a measured surface's contact curves: it is the surface (give no --side, --shape, --sigma, "
           "--rms, --radius, --density, --count, --area, --modulus, --e1..--nu2, --moments)");
@@ -438,14 +446,7 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
       check_spring_cutoff(command, table.points, face_size, units,
                           "use --overclosure-datum zero-pressure (and start the model with the surfaces touching), "
                           "larger faces, or a higher PMIN");
-    if (table.tolerance != tolerance)
-      warn(command, "the tolerance " + number(tolerance) + " needs more than " + std::to_string(max_points) +
-                        " points: the card is within " + number(table.tolerance) + " of the curves instead (--max-points)");
-    note(command, std::to_string(table.points.size()) + " points; linear interpolation within " +
-                      number(table.tolerance) + " of the served curve from " + number(low) + " to " + number(high) +
-                      " Pa (measured at most " + approximately(table.max_error) + " at " +
-                      std::to_string(table.checked_points) + " points); overclosure from the " + datum_name(datum) +
-                      " datum");
+    state_card(command, table, tolerance, max_points, low, high, datum, "the served curve");
     return exit_success;
   }
   if (!options.pressure_range.empty() || !options.units.empty() || given(options.export_tolerance) ||
@@ -590,11 +591,7 @@ void add_contact_command(CLI::App& app) {
   add_number(*command, "--density", o.density, "summits per unit nominal area [1/m^2]")->type_name("PER_M2")->group("Surface (SI units)");
   add_number(*command, "--count", o.count, "summits in all (instead of --density)")->type_name("N")->group("Surface (SI units)");
   add_number(*command, "--area", o.area, "nominal area A0 [m^2] (required)")->type_name("M2")->group("Surface (SI units)");
-  add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (or --e1 --nu1 --e2 --nu2)")->type_name("PA")->group("Surface (SI units)");
-  add_number(*command, "--e1", o.e1, "Young's modulus of body 1 [Pa]")->type_name("PA")->group("Surface (SI units)");
-  add_number(*command, "--nu1", o.nu1, "Poisson's ratio of body 1")->type_name("X")->group("Surface (SI units)");
-  add_number(*command, "--e2", o.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group("Surface (SI units)");
-  add_number(*command, "--nu2", o.nu2, "Poisson's ratio of body 2")->type_name("X")->group("Surface (SI units)");
+  add_material_options(*command, o.material, "contact modulus E* [Pa] (or --e1 --nu1 --e2 --nu2)", "Surface (SI units)");
   add_text(*command, "--moments", o.moments,
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
@@ -646,11 +643,7 @@ void add_contact_command(CLI::App& app) {
            "height), origin (the separation's origin: the Weibull origin, the Gaussian's mean) or mean-plane (give "
            "--mean-summit-height)")
       ->type_name("DATUM")->group("FE export");
-  add_number(*command, "--face-size", o.face_size,
-             "with --export calculix: the slave faces' edge, in the card's units (m; mm with --units mm); warns "
-             "(and the card's header says) when the card reaches beyond node-to-surface contact's spring cut-off, a "
-             "clearance of 1e-3 times it")
-      ->type_name("L")->group("FE export");
+  add_face_size_option(*command, o.face_size, "with --export calculix", "FE export");
   command->footer(
       "Output: CSV, one row per query (a list's values in order): separation_m (from the datum, --datum: by default the origin\n"
       "convention, from the Weibull origin or the Gaussian's mean; standard error names the datum),\n"

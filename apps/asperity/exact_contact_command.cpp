@@ -24,6 +24,8 @@
 #include "asperity/topography/units.hpp"
 #include "command_line.hpp"
 #include "fe_card_options.hpp"
+#include "map_options.hpp"
+#include "option_helpers.hpp"
 #include "asperity/number_text.hpp"
 #include "asperity/pressure_overclosure.hpp"
 
@@ -35,55 +37,21 @@ constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 constexpr long max_steps = 10000;
 
 struct Options {
-  std::string file, format, pixel_size, unit, height_unit, pressures, gaps, sweep, boundary, kernel, method, fields,
-      card, card_format, units, table, overclosure_datum;
-  double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given,
-         tolerance = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
+  std::string file, pressures, gaps, sweep, boundary, kernel, method, fields, card, card_format, units, table,
+      overclosure_datum;
+  MapOptions map;             // how the map is read (map_options.hpp)
+  MaterialOptions material;   // --modulus, or --e1 --nu1 --e2 --nu2
+  double tolerance = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
   bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false, overwrite = false;
 };
 
-bool given(double value) { return !std::isnan(value); }
-
-[[noreturn]] void usage(const std::string& message) { throw CLI::ValidationError(message); }
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, separator)) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.push_back("");
-  return parts;
-}
-
-std::vector<double> positive_numbers(const std::string& text, const std::string& name) {
-  std::vector<double> values;
-  for (const std::string& part : split(text, ',')) {
-    const double value = number_from_text(part, name);
-    if (!(value > 0)) usage(name + ": '" + quote_text(part) + "' is not a positive number");
-    values.push_back(value);
-  }
+// A list of steps: positive numbers, at most max_steps of them.
+std::vector<double> step_values(const std::string& text, const std::string& name) {
+  std::vector<double> values = positive_numbers(text, name);
   if (values.size() > static_cast<std::size_t>(max_steps)) usage(name + ": more than 10000 values");
   return values;
-}
-
-topo::ReadOptions read_options(const Options& o) {
-  topo::ReadOptions read;
-  if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
-    usage("--format: unknown format '" + quote_text(o.format) + "' (" + topo::surface_format_names() + ")");
-  read.lateral_unit = o.unit;
-  read.height_unit = o.height_unit;
-  if (!o.pixel_size.empty()) {
-    const std::vector<std::string> parts = split(o.pixel_size, ',');
-    if (parts.empty() || parts.size() > 2) usage("--pixel-size: one length, or two (x,y)");
-    read.pixel_size_x = topo::parse_length(parts[0], o.unit);
-    read.pixel_size_y = parts.size() == 2 ? topo::parse_length(parts[1], o.unit) : read.pixel_size_x;
-    if (!(read.pixel_size_x > 0 && read.pixel_size_y > 0 && std::isfinite(read.pixel_size_x) &&
-          std::isfinite(read.pixel_size_y)))
-      usage("--pixel-size must be positive");
-  }
-  return read;
 }
 
 // The steps asked: by pressure (true) or by mean gap, in the order given.
@@ -99,10 +67,10 @@ Steps steps_from(const Options& o) {
                      : "give one of --pressure, --gap, --sweep");
   Steps steps;
   if (!o.pressures.empty()) {
-    steps.values = positive_numbers(o.pressures, "--pressure");
+    steps.values = step_values(o.pressures, "--pressure");
   } else if (!o.gaps.empty()) {
     steps.by_pressure = false;
-    steps.values = positive_numbers(o.gaps, "--gap");
+    steps.values = step_values(o.gaps, "--gap");
   } else {
     const std::vector<std::string> parts = split(o.sweep, ':');
     if (parts.size() != 4) usage("--sweep wants KIND:FROM:TO:COUNT, got '" + quote_text(o.sweep) + "'");
@@ -324,7 +292,7 @@ void print_results(const Options& o, const topo::HeightMap& map, const topo::Exa
                    const std::vector<topo::ContactStep>& results);
 
 int run_exact_contact(const Options& o, const CLI::App& command) {
-  const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
+  const double modulus = o.material.contact_modulus();
   if (!given(modulus)) usage("the contact modulus is required: --modulus E* [Pa] or --e1 --nu1 --e2 --nu2");
   topo::ExactContactOptions options;
   options.contact_modulus = modulus;
@@ -374,7 +342,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   }
 
   const OutputPlan plan = output_plan(o, steps.values.size());  // before any work
-  topo::HeightMap map = topo::read_height_map(o.file, read_options(o));
+  topo::HeightMap map = topo::read_height_map(o.file, read_options(o.map));
   if (!o.no_level) topo::subtract_plane(map, topo::fit_plane(map));
 
   // progress on standard error once a solve has run for 2 s, then every 2 s
@@ -470,25 +438,9 @@ void add_exact_contact_command(CLI::App& app) {
       ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
                              ""));
   const char* reading = "Reading";
-  add_text(*command, "--format", o.format,
-           topo::surface_format_names() + " (default auto: by content, then extension)")
-      ->type_name("NAME")->group(reading);
-  add_text(*command, "--pixel-size", o.pixel_size,
-           "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "
-           "else it overrides the file's")
-      ->type_name("LENGTH[,LENGTH]")->group(reading);
-  add_text(*command, "--unit", o.unit, "unit of x, y (and of heights unless --height-unit) for files without units")
-      ->type_name("UNIT")->group(reading);
-  add_text(*command, "--height-unit", o.height_unit, "unit of the heights in the file (overrides the file's)")
-      ->type_name("UNIT")->group(reading);
+  add_map_options(*command, o.map, reading);
   command->add_flag("--no-level", o.no_level, "do not subtract the least-squares plane")->group(reading);
-  const char* material = "Material (SI units)";
-  add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (plane strain)")->type_name("PA")->group(material);
-  add_number(*command, "--e1", o.e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)")
-      ->type_name("PA")->group(material);
-  add_number(*command, "--nu1", o.nu1, "Poisson's ratio of body 1")->group(material);
-  add_number(*command, "--e2", o.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group(material);
-  add_number(*command, "--nu2", o.nu2, "Poisson's ratio of body 2")->group(material);
+  add_material_options(*command, o.material, "contact modulus E* [Pa] (plane strain)", "Material (SI units)");
   const char* load = "Load steps (one kind; solved in the order given, each from the last)";
   add_text(*command, "--pressure", o.pressures, "nominal pressures [Pa], comma-separated")
       ->type_name("PA[,PA...]")->group(load);
@@ -555,11 +507,7 @@ void add_exact_contact_command(CLI::App& app) {
            "mean-plane (the flat at the map's mean plane: overclosure -mean_gap_m). Not origin: a measured map has no "
            "fitted distribution")
       ->type_name("DATUM")->group(output);
-  add_number(*command, "--face-size", o.face_size,
-             "with a calculix card: the slave faces' edge, in the card's units (m; mm with --units mm); warns (and "
-             "the card's header says) when the card reaches beyond node-to-surface contact's spring cut-off, a "
-             "clearance of 1e-3 times it")
-      ->type_name("L")->group(output);
+  add_face_size_option(*command, o.face_size, "with a calculix card", output);
   add_number(*command, "--card-tolerance", o.card_tolerance,
              "with --card: solve more where the curve bends: between neighbouring solved points one more solve at "
              "the middle mean gap, split again where linear interpolation misses it by more than REL (relative, in "

@@ -21,6 +21,15 @@ OverclosureDatum overclosure_datum_option(const std::string& text) {
   return datum;
 }
 
+CLI::Option* add_face_size_option(CLI::App& command, double& face_size, const std::string& card,
+                                  const std::string& group) {
+  return add_number(command, "--face-size", face_size,
+                    card + ": the slave faces' edge, in the card's units (m; mm with --units mm); warns (and the "
+                           "card's header says) when the card reaches beyond node-to-surface contact's spring "
+                           "cut-off, a clearance of 1e-3 times it")
+      ->type_name("L")->group(group);
+}
+
 double face_size_option(double face_size, CardFormat format, CardUnits units, const std::string& card_option) {
   if (std::isnan(face_size)) return face_size;
   const std::string unit = units == CardUnits::mm ? "mm, with --units mm" : "m; mm with --units mm";

@@ -20,6 +20,11 @@ std::size_t card_max_points(long long asked, CardFormat format);
 // touching, so that every mesh sees all of it); a usage error names the datums.
 OverclosureDatum overclosure_datum_option(const std::string& text);
 
+// --face-size L (the card's option `card`, e.g. "with --export calculix", begins its help), in
+// `group`.
+CLI::Option* add_face_size_option(CLI::App& command, double& face_size, const std::string& card,
+                                  const std::string& group);
+
 // --face-size: a positive length in the card's units (m, or mm with --units mm), with a CalculiX
 // card (`card_option`: the option that writes one). Returns it in metres (NaN: not given).
 double face_size_option(double face_size, CardFormat format, CardUnits units, const std::string& card_option);

@@ -30,6 +30,7 @@
 #include "command_line.hpp"
 #include "option_helpers.hpp"
 #include "law_options.hpp"
+#include "map_options.hpp"
 #include "asperity/number_text.hpp"
 
 namespace asperity::cli {
@@ -39,10 +40,10 @@ namespace topo = asperity::topography;
 constexpr double not_given = NAN;  // add_number only ever stores finite numbers
 
 struct Options {
-  std::string file, format, pixel_size, unit, height_unit, summit_threshold, pressures, loads, table, report,
-      exact_boundary, exact_kernel, card, card_format;
-  double modulus = not_given, e1 = not_given, nu1 = not_given, e2 = not_given, nu2 = not_given, area = not_given,
-         confidence = not_given;
+  std::string file, summit_threshold, pressures, loads, table, report, exact_boundary, exact_kernel, card, card_format;
+  MapOptions map;             // how the map is read (map_options.hpp)
+  MaterialOptions material;   // --modulus, or --e1 --nu1 --e2 --nu2
+  double area = not_given, confidence = not_given;
   long long window = 1, ensemble = -1, bootstrap = -1, seed = 1, threads = 0, exact_points = 13;
   double exact_tolerance = not_given;
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
@@ -50,24 +51,6 @@ struct Options {
        overwrite = false;
   LawOptions law;  // a contact law beside the elastic curves (law_options.hpp)
 };
-
-topo::ReadOptions read_options(const Options& o) {
-  topo::ReadOptions read;
-  if (!o.format.empty() && !topo::parse_height_map_format(o.format, read.format))
-    usage("--format: unknown format '" + quote_text(o.format) + "' (" + topo::surface_format_names() + ")");
-  read.lateral_unit = o.unit;
-  read.height_unit = o.height_unit;
-  if (!o.pixel_size.empty()) {
-    const std::vector<std::string> parts = split(o.pixel_size, ',');
-    if (parts.empty() || parts.size() > 2) usage("--pixel-size: one length, or two (x,y)");
-    read.pixel_size_x = topo::parse_length(parts[0], o.unit);
-    read.pixel_size_y = parts.size() == 2 ? topo::parse_length(parts[1], o.unit) : read.pixel_size_x;
-    if (!(read.pixel_size_x > 0 && read.pixel_size_y > 0 && std::isfinite(read.pixel_size_x) &&
-          std::isfinite(read.pixel_size_y)))
-      usage("--pixel-size must be positive");
-  }
-  return read;
-}
 
 // What the analysis of a map needs [bytes], from the peak resident memory measured on the
 // maps of tests/data/surfaces (docs/reliability.md, "Memory"): 13 MB for the process, 78 bytes a
@@ -164,7 +147,7 @@ void write_named_card(const topo::SurfaceAnalysis& a, const Options& o, const CL
 
 int run_surface(const Options& o, const CLI::App& command) {
   topo::AnalysisOptions options;
-  options.read = read_options(o);
+  options.read = read_options(o.map);
   options.level = !o.no_level;
   options.summits.window = static_cast<int>(o.window);
   if (!o.summit_threshold.empty()) options.summits.min_drop = topo::parse_length(o.summit_threshold);
@@ -179,7 +162,7 @@ int run_surface(const Options& o, const CLI::App& command) {
   options.fit_heights = !o.no_height_fit;
   if (given(o.area) && !(o.area > 0)) usage("--area must be positive");
 
-  const double modulus = contact_modulus_option(o.modulus, o.e1, o.nu1, o.e2, o.nu2);
+  const double modulus = o.material.contact_modulus();
   const bool exact_options = !o.exact_boundary.empty() || !o.exact_kernel.empty() || given(o.exact_tolerance);
   if (o.exact && o.no_exact) usage("--exact and --no-exact: give one");
   if (exact_options && o.no_exact)
@@ -308,21 +291,7 @@ void add_surface_command(CLI::App& app) {
       ->required()
       ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
                              ""));
-  const char* reading = "Reading";
-  add_text(*command, "--format", o.format,
-           topo::surface_format_names() + " (default auto: by content, then extension)")
-      ->type_name("NAME")->group(reading);
-  add_text(*command, "--pixel-size", o.pixel_size,
-           "sampling interval with its unit, one or x,y (1.5um or 1.5um,2um); required when the file has none, "
-           "else it overrides the file's")
-      ->type_name("LENGTH[,LENGTH]")->group(reading);
-  add_text(*command, "--unit", o.unit,
-           "unit of x, y (and of heights unless --height-unit) for files without units (" +
-               topo::surface_formats_without_units() + "), and of a bare "
-           "--pixel-size")
-      ->type_name("UNIT")->group(reading);
-  add_text(*command, "--height-unit", o.height_unit, "unit of the heights in the file (overrides the file's)")
-      ->type_name("UNIT")->group(reading);
+  add_map_options(*command, o.map, "Reading");
   const char* analysis = "Analysis";
   command->add_flag("--no-level", o.no_level, "do not subtract the least-squares plane")->group(analysis);
   add_whole_number(*command, "--summit-window", o.window, 1, 1000,
@@ -346,13 +315,7 @@ void add_surface_command(CLI::App& app) {
   command->add_flag("--no-height-fit", o.no_height_fit, "fit the summit heights only")->group(analysis);
   add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(analysis);
   const char* contact = "Contact curves (SI units)";
-  add_number(*command, "--modulus", o.modulus, "contact modulus E* [Pa] (plane strain): gives the contact curves")
-      ->type_name("PA")->group(contact);
-  add_number(*command, "--e1", o.e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)")
-      ->type_name("PA")->group(contact);
-  add_number(*command, "--nu1", o.nu1, "Poisson's ratio of body 1")->group(contact);
-  add_number(*command, "--e2", o.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group(contact);
-  add_number(*command, "--nu2", o.nu2, "Poisson's ratio of body 2")->group(contact);
+  add_material_options(*command, o.material, "contact modulus E* [Pa] (plane strain): gives the contact curves", contact);
   add_text(*command, "--pressure", o.pressures,
            "nominal pressures of interest [Pa], comma-separated (default E* x 1e-5,1e-4,1e-3)")
       ->type_name("PA[,PA...]")->group(contact);

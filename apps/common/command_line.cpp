@@ -171,6 +171,20 @@ double contact_modulus_option(double modulus, double e1, double nu1, double e2, 
   }
 }
 
+bool MaterialOptions::any_given() const {
+  return given(modulus) || given(e1) || given(nu1) || given(e2) || given(nu2);
+}
+
+void add_material_options(CLI::App& command, MaterialOptions& material, const std::string& modulus_help,
+                          const std::string& group) {
+  add_number(command, "--modulus", material.modulus, modulus_help)->type_name("PA")->group(group);
+  add_number(command, "--e1", material.e1, "Young's modulus of body 1 [Pa] (with --nu1 --e2 --nu2, instead of --modulus)")
+      ->type_name("PA")->group(group);
+  add_number(command, "--nu1", material.nu1, "Poisson's ratio of body 1")->group(group);
+  add_number(command, "--e2", material.e2, "Young's modulus of body 2 [Pa]")->type_name("PA")->group(group);
+  add_number(command, "--nu2", material.nu2, "Poisson's ratio of body 2")->group(group);
+}
+
 double number_from_text(const std::string& text, const std::string& what) {
   double value = 0;
   if (!read_double(text, value)) throw CLI::ValidationError(what + ": '" + quote_text(text) + "' is not a number");

@@ -60,6 +60,18 @@ double number_from_text(const std::string& text, const std::string& what);
 // error.
 double contact_modulus_option(double modulus, double e1, double nu1, double e2, double nu2);
 
+// The material options of every command that takes one (contact, surface, exact-contact), each
+// NaN when not given: --modulus (its help `modulus_help`: what the command does with it), or
+// --e1 --nu1 --e2 --nu2, in `group`.
+struct MaterialOptions {
+  double modulus = 0.0 / 0.0, e1 = 0.0 / 0.0, nu1 = 0.0 / 0.0, e2 = 0.0 / 0.0, nu2 = 0.0 / 0.0;
+  // contact_modulus_option of the five: NaN where none is given
+  double contact_modulus() const { return contact_modulus_option(modulus, e1, nu1, e2, nu2); }
+  bool any_given() const;  // any of the five
+};
+void add_material_options(CLI::App& command, MaterialOptions& material, const std::string& modulus_help,
+                          const std::string& group);
+
 // "<program> <command>" of a (sub)command, for messages.
 std::string command_name(const CLI::App& command);
 // One line on standard error: "<program> <command>: warning: <message>" and "...: <message>".
