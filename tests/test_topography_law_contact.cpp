@@ -62,7 +62,7 @@ TEST(LawContact, HertzIsEachFitsElasticCurve) {
     const t::LawContact law = t::compare_law(*a.contact, a.summits, model, "test", maker("hertz"));
     ASSERT_TRUE(law.served) << t::to_string(model) << ": " << law.note;
     EXPECT_TRUE(std::isnan(law.plasticity_index));
-    EXPECT_EQ(law.model, t::to_string(model));
+    EXPECT_EQ(law.fit, model);
     ASSERT_EQ(law.at_pressures.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
       EXPECT_LT(std::fabs(law.area_over_elastic[k] - 1), 1e-6) << t::to_string(model) << " " << k;

@@ -620,7 +620,7 @@ TEST(TopographyReport, ClosestModelOnlyWhereEnoughSummitsAreInContact) {
   for (std::size_t& n : few.measured_summits_in_contact) n = std::max<std::size_t>(n, t::min_summits_to_compare);
   few.measured_summits_in_contact[0] = t::min_summits_to_compare - 1;
   t::conclude_contact(few);
-  EXPECT_FALSE(few.closest.empty());
+  EXPECT_TRUE(few.closest.has_value());
   EXPECT_NE(few.headline.find("Closest to GW on the measured summits"), std::string::npos) << few.headline;
   EXPECT_NE(few.headline.find("only " + std::to_string(t::min_summits_to_compare - 1) +
                               " measured summits in contact: too few to compare models"),
@@ -628,21 +628,21 @@ TEST(TopographyReport, ClosestModelOnlyWhereEnoughSummitsAreInContact) {
       << few.headline;
   // the closest is the nearest at the pressures compared only
   double best = INFINITY;
-  std::string nearest;
+  std::optional<t::ContactModelKind> nearest;
   for (const t::ModelContact& m : few.models) {
     if (!m.served || !t::is_fitted(m.kind)) continue;
     double worst = 0;
     for (std::size_t k = 1; k < few.pressures.size(); ++k) worst = std::max(worst, std::fabs(std::log(m.stiffness_over_measured[k])));
     if (worst < best) {
       best = worst;
-      nearest = m.label;
+      nearest = m.kind;
     }
   }
   EXPECT_EQ(few.closest, nearest);
 
   for (std::size_t& n : few.measured_summits_in_contact) n = 1;
   t::conclude_contact(few);
-  EXPECT_EQ(few.closest, "");
+  EXPECT_FALSE(few.closest.has_value());
   EXPECT_EQ(few.headline.rfind("No model is named closest to GW on the measured summits: at ", 0), 0u) << few.headline;
   EXPECT_NE(few.headline.find("only 1 measured summit in contact"), std::string::npos) << few.headline;
   EXPECT_EQ(few.headline.find("Closest to"), std::string::npos) << few.headline;

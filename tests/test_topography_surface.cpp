@@ -281,7 +281,7 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
     // no model is named closest there; the X3P map has enough at both
     EXPECT_EQ(a.contact->measured_summits_in_contact, c.in_contact) << c.file;
     const bool enough = c.in_contact.front() >= t::min_summits_to_compare;
-    EXPECT_EQ(a.contact->closest.empty(), !enough) << c.file << ": " << a.contact->headline;
+    EXPECT_EQ(a.contact->closest.has_value(), enough) << c.file << ": " << a.contact->headline;
     EXPECT_EQ(a.contact->headline.find("only 1 measured summit in contact: too few to compare models") != std::string::npos,
               !enough)
         << a.contact->headline;

@@ -473,7 +473,8 @@ void add_exact_contact_command(CLI::App& app) {
   add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(solver);
   add_quiet_option(*command, &o.quiet)->group(solver);
   const char* output = "Output";
-  command->add_flag("--json", o.json, "write JSON (schema asperity-exact-contact/1) instead of CSV")->group(output);
+  command->add_flag("--json", o.json,
+                    std::string("write JSON (schema ") + topo::exact_contact_json_schema + ") instead of CSV")->group(output);
   add_text(*command, "--fields", o.fields,
            "write each step's pressure and gap fields as 16-bit PGM images into DIR (step-K-pressure.pgm, "
            "step-K-gap.pgm: white at the largest value, first row at the top)")

@@ -119,7 +119,7 @@ std::string summary_text(topo::SurfaceAnalysis& analysis) {
 // none named: refused, naming the exact contact's card instead.
 void write_named_card(const topo::SurfaceAnalysis& a, const Options& o, const CLI::App& command, CardFormat format) {
   const topo::NextSteps next = topo::next_steps(a);
-  const topo::ModelContact* curves = next.model_named && a.contact ? a.contact->find(next.model) : nullptr;
+  const topo::ModelContact* curves = next.model && a.contact ? a.contact->find(*next.model) : nullptr;
   if (!curves || !curves->served)
     throw Error("--card: " + next.why + (next.exact_command.empty() ? "" : "; the map's exact contact has a card: " +
                                                                          next.exact_command));
@@ -140,7 +140,7 @@ void write_named_card(const topo::SurfaceAnalysis& a, const Options& o, const CL
   OutputTransaction outputs(plan);
   outputs.stage(o.card, out.str());
   outputs.commit();
-  note(command, "--card " + o.card + ": " + next.model + ", " + std::to_string(card.points.size()) +
+  note(command, "--card " + o.card + ": " + topo::contact_model_name(next.model) + ", " + std::to_string(card.points.size()) +
                     " points from " + format_double(c.pressure_min) + " to " + format_double(c.pressure_max) +
                     " Pa, overclosure from the " + datum_name(datum) + " datum (the same card: " + next.card_command + ")");
 }

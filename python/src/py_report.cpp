@@ -55,7 +55,9 @@ void bind_analysis_options(py::module_& m) {
                               "`asperity contact` command, the Python call and its card's command; the map's exact-contact\n"
                               "command; where no model is named, why and what to use instead.")
       .def_readonly("model_named", &topo::NextSteps::model_named)
-      .def_readonly("model", &topo::NextSteps::model, "The named model (\"weibull-tail\"), empty when none.")
+      .def_property_readonly(
+          "model", [](const topo::NextSteps& n) { return topo::contact_model_name(n.model); },
+          "The named model (\"weibull-tail\"), empty when none.")
       .def_readonly("why", &topo::NextSteps::why)
       .def_readonly("contact_command", &topo::NextSteps::contact_command)
       .def_readonly("python", &topo::NextSteps::python, "Python code building the named model's ContactModel.")

@@ -211,11 +211,13 @@ void bind_contact_comparison(py::module_& m) {
             return compared;
           },
           "At each pressure: at least MIN_SUMMITS_TO_COMPARE measured summits in contact, so models are compared there.")
-      .def_readonly("closest", &topo::ContactComparison::closest,
-                    "The fitted model nearest the measured summits at the pressures compared ('' where none is).")
+      .def_property_readonly(
+          "closest", [](const topo::ContactComparison& c) { return topo::contact_model_name(c.closest); },
+          "The fitted model nearest the measured summits at the pressures compared ('' where none is).")
       .def_readonly("headline", &topo::ContactComparison::headline)
       .def_readonly("exact_method", &topo::ContactComparison::exact_method, "How the exact contact was solved.")
-      .def_readonly("closest_to_exact", &topo::ContactComparison::closest_to_exact)
+      .def_property_readonly("closest_to_exact",
+                             [](const topo::ContactComparison& c) { return topo::contact_model_name(c.closest_to_exact); })
       .def_readonly("exact_headline", &topo::ContactComparison::exact_headline)
       .def(
           "find",

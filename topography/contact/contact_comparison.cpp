@@ -65,7 +65,7 @@ PhysicalState reference_state(double p, double mean_gap, double area_fraction, d
 }
 
 void conclude_against_exact(ContactComparison& comparison) {
-  comparison.closest_to_exact.clear();
+  comparison.closest_to_exact.reset();
   comparison.exact_headline.clear();
   const ModelContact* exact = comparison.find(ContactModelKind::exact);
   const std::size_t points = comparison.map_nx * comparison.map_ny;
@@ -100,7 +100,7 @@ void conclude_against_exact(ContactComparison& comparison) {
     if (model.kind != ContactModelKind::measured_summits_own_radii && worst < best) {  // NaN never wins
       best = worst;
       closest = &model;
-      comparison.closest_to_exact = model.label;
+      comparison.closest_to_exact = model.kind;
     }
   }
   std::ostringstream text;
@@ -315,7 +315,7 @@ void conclude_contact(ContactComparison& comparison) {
   // the fitted model whose worst stiffness ratio over the pressures compared (enough measured
   // summits in contact: compared_at) is nearest 1; none where no pressure is compared
   double best = std::numeric_limits<double>::infinity();
-  comparison.closest.clear();
+  comparison.closest.reset();
   const ModelContact* closest_model = nullptr;
   for (const ModelContact& model : comparison.models) {
     if (!model.served || !is_fitted(model.kind)) continue;
@@ -329,7 +329,7 @@ void conclude_contact(ContactComparison& comparison) {
     if (any && worst < best) {
       best = worst;
       closest_model = &model;
-      comparison.closest = model.label;
+      comparison.closest = model.kind;
     }
   }
   comparison.headline = measured_headline(comparison, closest_model, best);
@@ -352,6 +352,8 @@ namespace {
 constexpr const char* contact_model_kind_names[] = {
     "measured-summits", "measured-summits-own-radii", "gaussian-moments", nullptr, nullptr, nullptr, "persson", "exact"};
 }  // namespace
+
+std::string contact_model_name(const std::optional<ContactModelKind>& kind) { return kind ? to_string(*kind) : ""; }
 
 const char* to_string(ContactModelKind kind) {
   switch (kind) {

@@ -58,7 +58,6 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   if (summits.list.size() < 2) throw Error("contact law: too few summits for their heights' standard deviation");
   LawContact out;
   out.fit = model;
-  out.model = to_string(model);
   out.model_reason = model_reason;
   out.surface = elastic->surface;
   out.elastic_at_pressures = elastic->at_pressures;

@@ -15,7 +15,7 @@ std::string exact_contact_json(const HeightMap& map, bool leveled, const ExactCo
   for (const ContactStep& step : steps) steps_json.push_back(record_json(step));
   const double mean_summit_height = solver.mean_summit_height();
   const json document = {
-      {"schema", "asperity-exact-contact/1"},
+      {"schema", exact_contact_json_schema},
       {"map",
        {{"source", map.source},
         {"nx", map.nx},

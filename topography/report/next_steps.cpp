@@ -88,7 +88,7 @@ NextSteps next_steps(const SurfaceAnalysis& a) {
   }
   next.model_named = v.named;
   if (v.named) {
-    next.model = to_string(v.model);
+    next.model = contact_model_kind(v.model);
     next.why = std::string("the verdict names ") + describe(v.model) + " for the contact (the summit heights' fit)";
   } else {
     next.why = "the verdict names no model for the contact (its reasons are in the verdict)";
@@ -100,14 +100,14 @@ NextSteps next_steps(const SurfaceAnalysis& a) {
   }
   const ContactComparison& c = *a.contact;
   next.exact_command = exact_command(a, c);
-  const ModelContact* curves = v.named ? c.find(to_string(v.model)) : nullptr;
+  const ModelContact* curves = v.named ? c.find(contact_model_kind(v.model)) : nullptr;
   if (curves && curves->served) {
     const std::string options = surface_options(curves->surface);
     next.contact_command = "asperity contact" + options + " --datum mean-summit --sweep pressure:" +
                            pressure_text(c.pressure_min) + ":" + pressure_text(c.pressure_max) + ":9";
     next.python = python_call(curves->surface);
     next.card_command = "asperity contact" + options + " --export calculix --pressure-range " + pressure_text(c.pressure_min) +
-                        ":" + pressure_text(c.pressure_max) + " > " + shell_word(next.model + ".inp");
+                        ":" + pressure_text(c.pressure_max) + " > " + shell_word(contact_model_name(next.model) + ".inp");
     next.text = "Next: " + next.why + ". Its curves in your code: `" + next.contact_command + "`; in Python:\n\n" +
                 next.python + "\n\nIts pressure-overclosure card for CalculiX: `" + next.card_command +
                 "` (or `asperity surface ... --card FILE`). The map's own exact contact, what every model is judged "

@@ -470,13 +470,13 @@ ordered_json contact_json(const ContactComparison& c) {
                           "uncertainty of every ratio to it"},
                          {"stiffness_relative", c.measured_stiffness_spread},
                          {"mean_separation_m", c.measured_separation_spread}}},
-                       {"closest_fitted_model", c.closest},
+                       {"closest_fitted_model", contact_model_name(c.closest)},
                        {"headline", c.headline},
                        {"references",
                         {{"persson", c.options.persson},
                          {"exact", c.find(ContactModelKind::exact) != nullptr},
                          {"exact_method", c.exact_method},
-                         {"closest_to_exact", c.closest_to_exact},
+                         {"closest_to_exact", contact_model_name(c.closest_to_exact)},
                          {"exact_headline", c.exact_headline}}}};
   ordered_json sampling_contact = ordered_json::array();
   for (const SamplingContact& r : c.sampling)
@@ -503,7 +503,7 @@ ordered_json law_json(const LawContact& law, const ContactComparison& c) {
   for (const PhysicalState& st : law.curve) curve.push_back(state_json(st));
   return ordered_json{
       {"law", law.law},
-      {"model", law.model},
+      {"model", to_string(law.fit)},
       {"model_reason", law.model_reason},
       {"plasticity",
        {{"summit_height_standard_deviation_m", number(law.summit_height_sd)},
@@ -559,7 +559,7 @@ std::string analysis_json(const SurfaceAnalysis& a) {
     if (a.law) j["contact"]["law"] = law_json(*a.law, *a.contact);
   }
   const NextSteps next = next_steps(a);
-  j["next_steps"] = {{"model_named", next.model_named}, {"model", next.model},
+  j["next_steps"] = {{"model_named", next.model_named}, {"model", contact_model_name(next.model)},
                      {"why", next.why},                 {"contact_command", next.contact_command},
                      {"python", next.python},           {"card_command", next.card_command},
                      {"exact_command", next.exact_command}, {"instead", next.instead},
@@ -614,7 +614,7 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
   }
   if (a.law) {
     const LawContact& law = *a.law;
-    out << "  law " << law.law << " on the " << law.model << " fit (" << law.model_reason << "): sigma_s " << g(law.summit_height_sd)
+    out << "  law " << law.law << " on the " << to_string(law.fit) << " fit (" << law.model_reason << "): sigma_s " << g(law.summit_height_sd)
         << " m, R " << g(law.summit_radius) << " m, ";
     if (law.adhesive)
       out << "length scale " << g(law.adhesion_length) << " m, adhesion parameter sigma_s/delta_c " << g(law.adhesion_parameter, 3)
@@ -759,7 +759,7 @@ void markdown_exact(std::ostream& md, const ContactComparison& c) {
 
 // the contact law's curves beside the elastic ones
 void markdown_law(std::ostream& md, const LawContact& law, const ContactComparison& c, bool plots) {
-  md << "\n### Under the contact law: " << law.law << "\n\nThe law's rough-surface curves on the " << law.model
+  md << "\n### Under the contact law: " << law.law << "\n\nThe law's rough-surface curves on the " << to_string(law.fit)
      << " fit (" << law.model_reason << "), with the measured summit density and radius, next to the same fit's "
         "elastic (Hertz) curves above.\n\n| | |\n|---|---|\n";
   md << "| σs: standard deviation of the measured summit heights | " << g(law.summit_height_sd) << " m |\n";

@@ -29,6 +29,7 @@
 // models); pressures are nominal (load / A0), stiffness per nominal area [N/m^3] as well.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,9 @@ inline constexpr ContactModelKind all_contact_model_kinds[] = {
 // "weibull-bounded", "persson", "exact"
 const char* to_string(ContactModelKind kind);
 bool parse_contact_model_kind(const std::string& name, ContactModelKind& kind) noexcept;  // to_string's inverse
+// A curve named, or none (a comparison's closest, NextSteps::model): to_string's name, "" for none
+// (JSON, the summary, Python).
+std::string contact_model_name(const std::optional<ContactModelKind>& kind);
 ContactModelKind contact_model_kind(HeightModel model) noexcept;  // a fitted height model's curve
 bool is_fitted(ContactModelKind kind) noexcept;  // a law fitted to the map: gaussian-moments and the height models
 
@@ -148,15 +152,15 @@ struct ContactComparison {
     return k < measured_summits_in_contact.size() && measured_summits_in_contact[k] >= min_summits_to_compare;
   }
   // The fitted model nearest to the measured summits at the pressures of interest compared
-  // (compared_at; largest |ln stiffness ratio| smallest), empty where none is; and the headline in
+  // (compared_at; largest |ln stiffness ratio| smallest), none where none is; and the headline in
   // words, which says how many summits are in contact at each pressure and why no model is named
   // where too few are.
-  std::string closest;
+  std::optional<ContactModelKind> closest;
   std::string headline;
   // Against the exact contact (when solved): how it was solved, the curve nearest to it (of all,
   // the measured summits and Persson included) and the headline in words.
   std::string exact_method;
-  std::string closest_to_exact;
+  std::optional<ContactModelKind> closest_to_exact;
   std::string exact_headline;  // or, where the map's size alone left it out, that and how to ask
   std::size_t map_nx = 0, map_ny = 0;  // the map add_reference_contact was given (0: none)
   const ModelContact* find(ContactModelKind kind) const;

@@ -42,8 +42,7 @@ using LawSceneMaker = std::function<SceneLaw(const RoughSurface& surface, double
 
 struct LawContact {
   std::string law;                 // its name (asperity::contact_law_name)
-  HeightModel fit = HeightModel::gaussian;  // the fit the curves are of
-  std::string model;               // its name, to_string(fit): gaussian, weibull-tail, weibull-bounded
+  HeightModel fit = HeightModel::gaussian;  // the fit the curves are of (to_string: its name in the outputs)
   std::string model_reason;        // why that fit
   RoughSurface surface;            // its surface (the elastic curves' too)
   // the plasticity index from the measured summits

@@ -4,6 +4,7 @@
 // model is judged against); where no model is named, why, and what to use instead. The summary,
 // report.md and report.json end with it.
 #pragma once
+#include <optional>
 #include <string>
 
 #include "asperity/topography/analysis.hpp"
@@ -12,7 +13,7 @@ namespace asperity::topography {
 
 struct NextSteps {
   bool model_named = false;     // the verdict named a model for the contact
-  std::string model;            // its name ("weibull-tail"), empty when none
+  std::optional<ContactModelKind> model;  // that model (contact_model_name: "weibull-tail"), none when none
   std::string why;              // why this model, or why none is named
   std::string contact_command;  // `asperity contact ...` on the model's surface (empty: none named, or no E*)
   std::string python;           // the same surface and model in Python
