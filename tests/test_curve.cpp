@@ -347,3 +347,95 @@ TEST(Curve, EveryServedShapeBuildsWhereLnX0IsSubnormal) {
     EXPECT_TRUE(std::isfinite(curve.log_value(3, 0.04))) << shape;
   }
 }
+
+namespace {
+
+// Separations where a curve's pieces meet or end: each segment's ends and middle (from the
+// grid curve's table range), s near 0 on both sides, the all-touching segment, the series
+std::vector<double> separations_across(const Curve& curve) {
+  std::vector<double> points = {-1e4, -300, -20, -3.01, -3, -2.99, -1, -0.1, -1e-3, -1e-9, -1e-21, -1e-300, 0,
+                                1e-300, 1e-21, 1e-9, 1e-3, 0.1, 0.5, 1, 1.5, 2, 3, 5, 10, 40};
+  const double lo = curve.table_min_separation(), hi = curve.table_max_separation();
+  for (double end : {lo, hi})
+    for (double factor : {1 - 1e-12, 1.0, 1 + 1e-12, 0.999, 1.001, 2.0}) points.push_back(end * factor);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 200; ++i) points.push_back(lo + (hi - lo) * unit(rng));
+  return points;
+}
+
+}  // namespace
+
+// Table::direct_curve answers from the table's nodes without a grid: what curve()'s grid is fitted
+// to, so within that grid's error of curve() everywhere, and curve()'s own answers outside the
+// grid (the series, s = 0, the bounded side at s >= 0, NaN); a node's own knots at a node.
+TEST(Curve, DirectCurveAnswersAsTheGridCurve) {
+  struct Case {
+    Distribution distribution;
+    Side side;
+    double shape;
+  };
+  const Case cases[] = {{Distribution::weibull, Side::tail, 0.7},      {Distribution::weibull, Side::tail, 1.73},
+                        {Distribution::weibull, Side::tail, 2.0},      {Distribution::weibull, Side::tail, 15.3},
+                        {Distribution::weibull, Side::tail, 0.5},      {Distribution::weibull, Side::tail, 19.9},
+                        {Distribution::weibull, Side::bounded, 0.7},   {Distribution::weibull, Side::bounded, 3.0},
+                        {Distribution::weibull, Side::bounded, 19.316}, {Distribution::weibull, Side::bounded, 18.7},
+                        {Distribution::gaussian, Side::tail, 0}};
+  double worst = 0;
+  for (const Case& c : cases) {
+    const Curve grid = table().curve(c.distribution, c.side, c.shape);
+    const Curve direct = table().direct_curve(c.distribution, c.side, c.shape);
+    EXPECT_EQ(direct.grid_intervals(), 0u);
+    EXPECT_EQ(direct.shape(), grid.shape());
+    EXPECT_EQ(direct.table_max_separation(), grid.table_max_separation());
+    for (double s : separations_across(grid)) {
+      double from_grid[order_count], from_direct[order_count];
+      grid.log_values(s, from_grid);
+      direct.log_values(s, from_direct);
+      for (int k = 0; k < order_count; ++k) {
+        const double a = from_grid[k], b = from_direct[k];
+        if (std::isnan(a) || std::isinf(a)) {
+          EXPECT_TRUE(same_bits(a, b)) << c.shape << " order " << k << " s " << s;
+          continue;
+        }
+        const double difference = std::fabs(a - b) / (1 + std::fabs(a));
+        worst = std::max(worst, difference);
+        EXPECT_LE(difference, 2e-13) << to_string(c.side) << " shape " << c.shape << " order " << k << " s " << s
+                                     << ": grid " << a << " direct " << b;
+        EXPECT_TRUE(same_bits(direct.log_value(k, s), b));
+        EXPECT_EQ(direct.value(k, s), std::exp(b));
+      }
+    }
+  }
+  std::printf("direct against grid curves: worst |ln X difference| / (1 + |ln X|) %.2e\n", worst);
+  // the batch and contact paths answer as the scalar one (no grid: every query off it)
+  const Curve direct = table().direct_curve(Distribution::weibull, Side::tail, 1.73);
+  const double separations[] = {-2.0, 0.0, 0.4, 1.3, 9.0};
+  double batch[5], logs[4], values[4];
+  direct.log_value_batch(2, separations, batch, 5);
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(same_bits(batch[i], direct.log_value(2, separations[i])));
+  direct.contact_orders(1.3, logs, values);
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(logs[k], direct.log_value(k, 1.3)));
+  double state[5];
+  EXPECT_FALSE(direct.contact_products(1.3, 1, 1, 1, 1, state));  // no grid: the caller's slow path
+}
+
+TEST(Curve, DirectCurveOutlivesItsTableAndRefusesAsCurveDoes) {
+  Curve kept;
+  double expected;
+  {
+    const Table local = Table::open(ASPERITY_TEST_TABLE);
+    kept = local.direct_curve(Distribution::weibull, Side::bounded, 2.345);
+    expected = kept.log_value(3, -0.7);
+  }
+  EXPECT_EQ(kept.log_value(3, -0.7), expected);
+  EXPECT_TRUE(std::isnan(kept.log_value(3, std::nan(""))));
+  EXPECT_EQ(kept.log_value(3, 0.5), -INFINITY);  // the bounded side out of contact
+  EXPECT_THROW(table().direct_curve(Distribution::weibull, Side::tail, 0.2), Error);
+  EXPECT_THROW(table().direct_curve(Distribution::weibull, Side::tail, std::nan("")), Error);
+  EXPECT_THROW(table().direct_curve(Distribution::gaussian, Side::bounded, 2), Error);
+  // orders not asked for answer NaN, as curve()'s
+  const Curve two = table().direct_curve(Distribution::weibull, Side::tail, 2.5, order_bit(2) | order_bit(3));
+  EXPECT_TRUE(std::isnan(two.log_value(0, 0.5)));
+  EXPECT_FALSE(std::isnan(two.log_value(3, 0.5)));
+}

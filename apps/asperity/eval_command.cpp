@@ -19,6 +19,7 @@ namespace asperity::cli {
 void add_eval_command(CLI::App& app) {
   struct Options {
     std::string table, input;
+    bool grid = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -28,6 +29,10 @@ void add_eval_command(CLI::App& app) {
       ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string("an empty path") : std::string(); },
                              ""));
   add_table_option(*command, options->table);
+  command->add_flag("--grid", options->grid,
+                    "build each shape's lookup grid (2-60 ms a shape between the table's nodes, then about 10 ns\n"
+                    "a row) instead of answering from the nodes (about 2 us a shape, 2 us a row): for files of few\n"
+                    "shapes and many rows; the two agree within 2e-13 of ln X");
   add_quiet_option(*command);
   command->footer(
       "Input: CSV with the header dist,side,shape,sep; dist is weibull or gaussian, side tail or\n"
@@ -43,7 +48,7 @@ void add_eval_command(CLI::App& app) {
     const Table table = open_table(options->table);
     std::uint64_t bad = 0;
     if (options->input.empty() || options->input == "-") {
-      bad = eval_csv(table, std::cin, std::cout, std::cerr);
+      bad = eval_csv(table, std::cin, std::cout, std::cerr, options->grid);
       if (std::ferror(stdin)) throw Error("reading standard input failed");
     } else {
       std::error_code code;
@@ -51,7 +56,7 @@ void add_eval_command(CLI::App& app) {
         throw Error("cannot read '" + quote_text(options->input) + "': it is a directory");
       std::ifstream input(options->input, std::ios::binary);
       if (!input) throw Error("cannot read '" + quote_text(options->input) + "': " + std::strerror(errno));
-      bad = eval_csv(table, input, std::cout, std::cerr);
+      bad = eval_csv(table, input, std::cout, std::cerr, options->grid);
     }
     // Say why now: errno of the failed write is gone once the table is closed.
     if (!std::cout || std::ferror(stdout)) throw Error(std::string("writing the output failed: ") + std::strerror(errno));

@@ -15,7 +15,11 @@ namespace asperity::cli {
 // Returns the number of bad rows (a bad or missing header counts as one and stops). Stops early
 // when `output` fails (the caller reports the write error). Throws asperity::Error when reading
 // `input` fails.
-std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors);
+// Each shape's curve answers from the table's shape nodes (Table::direct_curve: microseconds a
+// shape), or with lookup_grid from a lookup grid built for it (Table::curve: milliseconds a shape
+// between nodes, nanoseconds a row); the two agree within 2e-13 of ln X.
+std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& output, std::ostream& errors,
+                       bool lookup_grid = false);
 
 inline constexpr std::size_t max_line_bytes = 65536;
 

@@ -175,7 +175,11 @@ class Curve {
   double grid_error() const noexcept;
 
  private:
+  friend class Table;
   void build(detail::CompactCurve& compact, const detail::GridReference& reference, const CurveOptions& options);
+  // A curve without a lookup grid: `answer` answers every query (Table::direct_curve)
+  static Curve without_grid(detail::CompactCurve answer);
+  void adopt(std::shared_ptr<detail::CurveData> data, detail::CurveLookup lookup, bool contact_records);
   // off the grid: the table's own layout, the series, the values at 0 (not inlined: rare)
   double log_value_outside(int twice_order, double separation) const noexcept;
   void batch(int twice_order, const double* separations, double* out, std::size_t count, InstructionSet isa,

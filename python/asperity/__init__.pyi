@@ -151,6 +151,8 @@ class Table:
     def default_search_paths() -> List[str]: ...
     def curve(self, distribution: DistributionLike, side: SideLike = "tail", shape: Optional[float] = None,
               order_mask: int = ..., *, options: Optional[CurveOptions] = None) -> Curve: ...
+    def direct_curve(self, distribution: DistributionLike, side: SideLike = "tail", shape: Optional[float] = None,
+                     order_mask: int = ...) -> Curve: ...
     @property
     def sets(self) -> List[CurveSet]: ...
     @property
@@ -493,6 +495,7 @@ class _LawCurvesKeywords(TypedDict, total=False):
     nominal_area: float
     separation: Tuple[float, float]
     max_rel_error: float
+    approach_separation: float
     hardness: float
     yield_strength: float
     poisson: float

@@ -70,6 +70,19 @@ void bind_table(py::module_& m) {
           "(bit 1 << twice_order) keeps only the orders needed (less memory; NaN for the others). options: a\n"
           "CurveOptions for the lookup grid (None: the table's, 1e-13 over the whole range or a scene table's).\n"
           "Raises asperity.Error for a shape outside the table, a missing set or bad options.")
+      .def(
+          "direct_curve",
+          [](const Table& table, const DistributionName& distribution, const SideName& side, std::optional<double> shape,
+             unsigned order_mask) {
+            const Distribution d = to_distribution(distribution.object);
+            if (!shape && d == Distribution::weibull) throw py::value_error("a Weibull curve needs its shape");
+            return table.direct_curve(d, to_side(side.object), shape.value_or(2.0), order_mask);
+          },
+          "distribution"_a, "side"_a = "tail", "shape"_a = py::none(), "order_mask"_a = Curve::all_orders,
+          "The same curve as curve() answered from the table's shape nodes directly, without a lookup grid:\n"
+          "made in microseconds where curve() between grid nodes takes 2-60 ms, each query about a microsecond\n"
+          "instead of nanoseconds, the same answers within curve()'s grid tolerance (2e-13 of ln X). For many\n"
+          "distinct shapes with a few queries each; curve() for many queries at one shape.")
       .def_property_readonly(
           "sets",
           [](const py::object& self) {

@@ -433,6 +433,27 @@ def test_curve_options(table):
                                                                           grid_max_separation=0.0))
 
 
+def test_direct_curve(table):
+    """Table.direct_curve: the nodes answered without a grid, within curve()'s grid tolerance of it."""
+    s = np.concatenate([np.linspace(-4.0, 6.0, 1001), [-1e-300, 0.0, 1e-300, 40.0]])
+    for side, shape in (("tail", 1.73), ("tail", 2.0), ("bounded", 7.1)):
+        grid, direct = table.curve("weibull", side, shape), table.direct_curve("weibull", side, shape)
+        assert direct.grid_intervals == 0 and direct.shape == shape
+        for twice_order in range(6):
+            a, b = grid.log_value(twice_order, s), direct.log_value(twice_order, s)
+            finite = np.isfinite(a)
+            assert np.array_equal(np.isfinite(b), finite) and np.array_equal(a[~finite], b[~finite])
+            assert np.all(np.abs(a[finite] - b[finite]) <= 2e-13 * (1 + np.abs(a[finite])))
+    gaussian = table.direct_curve("gaussian")
+    assert gaussian.value(3, 0.5) == pytest.approx(table.curve("gaussian").value(3, 0.5), rel=1e-12)
+    only_load = table.direct_curve("weibull", "tail", 2.5, 1 << 3)
+    assert math.isnan(only_load.value(0, 0.5)) and only_load.value(3, 0.5) > 0
+    with pytest.raises(asperity.Error, match="outside the table's range"):
+        table.direct_curve("weibull", "tail", 1e3)
+    with pytest.raises(ValueError, match="needs its shape"):
+        table.direct_curve("weibull", "tail")
+
+
 def test_height_scale_from_rms():
     c2 = math.sqrt(1 - math.pi / 4)  # a = 2: Gamma(2) - Gamma(3/2)^2
     assert close(asperity.height_scale_from_rms("weibull", 2.0, 1e-6), 1e-6 / c2, 1e-14)

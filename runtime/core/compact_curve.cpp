@@ -26,10 +26,18 @@ double exact_log_value_at_zero(Distribution distribution, Side side, double shap
   return boost::math::lgamma(1 + order / shape);
 }
 
+// The quintic of the interval between knot[0..2] and knot[3..5] (H, dH/du, d2H/du2; u steps of
+// `step`) in the power basis of x in [0, 1]
+void hermite_to_power_basis(const double* knot, double step, double* out) {
+  const double left[3] = {knot[0], knot[1] * step, knot[2] * step * step};
+  const double right[3] = {knot[3], knot[4] * step, knot[5] * step * step};
+  quintic_hermite_coefficients(left, right, out);
+}
+
 }  // namespace
 
 CompactCurve::CompactCurve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
-                           const double* knot_data, unsigned order_mask)
+                           unsigned order_mask)
     : distribution_(distribution), side_(side), shape_(distribution == Distribution::gaussian ? 2.0 : shape),
       order_mask_(order_mask & ((1u << order_count) - 1)) {
   if (order_mask_ == 0) throw Error("a curve needs at least one order");
@@ -49,28 +57,6 @@ CompactCurve::CompactCurve(Distribution distribution, Side side, double shape, c
   }
   table_min_ = maps_[segments > 1 ? 1 : 0].s_lo;
   table_max_ = maps_.back().s_hi;
-
-  // Hermite data (H, dH/du, d2H/du2 at each knot) -> the quintic of each interval in x in [0, 1].
-  std::ptrdiff_t held = 0;
-  for (int order = 0; order < order_count; ++order)
-    order_offset_[order] = has_order(order) ? total_intervals_ * 6 * held++ : -1;
-  coefficients_.resize(static_cast<std::size_t>(total_intervals_) * 6 * held);
-  const std::ptrdiff_t total_knots = total_intervals_ + static_cast<std::ptrdiff_t>(segments);
-  for (int order = 0; order < order_count; ++order) {
-    if (!has_order(order)) continue;
-    std::ptrdiff_t knot_offset = 0;
-    for (std::size_t i = 0; i < segments; ++i) {
-      const double step = 1 / inverse_step_[i];
-      const double* knot = knot_data + (order * total_knots + knot_offset) * 3;
-      double* out = &coefficients_[order_offset_[order] + first_[i] * 6];
-      for (std::ptrdiff_t j = 0; j < intervals_[i]; ++j, knot += 3, out += 6) {
-        const double left[3] = {knot[0], knot[1] * step, knot[2] * step * step};
-        const double right[3] = {knot[3], knot[4] * step, knot[5] * step * step};
-        quintic_hermite_coefficients(left, right, out);
-      }
-      knot_offset += layout[i].knots;
-    }
-  }
   for (int order = 0; order < order_count; ++order) {
     const double n = order_of(order);
     if (side == Side::bounded) series_[order] = bounded_contact_series(shape_, n);
@@ -80,7 +66,43 @@ CompactCurve::CompactCurve(Distribution distribution, Side side, double shape, c
   }
 }
 
+CompactCurve::CompactCurve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
+                           const double* knot_data, unsigned order_mask)
+    : CompactCurve(distribution, side, shape, layout, order_mask) {
+  // Hermite data (H, dH/du, d2H/du2 at each knot) -> the quintic of each interval in x in [0, 1].
+  std::ptrdiff_t held = 0;
+  for (int order = 0; order < order_count; ++order)
+    order_offset_[order] = has_order(order) ? total_intervals_ * 6 * held++ : -1;
+  coefficients_.resize(static_cast<std::size_t>(total_intervals_) * 6 * held);
+  for (int order = 0; order < order_count; ++order) {
+    if (!has_order(order)) continue;
+    for (std::size_t i = 0; i < maps_.size(); ++i)
+      for (std::ptrdiff_t j = 0; j < intervals_[i]; ++j) {
+        const double* knot = knot_data + (order * (total_intervals_ + static_cast<std::ptrdiff_t>(maps_.size())) +
+                                          first_[i] + static_cast<std::ptrdiff_t>(i) + j) * 3;
+        hermite_to_power_basis(knot, 1 / inverse_step_[i], &coefficients_[order_offset_[order] + (first_[i] + j) * 6]);
+      }
+  }
+}
+
+CompactCurve CompactCurve::borrowing(Distribution distribution, Side side, double shape,
+                                     const std::vector<SegmentSpec>& layout, const double* knot_data,
+                                     unsigned order_mask) {
+  CompactCurve curve(distribution, side, shape, layout, order_mask);
+  curve.knots_ = knot_data;
+  return curve;
+}
+
+CompactCurve CompactCurve::blending(Distribution distribution, Side side, double shape,
+                                    const std::vector<SegmentSpec>& layout, std::shared_ptr<const NodeBlend> blend,
+                                    unsigned order_mask) {
+  CompactCurve curve(distribution, side, shape, layout, order_mask);
+  curve.blend_ = std::move(blend);
+  return curve;
+}
+
 void CompactCurve::keep_outside_only() {
+  if (coefficients_.empty()) return;  // borrowed knots or a blend: nothing of its own to free
   const std::ptrdiff_t kept = intervals_[0];
   std::vector<double> outside;
   std::ptrdiff_t held = 0;
@@ -125,6 +147,8 @@ void CompactCurve::log_values(double separation, int first, int last, double* ou
   const bool inside = separation >= served_min_ && separation <= served_max_;
   const bool weibull = distribution_ == Distribution::weibull;
   std::size_t segment = maps_.size();  // not looked up yet
+  double blend_values[order_count];
+  bool blended = false;
   double u = 0, position = 0;
   std::ptrdiff_t interval = 0;
   for (int k = first; k <= last; ++k) {
@@ -154,22 +178,78 @@ void CompactCurve::log_values(double separation, int first, int last, double* ou
         interval = static_cast<std::ptrdiff_t>(cell);
         position -= cell;
       }
-      if (intervals_[segment] == 0) {  // freed by keep_outside_only: the caller's grid answers here
+      if (blend_) {  // the nodes' blend, every order at once
+        if (!blended) blend_->log_values(separation, blend_values);
+        blended = true;
+        result = blend_values[k];
+      } else if (intervals_[segment] == 0) {  // freed by keep_outside_only: the caller's grid answers here
         result = not_a_number;
-        continue;
+      } else {
+        result = table_log_value(k, segment, interval, position) + maps_[segment].offset_value(order_of(k), u);
       }
-      const double* c = &coefficients_[order_offset_[k] + (first_[segment] + interval) * 6];
-      const double x = position;
-      const double h = c[0] + x * (c[1] + x * (c[2] + x * (c[3] + x * (c[4] + x * c[5]))));
-      result = h + maps_[segment].offset_value(order_of(k), u);
     }
   }
+}
+
+// The interval's quintic at x = position in [0, 1]: converted when the curve was made, or made
+// now from the borrowed knots
+double CompactCurve::table_log_value(int twice_order, std::size_t segment, std::ptrdiff_t interval,
+                                     double position) const noexcept {
+  double made[6];
+  const double* c = made;
+  if (knots_) {
+    const std::ptrdiff_t total_knots = total_intervals_ + static_cast<std::ptrdiff_t>(maps_.size());
+    hermite_to_power_basis(
+        knots_ + (twice_order * total_knots + first_[segment] + static_cast<std::ptrdiff_t>(segment) + interval) * 3,
+        1 / inverse_step_[segment], made);
+  } else {
+    c = &coefficients_[order_offset_[twice_order] + (first_[segment] + interval) * 6];
+  }
+  const double x = position;
+  return c[0] + x * (c[1] + x * (c[2] + x * (c[3] + x * (c[4] + x * c[5]))));
 }
 
 double CompactCurve::log_value(int twice_order, double separation) const noexcept {
   double result = not_a_number;
   if (twice_order >= 0 && twice_order < order_count) log_values(separation, twice_order, twice_order, &result);
   return result;
+}
+
+NodeBlend::NodeBlend(Distribution distribution, Side side, double shape, std::vector<double> shapes,
+                     std::vector<const CompactCurve*> nodes, std::vector<double> weights,
+                     std::shared_ptr<const void> keep_alive)
+    : shapes_(std::move(shapes)), nodes_(std::move(nodes)), weights_(std::move(weights)), shape_(shape),
+      exponent_offset_(distribution == Distribution::weibull && side == Side::tail),
+      keep_alive_(std::move(keep_alive)) {
+  if (shapes_.size() != nodes_.size() || shapes_.size() != weights_.size() || shapes_.empty())
+    throw Error("a shape blend needs as many shapes, nodes and weights, at least one");
+}
+
+NodeBlend::NodeBlend(Distribution distribution, Side side, double shape, std::vector<double> shapes,
+                     std::vector<CompactCurve> owned, std::vector<double> weights)
+    : NodeBlend(distribution, side, shape, std::move(shapes), std::vector<const CompactCurve*>(owned.size()),
+                std::move(weights), nullptr) {
+  owned_ = std::move(owned);
+  for (std::size_t i = 0; i < owned_.size(); ++i) nodes_[i] = &owned_[i];
+}
+
+void NodeBlend::log_values(double separation, double* out) const noexcept {
+  if (nodes_.size() == 1 && weights_[0] == 1) {  // a node itself: its values, no offset to round
+    nodes_[0]->log_values(separation, 0, order_count - 1, out);
+    return;
+  }
+  for (int k = 0; k < order_count; ++k) out[k] = 0;
+  const bool offset = exponent_offset_ && separation > 0;
+  double node[order_count];
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    nodes_[i]->log_values(separation, 0, order_count - 1, node);
+    const double t = offset ? std::pow(separation, shapes_[i]) : 0.0;
+    for (int k = 0; k < order_count; ++k) out[k] += weights_[i] * (node[k] + t);
+  }
+  if (offset) {
+    const double t = std::pow(separation, shape_);
+    for (int k = 0; k < order_count; ++k) out[k] -= t;
+  }
 }
 
 }  // namespace asperity::detail

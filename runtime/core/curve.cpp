@@ -58,26 +58,12 @@ Curve::Curve(Distribution distribution, Side side, double shape, const std::vect
   nodes.reserve(blend.shapes.size());
   for (std::size_t i = 0; i < blend.shapes.size(); ++i)
     nodes.emplace_back(distribution, side, blend.shapes[i], layout, blend.knot_data[i], compact.order_mask());
-  const bool weibull = distribution == Distribution::weibull;
-  const bool exact_order_zero = weibull && (compact.order_mask() & order_bit(orders::count));
-  // Blended at the same s: ln X + t with t = s^a on the Weibull tail past s = 0, where ln X
-  // falls like -s^a and its shape dependence is exponential (blending ln X itself there is
-  // wrong by 1e-5 at t = 300); ln X elsewhere.
-  const bool exponent_offset = weibull && side == Side::tail;
+  const detail::NodeBlend blended(distribution, side, shape, blend.shapes, std::move(nodes), blend.weights);
+  const bool exact_order_zero =
+      distribution == Distribution::weibull && (compact.order_mask() & order_bit(orders::count));
   detail::GridReference reference;
   reference.log_values = [&](double separation, double* out) {
-    for (int k = 0; k < order_count; ++k) out[k] = 0;
-    const bool offset = exponent_offset && separation > 0;
-    double node[order_count];
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      nodes[i].log_values(separation, 0, order_count - 1, node);
-      const double t = offset ? std::pow(separation, blend.shapes[i]) : 0.0;
-      for (int k = 0; k < order_count; ++k) out[k] += blend.weights[i] * (node[k] + t);
-    }
-    if (offset) {
-      const double t = std::pow(separation, shape);
-      for (int k = 0; k < order_count; ++k) out[k] -= t;
-    }
+    blended.log_values(separation, out);
     if (exact_order_zero) out[0] = compact.log_value(orders::count, separation);
   };
   build(compact, reference, options);
@@ -107,12 +93,27 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
     lookup.order_coefficients[order] =
         build.order_offset[order] < 0 ? nullptr : data->coefficients.data() + build.order_offset[order];
   data->outside = std::move(compact);
+  data->grid_error = build.achieved;
+  adopt(std::move(data), lookup, options.contact_records);
+}
+
+Curve Curve::without_grid(detail::CompactCurve answer) {
+  auto data = std::make_shared<detail::CurveData>();
+  data->outside = std::move(answer);
+  Curve curve;
+  curve.adopt(std::move(data), detail::CurveLookup{}, false);  // a grid that covers nothing
+  return curve;
+}
+
+// The lookup into the Curve's storage, with the entry points for this CPU and (where the grid
+// holds orders 0..3 and they are asked for) the contact records
+void Curve::adopt(std::shared_ptr<detail::CurveData> data, detail::CurveLookup lookup, bool contact_records) {
   data->kernels = &detail::kernels_for(InstructionSet::automatic);
   detail::CurveLookupStorage storage = empty_lookup();
   storage.value = data->kernels->value;
   lookup.value_outside = value_outside;
   lookup.data = data.get();
-  bool all_contact_orders = options.contact_records;
+  bool all_contact_orders = contact_records;
   for (int k = 0; k < 4; ++k) all_contact_orders = all_contact_orders && lookup.order_coefficients[k];
   if (all_contact_orders) {
     const std::size_t intervals = static_cast<std::size_t>(lookup.grid.intervals);
@@ -130,7 +131,6 @@ void Curve::build(detail::CompactCurve& compact, const detail::GridReference& re
     storage.contact_products = data->kernels->contact_entry;
     storage.contact_products_of_surface = data->kernels->contact_entry_of_surface;
   }
-  data->grid_error = build.achieved;
   storage.order_mask = data->outside.order_mask();
   new (storage.opaque) detail::CurveLookup(lookup);
   data_ = std::move(data);

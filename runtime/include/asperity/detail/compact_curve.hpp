@@ -6,6 +6,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "asperity/asymptotic.hpp"
@@ -15,6 +16,8 @@
 
 namespace asperity::detail {
 
+class NodeBlend;
+
 class CompactCurve {
  public:
   CompactCurve() = default;
@@ -23,6 +26,17 @@ class CompactCurve {
   // than two knots.
   CompactCurve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
                const double* knot_data, unsigned order_mask);
+  // The same over borrowed knots: nothing copied or converted, so made in microseconds; each
+  // query makes its interval's quintic from the two knots (a few more operations). The caller
+  // keeps knot_data alive as long as the curve.
+  static CompactCurve borrowing(Distribution distribution, Side side, double shape,
+                                const std::vector<SegmentSpec>& layout, const double* knot_data, unsigned order_mask);
+  // A curve whose table part (every segment, the all-touching one too) is `blend`: a shape
+  // between a table's nodes answered from the nodes (Table::direct_curve). Its series beyond
+  // the table, its values at 0 and the Weibull order 0 are its own shape's.
+  static CompactCurve blending(Distribution distribution, Side side, double shape,
+                               const std::vector<SegmentSpec>& layout, std::shared_ptr<const NodeBlend> blend,
+                               unsigned order_mask);
 
   // ln X_n(s) for twice_order = first..last into out[0..]; NaN for an order not held, for NaN
   // and for infinite s, and for s outside the served range; -inf where X is exactly 0 (bounded
@@ -58,6 +72,9 @@ class CompactCurve {
 
  private:
   bool has_order(int twice_order) const noexcept { return order_mask_ >> twice_order & 1u; }
+  CompactCurve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
+               unsigned order_mask);  // the segments, series and values at 0; no interval data
+  double table_log_value(int twice_order, std::size_t segment, std::ptrdiff_t interval, double position) const noexcept;
   double log_value_series(int twice_order, double separation) const noexcept;
   double log_value_closed_order_zero(double separation) const noexcept;
 
@@ -73,9 +90,39 @@ class CompactCurve {
   std::vector<std::ptrdiff_t> intervals_;  // per segment: its interval count (0 once freed)
   std::ptrdiff_t total_intervals_ = 0;
   std::vector<double> coefficients_;       // [held order][interval][6], power basis of x in [0, 1]
+  const double* knots_ = nullptr;          // borrowed [order][knot][3] instead of coefficients_
+  std::shared_ptr<const NodeBlend> blend_;  // answers the table part instead of either
   std::array<std::ptrdiff_t, order_count> order_offset_{};
   std::array<Series, order_count> series_{};
   std::array<double, order_count> zero_log_{};
+};
+
+// Lagrange interpolation across a table's shape nodes at the same separation (Table::curve and
+// Table::direct_curve between nodes): ln X_n(s) = sum_i w_i ln X_n(s; a_i), of ln X_n + s^a_i
+// on the Weibull tail past s = 0, where ln X falls like -s^a and its shape dependence is
+// exponential (blending ln X itself there is wrong by 1e-5 at t = 300).
+class NodeBlend {
+ public:
+  // nodes[i] at shape shapes[i] with weight weights[i], borrowed: keep_alive owns them (and what
+  // they borrow)
+  NodeBlend(Distribution distribution, Side side, double shape, std::vector<double> shapes,
+            std::vector<const CompactCurve*> nodes, std::vector<double> weights, std::shared_ptr<const void> keep_alive);
+  // the same over nodes it owns
+  NodeBlend(Distribution distribution, Side side, double shape, std::vector<double> shapes,
+            std::vector<CompactCurve> owned, std::vector<double> weights);
+  NodeBlend(const NodeBlend&) = delete;  // nodes_ may point into owned_
+  NodeBlend& operator=(const NodeBlend&) = delete;
+  // ln X_n(s) of every order into out[0..order_count) (NaN for an order the nodes do not hold)
+  void log_values(double separation, double* out) const noexcept;
+
+ private:
+  std::vector<double> shapes_;
+  std::vector<const CompactCurve*> nodes_;
+  std::vector<double> weights_;
+  double shape_;
+  bool exponent_offset_;
+  std::shared_ptr<const void> keep_alive_;
+  std::vector<CompactCurve> owned_;
 };
 
 }  // namespace asperity::detail
