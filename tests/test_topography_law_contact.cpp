@@ -103,6 +103,40 @@ TEST(LawContact, KogutEtsionAgainstTheReferenceOnEachFit) {
   }
 }
 
+// Every parameter the law takes, from the registry in the law's order, with the value it was made
+// with: given, a default filled in, a choice as its index (issue 38, item 1); Hertz takes none.
+TEST(LawContact, EveryParameterTheLawTakes) {
+  const t::SurfaceAnalysis& a = analysis();
+  asperity::cli::LawOptions options;
+  options.law = "jackson-green";
+  options.material.set(asperity::LawParameter::yield_strength, 1e9);
+  options.material.set(asperity::LawParameter::poisson, 0.3);
+  options.choice[static_cast<int>(asperity::LawParameter::geometric_hardness)] = "2006";
+  const t::LawContact law =
+      t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test",
+                     [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
+                       return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
+                     });
+  const asperity::ContactLawDescriptor* jg = asperity::find_contact_law("jackson-green");
+  ASSERT_TRUE(jg);
+  ASSERT_EQ(law.parameters.size(), static_cast<std::size_t>(jg->parameter_count));
+  for (int k = 0; k < jg->parameter_count; ++k) {
+    const asperity::LawParameter parameter = jg->parameters[k].parameter;
+    EXPECT_EQ(law.parameters[k].parameter, parameter) << k;
+    const double expected = parameter == asperity::LawParameter::yield_strength ? 1e9
+                            : parameter == asperity::LawParameter::poisson      ? 0.3
+                            : parameter == asperity::LawParameter::geometric_hardness
+                                ? 1  // "2006"
+                                : NAN;
+    EXPECT_EQ(law.parameters[k].value, expected) << asperity::law_parameter_info(parameter).key;
+  }
+  EXPECT_EQ(law.parameters_text, "Y = 1e+09 Pa, nu = 0.3, H_G = 2006");
+
+  const t::LawContact hertz = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", maker("hertz"));
+  EXPECT_TRUE(hertz.parameters.empty());
+  EXPECT_EQ(hertz.parameters_text, "");
+}
+
 TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
   // JKR asperities (the approach branch) on the Gaussian fit: the same positive pressures on the
   // stable branch, and the pull-off, each against the reference quadrature of the net load. A

@@ -441,6 +441,23 @@ TEST(TopographyReport, TheLawInEveryOutput) {
   const std::string json = t::analysis_json(with);
   EXPECT_NE(json.find("\"law\": {\n   \"law\": \"kogut-etsion\""), std::string::npos);
   EXPECT_NE(t::analysis_summary(with).find("law kogut-etsion on the "), std::string::npos);
+  // every parameter the law takes (the registry's, issue 38 item 1): Kogut-Etsion's Y and nu
+  const nlohmann::json parameters = nlohmann::json::parse(json)["contact"]["law"]["parameters"];
+  const asperity::ContactLawDescriptor* ke = asperity::find_contact_law("kogut-etsion");
+  ASSERT_TRUE(ke);
+  ASSERT_EQ(parameters.size(), static_cast<std::size_t>(ke->parameter_count)) << parameters;
+  const double given[] = {1e9, 0.3};  // yield_strength, poisson: the law's order
+  for (int k = 0; k < ke->parameter_count; ++k) {
+    const asperity::LawParameterInfo& info = asperity::law_parameter_info(ke->parameters[k].parameter);
+    EXPECT_EQ(parameters[k]["key"], info.key);
+    EXPECT_EQ(parameters[k]["symbol"], info.symbol);
+    EXPECT_EQ(parameters[k]["unit"], info.unit);
+    EXPECT_EQ(parameters[k]["value"].get<double>(), given[k]) << info.key;
+  }
+  const std::string law_line = "law kogut-etsion on the " + std::string(t::to_string(with.law->fit)) + " fit (" +
+                               with.law->model_reason + "): Y = 1e+09 Pa, nu = 0.3, sigma_s ";
+  EXPECT_NE(t::analysis_summary(with).find(law_line), std::string::npos) << t::analysis_summary(with);
+  EXPECT_NE(read_text(dir + "/report.md").find("| the law's parameters | Y = 1e+09 Pa, nu = 0.3 |"), std::string::npos);
 
   const std::string plain = folder("no-law");
   t::write_report(analysis(), plain);

@@ -77,6 +77,12 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   out.separation_max = s_hi;
   SceneLaw law = make(surface, s_lo, s_hi);  // the material's errors, before any work
   out.law = contact_law_name(law.law.kind);
+  if (const ContactLawDescriptor* descriptor = find_contact_law(law.law.kind))
+    for (int k = 0; k < descriptor->parameter_count; ++k) {
+      const LawParameter parameter = descriptor->parameters[k].parameter;
+      out.parameters.push_back({parameter, law_parameter_value(law.law, parameter)});
+    }
+  out.parameters_text = law_parameters_text(law.law);
   out.valid_up_to = law.law.valid_up_to;
   out.plasticity_index = plasticity_index(law.law, out.summit_height_sd);
   // omega_c of first yield only (an adhesive law's critical_interference is its length scale)

@@ -486,6 +486,21 @@ ordered_json contact_json(const ContactComparison& c) {
 }
 
 // the contact law's curves beside the elastic ones of the same fit (its plasticity or adhesion)
+// The law's parameters as the registry names them (contact_law_registry.hpp), in the law's order:
+// each its key (the scene's and Python's), symbol, value (a choice: its text) and unit.
+ordered_json law_parameters_json(const LawContact& law) {
+  ordered_json parameters = ordered_json::array();
+  for (const LawParameterValue& p : law.parameters) {
+    const LawParameterInfo& info = law_parameter_info(p.parameter);
+    const bool choice = info.choices[0] && p.value >= 0 && p.value < 3 && info.choices[static_cast<int>(p.value)];
+    parameters.push_back({{"key", info.key},
+                          {"symbol", info.symbol},
+                          {"value", choice ? ordered_json(info.choices[static_cast<int>(p.value)]) : number(p.value)},
+                          {"unit", info.unit}});
+  }
+  return parameters;
+}
+
 ordered_json law_json(const LawContact& law, const ContactComparison& c) {
   ordered_json at = ordered_json::array();
   for (std::size_t k = 0; k < law.at_pressures.size(); ++k) {
@@ -505,6 +520,7 @@ ordered_json law_json(const LawContact& law, const ContactComparison& c) {
       {"law", law.law},
       {"model", to_string(law.fit)},
       {"model_reason", law.model_reason},
+      {"parameters", law_parameters_json(law)},
       {"plasticity",
        {{"summit_height_standard_deviation_m", number(law.summit_height_sd)},
         {"summit_radius_m", number(law.summit_radius)},
@@ -614,7 +630,8 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
   }
   if (a.law) {
     const LawContact& law = *a.law;
-    out << "  law " << law.law << " on the " << to_string(law.fit) << " fit (" << law.model_reason << "): sigma_s " << g(law.summit_height_sd)
+    out << "  law " << law.law << " on the " << to_string(law.fit) << " fit (" << law.model_reason << "): "
+        << (law.parameters_text.empty() ? "" : law.parameters_text + ", ") << "sigma_s " << g(law.summit_height_sd)
         << " m, R " << g(law.summit_radius) << " m, ";
     if (law.adhesive)
       out << "length scale " << g(law.adhesion_length) << " m, adhesion parameter sigma_s/delta_c " << g(law.adhesion_parameter, 3)
@@ -765,6 +782,8 @@ void markdown_law(std::ostream& md, const LawContact& law, const ContactComparis
   md << "| σs: standard deviation of the measured summit heights | " << g(law.summit_height_sd) << " m |\n";
   md << "| R: the measured summit radius | " << g(law.summit_radius) << " m |\n";
   md << "| E* | " << g(law.contact_modulus) << " Pa |\n";
+  md << "| the law's parameters | " << (law.parameters_text.empty() ? "none beyond R and E*" : law.parameters_text)
+     << " |\n";
   if (!law.adhesive) {  // an adhesive law is elastic: no hardness, no ω_c, no plasticity index
     md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
     md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";

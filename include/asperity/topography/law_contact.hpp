@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_law_registry.hpp"
 #include "asperity/contact_model.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/surface.hpp"
@@ -40,8 +41,19 @@ namespace asperity::topography {
 // does not take (`asperity surface --law`: the command's options through the scene's checks).
 using LawSceneMaker = std::function<SceneLaw(const RoughSurface& surface, double s_min, double s_max)>;
 
+// One material parameter of the law (the registry's, contact_law_registry.hpp) and the value the
+// law was made with (its default where not given; a choice parameter: its index).
+struct LawParameterValue {
+  LawParameter parameter;
+  double value;
+};
+
 struct LawContact {
   std::string law;                 // its name (asperity::contact_law_name)
+  // every parameter the law takes, in the registry's order for the law (Hertz: none), and the
+  // same in words ("Y = 1e+09 Pa, nu = 0.3": asperity::law_parameters_text)
+  std::vector<LawParameterValue> parameters;
+  std::string parameters_text;
   HeightModel fit = HeightModel::gaussian;  // the fit the curves are of (to_string: its name in the outputs)
   std::string model_reason;        // why that fit
   RoughSurface surface;            // its surface (the elastic curves' too)
