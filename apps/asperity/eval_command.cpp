@@ -38,7 +38,7 @@ void add_eval_command(CLI::App& app) {
       "Input: CSV with the header dist,side,shape,sep; dist is weibull or gaussian, side tail or\n"
       "bounded, shape the Weibull shape (empty or ignored for the Gaussian), sep the separation from\n"
       "the Weibull origin (the Gaussian's mean) in units of sigma_s. Lines end with LF, CRLF or CR.\n"
-      "Output: dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,lnI1_2,lnI1,lnI3_2,lnI2,lnI5_2, numbers in\n"
+      "Output: " + eval_csv_header() + ", numbers in\n"
       "the shortest form that reads back to the same double; I* underflow to 0 below ~1e-308, lnI*\n"
       "stay finite (-inf where the value is exactly 0). A bad row is named by its line on standard\n"
       "error and skipped; every good row is written. A scene table (docs/scenes.md) serves each curve\n"

@@ -131,7 +131,7 @@ std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& ou
            << "'\n";
     return 1;
   }
-  output << "dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,lnI1_2,lnI1,lnI3_2,lnI2,lnI5_2\n";
+  output << eval_csv_header() << "\n";  // the columns of the rows below (eval_csv.hpp)
   // Resolving a shape costs far more than a query: keep the curves made last (least recently
   // used out first, never the whole cache at once).
   CurveCache curves(lookup_grid);

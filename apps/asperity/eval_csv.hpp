@@ -3,7 +3,9 @@
 #pragma once
 #include <cstdint>
 #include <iosfwd>
+#include <string>
 
+#include "asperity/integrals.hpp"
 #include "asperity/table.hpp"
 
 namespace asperity::cli {
@@ -22,5 +24,20 @@ std::uint64_t eval_csv(const Table& table, std::istream& input, std::ostream& ou
                        bool lookup_grid = false);
 
 inline constexpr std::size_t max_line_bytes = 65536;
+
+// The output's columns, in the order eval_csv writes each row: the input's four, then X_n at each
+// order of the list (twice_order 0 .. order_count - 1), then ln X_n at each:
+// dist,side,shape,sep,I0,I1_2,I1,I3_2,I2,I5_2,lnI0,...,lnI5_2.
+inline constexpr const char* eval_input_columns[] = {"dist", "side", "shape", "sep"};
+inline std::string eval_order_column(int twice_order) {  // "I0", "I1_2", "I1", ...
+  return "I" + (twice_order % 2 ? std::to_string(twice_order) + "_2" : std::to_string(twice_order / 2));
+}
+inline std::string eval_csv_header() {
+  std::string header;
+  for (const char* column : eval_input_columns) header += (header.empty() ? "" : ",") + std::string(column);
+  for (int k = 0; k < order_count; ++k) header += "," + eval_order_column(k);
+  for (int k = 0; k < order_count; ++k) header += ",ln" + eval_order_column(k);
+  return header;
+}
 
 }  // namespace asperity::cli
