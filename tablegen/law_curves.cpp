@@ -153,88 +153,171 @@ LawMeans checked_law_means(const SceneLaw& scene, double s, Integrator& finite) 
 
 }  // namespace
 
+double withdrawal_kink(const SceneLaw& law) noexcept {
+  if (!law.withdrawal()) return std::numeric_limits<double>::quiet_NaN();
+  return law.approach_separation - law.law.lowest_interference / law.height_scale;
+}
+
 LawMeans law_means(const SceneLaw& scene, double s) {
   Integrator finite;  // its abscissae: a few hundred microseconds (the generator keeps a pool)
   return checked_law_means(scene, s, finite);
 }
 
 namespace {
+// Where the summits in contact at s end, in the height z (before the density's support clips
+// it): on the tail side those above it, on the bounded side those below. Approach: first contact,
+// omega = 0. Withdrawal after an approach to s0 (SceneLaw::approach_separation): the summits that
+// touched at s0 and have not reached their law's lowest interference omega_min; `detaching` where
+// that end is omega_min (s >= s0 - omega_min / sigma_s: it moves with s), not the fixed z of s0.
+double contact_edge(const SceneLaw& scene, double s, bool& detaching) {
+  const bool tail = scene.side == Side::tail;
+  detaching = false;
+  if (!scene.withdrawal()) return tail ? s : -s;
+  const double s0 = scene.approach_separation, omega_min = scene.law.lowest_interference;
+  detaching = s >= withdrawal_kink(scene);
+  const double attached = omega_min / scene.height_scale;  // z - s on the tail side at omega_min
+  return tail ? std::max(s0, s + attached) : std::min(-s0, -s - attached);
+}
+
+// Beyond the interference its source supports (Jackson-Green: a = R) the law is not used: the
+// summits there must be negligible (their share of the count below 1e-3 of the tolerance;
+// their load share is within a power of the interference of that). Narrows [lo, hi] to them.
+void clip_to_validity(const SceneLaw& scene, double s, double z_valid, double& lo, double& hi) {
+  const bool tail = scene.side == Side::tail, weibull = scene.distribution == Distribution::weibull;
+  const bool beyond = tail ? z_valid < hi : z_valid > lo;  // tail: above it; bounded: below it
+  if (!beyond) return;
+  auto survival = [&](double z) {  // the density's mass above z
+    return weibull ? std::exp(-std::pow(std::max(z, 0.0), scene.shape)) : 0.5 * std::erfc(z / std::sqrt(2.0));
+  };
+  const double total = tail ? survival(lo) : 1 - survival(hi);
+  const double share = tail ? survival(z_valid) / total : (1 - survival(z_valid)) / total;
+  if (!(share < 1e-3 * scene.max_rel_error)) {
+    std::ostringstream message;
+    message << contact_law_name(scene.law.kind) << ": at s = " << s << " a share " << share
+            << " of the summits in contact is beyond the interference its source supports (" << scene.law.valid_up_to
+            << " m): narrow the separation range";
+    throw Error(message.str());
+  }
+  (tail ? hi : lo) = z_valid;
+}
+
+// The stiffness a load jump at a moving height adds (docs/contact-laws.md section 8): where the
+// law switches (omega_k), and an adhesive law's edge of contact: first contact on approach (its
+// load jumps there from 0), the detaching edge on withdrawal (its load at omega_min drops to 0;
+// kept apart in `out` too, for the break at the kink)
+void add_jumps(const SceneLaw& scene, double s, double lo, double hi, bool detaching, double& compressive_stiffness,
+               LawMeans& out) {
+  const ContactLaw& law = scene.law;
+  const double sigma = scene.height_scale;
+  const bool tail = scene.side == Side::tail;
+  auto z_of = [&](double omega) { return tail ? s + omega / sigma : -s - omega / sigma; };
+  const double inf = std::numeric_limits<double>::infinity();
+  const SwitchPoints points = switch_points(law);
+  for (int k = 0; k < points.count; ++k) {
+    const double omega = points.interference[k], z = z_of(omega);
+    if (!(z > lo && z < hi)) continue;
+    if (scene.withdrawal() && omega <= law.lowest_interference) continue;  // the edge's, below
+    const AsperityLoadSplit above = asperity_load_split(law, std::nextafter(omega, inf));
+    const AsperityLoadSplit below = asperity_load_split(law, std::nextafter(omega, -inf));
+    compressive_stiffness += (above.compressive - below.compressive) * density(scene, z) / sigma;
+    out.tensile_stiffness += (above.tensile - below.tensile) * density(scene, z) / sigma;
+  }
+  if (!is_adhesive(law.kind) || (scene.withdrawal() && !detaching)) return;
+  const double omega = scene.withdrawal() ? law.lowest_interference : 0.0, z = z_of(omega);
+  if (!(z >= lo && z <= hi)) return;
+  const AsperityLoadSplit edge = asperity_load_split(law, omega);
+  const double compressive = edge.compressive * density(scene, z) / sigma;
+  const double tensile = edge.tensile * density(scene, z) / sigma;
+  compressive_stiffness += compressive;
+  out.tensile_stiffness += tensile;
+  if (scene.withdrawal()) out.detach_compressive_stiffness = compressive, out.detach_tensile_stiffness = tensile;
+}
+
 LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite) {
   const ContactLaw& law = scene.law;
   const double sigma = scene.height_scale;
   const bool tail = scene.side == Side::tail;
   const bool weibull = scene.distribution == Distribution::weibull;
+  const bool withdrawal = scene.withdrawal();
   // interference at height z, and the height of interference omega
   auto omega_of = [&](double z) { return sigma * (tail ? z - s : -s - z); };
   auto z_of = [&](double omega) { return tail ? s + omega / sigma : -s - omega / sigma; };
+  bool detaching = false;
+  const double edge = contact_edge(scene, s, detaching);
   double lo, hi;
   if (tail) {
-    lo = weibull ? std::max(s, 0.0) : s;
+    lo = weibull ? std::max(edge, 0.0) : edge;
     const double t_lo = weibull ? std::pow(std::max(lo, 0.0), scene.shape) : 0.5 * lo * lo * (lo > 0);
     hi = weibull ? std::pow(t_lo + density_cutoff, 1 / scene.shape) : std::sqrt(2 * (t_lo + density_cutoff));
     hi = std::max(hi, lo + 1e-3);
   } else {
     lo = 0;
-    hi = -s;
+    hi = edge;
   }
   LawMeans out;
   if (!(hi > lo)) return out;
-  // Beyond the interference its source supports (Jackson-Green: a = R) the law is not used: the
-  // summits there must be negligible (their share of the count below 1e-3 of the tolerance;
-  // their load share is within a power of the interference of that)
   if (std::isfinite(law.valid_up_to)) {
-    const double z_valid = z_of(law.valid_up_to);  // tail: above it; bounded: below it
-    const bool beyond = tail ? z_valid < hi : z_valid > lo;
-    if (beyond) {
-      auto survival = [&](double z) {  // the density's mass above z
-        return weibull ? std::exp(-std::pow(std::max(z, 0.0), scene.shape)) : 0.5 * std::erfc(z / std::sqrt(2.0));
-      };
-      const double total = tail ? survival(lo) : 1 - survival(hi);
-      const double share = tail ? survival(z_valid) / total : (1 - survival(z_valid)) / total;
-      if (!(share < 1e-3 * scene.max_rel_error)) {
-        std::ostringstream message;
-        message << contact_law_name(law.kind) << ": at s = " << s << " a share " << share
-                << " of the summits in contact is beyond the interference its source supports (" << law.valid_up_to
-                << " m): narrow the separation range";
-        throw Error(message.str());
-      }
-      (tail ? hi : lo) = z_valid;
-      if (!(hi > lo)) return out;
-    }
+    clip_to_validity(scene, s, z_of(law.valid_up_to), lo, hi);
+    if (!(hi > lo)) return out;
   }
   std::vector<double> cuts{lo, hi};
   const SwitchPoints points = switch_points(law);
   for (int k = 0; k < points.count; ++k) cuts.push_back(z_of(points.interference[k]));
+  if (withdrawal) cuts.push_back(z_of(0.0));  // first contact: negative interferences on one side
   mass_cuts(scene, lo, cuts);
   cuts.erase(std::remove_if(cuts.begin(), cuts.end(), [&](double z) { return !(z >= lo && z <= hi); }), cuts.end());
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
+  // Withdrawal: the interference from a piece's end plus the distance to it, given exactly (the
+  // detaching edge's is omega_min itself), never at or below omega_min, where JKR's dP/domega is
+  // -inf and the response 0 one double below: the stiffness's (omega - omega_min)^(-1/2) there
+  // is integrated from its exact distance
+  const double omega_min = law.lowest_interference;
+  const double above_min = std::nextafter(omega_min, std::numeric_limits<double>::infinity());
+  const double direction = tail ? 1 : -1;
+  auto end_omega = [&](double z) { return detaching && z == edge ? omega_min : omega_of(z); };
   auto integrate = [&](auto quantity) {
     double total = 0;
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
       poll_interrupt();  // a quadrature of an adhesive law's response takes milliseconds
       const double a = cuts[i], b = cuts[i + 1];
       if (!(b > a)) continue;
+      const double omega_a = end_omega(a), omega_b = end_omega(b);
+      if (withdrawal && (tail ? a == edge : b == edge)) {
+        // the piece at the contact's edge in x = v^2 from it: the law's (omega - omega_min)^(1/2)
+        // there (JKR, MD at a turning point) becomes smooth in v, and its stiffness's ^(-1/2) too
+        const double omega_edge = tail ? omega_a : omega_b;
+        total += finite.integrate(
+            [&](double v, double) {
+              const double x = v * v, z = tail ? a + x : b - x, phi = density(scene, z);
+              return phi == 0 ? 0.0 : quantity(std::max(omega_edge + sigma * x, above_min)) * phi * 2 * v;
+            },
+            0.0, std::sqrt(b - a), quadrature_tolerance);
+        continue;
+      }
       // x from a; the complement from b given exactly, so that an end's distance is exact
       total += finite.integrate(
           [&](double x, double complement) {
-            const double z = x < 0.5 * (b - a) ? a + x : b - complement;
+            const bool near_a = x < 0.5 * (b - a);
+            const double z = near_a ? a + x : b - complement;
             const double phi = density(scene, z);
-            return phi == 0 ? 0.0 : quantity(omega_of(z)) * phi;
+            if (phi == 0) return 0.0;
+            if (!withdrawal) return quantity(omega_of(z)) * phi;
+            const double omega = near_a ? omega_a + direction * sigma * x : omega_b - direction * sigma * complement;
+            return quantity(std::max(omega, above_min)) * phi;
           },
           0.0, b - a, quadrature_tolerance);
     }
     return total;
   };
   // the fraction in contact in closed form (the quadrature's rounding could make it rise where
-  // it is 1 to rounding): Gaussian z >= s; Weibull tail z >= max(s, 0); bounded z <= -s
-  if (!weibull) out.count = 0.5 * std::erfc(s / std::sqrt(2.0));
-  else if (tail) out.count = std::exp(-std::pow(std::max(s, 0.0), scene.shape));
-  else out.count = -std::expm1(-std::pow(-s, scene.shape));
-  const bool adhesive = is_adhesive(law.kind);
+  // it is 1 to rounding): Gaussian z >= edge; Weibull tail z >= max(edge, 0); bounded z <= edge
+  if (!weibull) out.count = 0.5 * std::erfc(edge / std::sqrt(2.0));
+  else if (tail) out.count = std::exp(-std::pow(std::max(edge, 0.0), scene.shape));
+  else out.count = -std::expm1(-std::pow(std::max(edge, 0.0), scene.shape));
   double compressive = 0, compressive_stiffness = 0;
-  if (adhesive) {
+  if (is_adhesive(law.kind)) {
     // An adhesive law's response solves for its state (Maugis-Dugdale: a root per interference):
     // each interference's is kept, so the five integrals, whose quadratures visit the same
     // abscissae, solve it once
@@ -259,26 +342,7 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite
     compressive = integrate([&](double omega) { return asperity_response(law, omega).load; });
     compressive_stiffness = integrate([&](double omega) { return asperity_response(law, omega).stiffness; });
   }
-  // where the load jumps at a switch point, the jump moves with s (docs/contact-laws.md section 8)
-  const double inf = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < points.count; ++k) {
-    const double omega = points.interference[k], z = z_of(omega);
-    if (!(z > lo && z < hi)) continue;
-    const AsperityLoadSplit above = asperity_load_split(law, std::nextafter(omega, inf));
-    const AsperityLoadSplit below = asperity_load_split(law, std::nextafter(omega, -inf));
-    compressive_stiffness += (above.compressive - below.compressive) * density(scene, z) / sigma;
-    out.tensile_stiffness += (above.tensile - below.tensile) * density(scene, z) / sigma;
-  }
-  // first contact (omega = 0) moves with s too: an adhesive law's load jumps there from 0 (on
-  // approach an asperity touches at omega = 0 and takes its stable branch's load)
-  if (adhesive) {
-    const double z = z_of(0.0);
-    if (z >= lo && z <= hi) {
-      const AsperityLoadSplit first = asperity_load_split(law, 0.0);
-      compressive_stiffness += first.compressive * density(scene, z) / sigma;
-      out.tensile_stiffness += first.tensile * density(scene, z) / sigma;
-    }
-  }
+  add_jumps(scene, s, lo, hi, detaching, compressive_stiffness, out);
   out.load = compressive - out.tensile_load;
   out.stiffness = compressive_stiffness - out.tensile_stiffness;
   return out;
@@ -372,13 +436,18 @@ std::vector<double> starting_nodes(const SceneLaw& law) {
   for (int i = 0; i + 1 < uniform; ++i)
     nodes.push_back(law.range_min + (law.range_max - law.range_min) * i / (uniform - 1));
   nodes.push_back(law.range_max);  // exactly: the range's end is served
+  std::vector<double> knots;
   if (law.distribution == Distribution::weibull) {
-    std::vector<double> knots{0.0};
+    knots.push_back(0.0);
     const SwitchPoints points = switch_points(law.law);
     for (int k = 0; k < points.count; ++k) knots.push_back(-points.interference[k] / sigma);
-    for (double knot : knots)
-      if (knot > law.range_min && knot < law.range_max) nodes.push_back(knot);
+    // withdrawal: where the detaching edge (omega_min) meets the density's edge z = 0
+    if (law.withdrawal()) knots.push_back(-law.law.lowest_interference / sigma);
   }
+  // withdrawal: the kink, where summits start to detach (the stiffness jumps: a break)
+  if (law.withdrawal()) knots.push_back(withdrawal_kink(law));
+  for (double knot : knots)
+    if (knot > law.range_min && knot < law.range_max) nodes.push_back(knot);
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
@@ -436,10 +505,22 @@ void describe(const SceneLaw& law, const std::string& generator_options, Contact
     text << ", sigma_s = " << n(sigma) << " m, R = " << n(law.summit_radius) << " m, density = " << n(eta)
          << " /m^2, A0 = " << n(law.nominal_area) << " m^2; separations s in [" << n(law.range_min) << ", "
          << n(law.range_max) << "] (dimensionless)";
-    if (is_adhesive(l.kind))
+    if (is_adhesive(l.kind) && law.withdrawal()) {
+      text << "; the withdrawal (unloading, fixed grips) branch after an approach to s0 = " << n(law.approach_separation)
+           << ": a summit that touched at s0 stays in contact down to its law's lowest interference omega_min = "
+           << n(l.lowest_interference) << " m";
+      if (l.lowest_interference < 0)
+        text << ", from s = s0 - omega_min / sigma_s = " << n(withdrawal_kink(law))
+             << " on leaving there (the stiffness jumps: a break of the curves)";
+      else
+        text << " (0: the same curves as the approach branch)";
+      text << " (pressure = compressive - tensile part, negative: tension; the stored pressure and stiffness bounds "
+              "are relative to the gross, compressive + tensile)";
+    } else if (is_adhesive(l.kind)) {
       text << "; the approach (loading) branch: a summit touches at omega = 0 and follows its law's stable branch "
               "(pressure = compressive - tensile part, negative: tension; the stored pressure and stiffness bounds "
               "are relative to the gross, compressive + tensile)";
+    }
     if (!law.name.empty()) text << "; scene law '" << law.name << "'";
     data.description = text.str();
   }
@@ -461,63 +542,81 @@ void describe(const SceneLaw& law, const std::string& generator_options, Contact
 
 }  // namespace
 
-LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& generator_options,
+namespace {
+
+// The table's nodes from the exact means at the nodes s (adhesive laws: `pressure` and `stiffness`
+// hold the compressive parts, the tensile ones their own). At a withdrawal's kink, a break: the
+// node twice, the stiffness from the left (without the detaching edge's share) then the right.
+template <typename At>
+void fill_nodes(const SceneLaw& law, const std::vector<double>& nodes, double kink, At&& at, ContactCurvesData& data) {
+  const double sigma = law.height_scale, eta = law.summit_density;
+  const std::string name = law.name.empty() ? std::string("the law") : "law '" + law.name + "'";
+  const bool adhesive = is_adhesive(law.law.kind);
+  for (auto* column : {&data.separation, &data.pressure, &data.stiffness, &data.area_fraction, &data.tensile_pressure,
+                       &data.tensile_stiffness, &data.summit_count})
+    column->clear();
+  for (double s : nodes) {
+    const LawMeans& m = at(s);
+    const double pressure = eta * (m.load + m.tensile_load), area_fraction = eta * m.area;
+    if (!(area_fraction <= 1)) {
+      std::ostringstream message;
+      message << name << ": the real area fraction reaches " << area_fraction << " at s = " << s
+              << ": beyond 1 Greenwood-Williamson does not hold; raise the separation range's lower end";
+      throw Error(message.str());
+    }
+    if (!(pressure >= schema::min_contact_value) || (adhesive && !(eta * m.tensile_load >= schema::min_contact_value))) {
+      std::ostringstream message;
+      message << name << ": the pressure" << (adhesive ? " (or its tensile part)" : "") << " falls to " << pressure
+              << " Pa at s = " << s
+              << ", below what a contact-curves table holds (1e-150 Pa); lower the separation range's upper end";
+      throw Error(message.str());
+    }
+    const double compressive_stiffness = m.stiffness + m.tensile_stiffness;
+    for (int side = s == kink ? 0 : 1; side < 2; ++side) {  // the break: left (0), then right (1)
+      data.separation.push_back(sigma * s);
+      data.pressure.push_back(pressure);
+      data.stiffness.push_back(eta * (compressive_stiffness - (side == 0 ? m.detach_compressive_stiffness : 0)));
+      data.area_fraction.push_back(area_fraction);
+      if (adhesive) {
+        data.tensile_pressure.push_back(eta * m.tensile_load);
+        data.tensile_stiffness.push_back(eta * (m.tensile_stiffness - (side == 0 ? m.detach_tensile_stiffness : 0)));
+      }
+      data.summit_count.push_back(eta * m.count);
+    }
+  }
+}
+
+}  // namespace
+
+LawCurvesResult generate_law_curves(const SceneLaw& asked, const std::string& generator_options,
                                     const std::function<void(const LawCurvesProgress&)>& progress) {
+  // DMT's lowest interference is 0: its withdrawal is its approach (tabulated as such, described as asked)
+  SceneLaw law = asked;
+  if (law.withdrawal() && !(law.law.lowest_interference < 0)) law.approach_separation = std::numeric_limits<double>::quiet_NaN();
   const double sigma = law.height_scale, eta = law.summit_density;
   const double tolerance = law.max_rel_error;
   const std::string name = law.name.empty() ? std::string("the law") : "law '" + law.name + "'";
   ExactMeans exact(law, progress);
   const auto at = [&](double s) -> const LawMeans& { return exact.at(s); };
   std::vector<double> nodes = starting_nodes(law);
+  // withdrawal: the kink's stiffness jumps (a break); from its left the stiffness varies as
+  // sqrt(kink - s) (the summits at s0 near omega_min, where dP/domega ~ (omega - omega_min)^(-1/2)):
+  // the interval ending there is halved down to the smallest interval and its error stored, not refused
+  const double kink = law.withdrawal() && withdrawal_kink(law) > law.range_min && withdrawal_kink(law) < law.range_max
+                          ? withdrawal_kink(law)
+                          : std::numeric_limits<double>::quiet_NaN();
 
   LawCurvesResult result;
   ContactCurvesData& data = result.data;
-  describe(law, generator_options, data);
+  describe(asked, generator_options, data);
 
   const bool adhesive = is_adhesive(law.law.kind);
-  auto fill = [&]() {
-    data.separation.clear();
-    data.pressure.clear();
-    data.stiffness.clear();
-    data.area_fraction.clear();
-    data.tensile_pressure.clear();
-    data.tensile_stiffness.clear();
-    data.summit_count.clear();
-    for (double s : nodes) {
-      const LawMeans& m = at(s);
-      // adhesive laws: `pressure` and `stiffness` hold the compressive parts, the tensile ones their own
-      const double pressure = eta * (m.load + m.tensile_load), area_fraction = eta * m.area;
-      if (!(area_fraction <= 1)) {
-        std::ostringstream message;
-        message << name << ": the real area fraction reaches " << area_fraction << " at s = " << s
-                << ": beyond 1 Greenwood-Williamson does not hold; raise the separation range's lower end";
-        throw Error(message.str());
-      }
-      if (!(pressure >= schema::min_contact_value) || (adhesive && !(eta * m.tensile_load >= schema::min_contact_value))) {
-        std::ostringstream message;
-        message << name << ": the pressure" << (adhesive ? " (or its tensile part)" : "") << " falls to " << pressure
-                << " Pa at s = " << s
-                << ", below what a contact-curves table holds (1e-150 Pa); lower the separation range's upper end";
-        throw Error(message.str());
-      }
-      data.separation.push_back(sigma * s);
-      data.pressure.push_back(pressure);
-      data.stiffness.push_back(eta * (m.stiffness + m.tensile_stiffness));
-      data.area_fraction.push_back(area_fraction);
-      if (adhesive) {
-        data.tensile_pressure.push_back(eta * m.tensile_load);
-        data.tensile_stiffness.push_back(eta * m.tensile_stiffness);
-      }
-      data.summit_count.push_back(eta * m.count);
-    }
-  };
-
   int checks = 0, pass = 0;
   for (;;) {
     ++pass;
     exact.next_pass(nodes.size());
     exact.compute(nodes);
-    fill();
+    fill_nodes(law, nodes, kink, at, data);
     const ContactCurves curves(data);
     std::vector<double> halves;
     // pressure, stiffness, area, count. With a tensile part (adhesion) the served net pressure
@@ -534,7 +633,10 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     }
     for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
       const double h = nodes[i + 1] - nodes[i];
+      const bool smallest = h < min_interval * (law.range_max - law.range_min);
+      const bool cusp = smallest && nodes[i + 1] == kink;  // its error stored (above)
       bool split = false;
+      double errors[4] = {0, 0, 0, 0};
       for (double fraction : check_fractions) {
         const double s = nodes[i] + fraction * h;
         const LawMeans& m = at(s);
@@ -570,13 +672,13 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
           // the count is measured and its bound stored, but does not place nodes: ln count has an
           // infinite slope at first contact on a Weibull density with a < 1 (-s^a), where the
           // pressure, stiffness and area are tabulable
-          if (c.bound == 3) worst[3] = std::max(worst[3], std::isnan(error) ? HUGE_VAL : error);
-          else if (!(error <= 0.5 * tolerance)) split = true;
-          else worst[c.bound] = std::max(worst[c.bound], error);
+          if (!(c.bound == 3 || error <= 0.5 * tolerance)) split = true;
+          errors[c.bound] = std::max(errors[c.bound], std::isnan(error) ? HUGE_VAL : error);
         }
         ++checks;
       }
-      if (split && h < min_interval * (law.range_max - law.range_min)) {
+      if (split && cusp) split = false;
+      if (split && smallest) {
         std::ostringstream message;
         message << name << ": the curves are not smooth enough near s = " << nodes[i]
                 << " to be tabulated to max_rel_error " << tolerance << " (intervals of 1e-9 of the range still miss it: "
@@ -584,6 +686,8 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
         throw Error(message.str());
       }
       if (split) halves.push_back(nodes[i] + 0.5 * h);
+      else
+        for (int k = 0; k < 4; ++k) worst[k] = std::max(worst[k], errors[k]);
       if (progress)
         progress({pass, static_cast<int>(nodes.size()), static_cast<int>(i + 1), static_cast<int>(nodes.size() - 1),
                   static_cast<int>(exact.size())});
@@ -607,7 +711,7 @@ LawCurvesResult generate_law_curves(const SceneLaw& law, const std::string& gene
     }
   }
   data.validate("law curves");
-  result.nodes = static_cast<int>(nodes.size());
+  result.nodes = static_cast<int>(data.separation.size());
   result.evaluations = static_cast<int>(exact.size());
   return result;
 }

@@ -34,6 +34,7 @@ struct Options {
   std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum, datum;
   LawOptions law;         // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
   std::string law_range;  // the separations they are tabulated over
+  double approach_separation = not_given;  // an adhesive law's withdrawal after an approach to it
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given;
   MaterialOptions material;  // --modulus, or --e1 --nu1 --e2 --nu2
@@ -335,12 +336,18 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   check_curve_queries(options, "a law's curves");
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
-  const SceneLaw law = law_scene(options.law, surface, lo, hi, "asperity contact --law");
+  const SceneLaw law =
+      law_scene(options.law, surface, lo, hi, "asperity contact --law", options.approach_separation);
   if (!given_scale.empty()) note(command, given_scale);
   const std::string name = contact_law_name(law.law.kind);
   switch (find_contact_law(law.law.kind)->family) {  // the regime's figure (contact_law_registry.hpp)
     case LawFamily::adhesive:
-      note(command, name + ": the approach (loading) branch; Maugis' length d_s = " +
+      note(command, name + ": " +
+                        (law.withdrawal() ? "the withdrawal (unloading) branch after an approach to s0 = " +
+                                                number(law.approach_separation) + " (summits leave at omega_min = " +
+                                                number(law.law.lowest_interference) + " m)"
+                                          : std::string("the approach (loading) branch")) +
+                        "; Maugis' length d_s = " +
                         approximately(law.law.critical_interference) + " m, Fuller-Tabor's adhesion parameter " +
                         "sigma_s / delta_c = " + approximately(adhesion_parameter(law.law, surface.height_scale)));
       break;
@@ -392,12 +399,16 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                     std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
                     approximately(data.solver_tolerance) + ")");
   if (curves.has_tension()) {
+    // the branch, as the table's description says (the generator's words: law_curves.cpp's describe)
+    const std::string branch = data.description.find("the withdrawal (unloading") != std::string::npos
+                                   ? "withdrawal branch"
+                                   : "approach branch";
     if (std::isnan(curves.pull_off_pressure()))
-      note(command, "adhesive curves (approach branch): the pull-off (greatest tension) is not inside their range; "
+      note(command, "adhesive curves (" + branch + "): the pull-off (greatest tension) is not inside their range; "
                     "--pressure is served from " + number(curves.min_pressure()) + " to " +
                         number(curves.max_pressure()) + " Pa");
     else
-      note(command, "adhesive curves (approach branch): pull-off (greatest tension) " +
+      note(command, "adhesive curves (" + branch + "): pull-off (greatest tension) " +
                         number(curves.pull_off_pressure()) + " Pa at separation " +
                         number(curves.pull_off_separation()) +
                         " m; --pressure is served on the stable branch, up to that separation");
@@ -490,6 +501,7 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!options.law.law.empty()) return run_contact_law(options, command);
   check_no_law_options(options.law, options.law_range.empty() ? "" : "--law-range, ");
   if (!options.law_range.empty()) usage("--law-range goes with --law");
+  if (given(options.approach_separation)) usage("--approach-separation goes with --law (an adhesive law's)");
   // A table alone, no surface: it may be a measured surface's or a law scene's (its kind read only
   // then, so that a GW table is not read twice); with a surface, a contact-curves table is refused
   // on opening.
@@ -601,6 +613,10 @@ void add_contact_command(CLI::App& app) {
   add_text(*command, "--law-range", o.law_range,
            "with --law: the dimensionless separations s tabulated (origin convention; required)")
       ->type_name("SMIN:SMAX")->group("Contact law");
+  add_number(*command, "--approach-separation", o.approach_separation,
+             "with --law dmt, jkr or maugis-dugdale: the withdrawal (unloading) branch after an approach to this "
+             "dimensionless separation s0 (at or below SMIN; default: the approach branch)")
+      ->type_name("S0")->group("Contact law");
   add_numbers(*command, "--separation", o.separations, "at separations [m] from the datum (--datum), comma-separated")
       ->type_name("M[,M...]")->group("Query (one)");
   add_numbers(*command, "--load", o.loads, "at loads [N], comma-separated")->type_name("N[,N...]")->group("Query (one)");

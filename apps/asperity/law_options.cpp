@@ -75,7 +75,7 @@ LawValues law_values(const LawOptions& o) {
 }
 
 SceneLaw law_scene(const LawOptions& o, const RoughSurface& surface, double s_min, double s_max,
-                   const std::string& source) {
+                   const std::string& source, double approach_separation) {
   SceneLawInputs in;
   in.law = law_kind(o);
   in.material = given_values(o);
@@ -91,6 +91,7 @@ SceneLaw law_scene(const LawOptions& o, const RoughSurface& surface, double s_mi
   in.range_min = s_min;
   in.range_max = s_max;
   in.max_rel_error = std::isnan(o.tolerance) ? default_law_tolerance : o.tolerance;
+  in.approach_separation = approach_separation;
   try {
     return make_scene_law(in, LawNaming::option);
   } catch (const SceneLawError& error) {

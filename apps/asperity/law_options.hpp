@@ -37,9 +37,10 @@ LawValues law_values(const LawOptions& options);
 
 // The law scene of the options on `surface` (every field of it used: distribution, shape, side,
 // height scale, summit radius and density, nominal area, contact modulus) over the dimensionless
-// separations [s_min, s_max]. Throws asperity::Error naming the option at fault; `source` names
-// the command in the message.
+// separations [s_min, s_max] (an adhesive law's withdrawal after an approach to
+// approach_separation, s0 <= s_min; NaN: its approach branch). Throws asperity::Error naming the
+// option at fault; `source` names the command in the message.
 SceneLaw law_scene(const LawOptions& options, const RoughSurface& surface, double s_min, double s_max,
-                   const std::string& source);
+                   const std::string& source, double approach_separation = 0.0 / 0.0);
 
 }  // namespace asperity::cli

@@ -27,6 +27,11 @@
 // serves the stable branch only: from the first node up to the pull-off (where the net
 // stiffness first falls to 0: the greatest tension), or the last node if the curves end before
 // it; beyond it, NaN. The summit count, where stored, by Steffen's cubic in ln like the area.
+//
+// A break (a separation stored twice, table_schema.hpp: an adhesive law's withdrawal, where
+// summits start to detach and the stiffness jumps) ends one piece of cubics and starts the next;
+// the break's separation is served from the piece on its right. The pull-off may be at a break
+// (the net stiffness jumping from > 0 to <= 0 there).
 #pragma once
 #include <cstddef>
 #include <memory>

@@ -32,6 +32,9 @@
 //   nominal_area = 1e-4             # A0 [m^2]
 //   separation = [-1.0, 4.0]        # dimensionless s (origin convention), the range served
 //   max_rel_error = 1e-6            # optional (1e-10 .. 1e-2; default the scene's, 1e-8)
+//   approach_separation = -1.0      # optional, an adhesive law's (dmt, jkr, maugis-dugdale): the
+//                                   # withdrawal branch after an approach to this s (<= the range's
+//                                   # lower end) instead of the approach branch
 //
 // Errors name the file, the line and the key (asperity::Error). A scene file is untrusted input
 // (docs/reliability.md): before TOML parsing it must be valid UTF-8 without control characters,
@@ -76,7 +79,13 @@ struct SceneLaw {
   double nominal_area = 0;           // A0 [m^2]
   double range_min = 0, range_max = 0;  // dimensionless separation s
   double max_rel_error = 1e-8;
+  // NaN: the approach (loading) branch. Otherwise the withdrawal (unloading, fixed grips) branch
+  // after an approach to this dimensionless separation s0 <= range_min: a summit that touched
+  // there stays in contact down to its law's lowest interference (docs/contact-laws.md section 8).
+  double approach_separation = 0.0 / 0.0;
   int line = 0;
+
+  bool withdrawal() const noexcept { return approach_separation == approach_separation; }
 };
 
 struct Scene {
@@ -104,6 +113,7 @@ struct SceneLawInputs {
   double height_scale = 0.0 / 0.0, summit_radius = 0.0 / 0.0, summit_density = 0.0 / 0.0, nominal_area = 0.0 / 0.0;
   double range_min = 0.0 / 0.0, range_max = 0.0 / 0.0;  // separation [s_min, s_max]
   double max_rel_error = 0.0 / 0.0;  // NaN: the default given to make_scene_law
+  double approach_separation = 0.0 / 0.0;  // NaN: the approach branch (SceneLaw's)
 };
 
 // A [[law]]'s keys beyond its material's, and what the command line and Python call each.
@@ -125,6 +135,7 @@ inline constexpr SceneLawKey scene_law_keys[] = {
     {"nominal_area", "--area", "nominal_area"},
     {"separation", "--law-range", "separation"},
     {"max_rel_error", "--law-tolerance", "max_rel_error"},
+    {"approach_separation", "--approach-separation", "approach_separation"},
 };
 // The name of a [[law]] key (its own or its material's) in `naming`'s vocabulary ('key', --option, keyword=).
 std::string scene_law_key_name(const std::string& key, LawNaming naming);

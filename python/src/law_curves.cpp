@@ -78,7 +78,7 @@ bool read_scene_key(const std::string& key, const py::handle& value, SceneLawInp
       {"contact_modulus", &in.contact_modulus}, {"shape", &in.shape},
       {"height_scale", &in.height_scale},       {"summit_radius", &in.summit_radius},
       {"summit_density", &in.summit_density},   {"nominal_area", &in.nominal_area},
-      {"max_rel_error", &in.max_rel_error}};
+      {"max_rel_error", &in.max_rel_error},     {"approach_separation", &in.approach_separation}};
   for (const auto& [name, target] : numbers)
     if (key == name) return *target = number_of(key, value), true;
   if (key == "name") {
@@ -194,7 +194,10 @@ void bind_law_curves(py::module_& m) {
       "law scene (docs/contact-laws.md section 8), served as an asperity.ContactCurves (write it with .write).\n"
       "law: " + contact_law_names() + ".\n"
       "The keywords are a [[law]] scene's keys (all of them, with their types: law_curves_keywords): " +
-      scene_keywords_text() + "\n(separation=(smin, smax): dimensionless, origin convention; max_rel_error: 1e-10 .. 1e-2),\n"
+      scene_keywords_text() + "\n(separation=(smin, smax): dimensionless, origin convention; max_rel_error: 1e-10 .. 1e-2;\n"
+      "approach_separation=s0, an adhesive law's (dmt, jkr, maugis-dugdale): the withdrawal (unloading, fixed grips)\n"
+      "branch after an approach to s0 <= smin instead of the approach branch; its pull_off_pressure is the\n"
+      "withdrawal's),\n"
       "and the law's parameters:\n" + law_keywords_doc() +
       "Raises asperity.Error naming the keyword for a missing, unknown or bad one, or where the curves cannot\n"
       "be tabulated. It runs without the GIL; Ctrl-C stops it (KeyboardInterrupt). progress=callable: called at\n"

@@ -106,6 +106,26 @@ std::vector<double> steffen_slopes(const std::vector<double>& x, const std::vect
   return slope;
 }
 
+// Steffen's slopes piece by piece: a break (a repeated separation, contact_curves_data.hpp) ends
+// one piece and starts the next, each its own monotone cubic (a piece of two nodes: the secant)
+std::vector<double> piecewise_steffen_slopes(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  std::vector<double> slope(n, 0.0);
+  std::size_t first = 0;
+  for (std::size_t end = 1; end <= n; ++end) {
+    if (end < n && x[end] != x[end - 1]) continue;
+    const std::vector<double> px(x.begin() + first, x.begin() + end), py(y.begin() + first, y.begin() + end);
+    if (px.size() == 2) {
+      slope[first] = slope[first + 1] = (py[1] - py[0]) / (px[1] - px[0]);
+    } else if (px.size() > 2) {
+      const std::vector<double> piece = steffen_slopes(px, py);
+      std::copy(piece.begin(), piece.end(), slope.begin() + first);
+    }
+    first = end;
+  }
+  return slope;
+}
+
 // Equal bins over ascending keys (the nodes' separations, or their -ln p): bin b starts in the
 // interval holding its left edge, so a query searches only the intervals its bin overlaps (one
 // or two for keys about evenly spread, four bins an interval; a bisection among them otherwise).
@@ -284,16 +304,30 @@ ContactCurves::ContactCurves(ContactCurvesData data) {
     log_area[i] = std::log(data.area_fraction[i]);
     if (impl->count) log_count[i] = std::log(data.summit_count[i]);
   }
-  const std::vector<double> area_slopes = steffen_slopes(impl->nodes, log_area);
-  const std::vector<double> count_slopes = steffen_slopes(impl->nodes, log_count);
+  const std::vector<double> area_slopes = piecewise_steffen_slopes(impl->nodes, log_area);
+  const std::vector<double> count_slopes = piecewise_steffen_slopes(impl->nodes, log_count);
   constexpr std::size_t line = 64 / sizeof(double);  // room to start on a cache line (the kernel's aligned loads)
   impl->record_storage.assign(count * detail::contact_record_size + line, 0.0);
   double* records = impl->record_storage.data();
   while (reinterpret_cast<std::uintptr_t>(records) % 64 != 0) ++records;
   for (std::size_t i = 0; i < count; ++i) {
     const double h = impl->nodes[i + 1] - impl->nodes[i];
-    impl->intervals.push_back({impl->nodes[i], impl->nodes[i + 1], 1 / h});
     double* record = records + i * detail::contact_record_size;
+    if (h == 0) {
+      // a break: never located (the directory finds the piece on its right); constant cubics of
+      // the node's values, so that its record's pressure is the node's like every record's
+      impl->intervals.push_back({impl->nodes[i], impl->nodes[i + 1], 0});
+      write_cubic({log_pressure[i], log_pressure[i]}, compressive, record);
+      if (impl->tension) {
+        const double q = std::log(data.tensile_pressure[i]);
+        write_cubic({q, q}, tensile, record);
+      }
+      write_cubic({log_area[i], log_area[i]}, area, record);
+      write_cubic({log_count[i], log_count[i]}, Output::count, record);
+      impl->minus_log2_pressures.push_back(-record[compressive_lane]);
+      continue;
+    }
+    impl->intervals.push_back({impl->nodes[i], impl->nodes[i + 1], 1 / h});
     // ln p with the nodes' own slopes, -k/p, times h (limited to stay monotone)
     HermiteCubic pressure{log_pressure[i], log_pressure[i + 1]};
     if (monotone_log_slopes(h, pressure.y0, pressure.y1, data.pressure[i], data.pressure[i + 1], data.stiffness[i],

@@ -287,6 +287,7 @@ SceneLaw read_law(const toml::value& table, double default_tolerance) {
   }
   if (const toml::value* separation = entry_of(table, "separation")) range(*separation, "separation", in.range_min, in.range_max);
   if (const toml::value* own = entry_of(table, "max_rel_error")) in.max_rel_error = number(*own, "max_rel_error");
+  in.approach_separation = optional_number("approach_separation");
   try {
     SceneLaw out = make_scene_law(in, LawNaming::scene_key, default_tolerance);
     out.line = static_cast<int>(table.location().line());

@@ -48,6 +48,31 @@ void check_range(const SceneLaw& out, LawNaming naming) {
     refuse("separation", "a law's separations are within [-1e3, 1e3] (dimensionless)", "too far");
 }
 
+// The withdrawal branch's approach separation s0 (NaN: the approach branch): an adhesive law's
+// (a law without adhesion unloads along its loading curve: nothing to tell apart), finite, at or
+// below the range's lower end (the withdrawal visits only s >= s0), and a contact on the bounded side
+void check_approach(const SceneLaw& out, ContactLawKind kind, LawNaming naming) {
+  const double s0 = out.approach_separation;
+  if (std::isnan(s0)) return;
+  const std::string name = scene_law_key_name("approach_separation", naming);
+  if (!is_adhesive(kind))
+    refuse("approach_separation",
+           std::string(contact_law_name(kind)) + " has no withdrawal branch apart from its approach (no adhesion: a "
+               "summit leaves contact at zero interference either way); " + name + " goes with dmt, jkr or maugis-dugdale",
+           "not adhesive");
+  if (!std::isfinite(s0) || std::fabs(s0) > 1e3)
+    refuse("approach_separation", name + " must be a finite dimensionless separation within [-1e3, 1e3]", "out of range");
+  if (out.side == Side::bounded && !(s0 < 0))
+    refuse("approach_separation", "on the bounded side nothing touches at separation >= 0: " + name + " must be below 0",
+           "nothing touched");
+  if (!(s0 <= out.range_min)) {
+    std::ostringstream message;
+    message << name << " " << s0 << " is above the separation range's lower end " << out.range_min
+            << ": the withdrawal after an approach to s0 visits only separations >= s0 (start the range at s0 or above)";
+    refuse("approach_separation", message.str(), "outside the range");
+  }
+}
+
 }  // namespace
 
 double checked_law_tolerance(double asked, double default_tolerance, LawNaming naming) {
@@ -106,6 +131,8 @@ SceneLaw make_scene_law(const SceneLawInputs& in, LawNaming naming, double defau
   out.range_min = in.range_min;
   out.range_max = in.range_max;
   check_range(out, naming);
+  out.approach_separation = in.approach_separation;
+  check_approach(out, in.law, naming);
   out.max_rel_error = checked_law_tolerance(in.max_rel_error, default_tolerance, naming);
   return out;
 }

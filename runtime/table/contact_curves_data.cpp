@@ -67,8 +67,20 @@ void ContactCurvesData::validate(const std::string& context) const {
   const double span = separation[n - 1] - separation[0];
   for (std::size_t i = 1; i < n; ++i) {
     const std::string at = " between nodes " + std::to_string(i - 1) + " and " + std::to_string(i);
+    if (separation[i] == separation[i - 1] && span > 0) {
+      // a break (an adhesive withdrawal's: the stiffness jumps there): the values continuous
+      if (tensile_pressure.empty()) fail("a separation repeats (a break) in curves without a tensile part" + at);
+      if (i < 2 || i + 2 > n || (i >= 2 && separation[i - 2] == separation[i - 1]))
+        fail("a break (a repeated separation) must be inside the range, one node apart from another" + at);
+      if (!(pressure[i] == pressure[i - 1] && tensile_pressure[i] == tensile_pressure[i - 1] &&
+            area_fraction[i] == area_fraction[i - 1] &&
+            (summit_count.empty() || summit_count[i] == summit_count[i - 1])))
+        fail("at a break (a repeated separation) the pressures, area fraction and count must be the same" + at);
+      continue;
+    }
     if (!(separation[i] - separation[i - 1] >= schema::min_contact_node_spacing * span) || !(span > 0))
-      fail("the separations must ascend strictly (nodes apart by at least 1e-12 of their span)" + at);
+      fail("the separations must ascend strictly (nodes apart by at least 1e-12 of their span; a break repeats "
+           "one)" + at);
     if (!(pressure[i] < pressure[i - 1])) fail("the pressure must fall strictly as the separation grows" + at);
     if (!(area_fraction[i] <= area_fraction[i - 1])) fail("the area fraction must never rise with the separation" + at);
   }

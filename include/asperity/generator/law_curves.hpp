@@ -24,12 +24,22 @@ namespace asperity::generator {
 // of summits in contact), area [m^2], load [N], stiffness -d load / d(sigma_s s) [N/m], and the
 // load's tensile part with its stiffness (asperity_load_split: the compressive part is load +
 // tensile_load; 0 for a law without adhesion). Adhesive laws on approach (loading): the summits
-// with omega >= 0, each on its law's stable branch (docs/contact-laws.md section 8).
+// with omega >= 0, each on its law's stable branch (docs/contact-laws.md section 8). On
+// withdrawal after an approach to s0 (SceneLaw::approach_separation): the summits that touched at
+// s0 (omega >= 0 there) and whose interference has not fallen below the law's lowest, omega_min;
+// from the kink s0 - omega_min / sigma_s on, summits leave at omega_min, whose load (the law's
+// at its end) drops to 0 there: the detach_ terms, the share of each part's stiffness that adds
+// (0 before the kink: the stiffness jumps there, a break of the table).
 struct LawMeans {
   double count = 0, area = 0, load = 0, stiffness = 0;
   double tensile_load = 0, tensile_stiffness = 0;
+  double detach_compressive_stiffness = 0, detach_tensile_stiffness = 0;
 };
 LawMeans law_means(const SceneLaw& law, double s);
+
+// The withdrawal's kink, s0 - omega_min / sigma_s (dimensionless): where the summits that touched
+// at s0 start to detach (s0 itself for DMT, whose omega_min is 0); NaN on approach.
+double withdrawal_kink(const SceneLaw& law) noexcept;
 
 struct LawCurvesResult {
   ContactCurvesData data;

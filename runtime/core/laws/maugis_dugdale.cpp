@@ -152,13 +152,21 @@ double md_parameter_solved(double lambda, double turning, double d) noexcept {
   // the start: linear in D between the bracket's ends
   double u = u_low + (u_high - u_low) * (grid.d[low] - d) / (grid.d[low] - grid.d[high]);
   if (!(u > u_low && u < u_high)) u = 0.5 * (u_low + u_high);
+  // Near a turning point D - D_end ~ (u - u_end)^2 (dD/du = 0 there), where Newton on D only halves
+  // the distance each step (over 50 evaluations at the interferences a withdrawal's quadrature
+  // visits, within 1e-10 of the end): Newton on sqrt(D - D_end), a simple root again
+  const bool turning_point = std::isfinite(turning);
+  const double target = turning_point ? std::sqrt(d - grid.d_high) : d;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double t = std::exp(u);
     const MdState st = md_state(lambda, t);
-    const double f = st.d - d;
+    const double root = turning_point ? std::sqrt(std::fmax(st.d - grid.d_high, 0.0)) : st.d;
+    const double f = root - target;
     if (f == 0) return t;
     (f > 0 ? u_low : u_high) = u;  // D falls as t grows
-    const double step = f / (t * st.dd), close = 4 * std::numeric_limits<double>::epsilon() * std::fmax(1.0, std::fabs(u));
+    // df/du: t dD/dt, over 2 sqrt(D - D_end) near a turning point (NaN at the end: a bisection)
+    const double slope = turning_point ? (root > 0 ? t * st.dd / (2 * root) : std::nan("")) : t * st.dd;
+    const double step = f / slope, close = 4 * std::numeric_limits<double>::epsilon() * std::fmax(1.0, std::fabs(u));
     if (std::fabs(step) <= close) return std::exp(u - step);  // converged (before the bracket: a step below u's ulp)
     double next = u - step;
     if (!(next > u_low && next < u_high)) next = 0.5 * (u_low + u_high);  // Newton left the bracket: bisect

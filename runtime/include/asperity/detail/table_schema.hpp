@@ -46,7 +46,11 @@
 //                                        (the map, its grid, the solver and its options),
 //                                        separation_datum (the datum of the separation, in words),
 //                                        definition (the quantities and their units)
-//       separation      [N]  m, strictly ascending: the nodes (the mean gap, from the datum)
+//       separation      [N]  m, strictly ascending: the nodes (the mean gap, from the datum);
+//                            with a tensile part, a separation may be repeated once (a break:
+//                            an adhesive law's withdrawal, where the stiffness jumps as summits
+//                            start to detach), inside the range, with the same pressure, tensile
+//                            pressure, area fraction and count at both: the stiffnesses left and right
 //       pressure        [N]  Pa, mean nominal pressure, > 0, strictly descending
 //       stiffness       [N]  Pa/m, -dp/d(separation), > 0
 //       area_fraction   [N]  real contact area / nominal area, in (0, 1], never rising
@@ -71,7 +75,9 @@
 //   ln p with the stored stiffness as slope (-k/p), limited to stay monotone (Fritsch-Carlson),
 //   and by Steffen's monotone cubic in ln(area fraction); the stiffness is -p d(ln p)/du of the
 //   interpolant. The tensile part like the pressure (ln p_t by cubic Hermite, slopes -k_t/p_t),
-//   the summit count like the area fraction (Steffen in ln).
+//   the summit count like the area fraction (Steffen in ln). A break ends one piece and starts
+//   the next: each piece's cubics are its own (Steffen's slopes from its own nodes); the break's
+//   separation is served from the piece on its right.
 #pragma once
 #include <cstddef>
 #include <cstdint>
