@@ -60,7 +60,7 @@ COLUMNS = [
     "verdict_tested", "gaussian_rejected",
     "gaussian_p_heights", "gaussian_p_heights_is_bound",
     "gaussian_p_summit_heights", "gaussian_p_summit_heights_is_bound",
-    "heights_orientation", "model_for_contact",
+    "summit_test_applicable", "heights_orientation", "side_told", "side_note", "model_for_contact",
 ] + [
     f"{sample}_{model}_{field}"
     for sample in _SAMPLES
@@ -86,7 +86,8 @@ _JSON_PATHS = {
     "verdict_tested": ("verdict", "tested"),
     **{key: ("verdict", key) for key in (
         "gaussian_rejected", "gaussian_p_heights", "gaussian_p_heights_is_bound", "gaussian_p_summit_heights",
-        "gaussian_p_summit_heights_is_bound", "heights_orientation", "model_for_contact")},
+        "gaussian_p_summit_heights_is_bound", "summit_test_applicable", "heights_orientation", "side_told", "side_note",
+        "model_for_contact")},
     "verdict_text": ("verdict", "text"),
 }
 

@@ -45,11 +45,22 @@ void bind_analysis_options(py::module_& m) {
       .def_readonly("p_heights_bound", &topo::SurfaceVerdict::p_heights_bound)
       .def_readonly("p_summits_bound", &topo::SurfaceVerdict::p_summits_bound)
       .def_readonly("orientation", &topo::SurfaceVerdict::orientation,
-                    "The heights' Weibull (weibull_tail or weibull_bounded), or gaussian: no orientation found.")
+                    "The side told (weibull_tail or weibull_bounded), or gaussian: the side cannot be told from the map.")
+      .def_readonly("summit_test_applicable", &topo::SurfaceVerdict::summit_test_applicable,
+                    "The summit heights' test speaks: at least MIN_SUMMITS_TO_TEST summits (else no weight in the verdict).")
+      .def_readonly("summit_test_note", &topo::SurfaceVerdict::summit_test_note, "Why not, with the count, when not.")
+      .def_readonly("side_told", &topo::SurfaceVerdict::side_told,
+                    "The data determine the side (SIDE_INTERVAL_RATIO_MAX, side_rule); else no Weibull is named.")
+      .def_readonly("side_note", &topo::SurfaceVerdict::side_note,
+                    "The side told, or \"the side cannot be told from this map: \" and why.")
       .def_readonly("named", &topo::SurfaceVerdict::named)
       .def_readonly("model", &topo::SurfaceVerdict::model, "The model named for the contact (when named).")
       .def_readonly("text", &topo::SurfaceVerdict::text)
       .def("__repr__", [](const topo::SurfaceVerdict& v) { return v.text; });
+  m.attr("MIN_SUMMITS_TO_TEST") = topo::min_summits_to_test;
+  m.attr("SIDE_INTERVAL_RATIO_MAX") = topo::side_interval_ratio_max;
+  m.def("summit_test_rule", &topo::summit_test_rule, "When the summit heights' test speaks, in words.");
+  m.def("side_rule", &topo::side_rule, "When a side is told, in words.");
   py::class_<topo::NextSteps>(m, "NextSteps",
                               "What to do next with an analysis (next_steps): for the model the verdict names, the\n"
                               "`asperity contact` command, the Python call and its card's command; the map's exact-contact\n"

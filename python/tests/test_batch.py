@@ -154,8 +154,8 @@ def test_each_row_holds_its_surfaces_json(first_run):
         assert row["summit_radius_m"] == d["summits"]["radius_m"] and row["surrogates"] == 49
         v = d["verdict"]
         for key in ("gaussian_rejected", "gaussian_p_heights", "gaussian_p_heights_is_bound",
-                    "gaussian_p_summit_heights", "gaussian_p_summit_heights_is_bound", "heights_orientation",
-                    "model_for_contact"):
+                    "gaussian_p_summit_heights", "gaussian_p_summit_heights_is_bound", "summit_test_applicable",
+                    "heights_orientation", "side_told", "side_note", "model_for_contact"):
             assert row[key] == v[key], key
         assert row["verdict_text"] == v["text"]
         for sample in ("summit_heights", "heights"):

@@ -553,3 +553,25 @@ def test_spectral_random_field():
     assert np.array_equal(field.heights, again.heights)
     with pytest.raises(asperity.Error):
         topography.spectral_random_field(2, 96, 1e-7, 1e-7, topography.CorrelationFunction.gaussian, 2.0)
+
+
+def test_the_verdict_says_when_a_test_cannot_speak_and_when_the_side_cannot_be_told():
+    """Issue 40, items 2 and 3: a smooth 64^2 map has about ten summits: its summit test is not
+    applicable (with the count), and a Gaussian map tells no side; the Python record, the JSON and
+    the rules' constants agree."""
+    field = topography.spectral_random_field(64, 64, 1e-7, 1e-7, topography.CorrelationFunction.gaussian, 8, 7001)
+    analysis = topography.analyse_height_map(field, topography.AnalysisOptions(
+        assessment=topography.AssessmentOptions(bootstrap=40, threads=2), sampling_factors=[1]))
+    verdict, document = analysis.verdict, analysis.to_dict()["verdict"]
+    assert analysis.summit_heights.n < topography.MIN_SUMMITS_TO_TEST == 100
+    assert not verdict.summit_test_applicable and document["summit_test_applicable"] is False
+    assert verdict.summit_test_note == document["summit_test_note"]
+    assert verdict.summit_test_note.startswith(f"not applicable: {analysis.summit_heights.n} summits")
+    assert document["summit_test_min_summits"] == topography.MIN_SUMMITS_TO_TEST
+    assert document["summit_test_rule"] == topography.summit_test_rule()
+    assert not verdict.side_told and document["side_told"] is False and document["heights_orientation"] == "none"
+    assert verdict.side_note == document["side_note"] and verdict.side_note.startswith("the side cannot be told from this map")
+    assert document["side_rule"] == topography.side_rule() and "3 times" in topography.side_rule()
+    assert topography.SIDE_INTERVAL_RATIO_MAX == 3
+    assert "The side cannot be told from this map" in verdict.text
+    assert document["model_for_contact"] in ("gaussian", "none")

@@ -389,8 +389,16 @@ ordered_json verdict_json(const SurfaceVerdict& v) {
       {"gaussian_p_heights_is_bound", v.p_heights_bound},
       {"gaussian_p_summit_heights", number(v.p_summits)},
       {"gaussian_p_summit_heights_is_bound", v.p_summits_bound},
-      {"rule", "each sample's Gaussian test at half the significance (Bonferroni)"},
+      {"rule", "each sample's Gaussian test that speaks at the significance shared among them (Bonferroni: half each "
+               "when both speak)"},
+      {"summit_test_applicable", v.summit_test_applicable},
+      {"summit_test_min_summits", min_summits_to_test},
+      {"summit_test_note", v.summit_test_note},
+      {"summit_test_rule", summit_test_rule()},
       {"heights_orientation", v.orientation == HeightModel::gaussian ? "none" : to_string(v.orientation)},
+      {"side_told", v.side_told},
+      {"side_note", v.side_note},
+      {"side_rule", side_rule()},
       {"model_for_contact", v.named ? to_string(v.model) : "none"},
       {"text", v.text}};
 }
