@@ -48,6 +48,7 @@ BINS = (0, 20, 35, 50, 80, 100, 130, 200, 400, 10**9)
 def summits(rows):
     """the summit heights' test at 2.5% (half the significance) against the summit count"""
     table = defaultdict(lambda: defaultdict(lambda: [0, 0]))
+    null_p = defaultdict(list)  # the p-values on the Gaussian maps: near 1 where the test cannot speak
     for r in rows:
         n = int(r["summits"])
         b = next(lo for lo, hi in zip(BINS, BINS[1:]) if lo <= n < hi)
@@ -56,14 +57,17 @@ def summits(rows):
         cell = table[kind][b]
         cell[0] += float(r["p_summits"]) < 0.025
         cell[1] += 1
+        if shape == 0:
+            null_p[b].append(float(r["p_summits"]))
     kinds = sorted(table)
     bins = sorted({b for k in kinds for b in table[k]})
-    print("| summits | " + " | ".join(kinds) + " |")
-    print("|---|" + "---|" * len(kinds))
+    print("| summits | " + " | ".join(kinds) + " | mean p, Gaussian maps |")
+    print("|---|" + "---|" * len(kinds) + "---:|")
     for b in bins:
         hi = BINS[BINS.index(b) + 1]
         label = f"{b}–{hi - 1}" if hi < 10**9 else f"{b}+"
-        print(f"| {label} | " + " | ".join(rate(*table[k][b]) if table[k][b][1] else "–" for k in kinds) + " |")
+        mean_p = f"{sum(null_p[b]) / len(null_p[b]):.2f}" if null_p[b] else "–"
+        print(f"| {label} | " + " | ".join(rate(*table[k][b]) if table[k][b][1] else "–" for k in kinds) + f" | {mean_p} |")
 
 
 def sides(rows):
