@@ -150,3 +150,46 @@ def test_the_summit_counts_stored_bound_is_exposed_and_holds(tmp_path):
         assert asperity.ContactCurves(path).summit_count_max_rel_error == bound
     assert weibull.summit_count_max_rel_error > 1e-6  # beyond the asked error: why it is stated
     assert gaussian.summit_count_max_rel_error <= 1e-6
+
+
+JKR = dict(SURFACE, height_scale=2e-9, work_of_adhesion=0.5, separation=(-1, 4), max_rel_error=1e-6)
+
+
+def test_the_withdrawal_branch(tmp_path):
+    # an adhesive law's unloading curves after an approach to s0 (issue 41, item 2): the same
+    # table as `asperity contact --law jkr ... --approach-separation -1`, its pull-off the
+    # withdrawal's, greater than the approach's, and written and read back with its break
+    approach = asperity.law_curves("jkr", **JKR)
+    withdrawal = asperity.law_curves("jkr", **dict(JKR, approach_separation=-1))
+    assert "withdrawal (unloading, fixed grips) branch after an approach to s0 = -1" in withdrawal.description
+    assert withdrawal.pull_off_pressure == pytest.approx(-47883.3048, rel=1e-8)
+    assert withdrawal.pull_off_pressure < approach.pull_off_pressure < 0
+    # at s0 the summits' state is the approach's: the same curves there, within both bounds
+    u0 = withdrawal.min_separation
+    assert withdrawal.pressure(u0) == pytest.approx(approach.pressure(u0), rel=1e-5)
+    # the break: a separation stored twice
+    nodes = withdrawal.nodes["separation"]
+    assert np.count_nonzero(np.diff(nodes) == 0) == 1
+    path = tmp_path / "withdrawal.h5"
+    withdrawal.write(path)
+    back = asperity.ContactCurves(path)
+    u = np.linspace(back.min_separation, back.max_separation, 33)
+    assert np.array_equal(back.pressure(u), withdrawal.pressure(u))
+    assert back.pull_off_separation == withdrawal.pull_off_separation
+    # the inverse serves the stable part, up to the pull-off
+    p = withdrawal.pressure(0.5 * (u0 + withdrawal.pull_off_separation))
+    assert withdrawal.separation_at_pressure(p) == pytest.approx(0.5 * (u0 + withdrawal.pull_off_separation), rel=1e-9)
+    assert withdrawal.min_pressure == pytest.approx(withdrawal.pull_off_pressure, rel=1e-12)
+
+
+def test_the_withdrawal_branchs_refusals():
+    with pytest.raises(asperity.Error, match=r"approach_separation=.*above the separation range's lower end"):
+        asperity.law_curves("jkr", **dict(JKR, approach_separation=0))
+    with pytest.raises(asperity.Error, match="kogut-etsion has no withdrawal branch apart from its approach"):
+        asperity.law_curves("kogut-etsion", **dict(KE, approach_separation=-1))
+    # DMT's lowest interference is 0: its withdrawal is its approach, said so
+    dmt = dict(SURFACE, height_scale=2e-9, work_of_adhesion=0.5, separation=(-1, 4), max_rel_error=1e-6)
+    withdrawal = asperity.law_curves("dmt", **dict(dmt, approach_separation=-1))
+    approach = asperity.law_curves("dmt", **dmt)
+    assert "the same curves as the approach branch" in withdrawal.description
+    assert np.array_equal(withdrawal.nodes["pressure"], approach.nodes["pressure"])
