@@ -193,3 +193,25 @@ def test_the_withdrawal_branchs_refusals():
     approach = asperity.law_curves("dmt", **dmt)
     assert "the same curves as the approach branch" in withdrawal.description
     assert np.array_equal(withdrawal.nodes["pressure"], approach.nodes["pressure"])
+
+
+def test_the_withdrawal_from_a_scenes_text():
+    # the [[law]] key: the scene reader's path (tablegen --scene), the same curves as law_curves'
+    text = """[[law]]
+law = "jkr"
+work_of_adhesion = 0.5
+contact_modulus = 1.13e11
+distribution = "gaussian"
+height_scale = 2e-9
+summit_radius = 1e-4
+summit_density = 4e8
+nominal_area = 1e-4
+separation = [-1.0, 4.0]
+max_rel_error = 1e-6
+approach_separation = -1.0
+"""
+    scene = asperity.tabulate_law_scene(text)
+    curves = asperity.law_curves("jkr", **dict(JKR, approach_separation=-1))
+    assert np.array_equal(scene.nodes["pressure"], curves.nodes["pressure"])
+    with pytest.raises(asperity.Error, match=r"approach_separation.*above the separation range's lower end"):
+        asperity.tabulate_law_scene(text.replace("approach_separation = -1.0", "approach_separation = 1.0"))
