@@ -22,7 +22,8 @@ std::string GenerateOptions::describe() const {
   std::ostringstream text;
   text.precision(12);
   text << "shapes=" << shape_min << ":" << shape_max << ":" << shape_log_step << " (step in ln a - 1/a)"
-       << " (bounded side: " << shape_log_step * bounded_step_factor << ")"
+       << " (bounded side: " << shape_log_step * bounded_step_factor << "; from a = " << large_shape_from << ": "
+       << large_shape_step_factor << " of each)"
        << " sides=" << (tail ? "tail" : "") << (tail && bounded ? "," : "") << (bounded ? "bounded" : "")
        << " gaussian=" << (gaussian ? "yes" : "no") << " tolerance=" << tolerance
        << " check_stride=" << check_stride;
@@ -51,7 +52,7 @@ std::vector<double> shape_grid(const GenerateOptions& options, Side side) {
       side == Side::bounded ? options.shape_log_step * GenerateOptions::bounded_step_factor : options.shape_log_step;
   // Refuse a grid a table may not hold before making it (a step of 1e-9 would be 1e10 nodes).
   const double nodes = (shape_grid_variable(options.shape_max) - shape_grid_variable(options.shape_min)) /
-                           log_step + shape_stencil + 6;
+                           (log_step * GenerateOptions::large_shape_step_factor) + shape_stencil + 6;  // at most
   if (!(nodes <= schema::max_shapes))
     throw Error("the shape grid would have " + std::to_string(static_cast<long long>(std::min(nodes, 1e18))) +
                 " nodes, more than a table holds (" + std::to_string(schema::max_shapes) + "): use a larger STEP");
@@ -67,7 +68,10 @@ std::vector<double> shape_grid(const GenerateOptions& options, Side side) {
   double first_step = 0, last_step = 0;
   for (std::size_t piece = 0; piece + 1 < anchors.size(); ++piece) {
     const double q_lo = shape_grid_variable(anchors[piece]), q_hi = shape_grid_variable(anchors[piece + 1]);
-    const int intervals = std::max(1, static_cast<int>(std::ceil((q_hi - q_lo) / log_step - 1e-9)));
+    const double piece_step = anchors[piece] >= GenerateOptions::large_shape_from
+                                  ? log_step * GenerateOptions::large_shape_step_factor
+                                  : log_step;
+    const int intervals = std::max(1, static_cast<int>(std::ceil((q_hi - q_lo) / piece_step - 1e-9)));
     const double step = (q_hi - q_lo) / intervals;
     if (piece == 0) first_step = step;
     last_step = step;

@@ -10,6 +10,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -26,8 +27,13 @@ using namespace asperity;
 using test::Precise;
 using test::Probe;
 
+// ASPERITY_ACCURACY_TABLE=FILE: measure another table (a denser shape grid, say: the
+// between-shape trade-off of docs/accuracy.md) with the same probes and references
 const Table& table() {
-  static const Table instance = Table::open(ASPERITY_TEST_TABLE);
+  static const Table instance = [] {
+    const char* other = std::getenv("ASPERITY_ACCURACY_TABLE");
+    return Table::open(other && *other ? other : ASPERITY_TEST_TABLE);
+  }();
   return instance;
 }
 
@@ -199,9 +205,15 @@ TEST(Accuracy, BetweenGridShapes) {
     const double direct_error = std::isinf(probe.reference) && probe.reference < 0
                                     ? (direct_value == probe.reference ? 0.0 : INFINITY)
                                     : std::fabs(std::expm1(direct_value - probe.reference));
-    Worst& direct_worst = report[band + ", direct"];
+    // the blend alone, banded as the nodes' accuracy is (below X = 1e-100, |ln X| > 230 times a
+    // few roundings of ln X is already 1e-12: the problem's conditioning, not the blend)
+    Worst& direct_worst =
+        report[band + ", direct" + (probe.reference >= std::log(1e-100) ? ", X >= 1e-100" : ", X < 1e-100")];
     if (!(direct_error <= direct_worst.error)) direct_worst = {direct_error, where};
-    EXPECT_LE(direct_error, between_tolerance(curve))
+    // the blend itself where X >= 1e-100, on both sides (issue 41, item 8: the shape grid finer from
+    // a = 5 on; 8.5e-12 before, docs/accuracy.md): 2e-12; the bound of the whole range elsewhere
+    const double direct_tolerance = probe.reference >= std::log(1e-100) ? 2e-12 : between_tolerance(curve);
+    EXPECT_LE(direct_error, direct_tolerance)
         << "direct " << to_string(curve.side()) << " " << where << " value " << direct_value << " reference "
         << probe.reference;
   }

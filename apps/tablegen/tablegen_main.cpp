@@ -352,8 +352,10 @@ int main(int argc, char** argv) {
       ->type_name("SCENE.toml");
   cli::add_text(app, "--shapes", o.shapes,
                 "Weibull shapes served, LO to HI: grid nodes at LO, HI and 1, 2, 3, 5, uniform in q = ln(a) - 1/a "
-                "between them with spacing at most STEP (2/3 of it on the bounded side), six nodes more past each "
-                "end; every node within [" + format_double(weibull_shape_min) + ", " + format_double(weibull_shape_max) +
+                "between them with spacing at most STEP (2/3 of it on the bounded side; from a = " +
+                    format_double(generator::GenerateOptions::large_shape_from) + " on, " +
+                    format_double(generator::GenerateOptions::large_shape_step_factor) +
+                    " of each), six nodes more past each end; every node within [" + format_double(weibull_shape_min) + ", " + format_double(weibull_shape_max) +
                     "], at most 1000 (default 0.5:20:0.075)")
       ->type_name("LO:HI:STEP");
   cli::add_text(app, "--sides", o.sides, "Weibull sides to tabulate: tail, bounded, both (default) or none")

@@ -18,6 +18,12 @@ struct GenerateOptions {
   // interpolate (where tau = d^a ~ 10 turns the first-contact power law into the all-touching
   // polynomial); at the tail's spacing they reached 5.5e-10 there, at 2/3 of it 8.7e-12.
   static constexpr double bounded_step_factor = 2.0 / 3.0;
+  // Above a = 5 (the grid's last anchor) this much finer again, on both sides: the curves depend
+  // on the shape most steeply there (tail s ~ 1.1-1.4 at a ~ 19: 5.9e-12 between nodes at the
+  // full step, the bounded side's tau ~ 10 at a ~ 19.5: 8.5e-12), and the 12-point blend's error
+  // falls like the step to the 12th power (docs/accuracy.md, "Between grid shapes").
+  static constexpr double large_shape_step_factor = 0.8;
+  static constexpr double large_shape_from = 5;
   bool tail = true;
   bool bounded = true;
   bool gaussian = true;
