@@ -277,7 +277,13 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite
   const double above_min = std::nextafter(omega_min, std::numeric_limits<double>::infinity());
   const double direction = tail ? 1 : -1;
   auto end_omega = [&](double z) { return detaching && z == edge ? omega_min : omega_of(z); };
-  auto integrate = [&](auto quantity) {
+  auto density_slope = [&](double z) {  // d phi / dz
+    if (!weibull) return -z * density(scene, z);
+    const double phi = density(scene, z), a = scene.shape;
+    return phi == 0 ? 0.0 : phi * ((a - 1) / z - a * std::pow(z, a - 1));
+  };
+  // `load`, given (a stiffness: quantity = d load / d omega), takes the edge's piece by parts
+  auto integrate_parts = [&](auto quantity, auto load, bool by_parts) {
     double total = 0;
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
       poll_interrupt();  // a quadrature of an adhesive law's response takes milliseconds
@@ -286,14 +292,27 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite
       const double omega_a = end_omega(a), omega_b = end_omega(b);
       if (withdrawal && (tail ? a == edge : b == edge)) {
         // the piece at the contact's edge in x = v^2 from it: the law's (omega - omega_min)^(1/2)
-        // there (JKR, MD at a turning point) becomes smooth in v, and its stiffness's ^(-1/2) too
+        // there (JKR, MD at a turning point) becomes smooth in v. A stiffness by parts,
+        // (1/(sigma dz/domega-sign)) ([X phi] - int X phi' dz): its (omega - omega_min)^(-1/2) is
+        // solved from omega where D is flat in t, to about half the digits (MD at lambda = 3: no
+        // quadrature converged on it), the load X is not
         const double omega_edge = tail ? omega_a : omega_b;
-        total += finite.integrate(
+        const double integral = finite.integrate(
             [&](double v, double) {
-              const double x = v * v, z = tail ? a + x : b - x, phi = density(scene, z);
-              return phi == 0 ? 0.0 : quantity(std::max(omega_edge + sigma * x, above_min)) * phi * 2 * v;
+              const double x = v * v, z = tail ? a + x : b - x;
+              const double phi = by_parts ? density_slope(z) : density(scene, z);
+              const double w = std::max(omega_edge + sigma * x, above_min);
+              return phi == 0 ? 0.0 : (by_parts ? load(w) : quantity(w)) * phi * 2 * v;
             },
             0.0, std::sqrt(b - a), quadrature_tolerance);
+        if (!by_parts) {
+          total += integral;
+        } else {
+          // at omega_min exactly the law gives its branch end's state (in contact)
+          const double ends = load(std::max(omega_b, omega_min)) * density(scene, b) -
+                              load(std::max(omega_a, omega_min)) * density(scene, a);
+          total += direction / sigma * (ends - integral);
+        }
         continue;
       }
       // x from a; the complement from b given exactly, so that an end's distance is exact
@@ -311,6 +330,7 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite
     }
     return total;
   };
+  auto integrate = [&](auto quantity) { return integrate_parts(quantity, quantity, false); };
   // the fraction in contact in closed form (the quadrature's rounding could make it rise where
   // it is 1 to rounding): Gaussian z >= edge; Weibull tail z >= max(edge, 0); bounded z <= edge
   if (!weibull) out.count = 0.5 * std::erfc(edge / std::sqrt(2.0));
@@ -335,8 +355,10 @@ LawMeans integrate_law_means(const SceneLaw& scene, double s, Integrator& finite
     out.area = integrate([&](double omega) { return split(omega).area; });
     compressive = integrate([&](double omega) { return split(omega).load.compressive; });
     out.tensile_load = integrate([&](double omega) { return split(omega).load.tensile; });
-    compressive_stiffness = integrate([&](double omega) { return split(omega).load.compressive_stiffness; });
-    out.tensile_stiffness = integrate([&](double omega) { return split(omega).load.tensile_stiffness; });
+    compressive_stiffness = integrate_parts([&](double omega) { return split(omega).load.compressive_stiffness; },
+                                            [&](double omega) { return split(omega).load.compressive; }, withdrawal);
+    out.tensile_stiffness = integrate_parts([&](double omega) { return split(omega).load.tensile_stiffness; },
+                                            [&](double omega) { return split(omega).load.tensile; }, withdrawal);
   } else {
     out.area = integrate([&](double omega) { return asperity_response(law, omega).area; });
     compressive = integrate([&](double omega) { return asperity_response(law, omega).load; });
