@@ -483,6 +483,12 @@ std::vector<double> starting_nodes(const SceneLaw& law) {
 std::string singular_point(const SceneLaw& law, double s) {
   std::ostringstream text;
   text.precision(6);
+  const double kink = withdrawal_kink(law);
+  if (law.withdrawal() && std::fabs(s - kink) < 1e-6 * (law.range_max - law.range_min)) {
+    text << "at s = " << kink << " the withdrawal's kink, where summits start to leave at the law's lowest "
+         << "interference (the stiffness jumps there, and varies as (s_k - s)^(1/2) on its left)";
+    return text.str();
+  }
   if (law.distribution != Distribution::weibull) {
     text << "the curves have a singular point there";
     return text.str();
