@@ -78,9 +78,8 @@ CompactCurve::CompactCurve(Distribution distribution, Side side, double shape, c
     if (!has_order(order)) continue;
     for (std::size_t i = 0; i < maps_.size(); ++i)
       for (std::ptrdiff_t j = 0; j < intervals_[i]; ++j) {
-        const double* knot = knot_data + (order * (total_intervals_ + static_cast<std::ptrdiff_t>(maps_.size())) +
-                                          first_[i] + static_cast<std::ptrdiff_t>(i) + j) * 3;
-        hermite_to_power_basis(knot, 1 / inverse_step_[i], &coefficients_[order_offset_[order] + (first_[i] + j) * 6]);
+        hermite_to_power_basis(knot_data + knot_offset(order, i, j), 1 / inverse_step_[i],
+                               &coefficients_[order_offset_[order] + (first_[i] + j) * 6]);
       }
   }
 }
@@ -191,6 +190,14 @@ void CompactCurve::log_values(double separation, int first, int last, double* ou
   }
 }
 
+// Where an interval's left knot is in knot data [order][knot][3]: a segment of n intervals has n + 1
+// knots, so the knots before segment i are first_[i] + i
+std::ptrdiff_t CompactCurve::knot_offset(int twice_order, std::size_t segment, std::ptrdiff_t interval) const noexcept {
+  const auto segments = static_cast<std::ptrdiff_t>(maps_.size());
+  return (twice_order * (total_intervals_ + segments) + first_[segment] + static_cast<std::ptrdiff_t>(segment) +
+          interval) * 3;
+}
+
 // The interval's quintic at x = position in [0, 1]: converted when the curve was made, or made
 // now from the borrowed knots
 double CompactCurve::table_log_value(int twice_order, std::size_t segment, std::ptrdiff_t interval,
@@ -198,10 +205,7 @@ double CompactCurve::table_log_value(int twice_order, std::size_t segment, std::
   double made[6];
   const double* c = made;
   if (knots_) {
-    const std::ptrdiff_t total_knots = total_intervals_ + static_cast<std::ptrdiff_t>(maps_.size());
-    hermite_to_power_basis(
-        knots_ + (twice_order * total_knots + first_[segment] + static_cast<std::ptrdiff_t>(segment) + interval) * 3,
-        1 / inverse_step_[segment], made);
+    hermite_to_power_basis(knots_ + knot_offset(twice_order, segment, interval), 1 / inverse_step_[segment], made);
   } else {
     c = &coefficients_[order_offset_[twice_order] + (first_[segment] + interval) * 6];
   }

@@ -75,6 +75,7 @@ class CompactCurve {
   CompactCurve(Distribution distribution, Side side, double shape, const std::vector<SegmentSpec>& layout,
                unsigned order_mask);  // the segments, series and values at 0; no interval data
   double table_log_value(int twice_order, std::size_t segment, std::ptrdiff_t interval, double position) const noexcept;
+  std::ptrdiff_t knot_offset(int twice_order, std::size_t segment, std::ptrdiff_t interval) const noexcept;
   double log_value_series(int twice_order, double separation) const noexcept;
   double log_value_closed_order_zero(double separation) const noexcept;
 
