@@ -30,7 +30,7 @@ run contact-gauss $asp contact --dist gaussian --sigma 1e-6 --radius 1e-4 --dens
 run contact-card $asp contact $W --export calculix --pressure-range 1e4:1e7
 for law in "hertz" "chang-etsion-bogy --hardness 2e9 --law-poisson 0.3" "zhao-maietta-chang --hardness 2e9" \
   "kogut-etsion --yield-strength 1e9 --law-poisson 0.3" "jackson-green --yield-strength 1e9 --law-poisson 0.3" \
-  "jackson-green --yield-strength 1e9 --law-poisson 0.3 --geometric-hardness 2006" "dmt --work-of-adhesion 0.05" \
+  "jackson-green --yield-strength 1e9 --law-poisson 0.3 --geometric-hardness exponential" "dmt --work-of-adhesion 0.05" \
   "jkr --work-of-adhesion 0.05" "maugis-dugdale --work-of-adhesion 0.05 --maugis-parameter 3"; do
   # shellcheck disable=SC2086
   run "law-${law%% *}-$n" $asp contact --law $law --dist gaussian --sigma 1e-6 --radius 1e-4 --density 1e10 \

@@ -120,8 +120,8 @@ def replace_section(text, name, body):
 
 def main(data, docs):
     data, docs = pathlib.Path(data), pathlib.Path(docs)
-    names = ["hertz", "chang-etsion-bogy", "zhao-maietta-chang", "kogut-etsion", "jackson-green-2005",
-             "jackson-green-2006"]
+    names = ["hertz", "chang-etsion-bogy", "zhao-maietta-chang", "kogut-etsion", "jackson-green-cosine",
+             "jackson-green-exponential"]
     single = read(data / "single_laws.csv")
     for quantity, ylabel, name in (("load", "P / P_c (Kogut-Etsion's)", "load"),
                                    ("area", "A / A_c", "area"),

@@ -40,8 +40,8 @@ std::vector<Law> elastic_plastic() {
           {"chang-etsion-bogy", chang_etsion_bogy_law(R, E, H, NU)},
           {"zhao-maietta-chang", zhao_maietta_chang_law(R, E, H)},
           {"kogut-etsion", kogut_etsion_law(R, E, Y, NU)},
-          {"jackson-green-2005", jackson_green_law(R, E, Y, NU, JacksonGreenHardness::cosine_2005)},
-          {"jackson-green-2006", jackson_green_law(R, E, Y, NU, JacksonGreenHardness::exponential_2006)}};
+          {"jackson-green-cosine", jackson_green_law(R, E, Y, NU, JacksonGreenHardness::cosine)},
+          {"jackson-green-exponential", jackson_green_law(R, E, Y, NU, JacksonGreenHardness::exponential)}};
 }
 
 // Every double a stream writes in the shortest text that reads back to it (format_double, as the

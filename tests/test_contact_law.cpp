@@ -177,7 +177,7 @@ TEST(ContactLaw, BranchesChangeAtTheSwitchPoints) {
 // Jackson-Green 2005: omega_c = (pi C S_y / 2E)^2 R, C = 1.295 exp(0.736 nu); Hertz below 1.9 omega_c;
 // A = pi R w (x/1.9)^B, B = 0.14 exp(23 S_y/E); P/Pc = exp(-x^(5/12)/4) x^(3/2) + 4 (H_G/(C S_y)) (1 - exp(-x^(5/9)/25)) x
 TEST(ContactLaw, JacksonGreen) {
-  for (auto form : {JacksonGreenHardness::cosine_2005, JacksonGreenHardness::exponential_2006}) {
+  for (auto form : {JacksonGreenHardness::cosine, JacksonGreenHardness::exponential}) {
     const ContactLaw law = jackson_green_law(R, E, Y, NU, form);
     const double c = 1.295 * std::exp(0.736 * NU), b = 0.14 * std::exp(23 * Y / E);
     const double wc = std::pow(pi * c * Y / (2 * E), 2) * R;
@@ -188,7 +188,7 @@ TEST(ContactLaw, JacksonGreen) {
     for (double x : {1.9, 10.0, 100.0}) {
       const double w = x * wc, area = pi * R * w * std::pow(x / 1.9, b);
       const double u = std::sqrt(area / pi) / R;
-      const double hg = form == JacksonGreenHardness::cosine_2005 ? 2.84 - 0.92 * (1 - std::cos(pi * u))
+      const double hg = form == JacksonGreenHardness::cosine ? 2.84 - 0.92 * (1 - std::cos(pi * u))
                                                                   : 2.84 * (1 - std::exp(-0.82 * std::pow(u, -0.7)));
       const double p = pc * (std::exp(-0.25 * std::pow(x, 5.0 / 12)) * std::pow(x, 1.5) +
                              4 * hg / c * (1 - std::exp(-std::pow(x, 5.0 / 9) / 25)) * x);
@@ -213,7 +213,7 @@ TEST(ContactLaw, JacksonGreen) {
 // valid_up_to every law of both forms, S_y/E* 0.001 to 0.8, is finite and its load never falls
 // (before: NaN where a = R comes before 1.9 omega_c, S_y/E* 0.4 and 0.8, served without a word).
 TEST(ContactLaw, JacksonGreenIsSupportedWhereItsLoadRises) {
-  for (auto form : {JacksonGreenHardness::cosine_2005, JacksonGreenHardness::exponential_2006}) {
+  for (auto form : {JacksonGreenHardness::cosine, JacksonGreenHardness::exponential}) {
     for (double ratio : {0.001, 0.005, 0.0087, 0.02, 0.025, 0.03, 0.04, 0.08, 0.2, 0.4, 0.8}) {
       const ContactLaw law = jackson_green_law(R, E, ratio * E, NU, form);
       const double transition = 1.9 * law.critical_interference;

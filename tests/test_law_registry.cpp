@@ -89,6 +89,29 @@ TEST(LawRegistry, BuiltInsAreListedOnceInTheirOrder) {
     EXPECT_EQ(static_cast<int>(law_parameters_begin()[k].id), k);
 }
 
+// The parameters' one list: the table is in the enum's order, the key is the enum's name, and
+// Jackson-Green's geometric hardness is chosen by its formula (the years were the wrong way round
+// before 0.3: refused, the message says why), the cosine form the default.
+TEST(LawRegistry, ParametersFromTheirOneList) {
+  ASSERT_EQ(law_parameters_end() - law_parameters_begin(), law_parameter_count);
+  for (int k = 0; k < law_parameter_count; ++k)
+    EXPECT_EQ(static_cast<int>(law_parameters_begin()[k].id), k) << law_parameters_begin()[k].key;
+  EXPECT_STREQ(law_parameter_info(LawParameter::yield_strength).key, "yield_strength");
+  EXPECT_STREQ(law_parameter_info(LawParameter::maugis_parameter).option, "--maugis-parameter");
+  double index = -1;
+  EXPECT_TRUE(law_choice_index(LawParameter::geometric_hardness, "cosine", index));
+  EXPECT_EQ(index, 0);
+  EXPECT_TRUE(law_choice_index(LawParameter::geometric_hardness, "exponential", index));
+  EXPECT_EQ(index, 1);
+  for (const char* year : {"2005", "2006"}) EXPECT_FALSE(law_choice_index(LawParameter::geometric_hardness, year, index));
+  EXPECT_NE(std::string(law_parameter_info(LawParameter::geometric_hardness).range_text).find("2005 and 2006 are not taken"),
+            std::string::npos);
+  const ContactLaw jg = make_contact_law(ContactLawKind::jackson_green, 1e-4, 1e11,
+                                         LawValues().set(LawParameter::yield_strength, 1e9).set(LawParameter::poisson, 0.3));
+  EXPECT_EQ(jg.jackson_green_hardness, JacksonGreenHardness::cosine);
+  EXPECT_EQ(law_parameters_text(jg), "Y = 1e+09 Pa, nu = 0.3, H_G = cosine");
+}
+
 TEST(LawRegistry, TypedConstructionEqualsTheFactories) {
   LawValues values;
   values.set(LawParameter::yield_strength, 1e9).set(LawParameter::poisson, 0.3);
@@ -97,7 +120,7 @@ TEST(LawRegistry, TypedConstructionEqualsTheFactories) {
   EXPECT_EQ(typed.critical_interference, factory.critical_interference);
   for (double w : {1e-9, 3e-8, 1e-6, 1e-5})
     EXPECT_EQ(asperity_response(typed, w).load, asperity_response(factory, w).load);
-  // an optional parameter takes its default: ZMC's K = 0.6, Jackson-Green's H_G 2005
+  // an optional parameter takes its default: ZMC's K = 0.6, Jackson-Green's cosine H_G
   LawValues zmc;
   zmc.set(LawParameter::hardness, 2e9);
   EXPECT_EQ(make_contact_law(ContactLawKind::zhao_maietta_chang, 1e-4, 1e11, zmc).pressure_factor, 0.6);

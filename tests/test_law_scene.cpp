@@ -66,7 +66,7 @@ std::vector<Case> cases() {
       {"jackson-green gaussian", scene_law(jackson_green_law(radius, modulus, yield, poisson), D::gaussian, S::tail, 2,
                                            -1.0, 4.0, 1e-6)},
       {"jackson-green 2006 weibull bounded 3",
-       scene_law(jackson_green_law(radius, modulus, yield, poisson, JacksonGreenHardness::exponential_2006), D::weibull,
+       scene_law(jackson_green_law(radius, modulus, yield, poisson, JacksonGreenHardness::exponential), D::weibull,
                  S::bounded, 3, -3.0, -0.02, 1e-6)},
       {"kogut-etsion weibull tail 20", scene_law(kogut_etsion_law(radius, modulus, yield, poisson), D::weibull,
                                                  S::tail, 20, -0.5, 1.2, 1e-6)},

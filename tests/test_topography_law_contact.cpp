@@ -111,7 +111,7 @@ TEST(LawContact, EveryParameterTheLawTakes) {
   options.law = "jackson-green";
   options.material.set(asperity::LawParameter::yield_strength, 1e9);
   options.material.set(asperity::LawParameter::poisson, 0.3);
-  options.choice[static_cast<int>(asperity::LawParameter::geometric_hardness)] = "2006";
+  options.choice[static_cast<int>(asperity::LawParameter::geometric_hardness)] = "exponential";
   const t::LawContact law =
       t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test",
                      [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
@@ -126,11 +126,11 @@ TEST(LawContact, EveryParameterTheLawTakes) {
     const double expected = parameter == asperity::LawParameter::yield_strength ? 1e9
                             : parameter == asperity::LawParameter::poisson      ? 0.3
                             : parameter == asperity::LawParameter::geometric_hardness
-                                ? 1  // "2006"
+                                ? 1  // "exponential"
                                 : NAN;
     EXPECT_EQ(law.parameters[k].value, expected) << asperity::law_parameter_info(parameter).key;
   }
-  EXPECT_EQ(law.parameters_text, "Y = 1e+09 Pa, nu = 0.3, H_G = 2006");
+  EXPECT_EQ(law.parameters_text, "Y = 1e+09 Pa, nu = 0.3, H_G = exponential");
 
   const t::LawContact hertz = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", maker("hertz"));
   EXPECT_TRUE(hertz.parameters.empty());
@@ -206,7 +206,7 @@ TEST(LawContact, RefusalsAndLimits) {
   // a fit without elastic curves has nothing to set the law beside
   t::ContactComparison without = *a.contact;
   for (t::ModelContact& m : without.models)
-    if (m.label == "gaussian") m.served = false;
+    if (m.kind == t::ContactModelKind::gaussian) m.served = false;
   EXPECT_THROW(t::compare_law(without, a.summits, t::HeightModel::gaussian, "test", maker("hertz")), asperity::Error);
   // a yield strength so low that the real area passes 1 within the pressures: stated, psi still given
   const t::LawContact soft =

@@ -18,7 +18,7 @@ LawValues given_values(const LawOptions& o) {
     if (!p->choices[0] || text.empty()) continue;
     double index;
     if (!law_choice_index(p->id, text, index))
-      usage(std::string(p->option) + ": '" + quote_text(text) + "' is not " + law_choices_text(p->id));
+      usage(std::string(p->option) + ": '" + quote_text(text) + "' is not " + p->range_text);
     values.set(p->id, index);
   }
   return values;

@@ -55,9 +55,17 @@ const char* contact_law_name(ContactLawKind kind) noexcept;
 // The kind of such a name; false (and `kind` untouched) for a name that is not a law's.
 bool contact_law_kind_of(const char* name, ContactLawKind& kind) noexcept;
 
-// Jackson-Green's geometric hardness H_G/S_y as a function of a/R: the 2005 paper's
-// 2.84 - 0.92 (1 - cos(pi a/R)), or the 2006 rough-surface paper's 2.84 (1 - exp(-0.82 (a/R)^-0.7)).
-enum class JacksonGreenHardness { cosine_2005, exponential_2006 };
+// Jackson-Green's geometric hardness H_G/S_y as a function of a/R, named by its formula:
+//   cosine       2.84 - 0.92 (1 - cos(pi a/R))       (Jackson & Green 2006, Tribol. Int. 39, 906)
+//   exponential  2.84 (1 - exp(-0.82 (a/R)^-0.7))    (Jackson & Green 2005, J. Tribol. 127, 343)
+// The old names had the years the wrong way round; kept, deprecated, for the same formulas.
+enum class JacksonGreenHardness {
+  cosine,
+  exponential,
+  cosine_2005 [[deprecated("the cosine form is Jackson & Green 2006's: JacksonGreenHardness::cosine")]] = cosine,
+  exponential_2006 [[deprecated("the exponential form is Jackson & Green 2005's: JacksonGreenHardness::exponential")]] =
+      exponential,
+};
 
 // What one asperity carries at one interference.
 struct AsperityResponse {
@@ -85,7 +93,7 @@ struct ContactLaw {
   double pressure_factor = 0;        // CEB, KE: K = 0.454 + 0.41 nu; ZMC: its K (0.6 in the paper)
   double work_of_adhesion = 0;       // Delta gamma [J/m^2] (DMT, JKR, MD)
   double maugis_parameter = 0;       // lambda (MD)
-  JacksonGreenHardness jackson_green_hardness = JacksonGreenHardness::cosine_2005;
+  JacksonGreenHardness jackson_green_hardness = JacksonGreenHardness::cosine;
   // derived by the factory
   double critical_interference = 0;  // omega_c: CEB, KE, JG (first yield); ZMC omega_1; adhesive: the length scale
   double critical_load = 0;          // P_c: the Hertz load at omega_c (ZMC: K H pi R omega_1); adhesive: pi dgamma R
@@ -108,7 +116,7 @@ ContactLaw zhao_maietta_chang_law(double radius, double modulus, double hardness
 ContactLaw kogut_etsion_law(double radius, double modulus, double yield_strength, double poisson) noexcept;
 // JG 2005: omega_c = (pi C S_y / (2 E*))^2 R, C = 1.295 exp(0.736 nu).
 ContactLaw jackson_green_law(double radius, double modulus, double yield_strength, double poisson,
-                             JacksonGreenHardness hardness = JacksonGreenHardness::cosine_2005) noexcept;
+                             JacksonGreenHardness hardness = JacksonGreenHardness::cosine) noexcept;
 ContactLaw dmt_law(double radius, double modulus, double work_of_adhesion) noexcept;
 ContactLaw jkr_law(double radius, double modulus, double work_of_adhesion) noexcept;
 // lambda = 2 sigma_0 (R / (pi dgamma K^2))^(1/3), K = (4/3) E* (Maugis 1992; sigma_0 the Dugdale

@@ -9,6 +9,7 @@
 // line in runtime/CMakeLists.txt; then its tests and docs. A program may also register a law of
 // its own at run time (register_contact_law): tests/test_law_registry.cpp does.
 #pragma once
+#include <cmath>  // HUGE_VAL, the parameters' list
 #include <cstddef>
 #include <string>
 
@@ -18,17 +19,41 @@
 namespace asperity {
 
 // The material parameters a law may take, beyond the summit radius R and the contact modulus E*
-// that every law takes from the surface. One definition each (law_parameter_info).
-enum class LawParameter : int {
-  hardness,            // H [Pa]
-  yield_strength,      // Y = S_y [Pa]
-  poisson,             // nu of the asperity
-  pressure_factor,     // ZMC's K
-  geometric_hardness,  // Jackson-Green's H_G(a/R): a choice, "2005" or "2006"
-  work_of_adhesion,    // dgamma [J/m^2]
-  maugis_parameter,    // lambda
-};
-inline constexpr int law_parameter_count = 7;
+// that every law takes from the surface, each defined once here:
+//   X(id, option, symbol, unit, type_name, meaning, lower, upper, lower_included, upper_included,
+//     range_text, strength, choices...)
+// id is the enum's name, the scene key and the Python keyword; the rest are LawParameterInfo's
+// fields below; choices... a choice parameter's values, null-terminated (nullptr alone: a number).
+#define ASPERITY_LAW_PARAMETERS(X)                                                                                   \
+  X(hardness, "--hardness", "H", "Pa", "PA", "hardness H [Pa]", 0, HUGE_VAL, false, false, "positive and finite",     \
+    true, nullptr)                                                                                                   \
+  X(yield_strength, "--yield-strength", "Y", "Pa", "PA", "yield strength Y [Pa]", 0, HUGE_VAL, false, false,          \
+    "positive and finite", true, nullptr)                                                                            \
+  X(poisson, "--law-poisson", "nu", "", "X", "Poisson's ratio of the asperity", 0, 0.5, true, true,                   \
+    "between 0 and 0.5", false, nullptr)                                                                             \
+  X(pressure_factor, "--pressure-factor", "K", "", "X",                                                              \
+    "the mean contact pressure at first yield over H (0.6 in the paper)", 0, 1, false, false, "in (0, 1)", false,    \
+    nullptr)                                                                                                         \
+  X(geometric_hardness, "--geometric-hardness", "H_G", "", "FORM",                                                   \
+    "its geometric hardness H_G(a/R) by formula: cosine, 2.84 - 0.92 (1 - cos(pi a/R)) (Jackson & Green 2006; "     \
+    "the default), or exponential, 2.84 (1 - exp(-0.82 (a/R)^-0.7)) (Jackson & Green 2005)",                         \
+    0, 1, true, true,                                                                                                \
+    "cosine or exponential (named by formula; 2005 and 2006 are not taken: asperity 0.2 had those years the "       \
+    "wrong way round)",                                                                                             \
+    false, "cosine", "exponential", nullptr)                             \
+  X(work_of_adhesion, "--work-of-adhesion", "work of adhesion", "J/m^2", "J/M2",                                     \
+    "work of adhesion [J/m^2] (the approach branch is tabulated)", 0, HUGE_VAL, false, false, "positive and finite", \
+    false, nullptr)                                                                                                  \
+  X(maugis_parameter, "--maugis-parameter", "Maugis parameter lambda", "", "X",                                      \
+    "Maugis' parameter lambda > 0 (0: DMT, infinity: JKR)", 0, HUGE_VAL, false, false, "positive and finite", false, \
+    nullptr)
+
+#define ASPERITY_LAW_PARAMETER_ENUMERATOR(id, ...) id,
+enum class LawParameter : int { ASPERITY_LAW_PARAMETERS(ASPERITY_LAW_PARAMETER_ENUMERATOR) };
+#undef ASPERITY_LAW_PARAMETER_ENUMERATOR
+#define ASPERITY_LAW_PARAMETER_ONE(id, ...) +1
+inline constexpr int law_parameter_count = 0 ASPERITY_LAW_PARAMETERS(ASPERITY_LAW_PARAMETER_ONE);
+#undef ASPERITY_LAW_PARAMETER_ONE
 
 struct LawParameterInfo {
   LawParameter id;
@@ -43,10 +68,10 @@ struct LawParameterInfo {
   double lower, upper;
   bool lower_included, upper_included;
   const char* range_text;
-  // A choice parameter's values (its value is the index of one; null-terminated), else none.
-  const char* choices[3];
   // What the generator's checks compare: a strength set against E* (the H/E* and Y/E* range)
   bool strength;
+  // A choice parameter's values (its value is the index of one; null-terminated), else none.
+  const char* choices[3];
 };
 const LawParameterInfo& law_parameter_info(LawParameter parameter) noexcept;
 // Every parameter, in the order above.
@@ -123,7 +148,7 @@ std::string contact_law_names(const std::string& last = " or ", bool quoted = fa
 std::string laws_taking(LawParameter parameter, const std::string& last = " or ");
 // A choice parameter's index for `text`; false when it is not one of its choices.
 bool law_choice_index(LawParameter parameter, const std::string& text, double& index) noexcept;
-// "2005 or 2006": a choice parameter's choices, joined.
+// "cosine or exponential": a choice parameter's choices, joined.
 std::string law_choices_text(LawParameter parameter, const std::string& last = " or ", bool quoted = false);
 // A law's parameters as its summaries state them: "H = 2e+09 Pa, nu = 0.3" (17 digits, like the
 // tables' descriptions), in the law's order.

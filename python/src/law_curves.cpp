@@ -65,7 +65,7 @@ bool read_law_parameter(const std::string& key, const py::handle& value, SceneLa
     const bool whole = py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value);
     double index;
     if (!law_choice_index(p->id, whole ? std::string(py::str(value)) : text_of(key, value), index))
-      throw Error("law_curves: " + key + " is " + law_choices_text(p->id, " or ", true));
+      throw Error("law_curves: " + key + " is " + p->range_text);
     in.material.set(p->id, index);
     return true;
   }

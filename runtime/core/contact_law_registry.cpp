@@ -19,30 +19,14 @@
 namespace asperity {
 namespace {
 
-constexpr double inf = detail::inf;
-
-// Each parameter once: key, option, symbol, unit, type, meaning, range, choices, strength.
-const LawParameterInfo parameter_table[law_parameter_count] = {
-    {LawParameter::hardness, "hardness", "--hardness", "H", "Pa", "PA", "hardness H [Pa]", 0, inf, false, false,
-     "positive and finite", {nullptr}, true},
-    {LawParameter::yield_strength, "yield_strength", "--yield-strength", "Y", "Pa", "PA", "yield strength Y [Pa]", 0,
-     inf, false, false, "positive and finite", {nullptr}, true},
-    {LawParameter::poisson, "poisson", "--law-poisson", "nu", "", "X", "Poisson's ratio of the asperity", 0, 0.5, true,
-     true, "between 0 and 0.5", {nullptr}, false},
-    {LawParameter::pressure_factor, "pressure_factor", "--pressure-factor", "K", "", "X",
-     "the mean contact pressure at first yield over H (0.6 in the paper)", 0, 1, false, false, "in (0, 1)",
-     {nullptr}, false},
-    {LawParameter::geometric_hardness, "geometric_hardness", "--geometric-hardness", "H_G", "", "YEAR",
-     "its geometric hardness H_G(a/R), 2005 (the cosine form, default) or 2006 (the rough-surface paper's "
-     "exponential form)",
-     0, 1, true, true, "2005 or 2006", {"2005", "2006", nullptr}, false},
-    {LawParameter::work_of_adhesion, "work_of_adhesion", "--work-of-adhesion", "work of adhesion", "J/m^2", "J/M2",
-     "work of adhesion [J/m^2] (the approach branch is tabulated)", 0, inf, false, false, "positive and finite",
-     {nullptr}, false},
-    {LawParameter::maugis_parameter, "maugis_parameter", "--maugis-parameter", "Maugis parameter lambda", "", "X",
-     "Maugis' parameter lambda > 0 (0: DMT, infinity: JKR)", 0, inf, false, false, "positive and finite", {nullptr},
-     false},
-};
+// The parameters' one list (contact_law_registry.hpp), as the table law_parameter_info serves.
+#define ASPERITY_LAW_PARAMETER_ENTRY(id, option, symbol, unit, type_name, meaning, lower, upper, lower_included, \
+                                     upper_included, range_text, strength, ...)                                \
+  {LawParameter::id, #id, option, symbol, unit, type_name, meaning, lower, upper, lower_included,             \
+   upper_included, range_text, strength, {__VA_ARGS__}},
+const LawParameterInfo parameter_table[] = {ASPERITY_LAW_PARAMETERS(ASPERITY_LAW_PARAMETER_ENTRY)};
+#undef ASPERITY_LAW_PARAMETER_ENTRY
+static_assert(sizeof parameter_table / sizeof parameter_table[0] == law_parameter_count);
 
 // The built-ins, then registered laws: a fixed capacity, so that readers need no lock (an entry
 // is written before the count that shows it).
@@ -180,7 +164,7 @@ double law_parameter_value(const ContactLaw& law, LawParameter parameter) noexce
     case LawParameter::poisson: return law.poisson;
     case LawParameter::pressure_factor: return law.pressure_factor;
     case LawParameter::geometric_hardness:
-      return law.jackson_green_hardness == JacksonGreenHardness::exponential_2006 ? 1 : 0;
+      return law.jackson_green_hardness == JacksonGreenHardness::exponential ? 1 : 0;
     case LawParameter::work_of_adhesion: return law.work_of_adhesion;
     case LawParameter::maugis_parameter: return law.maugis_parameter;
   }

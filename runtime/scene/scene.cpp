@@ -282,7 +282,7 @@ SceneLaw read_law(const toml::value& table, double default_tolerance) {
     }
     double index;
     if (!law_choice_index(p->id, text(*value, p->key), index))
-      fail_at(*value, std::string("'") + p->key + "' is " + law_choices_text(p->id, " or ", true), "here");
+      fail_at(*value, std::string("'") + p->key + "' is " + p->range_text, "here");
     in.material.set(p->id, index);
   }
   if (const toml::value* separation = entry_of(table, "separation")) range(*separation, "separation", in.range_min, in.range_max);

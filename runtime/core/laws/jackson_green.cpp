@@ -15,7 +15,7 @@ ContactLaw jackson_green_law(double radius, double modulus, double yield_strengt
   const auto kind = ContactLawKind::jackson_green;
   if (!detail::positive(radius) || !detail::positive(modulus) || !detail::positive(yield_strength) ||
       !detail::poisson_ok(poisson) ||
-      (hardness != JacksonGreenHardness::cosine_2005 && hardness != JacksonGreenHardness::exponential_2006))
+      (hardness != JacksonGreenHardness::cosine && hardness != JacksonGreenHardness::exponential))
     return detail::bad_law(kind);
   ContactLaw law = detail::law_with(kind, radius, modulus);
   law.yield_strength = yield_strength;
@@ -45,8 +45,8 @@ namespace detail {
 namespace {
 
 ContactLaw make(double radius, double modulus, const LawValues& v) noexcept {
-  const auto hardness = v[LawParameter::geometric_hardness] == 1 ? JacksonGreenHardness::exponential_2006
-                                                                 : JacksonGreenHardness::cosine_2005;
+  const auto hardness = v[LawParameter::geometric_hardness] == 1 ? JacksonGreenHardness::exponential
+                                                                 : JacksonGreenHardness::cosine;
   return jackson_green_law(radius, modulus, v[LawParameter::yield_strength], v[LawParameter::poisson], hardness);
 }
 
@@ -61,7 +61,7 @@ AsperityResponse plastic(const ContactLaw& law, double w) noexcept {
   const double a = std::sqrt(area / pi), da = darea / (2 * pi * a);
   const double u = a / r, du = da / r;
   double h, dh_du;  // H_G / S_y and its derivative in a/R
-  if (law.jackson_green_hardness == JacksonGreenHardness::cosine_2005) {
+  if (law.jackson_green_hardness == JacksonGreenHardness::cosine) {
     h = 2.84 - 0.92 * (1 - std::cos(pi * u));
     dh_du = -0.92 * pi * std::sin(pi * u);
   } else {
