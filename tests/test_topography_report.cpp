@@ -496,6 +496,26 @@ TEST(TopographyReport, AnAdhesiveLawReportsItsAdhesionNotPlasticity) {
   EXPECT_EQ(ke.find("adhesion parameter"), std::string::npos);
   EXPECT_EQ(ke.find("nan"), std::string::npos) << ke;
 }
+
+// An elastic law (Hertz) defines no hardness, no omega_c and so no plasticity index: each of its
+// rows says "not used" and why, never a bare "–" (issue 38).
+TEST(TopographyReport, AnElasticLawSaysWhatItDoesNotUse) {
+  asperity::cli::LawOptions hertz;
+  hertz.law = "hertz";
+  const t::SurfaceAnalysis elastic =
+      small_analysis(1, 0, [hertz](const asperity::RoughSurface& surface, double s_min, double s_max) {
+        return asperity::cli::law_scene(hertz, surface, s_min, s_max, "test");
+      });
+  ASSERT_TRUE(elastic.law.has_value());
+  const std::string dir = folder("elastic-law");
+  t::write_report(elastic, dir);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("| H (GW's ψ) | not used: the law has no hardness |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| ω_c (the law's, at R) | not used: the law does not yield |"), std::string::npos);
+  EXPECT_NE(md.find("CEB/KE ω_c) | not used: no ω_c |"), std::string::npos);
+  EXPECT_NE(md.find("(Greenwood–Williamson 1966's) | not used: no H |"), std::string::npos);
+  EXPECT_EQ(md.find("nan"), std::string::npos) << md;
+}
 #endif
 
 // ---- issue 40: labels from the code that runs; "closest" only where summits carry it ----

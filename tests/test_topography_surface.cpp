@@ -268,13 +268,13 @@ TEST(TopographySurface, RealSurfacesEndToEnd) {
       ++served;
       ASSERT_EQ(m.curve.size(), 9u);
       for (std::size_t k = 1; k < m.curve.size(); ++k) {
-        EXPECT_GT(m.curve[k].pressure, m.curve[k - 1].pressure) << m.label;
-        EXPECT_GT(m.curve[k].stiffness, m.curve[k - 1].stiffness) << m.label;
-        EXPECT_GT(m.curve[k].area_fraction, m.curve[k - 1].area_fraction) << m.label;
-        EXPECT_LT(m.curve[k].mean_separation, m.curve[k - 1].mean_separation) << m.label;
+        EXPECT_GT(m.curve[k].pressure, m.curve[k - 1].pressure) << m.label();
+        EXPECT_GT(m.curve[k].stiffness, m.curve[k - 1].stiffness) << m.label();
+        EXPECT_GT(m.curve[k].area_fraction, m.curve[k - 1].area_fraction) << m.label();
+        EXPECT_LT(m.curve[k].mean_separation, m.curve[k - 1].mean_separation) << m.label();
       }
       ASSERT_EQ(m.at_pressures.size(), 2u);
-      EXPECT_NEAR(m.at_pressures[0].pressure / 1e6, 1, 1e-9) << m.label;
+      EXPECT_NEAR(m.at_pressures[0].pressure / 1e6, 1, 1e-9) << m.label();
     }
     EXPECT_GE(served, 3) << c.file;
     // issue 40, item 4: the AFM map has about one measured summit in contact at both pressures, so

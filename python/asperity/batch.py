@@ -73,23 +73,58 @@ pressure_{k}_Pa, measured_summits_stiffness_spread_{k}, measured_summits_in_cont
 each model m compared with the measured summits, stiffness_over_measured_{k}_{m}; with the exact contact solved, for each curve m
 stiffness_over_exact_{k}_{m} and area_over_exact_{k}_{m}: see row_from_json."""
 
-# Where each fixed column is in a surface's JSON document (SURFACE_JSON_SCHEMA): one table, read by
-# row_from_json (a missing key gives None)
-_JSON_PATHS = {
+# Where each fixed column is in a surface's JSON document (SURFACE_JSON_SCHEMA). A column of a result
+# record names the record's field: its key in the record's object is the record's own list's
+# (asperity.topography.record_fields: the one definition the library writes the document from), so
+# a field renamed there is found here, and a field that is not written fails at import, not as an
+# empty column. (section of the document, its record type, {column: the record's field})
+_RECORD_COLUMNS = (
+    ("statistics", _topography.HeightStatistics,
+     {"valid_points": "valid_points", "missing_points": "missing_points", "Sq_m": "rms", "Sa_m": "mean_absolute",
+      "Ssk": "skewness", "Sku": "kurtosis"}),
+    ("spectral_moments", _topography.SpectralMoments, {"alpha": "alpha", "anisotropy": "anisotropy"}),
+    ("noise_floor", _topography.NoiseFloor, {"noise_floor_reached": "reached"}),
+    ("summits", _topography.Summits, {"summit_density_per_m2": "density", "summit_radius_m": "radius"}),
+    ("verdict", _topography.SurfaceVerdict,
+     {"verdict_tested": "tested", "gaussian_rejected": "gaussian_rejected", "gaussian_p_heights": "p_heights",
+      "gaussian_p_heights_is_bound": "p_heights_bound", "gaussian_p_summit_heights": "p_summits",
+      "gaussian_p_summit_heights_is_bound": "p_summits_bound", "summit_test_applicable": "summit_test_applicable",
+      "side_told": "side_told", "side_note": "side_note", "verdict_text": "text"}),
+)
+
+
+def _record_key(record, field):
+    """The JSON key of a record's field, from the record's list."""
+    keys = {name: key for name, key, _ in _topography.record_fields(record)}
+    if keys.get(field) is None:
+        raise LookupError(f"{record.__name__}.{field} is not written to the JSON document")
+    return keys[field]
+
+
+# The keys a writer composes around a record's fields (not a record's field: a count, a derived
+# value, a name that stands for none), and the document's own
+_COMPOSED_PATHS = {
     **{key: ("surface", key) for key in ("nx", "ny", "dx_m", "dy_m")},
-    **{key: ("statistics", key) for key in ("valid_points", "missing_points", "Sq_m", "Sa_m", "Ssk", "Sku")},
-    **{key: ("spectral_moments", key) for key in ("alpha", "anisotropy", "isotropic")},
-    "noise_floor_reached": ("noise_floor", "reached"),
-    "summits": ("summits", "count"), "summit_density_per_m2": ("summits", "density_per_m2"),
-    "summit_radius_m": ("summits", "radius_m"),
+    "isotropic": ("spectral_moments", "isotropic"),
+    "summits": ("summits", "count"),
     "summits_fitted": ("fits", "summits_fitted"), "surrogates": ("ensemble", "surrogates"),
-    "verdict_tested": ("verdict", "tested"),
-    **{key: ("verdict", key) for key in (
-        "gaussian_rejected", "gaussian_p_heights", "gaussian_p_heights_is_bound", "gaussian_p_summit_heights",
-        "gaussian_p_summit_heights_is_bound", "summit_test_applicable", "heights_orientation", "side_told", "side_note",
-        "model_for_contact")},
-    "verdict_text": ("verdict", "text"),
+    "heights_orientation": ("verdict", "heights_orientation"), "model_for_contact": ("verdict", "model_for_contact"),
 }
+_JSON_PATHS = {
+    **_COMPOSED_PATHS,
+    **{column: (section, _record_key(record, field))
+       for section, record, columns in _RECORD_COLUMNS for column, field in columns.items()},
+}
+# a model's fit in fits.*.models[]: its columns' suffix and the field (HeightDistribution's or
+# ModelAssessment's) each reads
+_MODEL_KEYS = {
+    "ad_p": _record_key(_topography.ModelAssessment, "anderson_darling_p"),
+    "ad_p_is_bound": _record_key(_topography.ModelAssessment, "p_at_floor"),
+    "akaike_weight": _record_key(_topography.ModelAssessment, "akaike_weight"),
+    "shape": _record_key(_topography.HeightDistribution, "shape"),
+    "shape_identified": _record_key(_topography.ModelAssessment, "shape_identified"),
+}
+_MODEL_NAME_KEY = _record_key(_topography.HeightDistribution, "model")
 
 
 # ---- options: a plain, picklable description of an AnalysisOptions, and its fingerprint ----
@@ -337,16 +372,15 @@ def row_from_json(document, source=None, name=None) -> dict:
     for sample in _SAMPLES:
         fits = d["fits"].get(sample)
         for m in (fits or {}).get("models", []):
-            prefix = f"{sample}_{m['model'].replace('-', '_')}_"
+            prefix = f"{sample}_{m[_MODEL_NAME_KEY].replace('-', '_')}_"
             if prefix + "ad_p" not in row:
                 continue
-            row[prefix + "ad_p"] = m["anderson_darling_p"]
-            row[prefix + "ad_p_is_bound"] = m["anderson_darling_p_is_bound"]
-            row[prefix + "akaike_weight"] = m["akaike_weight"]
+            for column in ("ad_p", "ad_p_is_bound", "akaike_weight"):
+                row[prefix + column] = m[_MODEL_KEYS[column]]
             if prefix + "shape" in row:  # a model with a shape (the Weibulls)
-                row[prefix + "shape"] = m["shape"]
+                row[prefix + "shape"] = m[_MODEL_KEYS["shape"]]
                 row[prefix + "shape_lo"], row[prefix + "shape_hi"] = m["interval_shape"]
-                row[prefix + "shape_identified"] = m["shape_identified"]
+                row[prefix + "shape_identified"] = m[_MODEL_KEYS["shape_identified"]]
     contact = d.get("contact")
     if contact:
         # None where no model is named (too few measured summits in contact at every pressure), as

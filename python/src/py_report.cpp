@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "record_bindings.hpp"
 #include "topography_helpers.hpp"
 #include "asperity/topography/analysis.hpp"
 #include "asperity/topography/surface_report.hpp"
@@ -23,60 +24,25 @@ namespace topo = asperity::topography;
 
 void bind_analysis_options(py::module_& m) {
   // ---- the whole path (analysis.hpp, surface_report.hpp) ----
-  py::class_<topo::SamplingRow>(m, "SamplingRow", "Summits and moments at factor times the sampling interval.")
-      .def_readonly("factor", &topo::SamplingRow::factor)
-      .def_readonly("dx", &topo::SamplingRow::dx)
-      .def_readonly("dy", &topo::SamplingRow::dy)
-      .def_readonly("summits", &topo::SamplingRow::summits)
-      .def_readonly("density", &topo::SamplingRow::density)
-      .def_readonly("radius", &topo::SamplingRow::radius)
-      .def_readonly("m2", &topo::SamplingRow::m2)
-      .def_readonly("m4", &topo::SamplingRow::m4)
-      .def_readonly("alpha", &topo::SamplingRow::alpha)
-      .def_readonly("anisotropy", &topo::SamplingRow::anisotropy);
-  py::class_<topo::SurfaceVerdict>(m, "SurfaceVerdict",
-                                   "Is the surface Gaussian (its heights' and its summit heights' tests against surrogate\n"
-                                   "surfaces of its own spectrum, each at half the significance), which way its heights\n"
-                                   "lean, and the model named for the contact, in words.")
-      .def_readonly("tested", &topo::SurfaceVerdict::tested)
-      .def_readonly("gaussian_rejected", &topo::SurfaceVerdict::gaussian_rejected)
-      .def_readonly("p_heights", &topo::SurfaceVerdict::p_heights)
-      .def_readonly("p_summits", &topo::SurfaceVerdict::p_summits)
-      .def_readonly("p_heights_bound", &topo::SurfaceVerdict::p_heights_bound)
-      .def_readonly("p_summits_bound", &topo::SurfaceVerdict::p_summits_bound)
-      .def_readonly("orientation", &topo::SurfaceVerdict::orientation,
-                    "The side told (weibull_tail or weibull_bounded), or gaussian: the side cannot be told from the map.")
-      .def_readonly("summit_test_applicable", &topo::SurfaceVerdict::summit_test_applicable,
-                    "The summit heights' test speaks: at least MIN_SUMMITS_TO_TEST summits (else no weight in the verdict).")
-      .def_readonly("summit_test_note", &topo::SurfaceVerdict::summit_test_note, "Why not, with the count, when not.")
-      .def_readonly("side_told", &topo::SurfaceVerdict::side_told,
-                    "The data determine the side (SIDE_INTERVAL_RATIO_MAX, side_rule); else no Weibull is named.")
-      .def_readonly("side_note", &topo::SurfaceVerdict::side_note,
-                    "The side told, or \"the side cannot be told from this map: \" and why.")
-      .def_readonly("named", &topo::SurfaceVerdict::named)
-      .def_readonly("model", &topo::SurfaceVerdict::model, "The model named for the contact (when named).")
-      .def_readonly("text", &topo::SurfaceVerdict::text)
-      .def("__repr__", [](const topo::SurfaceVerdict& v) { return v.text; });
+  // each result record's attributes from its one list (record_fields.hpp), its meanings the docstrings
+  py::class_<topo::SamplingRow> sampling_row(m, "SamplingRow", "Summits and moments at factor times the sampling interval.");
+  def_record_fields(sampling_row);
+  py::class_<topo::SurfaceVerdict> surface_verdict(
+      m, "SurfaceVerdict",
+      "Is the surface Gaussian (its heights' and its summit heights' tests against surrogate\n"
+      "surfaces of its own spectrum, each at half the significance), which way its heights\n"
+      "lean, and the model named for the contact, in words.");
+  def_record_fields(surface_verdict).def("__repr__", [](const topo::SurfaceVerdict& v) { return v.text; });
   m.attr("MIN_SUMMITS_TO_TEST") = topo::min_summits_to_test;
   m.attr("SIDE_INTERVAL_RATIO_MAX") = topo::side_interval_ratio_max;
   m.def("summit_test_rule", &topo::summit_test_rule, "When the summit heights' test speaks, in words.");
   m.def("side_rule", &topo::side_rule, "When a side is told, in words.");
-  py::class_<topo::NextSteps>(m, "NextSteps",
-                              "What to do next with an analysis (next_steps): for the model the verdict names, the\n"
-                              "`asperity contact` command, the Python call and its card's command; the map's exact-contact\n"
-                              "command; where no model is named, why and what to use instead.")
-      .def_readonly("model_named", &topo::NextSteps::model_named)
-      .def_property_readonly(
-          "model", [](const topo::NextSteps& n) { return topo::contact_model_name(n.model); },
-          "The named model (\"weibull-tail\"), empty when none.")
-      .def_readonly("why", &topo::NextSteps::why)
-      .def_readonly("contact_command", &topo::NextSteps::contact_command)
-      .def_readonly("python", &topo::NextSteps::python, "Python code building the named model's ContactModel.")
-      .def_readonly("card_command", &topo::NextSteps::card_command)
-      .def_readonly("exact_command", &topo::NextSteps::exact_command)
-      .def_readonly("instead", &topo::NextSteps::instead)
-      .def_readonly("text", &topo::NextSteps::text)
-      .def("__repr__", [](const topo::NextSteps& n) { return n.text; });
+  py::class_<topo::NextSteps> next_steps(
+      m, "NextSteps",
+      "What to do next with an analysis (next_steps): for the model the verdict names, the\n"
+      "`asperity contact` command, the Python call and its card's command; the map's exact-contact\n"
+      "command; where no model is named, why and what to use instead.");
+  def_record_fields(next_steps).def("__repr__", [](const topo::NextSteps& n) { return n.text; });
   py::class_<topo::AnalysisOptions>(m, "AnalysisOptions", "What analyse_height_map and analyse_surface_file do.")
       .def(py::init([](const std::optional<topo::ReadOptions>& read, bool level,
                        const std::optional<topo::SummitOptions>& summits,
@@ -131,15 +97,11 @@ void bind_report(py::module_& m) {
       "atomically, no link in the folder is followed, one run writes the folder at a time and an earlier\n"
       "report's files are not left beside this one's; a file of the user's under a report file's name is\n"
       "kept (the call fails) unless overwrite=True. Raises asperity.Error on a write error.";
-  py::class_<topo::NoiseFloor>(m, "NoiseFloor",
-                               "A roughness at the level of the heights' quantization q: Sq under 10 q / sqrt(12).")
-      .def_readonly("reached", &topo::NoiseFloor::reached)
-      .def_readonly("resolution", &topo::NoiseFloor::resolution, "q [m] (HeightMap.height_resolution).")
-      .def_readonly("rms_limit", &topo::NoiseFloor::rms_limit, "10 q / sqrt(12) [m].")
-      .def_readonly("text", &topo::NoiseFloor::text)
-      .def("__repr__", [](const topo::NoiseFloor& f) {
-        return py::str("NoiseFloor(reached={!r}, resolution={!r})").format(f.reached, f.resolution);
-      });
+  py::class_<topo::NoiseFloor> noise_floor(
+      m, "NoiseFloor", "A roughness at the level of the heights' quantization q: Sq under 10 q / sqrt(12).");
+  def_record_fields(noise_floor).def("__repr__", [](const topo::NoiseFloor& f) {
+    return py::str("NoiseFloor(reached={!r}, resolution={!r})").format(f.reached, f.resolution);
+  });
 
   py::class_<topo::SurfaceAnalysis>(m, "SurfaceAnalysis",
                                     "A measured surface analysed: the map as analysed, statistics, moments, summits, the fits\n"
@@ -209,6 +171,17 @@ void bind_report(py::module_& m) {
       "analysis_summary", [](const topo::SurfaceAnalysis& a) { return path_text(topo::analysis_summary(a)); },
       "analysis"_a, "The short summary `asperity surface` prints.");
   m.attr("SURFACE_JSON_SCHEMA") = topo::surface_json_schema;
+  m.def(
+      "record_fields",
+      [](const py::type& record) -> py::object {
+        if (!py::hasattr(record, "_record_fields"))
+          throw py::type_error(std::string(py::str(record.attr("__name__"))) + " is not a result record");
+        return record.attr("_record_fields");
+      },
+      "record"_a,
+      "A result record's fields, from the list that defines them (record_fields.hpp): a tuple of (name, key,\n"
+      "meaning), the attribute's name, its key in the record's object of the JSON document (None: not written)\n"
+      "and what it is with its unit. TypeError for a class that is no result record.");
   m.def("next_steps", &topo::next_steps, "analysis"_a,
         "What to do next: the named model's command, Python call and card, the map's exact contact (NextSteps).");
   m.def("write_report", write_report, "analysis"_a, "directory"_a, py::kw_only(), "overwrite"_a = false, report_doc);

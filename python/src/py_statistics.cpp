@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "record_bindings.hpp"
 #include "topography_helpers.hpp"
 #include "asperity/topography/height_map.hpp"
 #include "asperity/topography/leveling.hpp"
@@ -53,48 +54,22 @@ void bind_statistics(py::module_& m) {
         "Subtracts the plane from the map in place; missing points stay missing. Holds the GIL (other Python\n"
         "threads see the map before or after, never half done).");
 
-  py::class_<topo::HeightStatistics>(m, "HeightStatistics", "Height statistics over the valid points.")
-      .def_readonly("valid_points", &topo::HeightStatistics::valid_points)
-      .def_readonly("missing_points", &topo::HeightStatistics::missing_points)
-      .def_readonly("mean", &topo::HeightStatistics::mean, "[m]")
-      .def_readonly("rms", &topo::HeightStatistics::rms, "Sq, about the mean [m].")
-      .def_readonly("mean_absolute", &topo::HeightStatistics::mean_absolute, "Sa [m].")
-      .def_readonly("skewness", &topo::HeightStatistics::skewness, "Ssk.")
-      .def_readonly("kurtosis", &topo::HeightStatistics::kurtosis, "Sku (3 for a Gaussian).")
-      .def_readonly("min", &topo::HeightStatistics::min, "[m]")
-      .def_readonly("max", &topo::HeightStatistics::max, "[m]");
+  // each result record's attributes from its one list (record_fields.hpp), its meanings the docstrings
+  py::class_<topo::HeightStatistics> height_statistics(m, "HeightStatistics", "Height statistics over the valid points.");
+  def_record_fields(height_statistics);
   m.def(
       "height_statistics",
       [](const topo::HeightMap& map) { return without_gil([copy = map] { return topo::height_statistics(copy); }); },
       "map"_a,
       "Mean, rms (Sq), Sa, skewness, kurtosis, min and max of the valid heights.");
 
-  py::class_<topo::SpectralMoments>(m, "SpectralMoments",
-                                    "Nayak's spectral moments at the map's sampling interval, one consistent scheme: slopes\n"
-                                    "by forward differences, curvatures by second differences; the slope tensor's principal\n"
-                                    "directions and anisotropy; m2, m4 McCool's equivalent isotropic moments (geometric means\n"
-                                    "along the principal directions).")
-      .def_readonly("m0", &topo::SpectralMoments::m0, "Height variance [m^2].")
-      .def_readonly("m2x", &topo::SpectralMoments::m2x)
-      .def_readonly("m2y", &topo::SpectralMoments::m2y)
-      .def_readonly("m11", &topo::SpectralMoments::m11, "<(dh/dx)(dh/dy)>.")
-      .def_readonly("m4x", &topo::SpectralMoments::m4x, "[1/m^2]")
-      .def_readonly("m4y", &topo::SpectralMoments::m4y, "[1/m^2]")
-      .def_readonly("principal_angle", &topo::SpectralMoments::principal_angle,
-                    "The steepest principal direction's angle from x [rad].")
-      .def_property_readonly("m2_principal", [](const topo::SpectralMoments& s) {
-        return py::make_tuple(s.m2_principal[0], s.m2_principal[1]);
-      }, "The principal slope variances, steepest first.")
-      .def_property_readonly("m4_principal", [](const topo::SpectralMoments& s) {
-        return py::make_tuple(s.m4_principal[0], s.m4_principal[1]);
-      }, "The curvature variances along the principal directions [1/m^2].")
-      .def_readonly("anisotropy", &topo::SpectralMoments::anisotropy,
-                    "m2_principal[0] / m2_principal[1]; Nayak-McCool assume 1 (isotropic).")
-      .def_readonly("m2", &topo::SpectralMoments::m2, "Equivalent isotropic slope variance (dimensionless).")
-      .def_readonly("m4", &topo::SpectralMoments::m4, "Equivalent isotropic curvature variance [1/m^2].")
-      .def_readonly("alpha", &topo::SpectralMoments::alpha, "Nayak's bandwidth m0 m4 / m2^2.")
-      .def_readonly("slope_samples", &topo::SpectralMoments::slope_samples)
-      .def_readonly("curvature_samples", &topo::SpectralMoments::curvature_samples);
+  py::class_<topo::SpectralMoments> spectral_moments(
+      m, "SpectralMoments",
+      "Nayak's spectral moments at the map's sampling interval, one consistent scheme: slopes\n"
+      "by forward differences, curvatures by second differences; the slope tensor's principal\n"
+      "directions and anisotropy; m2, m4 McCool's equivalent isotropic moments (geometric means\n"
+      "along the principal directions).");
+  def_record_fields(spectral_moments);
   m.def(
       "spectral_moments",
       [](const topo::HeightMap& map) { return without_gil([copy = map] { return topo::spectral_moments(copy); }); },
@@ -102,13 +77,12 @@ void bind_statistics(py::module_& m) {
       "m0, m2, m4 and Nayak's alpha of the map (heights about their mean; stencils touching a missing\n"
       "point skipped). They depend on the sampling interval: stated with it.");
 
-  py::class_<topo::CorrelationLengths>(m, "CorrelationLengths",
-                                       "Lags (points) along x and y where the height autocorrelation first falls below level.")
-      .def(py::init([](std::size_t x, std::size_t y, double level) { return topo::CorrelationLengths{x, y, level}; }),
-           "x"_a = 1, "y"_a = 1, "level"_a = 0.1)
-      .def_readwrite("x", &topo::CorrelationLengths::x)
-      .def_readwrite("y", &topo::CorrelationLengths::y)
-      .def_readwrite("level", &topo::CorrelationLengths::level);
+  py::class_<topo::CorrelationLengths> correlation_lengths(
+      m, "CorrelationLengths", "Lags (points) along x and y where the height autocorrelation first falls below level.");
+  correlation_lengths.def(
+      py::init([](std::size_t x, std::size_t y, double level) { return topo::CorrelationLengths{x, y, level}; }),
+      "x"_a = 1, "y"_a = 1, "level"_a = 0.1);
+  def_record_fields(correlation_lengths, true);
   m.def(
       "correlation_lengths",
       [](const topo::HeightMap& map, double level) {
@@ -136,10 +110,11 @@ void bind_summits(py::module_& m) {
            "this high above the mean of its 8 neighbours (against instrument noise).")
       .def_readwrite("window", &topo::SummitOptions::window)
       .def_readwrite("min_drop", &topo::SummitOptions::min_drop);
-  py::class_<topo::Summits>(m, "Summits",
+  py::class_<topo::Summits> summits(m, "Summits",
                             "The summits of a map: per summit (arrays, one element per summit) its grid position i, j,\n"
                             "height [m], mean curvature kappa_m = -(h_xx + h_yy)/2 and principal curvatures [1/m]; and\n"
-                            "over them the density [1/m^2] and the GW radius R = 1 / <kappa_m> [m].")
+                            "over them the density [1/m^2] and the GW radius R = 1 / <kappa_m> [m].");
+  summits
       .def_property_readonly("i", [](const topo::Summits& s) {
         return summit_field<std::int64_t>(s, [](const topo::Summit& t) { return t.i; });
       }, "Grid index along x of each summit.")
@@ -158,16 +133,8 @@ void bind_summits(py::module_& m) {
       .def_property_readonly("kappa2", [](const topo::Summits& s) {
         return summit_field<double>(s, [](const topo::Summit& t) { return t.kappa2; });
       }, "Smaller principal curvature of each summit [1/m].")
-      .def_readonly("candidates", &topo::Summits::candidates, "Points whose whole window is valid.")
-      .def_readonly("area_searched", &topo::Summits::area_searched, "candidates dx dy [m^2].")
-      .def_readonly("density", &topo::Summits::density, "Summits per unit area [1/m^2].")
-      .def_readonly("mean_curvature", &topo::Summits::mean_curvature, "<kappa_m> over the summits [1/m].")
-      .def_readonly("radius", &topo::Summits::radius, "R = 1 / <kappa_m> [m].")
-      .def_readonly("rejected_by_drop", &topo::Summits::rejected_by_drop)
-      .def_readonly("options", &topo::Summits::options)
-      .def_readonly("dx", &topo::Summits::dx)
-      .def_readonly("dy", &topo::Summits::dy)
       .def("__len__", [](const topo::Summits& s) { return s.list.size(); });
+  def_record_fields(summits);
   m.def(
       "find_summits",
       [](const topo::HeightMap& map, std::optional<topo::SummitOptions> options, std::optional<int> window,

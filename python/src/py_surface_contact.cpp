@@ -173,8 +173,8 @@ void bind_contact_comparison(py::module_& m) {
       .def_readwrite("exact_points", &topo::ContactOptions::exact_points)
       .def_readwrite("exact_tolerance", &topo::ContactOptions::exact_tolerance);
   py::class_<topo::ModelContact>(m, "ModelContact", "The contact curve of one height model.")
-      .def_readonly("label", &topo::ModelContact::label,
-                    "measured-summits, measured-summits-own-radii, gaussian-moments, gaussian, weibull-tail,\n"
+      .def_property_readonly("label", &topo::ModelContact::label,
+                    "Its kind's name: measured-summits, measured-summits-own-radii, gaussian-moments, gaussian, weibull-tail,\n"
                     "weibull-bounded, persson or exact.")
       .def_readonly("served", &topo::ModelContact::served)
       .def_property_readonly("note", [](const topo::ModelContact& c) { return path_text(c.note); },

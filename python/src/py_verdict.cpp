@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "record_bindings.hpp"
 #include "topography_helpers.hpp"
 #include "asperity/topography/distribution_fit.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
@@ -83,20 +84,21 @@ void bind_fits(py::module_& m) {
   m.def("parameter_count", [](const py::object& model) { return topo::parameter_count(to_model(model)); }, "model"_a,
         "2 for the Gaussian, 3 for the Weibulls.");
 
-  py::class_<topo::HeightDistribution>(m, "HeightDistribution",
-                                       "One of the three height models with its parameters [m] (the Gaussian: mean and\n"
-                                       "standard deviation; the Weibulls: location, scale and shape a). The functions\n"
-                                       "take a number (a float back) or an array of any shape (an array back).")
+  py::class_<topo::HeightDistribution> height_distribution(
+      m, "HeightDistribution",
+      "One of the three height models with its parameters [m] (the Gaussian: mean and\n"
+      "standard deviation; the Weibulls: location, scale and shape a). The functions\n"
+      "take a number (a float back) or an array of any shape (an array back).");
+  // its parameters from their one list, writable (an input too); the model also from its name
+  def_record_fields(height_distribution, true);
+  height_distribution
       .def(py::init([](const py::object& model, double location, double scale, double shape) {
              return topo::HeightDistribution{to_model(model), location, scale, shape};
            }),
            "model"_a = "gaussian", "location"_a = 0.0, "scale"_a = 1.0, "shape"_a = 0.0)
       .def_property(
           "model", [](const topo::HeightDistribution& d) { return d.model; },
-          [](topo::HeightDistribution& d, const py::object& value) { d.model = to_model(value); })
-      .def_readwrite("location", &topo::HeightDistribution::location)
-      .def_readwrite("scale", &topo::HeightDistribution::scale)
-      .def_readwrite("shape", &topo::HeightDistribution::shape)
+          [](topo::HeightDistribution& d, const py::object& value) { d.model = to_model(value); }, "the height model")
       .def("pdf", [](topo::HeightDistribution d, const ArrayLike& x) {
         return map_values(x.object, "x", [&](double v) { return std::exp(d.log_pdf(v)); });
       }, "x"_a, "The density.")
@@ -135,12 +137,8 @@ void bind_fits(py::module_& m) {
            "shape_min"_a = topo::FitOptions{}.shape_min, "shape_max"_a = topo::FitOptions{}.shape_max)
       .def_readwrite("shape_min", &topo::FitOptions::shape_min)
       .def_readwrite("shape_max", &topo::FitOptions::shape_max);
-  py::class_<topo::FitResult>(m, "FitResult", "A fitted distribution.")
-      .def_readonly("distribution", &topo::FitResult::distribution)
-      .def_readonly("objective", &topo::FitResult::objective,
-                    "Maximum product of spacings: the mean log spacing S; Gaussian: the mean log-likelihood.")
-      .def_readonly("shape_at_bound", &topo::FitResult::shape_at_bound, "The shape hit shape_min or shape_max.")
-      .def_readonly("evaluations", &topo::FitResult::evaluations);
+  py::class_<topo::FitResult> fit_result(m, "FitResult", "A fitted distribution.");
+  def_record_fields(fit_result);
   m.def(
       "fit_height_distribution",
       [](const py::object& model, const ArrayLike& values, const std::optional<topo::FitOptions>& options) {
@@ -209,40 +207,13 @@ void bind_assessment(py::module_& m) {
       .def_readwrite("confidence", &topo::AssessmentOptions::confidence)
       .def_readwrite("significance", &topo::AssessmentOptions::significance)
       .def_readwrite("fit", &topo::AssessmentOptions::fit);
-  py::class_<topo::Interval>(m, "Interval", "A bootstrap interval [lo, hi] (ModelAssessment.shape_interval says how it was made).")
-      .def_readonly("lo", &topo::Interval::lo)
-      .def_readonly("hi", &topo::Interval::hi)
-      .def("__repr__", &repr_interval);
-  py::class_<topo::ModelAssessment>(m, "ModelAssessment", "One model fitted to one sample, with its evidence.")
-      .def_readonly("fit", &topo::ModelAssessment::fit)
-      .def_readonly("anderson_darling", &topo::ModelAssessment::anderson_darling)
-      .def_readonly("anderson_darling_p", &topo::ModelAssessment::anderson_darling_p, "By parametric bootstrap.")
-      .def_readonly("kolmogorov_smirnov", &topo::ModelAssessment::kolmogorov_smirnov)
-      .def_readonly("kolmogorov_smirnov_p", &topo::ModelAssessment::kolmogorov_smirnov_p, "By parametric bootstrap.")
-      .def_readonly("log_likelihood", &topo::ModelAssessment::log_likelihood)
-      .def_readonly("aic", &topo::ModelAssessment::aic)
-      .def_readonly("delta_aic", &topo::ModelAssessment::delta_aic)
-      .def_readonly("akaike_weight", &topo::ModelAssessment::akaike_weight)
-      .def_readonly("location", &topo::ModelAssessment::location)
-      .def_readonly("scale", &topo::ModelAssessment::scale)
-      .def_readonly("shape", &topo::ModelAssessment::shape, "The shape's interval (Weibull only).")
-      .def_readonly("bootstrap", &topo::ModelAssessment::bootstrap)
-      .def_readonly("failed_refits", &topo::ModelAssessment::failed_refits)
-      .def_readonly("rejected", &topo::ModelAssessment::rejected,
-                    "The Anderson-Darling p-value is below the significance.")
-      .def_readonly("p_at_floor", &topo::ModelAssessment::p_at_floor,
-                    "The Anderson-Darling p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value.")
-      .def_readonly("kolmogorov_smirnov_p_at_floor", &topo::ModelAssessment::kolmogorov_smirnov_p_at_floor,
-                    "The Kolmogorov-Smirnov p-value is at its floor 1/(B + 1): a bound, not a value.")
-      .def_readonly("shape_identified", &topo::ModelAssessment::shape_identified,
-                    "The data pin the shape down (its interval stays inside the fit's bounds).")
-      .def_readonly("identification", &topo::ModelAssessment::identification, "Why not, when not.")
-      .def_readonly("bias_slope", &topo::ModelAssessment::bias_slope,
-                    "The heights' Weibull shape: d(bias of ln a)/d(ln a) on the surrogates, which its interval "
-                    "corrects for (NaN where not measured).")
-      .def_property_readonly(
-          "shape_interval", [](const topo::ModelAssessment& m) { return std::string(topo::to_string(m.shape_interval)); },
-          "How the intervals were made: 'percentile', 'centred-on-estimate', 'bias-corrected', or 'none' (no refits).")
+  // each result record's attributes from its one list (record_fields.hpp), its meanings the docstrings
+  py::class_<topo::Interval> interval(
+      m, "Interval", "A bootstrap interval [lo, hi] (ModelAssessment.shape_interval says how it was made).");
+  def_record_fields(interval).def("__repr__", &repr_interval);
+  py::class_<topo::ModelAssessment> model_assessment(m, "ModelAssessment",
+                                                     "One model fitted to one sample, with its evidence.");
+  def_record_fields(model_assessment)
       .def_property_readonly(
           "interval_method", [](const topo::ModelAssessment& m) { return topo::interval_method(m.shape_interval); },
           "The same in words, as report.json's fits.*.intervals gives it.")
@@ -252,12 +223,8 @@ void bind_assessment(py::module_& m) {
                ": AD " + topo::p_value_text(m.anderson_darling_p, m.p_at_floor) + ", KS " +
                topo::p_value_text(m.kolmogorov_smirnov_p, m.kolmogorov_smirnov_p_at_floor) + ">";
       });
-  py::class_<topo::Verdict>(m, "Verdict", "Which model the evidence favours, and the evidence in words.")
-      .def_readonly("gaussian_rejected", &topo::Verdict::gaussian_rejected)
-      .def_readonly("best", &topo::Verdict::best, "Lowest AIC among the models not rejected.")
-      .def_readonly("best_rejected", &topo::Verdict::best_rejected, "Every model was rejected: the best by AIC anyway.")
-      .def_readonly("aic_gain_over_gaussian", &topo::Verdict::aic_gain_over_gaussian)
-      .def_readonly("text", &topo::Verdict::text);
+  py::class_<topo::Verdict> verdict(m, "Verdict", "Which model the evidence favours, and the evidence in words.");
+  def_record_fields(verdict);
   py::class_<topo::SampleAssessment>(m, "SampleAssessment", "The three models fitted to one sample, and a verdict.")
       .def_readonly("name", &topo::SampleAssessment::name)
       .def_readonly("n", &topo::SampleAssessment::n)

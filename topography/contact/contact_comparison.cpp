@@ -44,7 +44,6 @@ void fill_curves(ModelContact& model, const ContactModel& contact, const Contact
 ModelContact model_of(ContactModelKind kind) {
   ModelContact model;
   model.kind = kind;
-  model.label = to_string(kind);
   return model;
 }
 
@@ -106,7 +105,7 @@ void conclude_against_exact(ContactComparison& comparison) {
   std::ostringstream text;
   text.precision(3);
   const auto describe = [&](const ModelContact& m) {
-    text << m.label << ": stiffness ";
+    text << m.label() << ": stiffness ";
     for (std::size_t k = 0; k < comparison.pressures.size(); ++k) text << (k ? ", " : "") << m.stiffness_over_exact[k] << "x";
     text << ", real area ";
     for (std::size_t k = 0; k < comparison.pressures.size(); ++k) text << (k ? ", " : "") << m.area_over_exact[k] << "x";
@@ -275,7 +274,7 @@ std::string measured_headline(const ContactComparison& comparison, const ModelCo
     return text.str();
   }
   if (!closest) return "no fitted model has contact curves to compare with the measured summits";
-  text << "Closest to GW on the measured summits (no law fitted): " << closest->label << ", stiffness ";
+  text << "Closest to GW on the measured summits (no law fitted): " << closest->label() << ", stiffness ";
   for (std::size_t n = 0; n < compared.size(); ++n) {
     const std::size_t k = compared[n];
     text << (n ? ", " : "") << closest->stiffness_over_measured[k] << "x";
@@ -479,10 +478,10 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
         // P/A0 per unit X_3/2: the load factor per unit nominal area (contact_scales.hpp)
         const double load_unit = detail::contact_scales_of(summits.density, summits.radius, fit.scale, e_star).load;
         Scene scene;
-        scene.name = "asperity surface: " + model.label;
+        scene.name = std::string("asperity surface: ") + model.label();
         scene.source = "asperity surface";
         SceneCurve curve;
-        curve.name = model.label;
+        curve.name = model.label();
         curve.distribution = Distribution::weibull;
         curve.side = surface.side;
         curve.shape = fit.shape;

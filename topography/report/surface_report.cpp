@@ -40,34 +40,19 @@ ordered_json assessment_json(const SampleAssessment& a) {
   ordered_json models = ordered_json::array();
   for (const ModelAssessment& m : a.models) {
     const HeightDistribution& d = m.fit.distribution;
-    models.push_back({{"model", to_string(d.model)},
-                      {"description", describe(d.model)},
-                      {"location_m", number(d.location)},
-                      {"scale_m", number(d.scale)},
-                      {"shape", number(d.shape)},
-                      {"mean_m", number(d.mean())},
-                      {"standard_deviation_m", number(d.standard_deviation())},
-                      {"estimator", d.model == HeightModel::gaussian ? "maximum likelihood" : "maximum product of spacings"},
-                      {"shape_at_bound", m.fit.shape_at_bound},
-                      {"shape_identified", m.shape_identified},
-                      {"identification", m.identification},
-                      {"interval_location_m", {number(m.location.lo), number(m.location.hi)}},
-                      {"interval_scale_m", {number(m.scale.lo), number(m.scale.hi)}},
-                      {"interval_shape", {number(m.shape.lo), number(m.shape.hi)}},
-                      {"interval_shape_method", to_string(m.shape_interval)},
-                      {"shape_bias_slope", number(m.bias_slope)},
-                      {"anderson_darling", number(m.anderson_darling)},
-                      {"anderson_darling_p", number(m.anderson_darling_p)},
-                      {"anderson_darling_p_is_bound", m.p_at_floor},
-                      {"kolmogorov_smirnov", number(m.kolmogorov_smirnov)},
-                      {"kolmogorov_smirnov_p", number(m.kolmogorov_smirnov_p)},
-                      {"kolmogorov_smirnov_p_is_bound", m.kolmogorov_smirnov_p_at_floor},
-                      {"log_likelihood", number(m.log_likelihood)},
-                      {"aic", number(m.aic)},
-                      {"delta_aic", number(m.delta_aic)},
-                      {"akaike_weight", number(m.akaike_weight)},
-                      {"rejected", m.rejected},
-                      {"failed_refits", m.failed_refits}});
+    // the distribution's parameters and what follows from them, the fit's, then the assessment's
+    // fields (each from its record's list, record_fields.hpp) and its intervals as [lo, hi]
+    ordered_json mj = record_json<ordered_json>(d);
+    mj["description"] = describe(d.model);
+    mj["mean_m"] = number(d.mean());
+    mj["standard_deviation_m"] = number(d.standard_deviation());
+    mj["estimator"] = d.model == HeightModel::gaussian ? "maximum likelihood" : "maximum product of spacings";
+    add_record_json(mj, m.fit);
+    add_record_json(mj, m);
+    mj["interval_location_m"] = {number(m.location.lo), number(m.location.hi)};
+    mj["interval_scale_m"] = {number(m.scale.lo), number(m.scale.hi)};
+    mj["interval_shape"] = {number(m.shape.lo), number(m.shape.hi)};
+    models.push_back(std::move(mj));
   }
   return ordered_json{{"sample", a.name},
                       {"n", a.n},
@@ -79,12 +64,7 @@ ordered_json assessment_json(const SampleAssessment& a) {
                                              "marginal, every statistic computed on them as on the map"},
                       {"intervals", interval_method(a.model(HeightModel::weibull_tail).shape_interval)},
                       {"models", models},
-                      {"verdict",
-                       {{"gaussian_rejected", a.verdict.gaussian_rejected},
-                        {"best", to_string(a.verdict.best)},
-                        {"best_rejected", a.verdict.best_rejected},
-                        {"aic_gain_over_gaussian", number(a.verdict.aic_gain_over_gaussian)},
-                        {"text", a.verdict.text}}}};
+                      {"verdict", record_json<ordered_json>(a.verdict)}};
 }
 
 ordered_json histogram_json(const HeightMap& map, int bins) {
@@ -305,75 +285,37 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
   j["surface"] = {{"source", map.source},   {"format", map.format},     {"nx", map.nx},
                   {"ny", map.ny},           {"dx_m", map.dx},           {"dy_m", map.dy},
                   {"width_m", map.width()}, {"length_m", map.length()}, {"notes", map.notes}};
-  j["noise_floor"] = {
-      {"reached", a.noise_floor.reached},
-      {"height_resolution_m", a.noise_floor.resolution},
-      {"rms_limit_m", a.noise_floor.rms_limit},
-      {"rule", "Sq under 10 times the rms of rounding to the heights' quantization step (q / sqrt(12))"},
-      {"text", a.noise_floor.text}};
+  // each object a record's fields (its list, record_fields.hpp) and the keys composed around them
+  j["noise_floor"] = record_json<ordered_json>(a.noise_floor);
+  j["noise_floor"]["rule"] = "Sq under 10 times the rms of rounding to the heights' quantization step (q / sqrt(12))";
   j["leveling"] = {{"leveled", a.leveled},
                    {"method", a.leveled ? "least-squares plane subtracted" : "none: the heights as read"},
                    {"offset_m", a.plane.offset},
                    {"slope_x", a.plane.slope_x},
                    {"slope_y", a.plane.slope_y}};
-  const HeightStatistics& s = a.statistics;
-  j["statistics"] = {{"valid_points", s.valid_points},
-                     {"missing_points", s.missing_points},
-                     {"Sq_m", s.rms},
-                     {"Sa_m", s.mean_absolute},
-                     {"Ssk", s.skewness},
-                     {"Sku", s.kurtosis},
-                     {"min_m", s.min},
-                     {"max_m", s.max}};
-  const SpectralMoments& m = a.moments;
-  j["spectral_moments"] = {
+  j["statistics"] = record_json<ordered_json>(a.statistics);
+  ordered_json moments{
       {"method",
        "slopes by forward differences, curvatures by second differences (one discrete wavenumber); m2, m4 "
-       "the equivalent isotropic moments, geometric means along the principal directions (McCool 1986)"},
-      {"m0_m2", m.m0},
-      {"m2", m.m2},
-      {"m4_per_m2", m.m4},
-      {"alpha", m.alpha},
-      {"m2x", m.m2x},
-      {"m2y", m.m2y},
-      {"m11", m.m11},
-      {"m4x_per_m2", m.m4x},
-      {"m4y_per_m2", m.m4y},
-      {"principal_angle_rad", m.principal_angle},
-      {"m2_principal", {m.m2_principal[0], m.m2_principal[1]}},
-      {"m4_principal_per_m2", {m.m4_principal[0], m.m4_principal[1]}},
-      {"anisotropy", number(m.anisotropy)},
-      {"isotropic", m.anisotropy <= max_isotropic_anisotropy},
-      {"isotropy_limit", max_isotropic_anisotropy}};
-  j["correlation"] = {{"level", a.correlation.level},
-                      {"lag_x_points", a.correlation.x},
-                      {"lag_y_points", a.correlation.y},
-                      {"lag_x_m", static_cast<double>(a.correlation.x) * map.dx},
-                      {"lag_y_m", static_cast<double>(a.correlation.y) * map.dy}};
+       "the equivalent isotropic moments, geometric means along the principal directions (McCool 1986)"}};
+  add_record_json(moments, a.moments);
+  moments["isotropic"] = a.moments.anisotropy <= max_isotropic_anisotropy;
+  moments["isotropy_limit"] = max_isotropic_anisotropy;
+  j["spectral_moments"] = moments;
+  j["correlation"] = record_json<ordered_json>(a.correlation);
+  j["correlation"]["lag_x_m"] = static_cast<double>(a.correlation.x) * map.dx;
+  j["correlation"]["lag_y_m"] = static_cast<double>(a.correlation.y) * map.dy;
   const Summits& su = a.summits;
-  j["summits"] = {{"definition", su.options.window == 1 ? "higher than its 8 neighbours" : "highest within the window"},
-                  {"window_points", su.options.window},
-                  {"min_drop_m", su.options.min_drop},
-                  {"count", su.list.size()},
-                  {"rejected_by_drop", su.rejected_by_drop},
-                  {"candidates", su.candidates},
-                  {"area_searched_m2", su.area_searched},
-                  {"density_per_m2", su.density},
-                  {"mean_curvature_per_m", su.mean_curvature},
-                  {"radius_m", su.radius},
-                  {"radius_method", "1 / mean over summits of -(h_xx + h_yy)/2 (3-point second differences)"}};
+  ordered_json summits{
+      {"definition", su.options.window == 1 ? "higher than its 8 neighbours" : "highest within the window"},
+      {"window_points", su.options.window},
+      {"min_drop_m", su.options.min_drop},
+      {"count", su.list.size()}};
+  add_record_json(summits, su);
+  summits["radius_method"] = "1 / mean over summits of -(h_xx + h_yy)/2 (3-point second differences)";
+  j["summits"] = summits;
   ordered_json sampling = ordered_json::array();
-  for (const SamplingRow& r : a.sampling)
-    sampling.push_back({{"factor", r.factor},
-                        {"dx_m", r.dx},
-                        {"dy_m", r.dy},
-                        {"summits", r.summits},
-                        {"density_per_m2", r.density},
-                        {"radius_m", r.radius},
-                        {"m2", r.m2},
-                        {"m4_per_m2", r.m4},
-                        {"alpha", r.alpha},
-                        {"anisotropy", number(r.anisotropy)}});
+  for (const SamplingRow& r : a.sampling) sampling.push_back(record_json<ordered_json>(r));
   j["sampling_dependence"] = sampling;
   j["height_histogram"] = histogram_json(map, 60);
   j["ensemble"] = {{"surrogates", a.surrogates},
@@ -381,33 +323,25 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
                    {"method", surrogate_method()}};
 }
 
+// the verdict's fields (its list), the rules it applied and the models it names
 ordered_json verdict_json(const SurfaceVerdict& v) {
-  return ordered_json{
-      {"tested", v.tested},
-      {"gaussian_rejected", v.gaussian_rejected},
-      {"gaussian_p_heights", number(v.p_heights)},
-      {"gaussian_p_heights_is_bound", v.p_heights_bound},
-      {"gaussian_p_summit_heights", number(v.p_summits)},
-      {"gaussian_p_summit_heights_is_bound", v.p_summits_bound},
-      {"rule", "each sample's Gaussian test that speaks at the significance shared among them (Bonferroni: half each "
-               "when both speak)"},
-      {"summit_test_applicable", v.summit_test_applicable},
-      {"summit_test_min_summits", min_summits_to_test},
-      {"summit_test_note", v.summit_test_note},
-      {"summit_test_rule", summit_test_rule()},
-      {"heights_orientation", v.orientation == HeightModel::gaussian ? "none" : to_string(v.orientation)},
-      {"side_told", v.side_told},
-      {"side_note", v.side_note},
-      {"side_rule", side_rule()},
-      {"model_for_contact", v.named ? to_string(v.model) : "none"},
-      {"text", v.text}};
+  ordered_json verdict = record_json<ordered_json>(v);
+  verdict["rule"] =
+      "each sample's Gaussian test that speaks at the significance shared among them (Bonferroni: half each when "
+      "both speak)";
+  verdict["summit_test_min_summits"] = min_summits_to_test;
+  verdict["summit_test_rule"] = summit_test_rule();
+  verdict["heights_orientation"] = v.orientation == HeightModel::gaussian ? "none" : to_string(v.orientation);
+  verdict["side_rule"] = side_rule();
+  verdict["model_for_contact"] = v.named ? to_string(v.model) : "none";
+  return verdict;
 }
 
 // one model's contact: its surface, its states at the asked pressures with its ratios to the
 // references, and its curve
 ordered_json model_contact_json(const ModelContact& mc, const ContactComparison& c) {
   const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
-  ordered_json mj{{"model", mc.label},
+  ordered_json mj{{"model", mc.label()},
                   {"mean_summit_height_m", number(mc.mean_summit_height)},
                   {"served", mc.served},
                   {"note", mc.note},
@@ -582,12 +516,7 @@ std::string analysis_json(const SurfaceAnalysis& a) {
     j["contact"] = contact_json(*a.contact);
     if (a.law) j["contact"]["law"] = law_json(*a.law, *a.contact);
   }
-  const NextSteps next = next_steps(a);
-  j["next_steps"] = {{"model_named", next.model_named}, {"model", contact_model_name(next.model)},
-                     {"why", next.why},                 {"contact_command", next.contact_command},
-                     {"python", next.python},           {"card_command", next.card_command},
-                     {"exact_command", next.exact_command}, {"instead", next.instead},
-                     {"text", next.text}};
+  j["next_steps"] = record_json<ordered_json>(next_steps(a));
   // a source or note that is not UTF-8 (a path's bytes) is replaced, not an exception
   return j.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
@@ -620,7 +549,7 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
           << "): stiffness per area [N/m^3] (x the measured summits')";
       for (const ModelContact& mc : c.models) {
         if (mc.kind == ContactModelKind::measured_summits_own_radii) continue;
-        out << "  " << mc.label << " ";
+        out << "  " << mc.label() << " ";
         if (!mc.served) {
           out << "(none)";
           continue;
@@ -633,7 +562,7 @@ std::string analysis_summary(const SurfaceAnalysis& a) {
       out << "\n";
     }
     for (const ModelContact& mc : c.models)
-      if (!mc.served) out << "  " << mc.label << ": " << mc.note << "\n";
+      if (!mc.served) out << "  " << mc.label() << ": " << mc.note << "\n";
     if (!c.exact_headline.empty()) out << "  " << c.exact_headline << "\n";
   }
   if (a.law) {
@@ -774,7 +703,7 @@ void markdown_exact(std::ostream& md, const ContactComparison& c) {
     for (const ModelContact& mc : c.models) {
       if (!mc.served || mc.kind == ContactModelKind::exact || mc.stiffness_over_exact.empty()) continue;
       for (std::size_t k = 0; k < c.pressures.size(); ++k)
-        md << "| " << mc.label << " | " << g(c.pressures[k]) << " | " << g(mc.separation_minus_exact[k], 3) << " | "
+        md << "| " << mc.label() << " | " << g(c.pressures[k]) << " | " << g(mc.separation_minus_exact[k], 3) << " | "
            << g(mc.area_over_exact[k], 3) << " | " << g(mc.stiffness_over_exact[k], 3) << " |\n";
     }
   } else if (exact) {
@@ -793,10 +722,16 @@ void markdown_law(std::ostream& md, const LawContact& law, const ContactComparis
   md << "| the law's parameters | " << (law.parameters_text.empty() ? "none beyond R and E*" : law.parameters_text)
      << " |\n";
   if (!law.adhesive) {  // an adhesive law is elastic: no hardness, no ω_c, no plasticity index
-    md << "| H (GW's ψ) | " << (std::isfinite(law.hardness) ? g(law.hardness) + " Pa" : "– (the law has none)") << " |\n";
-    md << "| ω_c (the law's, at R) | " << g(law.critical_interference) << " m |\n";
-    md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | " << g(law.plasticity_index, 3) << " |\n";
-    md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << g(law.gw_plasticity_index, 3) << " |\n";
+    // a figure the law does not define says so, and why (Hertz: none of them; Jackson-Green: no H)
+    const auto cell = [](double value, const std::string& unit, int digits, const char* why) {
+      return std::isfinite(value) ? g(value, digits) + unit : std::string("not used: ") + why;
+    };
+    md << "| H (GW's ψ) | " << cell(law.hardness, " Pa", 4, "the law has no hardness") << " |\n";
+    md << "| ω_c (the law's, at R) | " << cell(law.critical_interference, " m", 4, "the law does not yield") << " |\n";
+    md << "| ψ = (σs/ω_c)^½ (the law's: Kogut–Etsion 2003's with the CEB/KE ω_c) | "
+       << cell(law.plasticity_index, "", 3, "no ω_c") << " |\n";
+    md << "| ψ = (E*/H)(σs/R)^½ (Greenwood–Williamson 1966's) | " << cell(law.gw_plasticity_index, "", 3, "no H")
+       << " |\n";
   }
   md << "| the law's source range | " << (std::isfinite(law.valid_up_to) ? "ω up to " + g(law.valid_up_to) + " m" : "every ω") << " |\n";
   if (law.adhesive) {
@@ -834,7 +769,7 @@ void markdown_contact(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
         "prediction rests on the few highest summits measured, not on the fitted law.\n\n";
   if (!c.headline.empty()) md << "**" << c.headline << ".**\n\n";
   md << "| model | table |\n|---|---|\n";
-  for (const ModelContact& mc : c.models) md << "| " << mc.label << " | " << mc.note << " |\n";
+  for (const ModelContact& mc : c.models) md << "| " << mc.label() << " | " << mc.note << " |\n";
   const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
   for (std::size_t k = 0; k < c.pressures.size(); ++k) {
     md << "\nAt a nominal pressure of " << g(c.pressures[k]) << " Pa (" << in_contact_text(c, k)
@@ -842,14 +777,14 @@ void markdown_contact(std::ostream& md, const SurfaceAnalysis& a, bool plots) {
        << "):\n\n| model | summits in contact | mean separation [m] | area fraction | stiffness / A0 [N/m³] | K/P [1/m] | stiffness / measured summits' | stiffness / Gaussian fit's |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModelContact& mc : c.models) {
       if (!mc.served) {
-        md << "| " << mc.label << " | – | – | – | – | – | – | – |\n";
+        md << "| " << mc.label() << " | – | – | – | – | – | – | – |\n";
         continue;
       }
       const PhysicalState& s = mc.at_pressures[k];
       std::string versus = k < mc.stiffness_over_measured.size() ? g(mc.stiffness_over_measured[k], 3) : "–";
       if (mc.kind == ContactModelKind::measured_summits && k < c.measured_stiffness_spread.size())
         versus = "1 (±" + g(100 * c.measured_stiffness_spread[k], 2) + "%)";
-      md << "| " << mc.label << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
+      md << "| " << mc.label() << " | " << g(s.count, 3) << " | " << g(s.mean_separation) << " | " << g(s.area_fraction, 3) << " | "
          << g(s.stiffness / c.nominal_area) << " | " << g(s.stiffness_over_load) << " | " << versus << " | "
          << (gaussian && gaussian->served ? g(ratio(s.stiffness, gaussian->at_pressures[k].stiffness), 3) : "–") << " |\n";
     }
@@ -926,7 +861,7 @@ std::string curves_csv(const SurfaceAnalysis& a) {
     for (const PhysicalState& s : curve)
       csv += model + "," + csv_row(s) + "," + format_double(s.stiffness / c.nominal_area) + "\n";
   };
-  for (const ModelContact& mc : c.models) rows(mc.label, mc.curve);
+  for (const ModelContact& mc : c.models) rows(mc.label(), mc.curve);
   if (a.law) rows("law:" + a.law->law, a.law->curve);
   return csv;
 }

@@ -42,12 +42,22 @@ struct AnalysisOptions {
   ExactProgress exact_progress;           // the exact contact's (load steps done of total)
 };
 
+// Summits and moments at factor times the sampling interval (report.json's sampling_dependence);
+// its fields defined once (record_fields.hpp)
+#define ASPERITY_SAMPLING_ROW_FIELDS(X)                                           \
+  X(std::size_t, factor, "factor", "every factor-th point in x and y", 1)        \
+  X(double, dx, "dx_m", "the sampling interval along x [m]")                      \
+  X(double, dy, "dy_m", "the sampling interval along y [m]")                      \
+  X(std::size_t, summits, "summits", "the summits found")                        \
+  X(double, density, "density_per_m2", "summits per unit area [1/m^2]")           \
+  X(double, radius, "radius_m", "the summit radius R = 1 / <kappa_m> [m]")        \
+  X(double, m2, "m2", "the equivalent isotropic slope variance")                  \
+  X(double, m4, "m4_per_m2", "the equivalent isotropic curvature variance [1/m^2]") \
+  X(double, alpha, "alpha", "Nayak's bandwidth m0 m4 / m2^2")                     \
+  X(double, anisotropy, "anisotropy", "the ratio of the principal slope variances", 1)
+
 struct SamplingRow {
-  std::size_t factor = 1;
-  double dx = 0, dy = 0;
-  std::size_t summits = 0;
-  double density = 0, radius = 0;  // [1/m^2], [m]
-  double m2 = 0, m4 = 0, alpha = 0, anisotropy = 1;
+  ASPERITY_SAMPLING_ROW_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // A map whose roughness is at the level of its height quantization q (HeightMap::
@@ -55,11 +65,14 @@ struct SamplingRow {
 // 10 times the rms of rounding to q (q / sqrt(12)), i.e. under 2.9 q, or every height equal. Its
 // summits would be rounding noise: it gets its statistics and this statement, never summits,
 // fits or contact curves.
+#define ASPERITY_NOISE_FLOOR_FIELDS(X)                                                      \
+  X(bool, reached, "reached", "the roughness is at the heights' quantization: no summits, fits or curves") \
+  X(double, resolution, "height_resolution_m", "q, the heights' quantization step [m]")   \
+  X(double, rms_limit, "rms_limit_m", "10 q / sqrt(12) [m]")                               \
+  X(std::string, text, "text", "the statement, in words")
+
 struct NoiseFloor {
-  bool reached = false;
-  double resolution = 0;   // q [m]
-  double rms_limit = 0;    // 10 q / sqrt(12) [m]
-  std::string text;
+  ASPERITY_NOISE_FLOOR_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 struct SurfaceAnalysis {
@@ -93,3 +106,8 @@ SurfaceAnalysis analyse_height_map(HeightMap map, const AnalysisOptions& options
 SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOptions& options = {});
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::SamplingRow, ASPERITY_SAMPLING_ROW_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::NoiseFloor, ASPERITY_NOISE_FLOOR_FIELDS)
+}  // namespace asperity

@@ -110,7 +110,8 @@ bool is_fitted(ContactModelKind kind) noexcept;  // a law fitted to the map: gau
 
 struct ModelContact {
   ContactModelKind kind = ContactModelKind::measured_summits;
-  std::string label;               // to_string(kind)
+  // its name in the outputs, kind's one spelling (to_string(ContactModelKind))
+  const char* label() const noexcept { return to_string(kind); }
   bool served = false;
   std::string note;                // the table that served it, or why there is no curve
   RoughSurface surface;

@@ -23,6 +23,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "asperity/record_fields.hpp"
+
 namespace asperity::topography {
 
 enum class HeightModel { gaussian = 0, weibull_tail = 1, weibull_bounded = 2 };
@@ -38,9 +40,15 @@ int parameter_count(HeightModel model);          // 2 or 3
 // The functions never throw: parameters that are no distribution (a location or scale not
 // finite, a scale <= 0, a Weibull shape not finite and > 0) give NaN for quantile, mean and
 // standard_deviation; a mean or standard deviation beyond the largest double is +-inf.
+// Its parameters, defined once (record_fields.hpp): report.json's models[] start with them
+#define ASPERITY_HEIGHT_DISTRIBUTION_FIELDS(X)                                          \
+  X(HeightModel, model, "model", "the height model")                                   \
+  X(double, location, "location_m", "the location [m] (the Gaussian: its mean)")        \
+  X(double, scale, "scale_m", "the scale [m] (the Gaussian: its standard deviation)", 1) \
+  X(double, shape, "shape", "the Weibull shape a (the Gaussian: unused)")
+
 struct HeightDistribution {
-  HeightModel model = HeightModel::gaussian;
-  double location = 0, scale = 1, shape = 0;  // gaussian: mean, standard deviation (shape unused)
+  ASPERITY_HEIGHT_DISTRIBUTION_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 
   double log_pdf(double x) const noexcept;
   double log_cdf(double x) const noexcept;     // ln P(X <= x)
@@ -56,11 +64,15 @@ struct FitOptions {
   const HeightDistribution* start = nullptr;  // a known nearby solution (bootstrap refits): start there only
 };
 
+#define ASPERITY_FIT_RESULT_FIELDS(X)                                                                \
+  X(HeightDistribution, distribution, nullptr, "the fitted distribution")                           \
+  X(double, objective, nullptr,                                                                     \
+    "maximum product of spacings: the mean log spacing S; Gaussian: the mean log-likelihood")       \
+  X(bool, shape_at_bound, "shape_at_bound", "the shape hit shape_min or shape_max")                \
+  X(int, evaluations, nullptr, "the objective's evaluations")
+
 struct FitResult {
-  HeightDistribution distribution;
-  double objective = 0;         // MPS: mean log spacing S; gaussian: mean log-likelihood
-  bool shape_at_bound = false;  // the shape hit shape_min or shape_max
-  int evaluations = 0;
+  ASPERITY_FIT_RESULT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // `sorted` ascending, at least 5 finite values not all equal. Throws asperity::Error otherwise.
@@ -71,3 +83,8 @@ double mean_log_spacing(const HeightDistribution& distribution, const std::vecto
 double log_likelihood(const HeightDistribution& distribution, const std::vector<double>& data);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::HeightDistribution, ASPERITY_HEIGHT_DISTRIBUTION_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::FitResult, ASPERITY_FIT_RESULT_FIELDS)
+}  // namespace asperity

@@ -54,8 +54,12 @@ struct AssessmentOptions {
   FitOptions fit;
 };
 
+#define ASPERITY_INTERVAL_FIELDS(X)          \
+  X(double, lo, "lo", "the interval's lower end") \
+  X(double, hi, "hi", "the interval's upper end")
+
 struct Interval {
-  double lo = 0, hi = 0;
+  ASPERITY_INTERVAL_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // How a Weibull's shape interval is made from the refitted shapes: the enum the interval's code
@@ -73,40 +77,56 @@ const char* to_string(ShapeInterval interval);
 // fits.*.intervals, report.md): the location's and scale's percentiles and the shape's method.
 std::string interval_method(ShapeInterval interval);
 
+// location and scale: percentile intervals of the refits; shape (Weibull only): made as
+// shape_interval says (percentile for assess_sample; a surface's samples: surface_tests.hpp), set
+// by the code that made them (none until then). A p at its floor 1/(B' + 1) (B' the refits that
+// succeeded; no refit reached the statistic) is a bound, "p <= 1/(B' + 1)", not a value. The shape
+// is identified when its interval stays inside the fit's bounds and at most a tenth of the refits
+// end at a bound. bias_slope: the heights' Weibull shape interval's d(bias of ln a_hat)/d(ln a),
+// measured on the surrogates (surface_tests.hpp); NaN where not measured (the summit heights, the
+// Gaussian, an i.i.d. bootstrap). The fields defined once (record_fields.hpp), in report.json's
+// order after the fit's (its fits.*.models[]; the intervals there as [lo, hi]).
+#define ASPERITY_MODEL_ASSESSMENT_FIELDS(X)                                                                   \
+  X(FitResult, fit, nullptr, "the fit")                                                                      \
+  X(bool, shape_identified, "shape_identified", "the data pin the shape down (its interval stays inside the fit's bounds)", true) \
+  X(std::string, identification, "identification", "why not, when not")                                       \
+  X(Interval, location, nullptr, "the location's interval [m]")                                              \
+  X(Interval, scale, nullptr, "the scale's interval [m]")                                                    \
+  X(Interval, shape, nullptr, "the shape's interval (Weibull only)")                                        \
+  X(ShapeInterval, shape_interval, "interval_shape_method",                                                  \
+    "how the intervals were made: 'percentile', 'centred-on-estimate', 'bias-corrected', or 'none' (no refits)") \
+  X(double, bias_slope, "shape_bias_slope",                                                                  \
+    "the heights' Weibull shape: d(bias of ln a)/d(ln a) on the surrogates, which its interval corrects for (NaN where not measured)", \
+    std::numeric_limits<double>::quiet_NaN())                                                                \
+  X(double, anderson_darling, "anderson_darling", "the Anderson-Darling statistic A^2")                     \
+  X(double, anderson_darling_p, "anderson_darling_p", "its p-value, by parametric bootstrap")                \
+  X(bool, p_at_floor, "anderson_darling_p_is_bound",                                                         \
+    "the Anderson-Darling p-value is at its floor 1/(B + 1): a bound (p <= ...), not a value")              \
+  X(double, kolmogorov_smirnov, "kolmogorov_smirnov", "the Kolmogorov-Smirnov statistic D")                 \
+  X(double, kolmogorov_smirnov_p, "kolmogorov_smirnov_p", "its p-value, by parametric bootstrap")            \
+  X(bool, kolmogorov_smirnov_p_at_floor, "kolmogorov_smirnov_p_is_bound",                                    \
+    "the Kolmogorov-Smirnov p-value is at its floor 1/(B + 1): a bound, not a value")                       \
+  X(double, log_likelihood, "log_likelihood", "ln L of the sample")                                         \
+  X(double, aic, "aic", "Akaike's information criterion")                                                    \
+  X(double, delta_aic, "delta_aic", "AIC minus the lowest AIC of the models")                               \
+  X(double, akaike_weight, "akaike_weight", "the Akaike weight over all three models")                      \
+  X(bool, rejected, "rejected", "the Anderson-Darling p-value is below the significance")                   \
+  X(int, failed_refits, "failed_refits", "refits that failed")                                              \
+  X(int, bootstrap, nullptr, "the bootstrap's size B")
+
 struct ModelAssessment {
-  FitResult fit;
-  double anderson_darling = 0, anderson_darling_p = 0;
-  double kolmogorov_smirnov = 0, kolmogorov_smirnov_p = 0;
-  double log_likelihood = 0, aic = 0, delta_aic = 0, akaike_weight = 0;
-  // location and scale: percentile intervals of the refits; shape (Weibull only): made as
-  // shape_interval says (percentile for assess_sample; a surface's samples: surface_tests.hpp)
-  Interval location, scale, shape;
-  // how the intervals were made: set by the code that made them (none until then)
-  ShapeInterval shape_interval = ShapeInterval::none;
-  int bootstrap = 0, failed_refits = 0;
-  bool rejected = false;            // the Anderson-Darling p-value is below the significance
-  // p at its floor 1/(B' + 1) (B' the refits that succeeded; no refit reached the statistic): then
-  // it is a bound, "p <= 1/(B' + 1)", not a value. p_at_floor is the Anderson-Darling p's.
-  bool p_at_floor = false;
-  bool kolmogorov_smirnov_p_at_floor = false;
-  // The shape is pinned down by the data: its interval stays inside the fit's bounds and at most
-  // a tenth of the refits end at a bound. Otherwise it is "not identified", with why.
-  bool shape_identified = true;
-  std::string identification;
-  // The heights' Weibull shape interval: d(bias of ln a_hat)/d(ln a), measured on the surrogates
-  // (surface_tests.hpp); NaN where not measured (the summit heights, the Gaussian, an i.i.d.
-  // bootstrap).
-  double bias_slope = std::numeric_limits<double>::quiet_NaN();
+  ASPERITY_MODEL_ASSESSMENT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
-struct Verdict {
-  bool gaussian_rejected = false;
-  // the lowest AIC among the models neither rejected nor of an unidentified shape
-  HeightModel best = HeightModel::gaussian;
-  bool best_rejected = false;                // there was none: the lowest AIC of all
+#define ASPERITY_VERDICT_FIELDS(X)                                                                       \
+  X(bool, gaussian_rejected, "gaussian_rejected", "the Gaussian is rejected")                           \
+  X(HeightModel, best, "best", "the lowest AIC among the models neither rejected nor of an unidentified shape") \
+  X(bool, best_rejected, "best_rejected", "every model was rejected: the best by AIC anyway")           \
+  X(double, aic_gain_over_gaussian, "aic_gain_over_gaussian", "AIC(Gaussian) - AIC(best)")              \
+  X(std::string, text, "text", "the verdict with its evidence, in words")
 
-  double aic_gain_over_gaussian = 0;         // AIC(Gaussian) - AIC(best)
-  std::string text;                          // the verdict with its evidence, in words
+struct Verdict {
+  ASPERITY_VERDICT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 struct SampleAssessment {
@@ -152,3 +172,9 @@ TestResult bootstrap_test(HeightModel model, const std::vector<double>& sorted, 
 std::vector<double> draw_sample(const HeightDistribution& distribution, std::size_t n, std::uint64_t seed);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::Interval, ASPERITY_INTERVAL_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::ModelAssessment, ASPERITY_MODEL_ASSESSMENT_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::Verdict, ASPERITY_VERDICT_FIELDS)
+}  // namespace asperity

@@ -11,16 +11,21 @@
 
 namespace asperity::topography {
 
+// Its fields defined once (record_fields.hpp): report.json's next_steps, Python's NextSteps
+#define ASPERITY_NEXT_STEPS_FIELDS(X)                                                                          \
+  X(bool, model_named, "model_named", "the verdict named a model for the contact")                            \
+  X(std::optional<ContactModelKind>, model, "model", "the named model (\"weibull-tail\"), empty when none") \
+  X(std::string, why, "why", "why this model, or why none is named")                                         \
+  X(std::string, contact_command, "contact_command",                                                         \
+    "`asperity contact ...` on the model's surface (empty: none named, or no E*)")                            \
+  X(std::string, python, "python", "Python code building the named model's ContactModel")                    \
+  X(std::string, card_command, "card_command", "its pressure-overclosure card for CalculiX")                 \
+  X(std::string, exact_command, "exact_command", "the map's exact contact tabulated (a contact-curves table) and its card") \
+  X(std::string, instead, "instead", "where no model is named: what to use instead")                          \
+  X(std::string, text, "text", "all of it in words, for the summary and report.md")
+
 struct NextSteps {
-  bool model_named = false;     // the verdict named a model for the contact
-  std::optional<ContactModelKind> model;  // that model (contact_model_name: "weibull-tail"), none when none
-  std::string why;              // why this model, or why none is named
-  std::string contact_command;  // `asperity contact ...` on the model's surface (empty: none named, or no E*)
-  std::string python;           // the same surface and model in Python
-  std::string card_command;     // its pressure-overclosure card for CalculiX
-  std::string exact_command;    // the map's exact contact tabulated (a contact-curves table) and its card
-  std::string instead;          // where no model is named: what to use instead
-  std::string text;             // all of it in words, for the summary and report.md
+  ASPERITY_NEXT_STEPS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // The next steps of an analysis. Commands need the contact modulus (AnalysisOptions::contact);
@@ -29,3 +34,7 @@ struct NextSteps {
 NextSteps next_steps(const SurfaceAnalysis& analysis);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::NextSteps, ASPERITY_NEXT_STEPS_FIELDS)
+}  // namespace asperity

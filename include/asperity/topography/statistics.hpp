@@ -28,18 +28,26 @@
 #include <cstddef>
 #include <vector>
 
+#include "asperity/record_fields.hpp"
 #include "asperity/topography/height_map.hpp"
 
 namespace asperity::topography {
 
+// Each record's fields, defined once (record_fields.hpp): its members, report.json's keys (the
+// column) and the Python attributes with their meanings.
+#define ASPERITY_HEIGHT_STATISTICS_FIELDS(X)                                      \
+  X(std::size_t, valid_points, "valid_points", "the heights that are not missing") \
+  X(std::size_t, missing_points, "missing_points", "the missing heights")          \
+  X(double, mean, nullptr, "the mean height [m]")                                  \
+  X(double, rms, "Sq_m", "Sq, the rms height about the mean [m]")                  \
+  X(double, mean_absolute, "Sa_m", "Sa, the mean absolute height about the mean [m]") \
+  X(double, skewness, "Ssk", "Ssk, the heights' skewness")                         \
+  X(double, kurtosis, "Sku", "Sku, the heights' kurtosis (3 for a Gaussian)")      \
+  X(double, min, "min_m", "the lowest height [m]")                                 \
+  X(double, max, "max_m", "the highest height [m]")
+
 struct HeightStatistics {
-  std::size_t valid_points = 0, missing_points = 0;
-  double mean = 0;      // [m]
-  double rms = 0;       // Sq, about the mean [m]
-  double mean_absolute = 0;  // Sa [m]
-  double skewness = 0;  // Ssk
-  double kurtosis = 0;  // Sku (3 for a Gaussian)
-  double min = 0, max = 0;
+  ASPERITY_HEIGHT_STATISTICS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 HeightStatistics height_statistics(const HeightMap& map);
@@ -47,20 +55,29 @@ HeightStatistics height_statistics(const HeightMap& map);
 // Nayak-McCool's isotropy is not assumed beyond this ratio of principal slope variances.
 inline constexpr double max_isotropic_anisotropy = 1.5;
 
+// In report.json's order (spectral_moments); the principal directions of the slope tensor: the
+// angle of the steepest from x, the principal slope variances (steepest first) and the curvature
+// variances along them
+#define ASPERITY_SPECTRAL_MOMENTS_FIELDS(X)                                                                  \
+  X(double, m0, "m0_m2", "the height variance [m^2]")                                                       \
+  X(double, m2, "m2", "the equivalent isotropic slope variance (geometric mean, McCool 1986)")              \
+  X(double, m4, "m4_per_m2", "the equivalent isotropic curvature variance [1/m^2]")                         \
+  X(double, alpha, "alpha", "Nayak's bandwidth m0 m4 / m2^2")                                               \
+  X(double, m2x, "m2x", "the slope variance along x")                                                       \
+  X(double, m2y, "m2y", "the slope variance along y")                                                       \
+  X(double, m11, "m11", "<(dh/dx)(dh/dy)>")                                                                 \
+  X(double, m4x, "m4x_per_m2", "the curvature variance along x [1/m^2]")                                    \
+  X(double, m4y, "m4y_per_m2", "the curvature variance along y [1/m^2]")                                    \
+  X(double, principal_angle, "principal_angle_rad", "the steepest principal direction's angle from x [rad]") \
+  X(double[2], m2_principal, "m2_principal", "the principal slope variances, steepest first")               \
+  X(double[2], m4_principal, "m4_principal_per_m2",                                                         \
+    "the curvature variances along the principal directions [1/m^2]")                                       \
+  X(double, anisotropy, "anisotropy", "m2_principal[0] / m2_principal[1]; Nayak-McCool assume 1 (isotropic)", 1) \
+  X(std::size_t, slope_samples, nullptr, "the slope stencils summed")                                       \
+  X(std::size_t, curvature_samples, nullptr, "the curvature stencils summed")
+
 struct SpectralMoments {
-  double m0 = 0;             // [m^2]
-  double m2x = 0, m2y = 0;   // slope variances along x and y (dimensionless)
-  double m11 = 0;            // <(dh/dx)(dh/dy)>
-  double m4x = 0, m4y = 0;   // curvature variances along x and y [1/m^2]
-  // principal directions of the slope tensor: the angle of the steepest from x [rad], the
-  // principal slope variances (steepest first) and the curvature variances along them
-  double principal_angle = 0;
-  double m2_principal[2] = {0, 0};
-  double m4_principal[2] = {0, 0};
-  double anisotropy = 1;     // m2_principal[0] / m2_principal[1]
-  double m2 = 0, m4 = 0;     // the equivalent isotropic moments (geometric means, McCool 1986)
-  double alpha = 0;          // Nayak's bandwidth m0 m4 / m2^2
-  std::size_t slope_samples = 0, curvature_samples = 0;
+  ASPERITY_SPECTRAL_MOMENTS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // Heights about their mean; stencils that touch a missing point are skipped.
@@ -69,9 +86,13 @@ SpectralMoments spectral_moments(const HeightMap& map);
 // The lags (in points) along x and along y at which the height autocorrelation first falls
 // below `level` (e.g. 0.1: heights that far apart are nearly independent); capped at half the
 // map. Used to thin a correlated map before fitting distributions to its heights.
+#define ASPERITY_CORRELATION_LENGTHS_FIELDS(X)                                                  \
+  X(std::size_t, x, "lag_x_points", "the lag along x [points]", 1)                               \
+  X(std::size_t, y, "lag_y_points", "the lag along y [points]", 1)                               \
+  X(double, level, "level", "the autocorrelation the lags are where it first falls below", 0.1)
+
 struct CorrelationLengths {
-  std::size_t x = 1, y = 1;
-  double level = 0.1;
+  ASPERITY_CORRELATION_LENGTHS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 CorrelationLengths correlation_lengths(const HeightMap& map, double level = 0.1);
 
@@ -80,3 +101,9 @@ CorrelationLengths correlation_lengths(const HeightMap& map, double level = 0.1)
 std::vector<double> thinned_heights(const HeightMap& map, const CorrelationLengths& lengths, std::size_t max_count);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::HeightStatistics, ASPERITY_HEIGHT_STATISTICS_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::SpectralMoments, ASPERITY_SPECTRAL_MOMENTS_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::CorrelationLengths, ASPERITY_CORRELATION_LENGTHS_FIELDS)
+}  // namespace asperity

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "asperity/record_fields.hpp"
 #include "asperity/topography/height_map.hpp"
 
 namespace asperity::topography {
@@ -37,16 +38,22 @@ struct Summit {
   double kappa1 = 0, kappa2 = 0;  // principal curvatures [1/m], kappa1 >= kappa2
 };
 
+// Over the summits found (report.json's summits, after its count and how they were found); the
+// fields defined once (record_fields.hpp)
+#define ASPERITY_SUMMITS_FIELDS(X)                                                             \
+  X(std::size_t, rejected_by_drop, "rejected_by_drop", "maxima less than min_drop above their neighbours") \
+  X(std::size_t, candidates, "candidates", "points whose whole window is valid")             \
+  X(double, area_searched, "area_searched_m2", "candidates dx dy [m^2]")                     \
+  X(double, density, "density_per_m2", "summits per unit area [1/m^2]")                      \
+  X(double, mean_curvature, "mean_curvature_per_m", "<kappa_m> over the summits [1/m]")      \
+  X(double, radius, "radius_m", "R = 1 / <kappa_m> [m]")                                     \
+  X(SummitOptions, options, nullptr, "how the summits were found")                          \
+  X(double, dx, nullptr, "the map's sampling interval along x [m]")                         \
+  X(double, dy, nullptr, "the map's sampling interval along y [m]")
+
 struct Summits {
-  std::vector<Summit> list;
-  std::size_t candidates = 0;     // points whose whole window is valid
-  double area_searched = 0;       // candidates x dx dy [m^2]
-  double density = 0;             // summits per unit area [1/m^2]
-  double mean_curvature = 0;      // <kappa_m> over the summits [1/m]
-  double radius = 0;              // R = 1 / <kappa_m> [m]
-  std::size_t rejected_by_drop = 0;
-  SummitOptions options;
-  double dx = 0, dy = 0;
+  std::vector<Summit> list;  // every summit (Python: arrays of each field)
+  ASPERITY_SUMMITS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // Throws asperity::Error for a window < 1 or a negative/NaN min_drop.
@@ -56,3 +63,7 @@ Summits find_summits(const HeightMap& map, const SummitOptions& options = {});
 HeightMap decimated(const HeightMap& map, std::size_t factor);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::Summits, ASPERITY_SUMMITS_FIELDS)
+}  // namespace asperity

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "asperity/record_fields.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
 
 namespace asperity::topography {
@@ -49,25 +50,34 @@ inline constexpr double side_interval_ratio_max = 3;
 std::string summit_test_rule();
 std::string side_rule();
 
+// Issue 40, item 2: the summit heights' test speaks only with at least min_summits_to_test
+// summits; below, it is "not applicable" (summit_test_note says why, with the count) and the
+// heights' test alone decides (at half the significance, as when both speak). Issue 40, item 3:
+// the side (tail up or bounded above) is told only when the data determine it (side_rule());
+// otherwise side_note says why ("the side cannot be told from this map") and no Weibull is named
+// for the contact. The fields defined once (record_fields.hpp); report.json's verdict writes
+// orientation as heights_orientation ("none" for gaussian) and model as model_for_contact ("none"
+// unless named).
+#define ASPERITY_SURFACE_VERDICT_FIELDS(X)                                                                     \
+  X(bool, tested, "tested", "an ensemble was run")                                                            \
+  X(bool, gaussian_rejected, "gaussian_rejected", "the Gaussian is rejected at the significance")             \
+  X(double, p_heights, "gaussian_p_heights", "the Gaussian's Anderson-Darling p on the heights")             \
+  X(bool, p_heights_bound, "gaussian_p_heights_is_bound", "p_heights is at its floor 1/(B + 1): a bound")    \
+  X(double, p_summits, "gaussian_p_summit_heights", "the Gaussian's Anderson-Darling p on the summit heights") \
+  X(bool, p_summits_bound, "gaussian_p_summit_heights_is_bound", "p_summits is at its floor 1/(B + 1): a bound") \
+  X(bool, summit_test_applicable, "summit_test_applicable",                                                   \
+    "the summit heights' test speaks: at least MIN_SUMMITS_TO_TEST summits (else no weight in the verdict)", true) \
+  X(std::string, summit_test_note, "summit_test_note", "why not, with the count, when not")                  \
+  X(bool, side_told, "side_told", "the data determine the side (SIDE_INTERVAL_RATIO_MAX, side_rule); else no Weibull is named") \
+  X(std::string, side_note, "side_note", "the side told, or \"the side cannot be told from this map: \" and why") \
+  X(HeightModel, orientation, nullptr,                                                                        \
+    "the side told (weibull_tail or weibull_bounded), or gaussian: the side cannot be told from the map")     \
+  X(bool, named, nullptr, "a model for the contact is named")                                                 \
+  X(HeightModel, model, nullptr, "the model named for the contact (when named)")                              \
+  X(std::string, text, "text", "the verdict in words")
+
 struct SurfaceVerdict {
-  bool tested = false;                 // an ensemble was run
-  bool gaussian_rejected = false;
-  double p_heights = 0, p_summits = 0;  // the Gaussian's Anderson-Darling p on each sample
-  bool p_heights_bound = false, p_summits_bound = false;  // p at its floor 1/(B + 1): a bound
-  HeightModel orientation = HeightModel::gaussian;  // the side told (side_told), or gaussian: none told
-  // Issue 40, item 2: the summit heights' test speaks only with at least min_summits_to_test
-  // summits; below, it is "not applicable" (summit_test_note says why, with the count) and the
-  // heights' test alone decides (at half the significance, as when both speak).
-  bool summit_test_applicable = true;
-  std::string summit_test_note;
-  // Issue 40, item 3: the side (tail up or bounded above) is told only when the data determine
-  // it (side_rule()); otherwise side_note says why ("the side cannot be told from this map")
-  // and no Weibull is named for the contact.
-  bool side_told = false;
-  std::string side_note;
-  bool named = false;                  // a model for the contact is named
-  HeightModel model = HeightModel::gaussian;
-  std::string text;
+  ASPERITY_SURFACE_VERDICT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // What the verdict is drawn from.
@@ -85,3 +95,7 @@ struct SurfaceEvidence {
 SurfaceVerdict surface_verdict(const SurfaceEvidence& evidence);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::SurfaceVerdict, ASPERITY_SURFACE_VERDICT_FIELDS)
+}  // namespace asperity
