@@ -30,6 +30,14 @@
 //                                    (subnormal_results: ln X in [-745, -709]) or normal (normal_results:
 //                                    ln X in [-700, -664]): what subnormal results cost the vector exps
 //   BM_BatchCApi                     asperity_eval_batch, Weibull a = 2 tail
+//   BM_ScalarCApi                    asperity_eval, one query a call, the same curve and queries
+//   BM_BatchFloor/PART/ISA           the batch's floor (issue 41, item 7; batch_floor.hpp), each part
+//                                    alone over BM_Batch's 4096 doubles: exp (the runtime's vector exp on
+//                                    the batch's own ln X), exp_libmvec (glibc's _ZGVdN4v_exp /
+//                                    _ZGVeN8v_exp), quintic (the polynomial, coefficients in registers),
+//                                    quintic_exp (both in one pass: the arithmetic every query needs);
+//                                    .../normal_range: the exps on x in [-700, 700] (BM_StdExp's);
+//                                    BM_BatchFloor/stream: memcpy of the separations to the output
 //   BM_BatchThreads/min_time:1.000/real_time/threads:T   one Curve's batch path from T threads at once (throughput:
 //                                    items_per_second; goal threads:2 >= 1.8x threads:1)
 //   BM_CoreProbe/min_time:1.000/real_time/threads:T   pure floating-point work, no memory: whether this machine's
@@ -82,6 +90,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_floor.hpp"
 #include "direct_quadrature.hpp"
 #include "grid_copy.hpp"
 #include "highway_kernel.hpp"
@@ -557,6 +566,95 @@ void BM_BatchCApi(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * query_count);
 }
 BENCHMARK(BM_BatchCApi);
+// the scalar lookup through the C API (asperity_eval), BM_BatchCApi's reference
+void BM_ScalarCApi(benchmark::State& state) {
+  static asperity_table* handle = asperity_table_open(nullptr, nullptr, 0);
+  static asperity_curve* curve = asperity_curve_open(handle, "weibull", "tail", 2.0, nullptr, 0);
+  const double* separations = kind_data("weibull_tail_a2").separations.data();
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(asperity_eval(curve, 3, separations[i++ & (query_count - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ScalarCApi);
+
+const std::vector<double>& exponents();
+
+// ---- the batch path's floor (batch_floor.hpp): its parts alone, over BM_Batch's 4096 queries ----
+
+// ln X of BM_Batch's queries (Weibull a = 2 tail, X_3/2): the exps' inputs as the batch has them
+// (3% of them below ln DBL_MIN)
+const std::vector<double>& batch_logs() {
+  static const std::vector<double> logs = [] {
+    const KindData& data = kind_data("weibull_tail_a2");
+    std::vector<double> out(query_count);
+    data.curve.log_value_batch(data.kind->twice_order, data.separations.data(), out.data(), query_count);
+    return out;
+  }();
+  return logs;
+}
+const bench::BatchFloorKernels* floor_kernels(benchmark::State& state, InstructionSet isa) {
+  const bench::BatchFloorKernels& kernels = isa == InstructionSet::avx512 ? bench::batch_floor_avx512
+                                                                          : bench::batch_floor_avx2;
+  if (!kernels.exp || !instruction_set_available(isa)) {
+    state.SkipWithError("instruction set not available");
+    return nullptr;
+  }
+  return &kernels;
+}
+template <class Run>
+void run_floor(benchmark::State& state, Run run) {
+  std::vector<double> out(query_count);
+  for (auto _ : state) {
+    run(out.data());
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * query_count);
+}
+// inputs: the batch's ln X, or x in [-700, 700] (exponents(): every result normal, where
+// libmvec takes no per-lane fallback)
+void BM_BatchFloorExp(benchmark::State& state, InstructionSet isa, bool library, bool normal_range) {
+  const bench::BatchFloorKernels* kernels = floor_kernels(state, isa);
+  if (!kernels) return;
+  const double* logs = normal_range ? exponents().data() : batch_logs().data();
+  const auto exp = library ? kernels->libmvec_exp : kernels->exp;
+  run_floor(state, [&](double* out) { exp(logs, out, query_count); });
+}
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx2, InstructionSet::avx2, false, false)->Name("BM_BatchFloor/exp/avx2");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx512, InstructionSet::avx512, false, false)->Name("BM_BatchFloor/exp/avx512");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx2, InstructionSet::avx2, true, false)->Name("BM_BatchFloor/exp_libmvec/avx2");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx512, InstructionSet::avx512, true, false)
+    ->Name("BM_BatchFloor/exp_libmvec/avx512");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx2, InstructionSet::avx2, false, true)
+    ->Name("BM_BatchFloor/exp/avx2/normal_range");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx512, InstructionSet::avx512, false, true)
+    ->Name("BM_BatchFloor/exp/avx512/normal_range");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx2, InstructionSet::avx2, true, true)
+    ->Name("BM_BatchFloor/exp_libmvec/avx2/normal_range");
+BENCHMARK_CAPTURE(BM_BatchFloorExp, avx512, InstructionSet::avx512, true, true)
+    ->Name("BM_BatchFloor/exp_libmvec/avx512/normal_range");
+// the quintic alone and with its exp: one interval's coefficients in registers, y in [-0.5, 0.5)
+// as the grid's positions are
+void BM_BatchFloorQuintic(benchmark::State& state, InstructionSet isa, bool with_exp) {
+  const bench::BatchFloorKernels* kernels = floor_kernels(state, isa);
+  if (!kernels) return;
+  static const std::vector<double> positions = uniform(-0.5, 0.5, query_count, 12);
+  const KindData& data = kind_data("weibull_tail_a2");
+  const double* record = data.grid.order(data.kind->twice_order) + 100 * detail::fast_stride;
+  const auto quintic = with_exp ? kernels->quintic_exp : kernels->quintic;
+  run_floor(state, [&](double* out) { quintic(record, positions.data(), out, query_count); });
+}
+BENCHMARK_CAPTURE(BM_BatchFloorQuintic, avx2, InstructionSet::avx2, false)->Name("BM_BatchFloor/quintic/avx2");
+BENCHMARK_CAPTURE(BM_BatchFloorQuintic, avx512, InstructionSet::avx512, false)->Name("BM_BatchFloor/quintic/avx512");
+BENCHMARK_CAPTURE(BM_BatchFloorQuintic, avx2, InstructionSet::avx2, true)->Name("BM_BatchFloor/quintic_exp/avx2");
+BENCHMARK_CAPTURE(BM_BatchFloorQuintic, avx512, InstructionSet::avx512, true)
+    ->Name("BM_BatchFloor/quintic_exp/avx512");
+// the memory traffic alone: the separations read, the values written (memcpy)
+void BM_BatchFloorStream(benchmark::State& state) {
+  const double* separations = kind_data("weibull_tail_a2").separations.data();
+  run_floor(state, [&](double* out) { std::memcpy(out, separations, query_count * sizeof(double)); });
+}
+BENCHMARK(BM_BatchFloorStream)->Name("BM_BatchFloor/stream");
 
 // Threads share the curve (and the queries); each writes its own output.
 void BM_BatchThreads(benchmark::State& state) {

@@ -6,6 +6,8 @@
 #   scripts/bench-ab.sh FILTER ROUNDS DIR...      time the copies (FILTER: --benchmark_filter's regex)
 # Each build runs with its own libasperity (LD_LIBRARY_PATH before the binary's RUNPATH): a
 # bench_lookup built before a change of Curve's layout crashes against a newer library.
+# BENCH_AB_TIME=cpu_time reports CPU time (default real_time): on a loaded machine the wall
+# time counts the other tenants' turns too.
 set -euo pipefail
 if [ "${1:-}" = "--copy" ]; then
   mkdir -p "$3"
@@ -24,16 +26,16 @@ for round in $(seq "$rounds"); do
       > "$out/$(basename "$dir").$round.json" 2>/dev/null
   done
 done
-/usr/bin/python3 - "$out" "$@" <<'PY'
+/usr/bin/python3 - "$out" "${BENCH_AB_TIME:-real_time}" "$@" <<'PY'
 import collections, glob, json, os, statistics, sys
-out = sys.argv[1]
-for directory in sys.argv[2:]:
+out, field = sys.argv[1], sys.argv[2]
+for directory in sys.argv[3:]:
     name = os.path.basename(directory)
     times = collections.defaultdict(list)
     for path in glob.glob(os.path.join(out, name + ".*.json")):
         for row in json.load(open(path))["benchmarks"]:
             if row.get("run_type") == "iteration":
-                times[row["run_name"]].append(row["real_time"])
+                times[row["run_name"]].append(row[field])
     for row in sorted(times):
         print("%-12s %-44s min %10.2f  median %10.2f  (%d)" % (name, row, min(times[row]), statistics.median(times[row]), len(times[row])))
 PY

@@ -3,7 +3,8 @@
 //
 // - positions: ScalarPasses::positions four queries a step, with AVX2 intrinsics: the
 //   compiler's loop narrows the shift counts to 32 bits and back (bench_lookup BM_Batch, this
-//   against the compiler's loop: 9-12% of the whole batch path on AMD Zen 4).
+//   against the compiler's loop: 9-12% of the whole batch path on AMD Zen 4); eight a step in
+//   the AVX-512 build, the directory by a gather (positions8).
 // - quintics: the six coefficients of four queries by twelve 128-bit loads (a record is six
 //   doubles in a row), paired in registers and unpacked, not by six gathers. Gathers are what
 //   the compiler's loop spent its time on (AMD Zen 4: a gather of 4 or 8 doubles costs more
@@ -63,14 +64,62 @@ ASPERITY_ALWAYS_INLINE void store_wide_first(double* to, __m256d value, int coun
 }
 #endif
 
+#if defined(__AVX512F__)
+// X86Passes::positions eight queries a step (the AVX-512 build): the directory entries by one
+// 8-lane gather, where four queries a step took four scalar loads and the inserts that pack
+// them (Intel Xeon, Sapphire Rapids class: this pass 0.47 ns a query against 0.79 ns, 16% of
+// BM_Batch/avx512; on AMD Zen 4 a 4-lane gather was slower than the loads, 8 lanes unmeasured).
+// Returns how many queries it placed (a multiple of 8) and adds those inside to inside_count.
+ASPERITY_ALWAYS_INLINE int positions8(const FastGrid& grid, const double* separations, std::uint64_t* at, double* y,
+                                      int count, std::uint64_t& inside_count) noexcept {
+  const __m512d lower0 = _mm512_set1_pd(grid.sides[0].lower), lower1 = _mm512_set1_pd(-grid.sides[1].upper);
+  const __m512d upper0 = _mm512_set1_pd(grid.sides[0].upper), upper1 = _mm512_set1_pd(-grid.sides[1].lower);
+  const __m512i offset0 = _mm512_set1_epi64(grid.sides[0].offset);
+  const __m512i offset1 = _mm512_set1_epi64(grid.sides[1].offset - 2048ll);  // as in positions
+  const __m512i mantissa_mask = _mm512_set1_epi64(0x000fffffffffffffll);
+  const __m512i knots_mask = _mm512_set1_epi64(63), fifty_two = _mm512_set1_epi64(52);
+  const __m512i one_bits = _mm512_set1_epi64(0x3ff0000000000000ll);
+  const __m512i first_bias = _mm512_set1_epi64(FastBinade::first_bias);
+  const long long* directory = reinterpret_cast<const long long*>(grid.directory);
+  int j = 0;
+  for (; j + 8 <= count; j += 8) {
+    const __m512d separation = _mm512_loadu_pd(separations + j);
+    const __m512i bits = _mm512_castpd_si512(separation);
+    const __mmask8 negative = _mm512_movepi64_mask(bits);
+    const __mmask8 inside = _mm512_mask_cmp_pd_mask(
+        _mm512_cmp_pd_mask(separation, _mm512_mask_blend_pd(negative, lower0, lower1), _CMP_GE_OQ), separation,
+        _mm512_mask_blend_pd(negative, upper0, upper1), _CMP_LE_OQ);  // NaN fails too
+    inside_count += static_cast<std::uint64_t>(__builtin_popcount(static_cast<unsigned>(inside)));
+    const __m512i offset = _mm512_mask_blend_epi64(negative, offset0, offset1);
+    const __m512i entry = _mm512_maskz_add_epi64(inside, offset, _mm512_srli_epi64(bits, 52));  // off: entry 0
+    const __m512i packed = _mm512_i64gather_epi64(entry, directory, 8);
+    const __m512i knots = _mm512_and_si512(packed, knots_mask), mantissa = _mm512_and_si512(bits, mantissa_mask);
+    const __m512i cell = _mm512_srlv_epi64(mantissa, _mm512_sub_epi64(fifty_two, knots));
+    // (mantissa << knots) & mantissa_mask | one_bits in one ternary-logic operation
+    const __m512d fraction =
+        _mm512_castsi512_pd(_mm512_ternarylogic_epi64(_mm512_sllv_epi64(mantissa, knots), mantissa_mask, one_bits, 0xea));
+    const __m512i index = _mm512_add_epi64(_mm512_sub_epi64(_mm512_srli_epi64(packed, 6), first_bias), cell);
+    _mm512_storeu_si512(at + j, index);
+    _mm512_storeu_pd(y + j, _mm512_sub_pd(fraction, _mm512_set1_pd(1.5)));
+  }
+  return j;
+}
+#endif
+
 struct X86Passes {
-  // ScalarPasses::positions (kernels.hpp), four queries a step; the last few one at a time.
+  // ScalarPasses::positions (kernels.hpp), four queries a step (eight in the AVX-512 build:
+  // positions8); the last few one at a time.
   // at[j] is the interval, not times fast_stride: quintic_rows4 multiplies on the integer
   // registers, which this pass leaves idle (three vector operations fewer per four queries;
   // faster in bench_lookup BM_Batch/avx512. The baseline build keeps the product here: its
   // quintics were slower the other way).
   static std::uint64_t positions(const FastGrid& grid, const double* separations, std::uint64_t* at, double* y,
                                  int count) noexcept {
+    std::uint64_t inside_count = 0;
+#if defined(__AVX512F__)
+    int j = positions8(grid, separations, at, y, count, inside_count);
+#else
+    int j = 0;
     // the range of s itself on each side (s < 0: [-upper, -lower]): no magnitude to make
     const __m256d lower0 = _mm256_set1_pd(grid.sides[0].lower), lower1 = _mm256_set1_pd(-grid.sides[1].upper);
     const __m256d upper0 = _mm256_set1_pd(grid.sides[0].upper), upper1 = _mm256_set1_pd(-grid.sides[1].lower);
@@ -82,22 +131,9 @@ struct X86Passes {
     const __m256i one_bits = _mm256_set1_epi64x(0x3ff0000000000000ll);
     const __m256i first_bias = _mm256_set1_epi64x(FastBinade::first_bias);
     const long long* directory = reinterpret_cast<const long long*>(grid.directory);
-    std::uint64_t inside_count = 0;
-    int j = 0;
     for (; j + 4 <= count; j += 4) {
       const __m256d separation = _mm256_loadu_pd(separations + j);
       const __m256i bits = _mm256_castpd_si256(separation);
-#if defined(__AVX512VL__)
-      // mask registers: the sign's grid by masked blends, the range test and "keep" without
-      // vector masks (fewer operations on the vector pipes, which this pass is bound by)
-      const __mmask8 negative = _mm256_movepi64_mask(bits);
-      const __mmask8 inside = _mm256_mask_cmp_pd_mask(
-          _mm256_cmp_pd_mask(separation, _mm256_mask_blend_pd(negative, lower0, lower1), _CMP_GE_OQ), separation,
-          _mm256_mask_blend_pd(negative, upper0, upper1), _CMP_LE_OQ);  // NaN fails too
-      inside_count += static_cast<std::uint64_t>(__builtin_popcount(static_cast<unsigned>(inside)));
-      const __m256i offset = _mm256_castpd_si256(_mm256_mask_blend_pd(negative, offset0, offset1));
-      const __m256i entry = _mm256_maskz_add_epi64(inside, offset, _mm256_srli_epi64(bits, 52));
-#else
       // the sign's grid: blendv picks by the sign bit, the separation's own
       const __m256d lower = _mm256_blendv_pd(lower0, lower1, separation);
       const __m256d upper = _mm256_blendv_pd(upper0, upper1, separation);
@@ -107,7 +143,6 @@ struct X86Passes {
       const __m256i keep = _mm256_castpd_si256(inside);  // off the grid: entry 0 (fast_grid.hpp)
       const __m256i offset = _mm256_castpd_si256(_mm256_blendv_pd(offset0, offset1, separation));
       const __m256i entry = _mm256_and_si256(_mm256_add_epi64(offset, _mm256_srli_epi64(bits, 52)), keep);
-#endif
       // four loads, not a gather (AMD Zen 4: 4% of the whole batch path, bench_lookup BM_Batch)
       alignas(32) long long entries[4];
       _mm256_store_si256(reinterpret_cast<__m256i*>(entries), entry);
@@ -122,6 +157,7 @@ struct X86Passes {
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(at + j), index);
       _mm256_storeu_pd(y + j, _mm256_sub_pd(fraction, _mm256_set1_pd(1.5)));
     }
+#endif
     std::uint64_t outside = static_cast<std::uint64_t>(j) - inside_count;
     for (; j < count; ++j) {
       FastPosition position;

@@ -12,10 +12,11 @@
 //   (0 below -746, inf above 710, NaN kept), or in the AVX-512 build vscalefpd where k is exact.
 // - exp8 (AVX-512, eight lanes): x = (m + j/16) ln2 + r, |r| <= ln2 / 32, 2^(j/16) from a
 //   16-entry table held in four registers (vpermt2pd), e^r by a minimax polynomial of degree 6
-//   (error 1.2e-17), 2^m applied by vscalefpd, which rounds subnormal results once and gives 0
-//   and inf beyond the range: one path for every lane, no branch (x clamped to [-760, 710]
-//   first, NaN kept). Whether a subnormal result costs extra depends on the CPU: bench_lookup's
-//   BM_BatchTail/avx512 rows, subnormal_results against normal_results, show it.
+//   (error 1.2e-17), 2^m applied by vscalefpd, which gives inf beyond the range (x clamped to
+//   [-760, 710] first, NaN kept); below ln DBL_MIN the result's bits are made as an integer
+//   (exp8_below_normal: a vscalefpd that makes a subnormal takes a microcode assist on Intel
+//   cores), the same rounding: bench_lookup's BM_BatchTail/avx512 rows, subnormal_results
+//   against normal_results, show what the tails cost.
 // The coefficients: scripts/exp_minimax.py (Remez in 50 digits, the errors with the
 // coefficients rounded to double); each polynomial is one or two operations shorter than the
 // Taylor one of the same accuracy, on a path bound by its vector operations.
@@ -172,6 +173,21 @@ alignas(64) constexpr Exp2Table<16> exp2_table16 = make_exp2_table<16>();
 // The shifter that rounds x / ln 2 to a multiple of 1/16, k = m + j/16: the sum's low four bits
 // are j (vpermt2pd reads only those), and k itself is vscalefpd's exponent (it takes floor(k) = m)
 constexpr double exp8_shifter = 1.5 * 281474976710656.0;  // 1.5 * 2^48
+// Below ln DBL_MIN a vscalefpd that makes a subnormal (or 0) takes a microcode assist on Intel
+// cores (a Xeon of the Sapphire Rapids class: bench_lookup BM_BatchTail/avx512/subnormal_results
+// 5.1x normal_results, and the 3% of the Weibull a = 2 tail's results below DBL_MIN made
+// BM_Batch/avx512 2.1x slower: 16.9 us against 8.2 us with this alone). There the result's bits
+// are made as an integer, as in
+// exp4_down_to_subnormal: scale 2^(m + 1074) + 2^52 rounds once to the integer that is the
+// subnormal's bits (ties to even, as vscalefpd rounds; 2^53 gives DBL_MIN's bits), every
+// operand a normal double. m = floor(k) >= -1097 (x >= -760): 2^(m + 1074) is normal.
+constexpr double exp8_normal_min = -708.3964185322641;  // ln DBL_MIN
+ASPERITY_ALWAYS_INLINE __m512d exp8_below_normal(__m512d scale, __m512d k) noexcept {
+  const __m512d two_52 = _mm512_set1_pd(4503599627370496.0);
+  const __m512d power = _mm512_scalef_pd(_mm512_set1_pd(1.0), _mm512_add_pd(k, _mm512_set1_pd(1074.0)));
+  const __m512d units = _mm512_fmadd_pd(scale, power, two_52);  // < 2^53 + 1
+  return _mm512_castsi512_pd(_mm512_sub_epi64(_mm512_castpd_si512(units), _mm512_castpd_si512(two_52)));
+}
 ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
   // [-760, 710]: e^x is 0 below, inf above; NaN kept (vmaxpd and vminpd return their second
   // operand where one is NaN). Without it, r would be NaN for infinite x.
@@ -194,7 +210,10 @@ ASPERITY_ALWAYS_INLINE __m512d exp8(__m512d x) noexcept {
   const __m512d hi = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.hi), shifted_bits, _mm512_load_pd(exp2_table16.hi + 8));
   const __m512d lo = _mm512_permutex2var_pd(_mm512_load_pd(exp2_table16.lo), shifted_bits, _mm512_load_pd(exp2_table16.lo + 8));
   const __m512d scale = _mm512_add_pd(hi, _mm512_fmadd_pd(hi, expm1, lo));
-  return _mm512_scalef_pd(scale, k);
+  const __mmask8 below_normal = _mm512_cmp_pd_mask(x, _mm512_set1_pd(exp8_normal_min), _CMP_LT_OQ);
+  if (__builtin_expect(below_normal == 0, 1)) return _mm512_scalef_pd(scale, k);
+  // the other lanes' vscalefpd masked: a lane computed and then blended away would take the assist
+  return _mm512_mask_scalef_pd(exp8_below_normal(scale, k), static_cast<__mmask8>(~below_normal), scale, k);
 }
 #endif
 
