@@ -67,8 +67,9 @@ ASPERITY_ALWAYS_INLINE void store_wide_first(double* to, __m256d value, int coun
 #if defined(__AVX512F__)
 // X86Passes::positions eight queries a step (the AVX-512 build): the directory entries by one
 // 8-lane gather, where four queries a step took four scalar loads and the inserts that pack
-// them (Intel Xeon, Sapphire Rapids class: this pass 0.47 ns a query against 0.79 ns, 16% of
-// BM_Batch/avx512; on AMD Zen 4 a 4-lane gather was slower than the loads, 8 lanes unmeasured).
+// them (Intel Xeon, Sapphire Rapids class: this pass 0.47 ns a query against 0.79 ns, timed
+// alone in a harness outside the repository, about a fifth of BM_Batch/avx512; on AMD Zen 4 a
+// 4-lane gather was slower than the loads, 8 lanes unmeasured).
 // Returns how many queries it placed (a multiple of 8) and adds those inside to inside_count.
 ASPERITY_ALWAYS_INLINE int positions8(const FastGrid& grid, const double* separations, std::uint64_t* at, double* y,
                                       int count, std::uint64_t& inside_count) noexcept {
