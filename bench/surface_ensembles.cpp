@@ -3,7 +3,7 @@
 // table of docs/surfaces.md, section 4 (scripts/surface-ensembles.sh writes it).
 //
 //   surface_ensembles [--maps M] [--surrogates B] [--size N] [--ny NY] [--correlation XI]
-//                     [--family NAME] [--threads T] [--seed-offset K] [--csv FILE]
+//                     [--family NAME] [--threads T] [--seed-offset K] [--csv FILE] [--oversize F]
 //
 // --ny: strips (N x NY points); --correlation: every family's correlation length in points
 // instead of its own (few summits on a small map: the summit test's power against the count);
@@ -13,7 +13,8 @@
 //
 // Families: Gaussian fields narrow- to broad-band (Nayak alpha ~3 to ~30, 256^2, 2,400 to
 // 3,000 summits), and fields of exponential correlation given Weibull marginals (a = 1.5, 2, 3),
-// tail up and bounded above. For each map, the whole analysis (analyse_height_map) with B
+// tail up and bounded above; self-affine Gaussian fields without roll-off, H 0.3-0.9 (--family
+// self-affine; cut from a draw --oversize times the map, 4 by default: synthetic.hpp). For each map, the whole analysis (analyse_height_map) with B
 // surrogates; per family the rate at which the verdict rejects a Gaussian surface (size on the
 // Gaussian families, power on the others; and each sample's own test at 5%), how often the
 // heights' orientation is the true one, and how often the 95% interval of the heights' Weibull
@@ -37,6 +38,7 @@ struct Family {
   double correlation;  // points
   double shape;        // 0: Gaussian marginal
   bool bounded;
+  double hurst = 0;    // > 0: a self-affine field without roll-off of this H (correlation unused)
 };
 
 const std::vector<Family> families = {
@@ -56,11 +58,20 @@ const std::vector<Family> families = {
     {"smooth-weibull-bounded-1.5", t::CorrelationFunction::gaussian, 4, 1.5, true},
     {"smooth-weibull-tail-2", t::CorrelationFunction::gaussian, 4, 2, false},
     {"smooth-weibull-bounded-2", t::CorrelationFunction::gaussian, 4, 2, true},
+    // self-affine Gaussian fields without roll-off (issue 40, item 1): steep spectra whose longest
+    // wavelengths are longer than the map, cut from a draw --oversize (4) times the map's longer side
+    {"self-affine-H0.3", t::CorrelationFunction::exponential, 0, 0, false, 0.3},
+    {"self-affine-H0.5", t::CorrelationFunction::exponential, 0, 0, false, 0.5},
+    {"self-affine-H0.7", t::CorrelationFunction::exponential, 0, 0, false, 0.7},
+    {"self-affine-H0.8", t::CorrelationFunction::exponential, 0, 0, false, 0.8},
+    {"self-affine-H0.9", t::CorrelationFunction::exponential, 0, 0, false, 0.9},
 };
 
-// --family: one name, several separated by commas, or none: the nine of the table (not the smooth ones)
+// --family: one name, several separated by commas, or none: the nine of the table (not the smooth
+// or self-affine ones); "self-affine": the five self-affine families
 bool selected(const std::string& only, const std::string& name) {
-  if (only.empty()) return name.rfind("smooth-", 0) != 0;
+  if (only.empty()) return name.rfind("smooth-", 0) != 0 && name.rfind("self-affine-", 0) != 0;
+  if (only == "self-affine") return name.rfind("self-affine-", 0) == 0;
   return ("," + only + ",").find("," + name + ",") != std::string::npos;
 }
 
@@ -80,13 +91,13 @@ std::string rate(int hits, int total) {
 
 int main(int argc, char** argv) {
   int maps = 100, surrogates = 99, threads = 0;
-  std::size_t size = 256, ny = 0;
+  std::size_t size = 256, ny = 0, oversize = t::self_affine_default_oversize;
   double correlation = 0;
   long seed_offset = 0;
   std::string only, csv_path;
   const char* usage =
       "usage: surface_ensembles [--maps M] [--surrogates B] [--size N] [--ny NY] [--correlation XI] [--family NAME] "
-      "[--threads T] [--seed-offset K] [--csv FILE]\n";
+      "[--threads T] [--seed-offset K] [--csv FILE] [--oversize F]\n";
   for (int k = 1; k < argc; k += 2) {
     if (k + 1 >= argc) {  // a lone word (--help included): the usage, not a half-hour run
       std::fputs(usage, stderr);
@@ -101,6 +112,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[k], "--correlation")) correlation = std::atof(argv[k + 1]);
     else if (!std::strcmp(argv[k], "--seed-offset")) seed_offset = std::atol(argv[k + 1]);
     else if (!std::strcmp(argv[k], "--csv")) csv_path = argv[k + 1];
+    else if (!std::strcmp(argv[k], "--oversize")) oversize = static_cast<std::size_t>(std::atol(argv[k + 1]));
     else {
       std::fprintf(stderr, "surface_ensembles: unknown option %s\n%s", argv[k], usage);
       return 2;
@@ -141,7 +153,9 @@ int main(int argc, char** argv) {
     for (int m = 0; m < maps; ++m) {
       const double xi = correlation > 0 ? correlation : family.correlation;
       const std::uint64_t seed = 1000003u * static_cast<std::uint64_t>(m + seed_offset) + 17;
-      t::HeightMap map = t::spectral_random_field(size, ny, 1e-7, 1e-7, family.function, xi, seed);
+      t::HeightMap map = family.hurst > 0
+                             ? t::self_affine_random_field(size, ny, 1e-7, 1e-7, family.hurst, seed, oversize)
+                             : t::spectral_random_field(size, ny, 1e-7, 1e-7, family.function, xi, seed);
       if (family.shape > 0) t::to_weibull_marginal(map, family.shape, family.bounded);
       for (double& h : map.heights) h *= 1e-8;  // a 10 nm Sq scale, in metres
       t::AnalysisOptions options;

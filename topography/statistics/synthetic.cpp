@@ -1,5 +1,6 @@
 #include "asperity/topography/synthetic.hpp"
 
+#include <algorithm>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 #include <random>
@@ -197,6 +198,52 @@ HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, doubl
   map.format = "synthetic";
   map.source = std::string("synthetic ") + (function == CorrelationFunction::gaussian ? "Gaussian" : "exponential") +
                "-correlated field";
+  map.heights.resize(nx * ny);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) map.heights[j * nx + i] = scale * padded[j * px + i];
+  return map;
+}
+
+HeightMap self_affine_random_field(std::size_t nx, std::size_t ny, double dx, double dy, double hurst,
+                                   std::uint64_t seed, std::size_t oversize) {
+  check_intervals(dx, dy);
+  if (nx < 3 || ny < 3) throw Error("self_affine_random_field: needs at least 3 x 3 points");
+  if (!(hurst > 0 && hurst <= 1)) throw Error("self_affine_random_field: the Hurst exponent must lie in (0, 1]");
+  if (oversize < 1 || oversize > 16) throw Error("self_affine_random_field: the draw's oversize must lie in [1, 16]");
+  const std::size_t side = oversize * std::max(nx, ny);
+  if (side > max_field_noise_points / side)
+    throw Error("self_affine_random_field: a draw of " + std::to_string(side) + " x " + std::to_string(side) +
+                " points is more than " + std::to_string(max_field_noise_points));
+  const std::size_t px = side, py = side, half = px / 2 + 1;
+  std::vector<detail::Complex> coefficients(py * half);
+  std::mt19937_64 engine(seed);
+  const double pi = 3.14159265358979323846;
+  double total = 0;  // the spectrum's sum over the full plane: the field's variance before scaling
+  for (std::size_t j = 0; j < py; ++j)
+    for (std::size_t i = 0; i < half; ++i) {
+      const double qx = 2 * pi * static_cast<double>(i) / (static_cast<double>(px) * dx);
+      const double qy = 2 * pi * (j <= py / 2 ? static_cast<double>(j) : static_cast<double>(j) - static_cast<double>(py)) /
+                        (static_cast<double>(py) * dy);
+      const double q2 = qx * qx + qy * qy;
+      // C(q) = q^(-2(1 + H)), q in units of 1/dx (its scale is the normalization's): no power overflows
+      const double power = (i == 0 && j == 0) ? 0 : std::pow(q2 * dx * dx, -(1 + hurst));
+      const bool self_conjugate = i == 0 || (px % 2 == 0 && i == px / 2);
+      total += self_conjugate ? power : 2 * power;
+      const double a = normal(engine), b = normal(engine);
+      coefficients[j * half + i] = std::sqrt(power / 2) * detail::Complex(a, b);
+    }
+  detail::make_hermitian_columns(coefficients.data(), py, px);
+  std::vector<double> padded(px * py);
+  detail::inverse_2d(coefficients.data(), padded.data(), py, px);
+  const double scale = static_cast<double>(px) * static_cast<double>(py) / std::sqrt(total);
+  HeightMap map;
+  map.nx = nx;
+  map.ny = ny;
+  map.dx = dx;
+  map.dy = dy;
+  map.format = "synthetic";
+  map.source = "synthetic self-affine field (H " + std::to_string(hurst) + ", no roll-off, cut from a draw " +
+               std::to_string(oversize) + " times the map)";
   map.heights.resize(nx * ny);
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) map.heights[j * nx + i] = scale * padded[j * px + i];

@@ -56,4 +56,18 @@ enum class CorrelationFunction { gaussian, exponential };
 HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, double dy, CorrelationFunction function,
                                 double correlation_length, std::uint64_t seed);
 
+// A self-affine Gaussian random field without roll-off, cut from a larger draw as a measured map
+// is cut from a surface: the isotropic spectrum C(q) ~ q^(-2(1 + H)) (Hurst exponent H) at every
+// wavevector of a periodic draw `oversize` times the map's longer side along both axes (a square
+// draw, so that a strip has the surface's long wavelengths across it too), from the draw's lowest
+// wavenumbers, 2 pi / (oversize max(nx, ny) dx) along x (dy along y), to the pixel (Nyquist),
+// q = 0 left out; the map is the draw's corner, not periodic, and not leveled (the analysis levels
+// it). Unit variance in expectation over the draw (a no-roll-off field's variance grows with the
+// draw: the map's own, about its mean, is smaller, the more so the larger H). Wavenumbers are
+// physical (dx, dy). Throws asperity::Error for nx or ny < 3, H outside (0, 1], oversize outside
+// [1, 16], or a draw of more than max_field_noise_points points.
+inline constexpr std::size_t self_affine_default_oversize = 4;
+HeightMap self_affine_random_field(std::size_t nx, std::size_t ny, double dx, double dy, double hurst,
+                                   std::uint64_t seed, std::size_t oversize = self_affine_default_oversize);
+
 }  // namespace asperity::topography
