@@ -727,6 +727,7 @@ LawCurvesResult generate_law_curves(const SceneLaw& asked, const std::string& ge
       }
       data.summit_count_max_rel_error = worst[3] * safety_factor;
       data.check_points = checks;
+      data.bound_method = ContactBoundMethod::checks_split_to_tolerance;
       break;
     }
     nodes.insert(nodes.end(), halves.begin(), halves.end());

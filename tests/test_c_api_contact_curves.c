@@ -38,7 +38,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   CHECK(asperity_contact_curves_get_info(curves, &info) == ASPERITY_OK);
-  CHECK(info.nodes >= 3 && info.check_points == info.nodes - 1);
+  CHECK(info.nodes >= 3 && info.check_points >= 5 * (info.nodes - 1)); /* 5 checks an interval at least */
   CHECK(info.min_separation < info.max_separation && info.min_pressure < info.max_pressure);
   CHECK(info.safety_factor == 2 && info.max_rel_error[0] == 2 * info.measured_rel_error[0]);
   CHECK(info.solver_tolerance > 0 && info.contact_modulus == 1e11 && info.nominal_area > 0);

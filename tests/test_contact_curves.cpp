@@ -363,7 +363,10 @@ TEST(ExactContactTable, ServedValuesAreTheNodesToRounding) {
     EXPECT_NEAR(state.stiffness / node.stiffness_per_area, 1, 1e-13);
     EXPECT_NEAR(state.area_fraction / node.area_fraction, 1, 1e-14);
   }
-  EXPECT_EQ(s.table.data.check_points, 16);
+  // 5 checks an interval at least, finer where the estimate had not settled; the method stored
+  EXPECT_GE(s.table.data.check_points, 16 * 5);
+  EXPECT_EQ(s.table.data.check_points, static_cast<int>(s.table.checks.size()));
+  EXPECT_EQ(s.table.data.bound_method, ContactBoundMethod::checks_until_settled);
   for (int k = 0; k < 3; ++k) {
     EXPECT_GT(s.table.data.measured_rel_error[k], 0);
     EXPECT_EQ(s.table.data.max_rel_error[k], 2 * s.table.data.measured_rel_error[k]);
@@ -428,6 +431,7 @@ TEST(ExactContactTable, FileRoundTrip) {
     EXPECT_EQ(read.measured_rel_error[k], data.measured_rel_error[k]);
   }
   EXPECT_EQ(read.check_points, data.check_points);
+  EXPECT_EQ(read.bound_method, data.bound_method);
   EXPECT_EQ(read.safety_factor, data.safety_factor);
   EXPECT_EQ(read.solver_tolerance, data.solver_tolerance);
   EXPECT_EQ(read.contact_modulus, data.contact_modulus);
@@ -547,6 +551,42 @@ TEST(ContactCurvesFile, ForgedContentsAreRefused) {
   EXPECT_EQ(status_of(forged(good, data.area_fraction[0], 2.0)), TableFileStatus::invalid);
   EXPECT_EQ(status_of(forged(good, data.stiffness[4], -data.stiffness[4])), TableFileStatus::invalid);
   EXPECT_EQ(status_of(forged(good, data.contact_modulus, INFINITY)), TableFileStatus::invalid);
+}
+
+// How the bound was measured: stored and read back; a table without it (written before it) is
+// served as unstated; a method this runtime does not know is refused, naming it.
+TEST(ContactCurvesFile, BoundMethodStoredAbsentOrUnknown) {
+  ContactCurvesData data = closed_form(5, 3);
+  EXPECT_EQ(data.bound_method, ContactBoundMethod::unstated);
+  const std::vector<unsigned char> unstated = contact_curves_file_bytes(data);
+  EXPECT_EQ(read_contact_curves_bytes(unstated.data(), unstated.size(), "old").bound_method,
+            ContactBoundMethod::unstated);
+  data.bound_method = ContactBoundMethod::checks_until_settled;
+  std::vector<unsigned char> bytes = contact_curves_file_bytes(data);
+  EXPECT_EQ(read_contact_curves_bytes(bytes.data(), bytes.size(), "new").bound_method,
+            ContactBoundMethod::checks_until_settled);
+  const std::string token = to_string(ContactBoundMethod::checks_until_settled), newer = "checks-until-settlez";
+  ASSERT_EQ(token.size(), newer.size());
+  const auto at = std::search(bytes.begin() + 512, bytes.end(), token.begin(), token.end());
+  ASSERT_NE(at, bytes.end());
+  std::copy(newer.begin(), newer.end(), at);
+  seal_table_bytes(bytes.data(), bytes.size());
+  try {
+    read_contact_curves_bytes(bytes.data(), bytes.size(), "newer");
+    ADD_FAILURE() << "an unknown bound method accepted";
+  } catch (const TableFileError& error) {
+    EXPECT_EQ(error.status(), TableFileStatus::other_version);
+    EXPECT_NE(std::string(error.what()).find("'bound_method' = 'checks-until-settlez'"), std::string::npos)
+        << error.what();
+  }
+  ContactBoundMethod method{};
+  for (ContactBoundMethod known : {ContactBoundMethod::unstated, ContactBoundMethod::checks_until_settled,
+                                   ContactBoundMethod::checks_split_to_tolerance}) {
+    EXPECT_TRUE(parse_contact_bound_method(to_string(known), method));
+    EXPECT_EQ(method, known);
+    EXPECT_GT(std::strlen(bound_method_meaning(known)), 40u);
+  }
+  EXPECT_FALSE(parse_contact_bound_method("", method));
 }
 
 TEST(ContactCurvesFile, TheOtherKindIsRefusedEitherWay) {

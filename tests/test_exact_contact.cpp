@@ -570,7 +570,9 @@ TEST(ExactContactTableText, GeneratorOptionsFitForTenThousandNodes) {
   EXPECT_LE(many.size(), asperity::schema::max_text_bytes);
   EXPECT_NE(many.find("10000 nodes at pressures from 1e+05 to 1e+08 Pa"), std::string::npos) << many.substr(0, 1200);
   const std::string few = exact_contact_table_generator_options("", {1e6, 2e6, 4e6});
-  EXPECT_EQ(few, "nodes at pressures [Pa]: 1e+06 2e+06 4e+06; checks at their neighbours' geometric means");
+  EXPECT_EQ(few,
+            "nodes at pressures [Pa]: 1e+06 2e+06 4e+06; the bound measured by checks between the nodes, finer until "
+            "settled (bound_method checks-until-settled)");
   EXPECT_THROW(check_exact_contact_table_nodes({1e6, 2e6}), asperity::Error);
   EXPECT_THROW(check_exact_contact_table_nodes({1e6, 3e6, 2e6}), asperity::Error);
   EXPECT_THROW(check_exact_contact_table_nodes(std::vector<double>(70000, 1.0)), asperity::Error);

@@ -43,6 +43,7 @@ struct Options {
   MaterialOptions material;   // --modulus, or --e1 --nu1 --e2 --nu2
   double tolerance = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
+  long long table_max_checks = 0;                    // 0: not given (topo::default_table_max_checks)
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
   bool json = false, no_level = false, no_stiffness = false, no_coarse_start = false, quiet = false, overwrite = false;
 };
@@ -165,13 +166,15 @@ std::string stage_table(OutputTransaction& outputs, const Options& o, topo::Exac
   generator_options << topo::exact_contact_table_generator_options("", pressures);  // within the text limit
   const topo::ExactContactTable table = topo::measure_exact_contact_table(
       solver, results, description.str(), generator_options.str(),
-      given(o.table_safety) ? o.table_safety : topo::default_table_safety_factor);
+      given(o.table_safety) ? o.table_safety : topo::default_table_safety_factor,
+      o.table_max_checks == 0 ? topo::default_table_max_checks : static_cast<std::size_t>(o.table_max_checks));
   const std::vector<unsigned char> bytes = contact_curves_file_bytes(table.data);
   outputs.stage(o.table, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
   std::ostringstream line;
   line << "table " << printable_path(o.table) << ": " << table.nodes.size() << " nodes, separations "
        << format_double(table.data.separation.front()) << " to " << format_double(table.data.separation.back())
-       << " m; measured at " << table.checks.size() << " solves between them, largest relative errors: pressure "
+       << " m; measured at " << table.checks.size() << " solves between them (finer until settled: "
+       << table.unsettled_intervals << " intervals not settled at the cap), largest relative errors: pressure "
        << table.data.measured_rel_error[0] << ", stiffness " << table.data.measured_rel_error[1]
        << ", area fraction " << table.data.measured_rel_error[2] << " (stored bounds " << table.data.safety_factor
        << " times these)";
@@ -341,6 +344,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
       usage("--table-safety must be from 1 to 1000");
   }
 
+  if (o.table.empty() && o.table_max_checks != 0) usage("--table-max-checks goes with --table");
   const OutputPlan plan = output_plan(o, steps.values.size());  // before any work
   topo::HeightMap map = topo::read_height_map(o.file, read_options(o.map));
   if (!o.no_level) topo::subtract_plane(map, topo::fit_plane(map));
@@ -485,8 +489,9 @@ void add_exact_contact_command(CLI::App& app) {
       ->type_name("FILE")->group(output);
   add_text(*command, "--table", o.table,
            "write the solved curves as a contact-curves table (HDF5, the tables' format): the pressures asked are "
-           "its nodes (ascending, at least 3), and one more solve between each two measures the error of the "
-           "curves as served (asperity contact --table FILE serves it)")
+           "its nodes (ascending, at least 3); solves between each two measure the error of the curves as "
+           "served, 2 then 5 an interval and finer where the two estimates differ (--table-max-checks) "
+           "(asperity contact --table FILE serves it)")
       ->type_name("FILE")->group(output);
   command->add_flag("--overwrite", o.overwrite,
                     "replace an output file that is not asperity's of that kind (a table, card or field image "
@@ -513,6 +518,10 @@ void add_exact_contact_command(CLI::App& app) {
              "with --card: solve more where the curve bends: between neighbouring solved points one more solve at "
              "the middle mean gap, split again where linear interpolation misses it by more than REL (relative, in "
              "pressure); the card's header states the solves added and the error measured")
+  add_whole_number(*command, "--table-max-checks", o.table_max_checks, 5, 1535,
+                   "with --table: at most N checks an interval, where its error estimate has not settled "
+                   "(default 47; the levels have 2, 5, 11, 23, 47, 95, ... checks)")
+      ->group(output);
       ->type_name("REL")->group(output);
   add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
   command->footer(

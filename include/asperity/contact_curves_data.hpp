@@ -13,6 +13,36 @@
 
 namespace asperity {
 
+// How a table's stored bound was measured (the attribute bound_method of its contact_curves
+// group; table_schema.hpp): the token written and read, and what it means, defined once here.
+// A table written before the attribute has none: unstated (still served). A token this runtime
+// does not know is refused by the reader, naming it (a newer table: update asperity).
+#define ASPERITY_CONTACT_BOUND_METHODS(X)                                                                            \
+  X(unstated, "unstated",                                                                                           \
+    "not stated (a table written before the method was stored; an exact-contact table then compared the served "    \
+    "curves with one solve an interval, at its nodes' geometric-mean pressure)")                                     \
+  X(checks_until_settled, "checks-until-settled",                                                                   \
+    "solves between the nodes at fractions of each interval in ln p, 2 (1/3, 2/3) then 5 (sixths), then finer "    \
+    "(the points halved each level) where the largest error of p, k or a rose by more than 1.25 times, until "      \
+    "two levels agree or a cap of checks an interval; the bound is the largest error at any check times "           \
+    "safety_factor")                                                                                                \
+  X(checks_split_to_tolerance, "checks-split-to-tolerance",                                                         \
+    "three evaluations of the exact law an interval (its middle and the two Gauss-Legendre points), intervals "     \
+    "halved until every one is within half the asked max_rel_error; the bound is the largest error times "          \
+    "safety_factor")
+
+enum class ContactBoundMethod {
+#define ASPERITY_CONTACT_BOUND_METHOD_ENUM(id, token, meaning) id,
+  ASPERITY_CONTACT_BOUND_METHODS(ASPERITY_CONTACT_BOUND_METHOD_ENUM)
+#undef ASPERITY_CONTACT_BOUND_METHOD_ENUM
+};
+
+// The token written in a table ("two-checks-refined") and what it means, in words.
+const char* to_string(ContactBoundMethod method) noexcept;
+const char* bound_method_meaning(ContactBoundMethod method) noexcept;
+// The method of a token; false for a token this runtime does not know.
+bool parse_contact_bound_method(const std::string& token, ContactBoundMethod& method) noexcept;
+
 struct ContactCurvesData {
   std::string generator;          // the program that wrote it ("asperity 0.2.0 exact-contact")
   std::string generator_options;  // its options, as text
@@ -29,6 +59,7 @@ struct ContactCurvesData {
   double measured_rel_error[3] = {0, 0, 0};
   int check_points = 0;
   double safety_factor = 1;
+  ContactBoundMethod bound_method = ContactBoundMethod::unstated;  // how measured_rel_error was measured
   double solver_tolerance = 0;  // the solves' own convergence tolerance (relative residual)
   double contact_modulus = 0;   // E* [Pa]
   double nominal_area = 0;      // [m^2]

@@ -9,6 +9,46 @@
 
 namespace asperity {
 
+namespace {
+
+struct BoundMethodEntry {
+  ContactBoundMethod method;
+  const char* token;
+  const char* meaning;
+};
+constexpr BoundMethodEntry bound_methods[] = {
+#define ASPERITY_CONTACT_BOUND_METHOD_ENTRY(id, token, meaning) {ContactBoundMethod::id, token, meaning},
+    ASPERITY_CONTACT_BOUND_METHODS(ASPERITY_CONTACT_BOUND_METHOD_ENTRY)
+#undef ASPERITY_CONTACT_BOUND_METHOD_ENTRY
+};
+
+const BoundMethodEntry* find_bound_method(ContactBoundMethod method) noexcept {
+  for (const BoundMethodEntry& entry : bound_methods)
+    if (entry.method == method) return &entry;
+  return nullptr;
+}
+
+}  // namespace
+
+const char* to_string(ContactBoundMethod method) noexcept {
+  const BoundMethodEntry* entry = find_bound_method(method);
+  return entry ? entry->token : "?";
+}
+
+const char* bound_method_meaning(ContactBoundMethod method) noexcept {
+  const BoundMethodEntry* entry = find_bound_method(method);
+  return entry ? entry->meaning : "?";
+}
+
+bool parse_contact_bound_method(const std::string& token, ContactBoundMethod& method) noexcept {
+  for (const BoundMethodEntry& entry : bound_methods)
+    if (token == entry.token) {
+      method = entry.method;
+      return true;
+    }
+  return false;
+}
+
 void ContactCurvesData::validate(const std::string& context) const {
   const auto fail = [&](const std::string& what) { throw Error(context + ": " + what); };
   const auto text = [&](const std::string& value, const char* name) {
@@ -89,6 +129,7 @@ void ContactCurvesData::validate(const std::string& context) const {
           measured_rel_error[i] >= 0 && measured_rel_error[i] <= schema::max_contact_rel_error))
       fail("an error bound is not finite and >= 0 (or beyond 1e3)");
   if (!(check_points >= 0)) fail("check_points must be >= 0");
+  if (!find_bound_method(bound_method)) fail("the bound's method is not one of ContactBoundMethod's");
   if (!(safety_factor >= 1 && safety_factor <= 1e3)) fail("the safety factor must be from 1 to 1000");
   if (!(solver_tolerance >= 0 && solver_tolerance <= 1)) fail("the solver tolerance must be from 0 to 1");
   if (!in_range(contact_modulus)) fail("the contact modulus is not positive and finite");

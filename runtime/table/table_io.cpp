@@ -370,6 +370,12 @@ ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::
     data.measured_rel_error[i] = measured[i];
   }
   data.check_points = static_cast<int>(in_group.integers(g, schema::set_check_points, {1}, 0, 1 << 30)[0]);
+  // how the bound was measured: absent in tables written before it (unstated, still served)
+  if (const std::optional<std::string> method = in_group.text_attribute(g, schema::attr_bound_method, false))
+    if (!parse_contact_bound_method(*method, data.bound_method))
+      fail(TableFileStatus::other_version, name,
+           std::string("its bound was measured by a method this runtime does not know ('") + schema::attr_bound_method +
+               "' = '" + method->substr(0, 40) + "'): a table from a newer asperity; update asperity to serve it");
   data.safety_factor = scalar(in_group, g, schema::set_safety_factor);
   data.solver_tolerance = scalar(in_group, g, schema::set_solver_tolerance);
   data.contact_modulus = scalar(in_group, g, schema::set_contact_modulus);

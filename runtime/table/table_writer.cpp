@@ -161,6 +161,8 @@ void write_contact_curves_contents(hid_t file, const ContactCurvesData& data) {
   doubles(schema::set_max_rel_error, data.max_rel_error, 3);
   doubles(schema::set_measured_rel_error, data.measured_rel_error, 3);
   write_dataset(g, schema::set_check_points, H5T_STD_I32LE, H5T_NATIVE_INT, {1}, &data.check_points);
+  if (data.bound_method != ContactBoundMethod::unstated)  // absent: unstated, as in tables before it
+    write_string_attribute(g, schema::attr_bound_method, to_string(data.bound_method));
   doubles(schema::set_safety_factor, &data.safety_factor, 1);
   doubles(schema::set_solver_tolerance, &data.solver_tolerance, 1);
   doubles(schema::set_contact_modulus, &data.contact_modulus, 1);

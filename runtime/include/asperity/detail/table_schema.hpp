@@ -58,6 +58,10 @@
 //                            (relative): measured_rel_error times safety_factor
 //       measured_rel_error [3]  the largest relative error measured against independent solves
 //                            between the nodes (check_points of them)
+//                            attribute bound_method (text, optional): how they were measured, a
+//                            token of ContactBoundMethod (contact_curves_data.hpp, where each
+//                            is defined); absent (tables before it): "unstated"; a token the
+//                            reader does not know is refused (a newer table)
 //       check_points    [1] int32, safety_factor [1], solver_tolerance [1] (the solves' relative
 //                            residual), contact_modulus [1] Pa, nominal_area [1] m^2
 //       mean_summit_height [1], max_height [1]  optional: m above the separation's datum (the
@@ -146,6 +150,7 @@ inline constexpr const char* set_stiffness = "stiffness";
 inline constexpr const char* set_area_fraction = "area_fraction";
 inline constexpr const char* set_measured_rel_error = "measured_rel_error";
 inline constexpr const char* set_check_points = "check_points";
+inline constexpr const char* attr_bound_method = "bound_method";
 inline constexpr const char* set_safety_factor = "safety_factor";
 inline constexpr const char* set_solver_tolerance = "solver_tolerance";
 inline constexpr const char* set_contact_modulus = "contact_modulus";
@@ -171,7 +176,8 @@ inline constexpr const char* contact_curves_definition =
     "node (NaN outside): ln p by cubic Hermite with slope -k/p at the nodes (Fritsch-Carlson limited\n"
     "to stay monotone), k = -p d(ln p)/du of that interpolant, ln a by Steffen's monotone cubic.\n"
     "max_rel_error: the measured largest relative error of the served values against independent\n"
-    "solves between the nodes (measured_rel_error) times safety_factor.\n"
+    "solves between the nodes (measured_rel_error) times safety_factor; the attribute bound_method\n"
+    "names how they were measured (absent: unstated).\n"
     "Optional tensile_pressure p_t and tensile_stiffness k_t (adhesion): pressure and stiffness are\n"
     "then the compressive parts p_c, k_c; served p = p_c - p_t (negative: tension), k = k_c - k_t,\n"
     "ln p_t like ln p_c; the pressure and stiffness bounds are relative to p_c + p_t and k_c + k_t.\n"
