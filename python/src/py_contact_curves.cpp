@@ -197,6 +197,10 @@ void bind_contact_curves_properties(py::class_<ContactCurves>& contact_curves) {
           },
           "The largest relative errors measured against exact solves between the nodes (check_points of them).")
       .def_property_readonly("check_points", [](const ContactCurves& c) { return c.data().check_points; })
+      .def_property_readonly(
+          "bound_method", [](const ContactCurves& c) { return std::string(to_string(c.data().bound_method)); },
+          "How the stored bound was measured: 'checks-until-settled' (a map's exact contact),\n"
+          "'checks-split-to-tolerance' (a law's curves), or 'unstated' (a table written before it was stored).")
       .def_property_readonly("safety_factor", [](const ContactCurves& c) { return c.data().safety_factor; })
       .def_property_readonly("solver_tolerance", [](const ContactCurves& c) { return c.data().solver_tolerance; },
                              "The solves' own convergence tolerance (relative residual).")

@@ -67,7 +67,7 @@ void bind_exact_contact_solves(py::class_<ExactContactHandle>& exact_contact) {
       .def(
           "write_table",
           [](ExactContactHandle& h, const PathName& path, const std::vector<double>& pressures, double safety_factor,
-             const std::string& description, bool overwrite) {
+             const std::string& description, bool overwrite, std::size_t max_checks) {
             const std::string file = to_path(path.object);
             topo::ExactContactTable table;
             without_gil([&] {
@@ -79,13 +79,15 @@ void bind_exact_contact_solves(py::class_<ExactContactHandle>& exact_contact) {
                 if (!(pressures[i] > pressures[i - 1])) throw Error("write_table needs the pressures in ascending order");
               // every limit of the table checked before the first solve
               topo::check_exact_contact_table_nodes(pressures);
+              topo::check_exact_contact_table_max_checks(max_checks);
               for (double pressure : pressures) h.solver.check_pressure(pressure);
               const std::string options = topo::exact_contact_table_generator_options(
                   "asperity.topography.ExactContact.write_table: ", pressures);
               topo::check_exact_contact_table_text(description, options);
               std::vector<topo::ContactStep> nodes;
               for (double pressure : pressures) nodes.push_back(h.solver.at_pressure(pressure));
-              table = topo::measure_exact_contact_table(h.solver, nodes, description, options, safety_factor);
+              table = topo::measure_exact_contact_table(h.solver, nodes, description, options, safety_factor,
+                                                        max_checks);
               write_contact_curves_file(table.data, file, overwrite);
             });
             py::list nodes;
@@ -93,10 +95,12 @@ void bind_exact_contact_solves(py::class_<ExactContactHandle>& exact_contact) {
             return nodes;
           },
           "path"_a, "pressures"_a, "safety_factor"_a = topo::default_table_safety_factor, "description"_a = "",
-          py::kw_only(), "overwrite"_a = false,
+          py::kw_only(), "overwrite"_a = false, "max_checks"_a = topo::default_table_max_checks,
           "Writes the map's contact curves as a contact-curves table (asperity.ContactCurves serves it): solves at\n"
-          "the pressures [Pa] (ascending, at least 3) as nodes, one more solve between each two to measure the\n"
-          "served curves' error; the stored bound is that times safety_factor. Returns the nodes' ContactSteps. The\n"
+          "the pressures [Pa] (ascending, at least 3) as nodes, solves between each two to measure the served\n"
+          "curves' error: 2 then 5 an interval, finer where the two estimates differ by more than 1.25x, at most\n"
+          "max_checks (>= 5) an interval; the stored bound is the largest error times safety_factor (bound_method\n"
+          "'checks-until-settled'). Returns the nodes' ContactSteps. The\n"
           "pressures, the description's length, the solver's range and the output (a file there that is not a\n"
           "contact-curves table of asperity's is replaced only with overwrite=True) are checked before the first solve.")
       .def(

@@ -30,7 +30,9 @@ def written(tmp_path_factory):
 def test_nodes_round_trip(written):
     path, _, nodes = written
     curves = asperity.ContactCurves(path)
-    assert len(nodes) == 9 and curves.check_points == 8 and curves.safety_factor == 2
+    # 5 checks an interval at least, finer where the two estimates differed
+    assert len(nodes) == 9 and curves.check_points >= 40 and curves.safety_factor == 2
+    assert curves.bound_method == "checks-until-settled"
     assert curves.max_rel_error == tuple(2 * e for e in curves.measured_rel_error)
     assert curves.solver_tolerance == 1e-10 and curves.contact_modulus == 1e11
     assert curves.source == "exact-contact" and curves.description == "the AFM map"

@@ -203,6 +203,19 @@ def test_write_table_checks_every_limit_before_the_first_solve(tmp_path):
     assert not (tmp_path / "t.h5").exists()
 
 
+def test_write_table_checks_cap(tmp_path):
+    """max_checks=5: the two estimates only (2 and 5 checks an interval); below 5 refused."""
+    surface = topography.HeightMap(np.sin(np.arange(32.0)[None, :] * 0.4) * np.cos(np.arange(32.0)[:, None] * 0.3) * 1e-7,
+                                   1e-6, 1e-6)
+    solver = topography.ExactContact(surface, contact_modulus=1e11)
+    nodes = solver.write_table(tmp_path / "five.h5", [1e5, 1e6, 1e7], max_checks=5)
+    curves = asperity.ContactCurves(tmp_path / "five.h5")
+    assert len(nodes) == 3 and curves.check_points == 10 and curves.bound_method == "checks-until-settled"
+    with pytest.raises(asperity.Error, match="at least 5 checks each"):
+        solver.write_table(tmp_path / "four.h5", [1e5, 1e6, 1e7], max_checks=4)
+    assert not (tmp_path / "four.h5").exists()
+
+
 def test_outputs_follow_the_output_policy(tmp_path):
     """A file not asperity's is kept unless overwrite=True; a planted link is never followed (issue 37)."""
     surface = topography.HeightMap(np.sin(np.arange(32.0)[None, :] * 0.4) * np.cos(np.arange(32.0)[:, None] * 0.3) * 1e-7,
