@@ -475,6 +475,22 @@ TEST(ExactContactRange, HopelessPressuresRefusedBeforeIterating) {
   EXPECT_EQ(iterations, 0);
 }
 
+// A mean gap below what the search resolves on a periodic map: full contact in closed form, not
+// thousands of iterations closing the last points (`--gap 1e-30` on the X3P map ran past 300 s).
+TEST(ExactContactRange, ClosedMeanGapAnsweredAsFullContact) {
+  int iterations = 0;
+  ExactContactOptions options;
+  options.contact_modulus = 1e11;
+  options.progress = [&iterations](const ContactProgress&) { ++iterations; };
+  ExactContact solver(rough_map(64, 0.5, 7), options);
+  const ContactStep closed = solver.at_mean_gap(1e-30);
+  EXPECT_EQ(closed.area_fraction, 1.0);
+  EXPECT_EQ(closed.mean_gap, 0.0);
+  EXPECT_GT(closed.pressure, solver.pressure_range().full_contact);
+  EXPECT_NEAR(closed.pressure / solver.pressure_range().full_contact, 1, 1e-12);
+  EXPECT_EQ(iterations, 0);
+}
+
 TEST(ExactContactMemory, RefusedBeyondTheLimitBeforeAllocating) {
   const HeightMap map = rough_map(128, 0.5, 1);
   ExactContactOptions options;

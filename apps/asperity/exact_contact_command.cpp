@@ -41,7 +41,7 @@ struct Options {
       overclosure_datum;
   MapOptions map;             // how the map is read (map_options.hpp)
   MaterialOptions material;   // --modulus, or --e1 --nu1 --e2 --nu2
-  double tolerance = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
+  double tolerance = not_given, hardness = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
   long long table_max_checks = 0;                    // 0: not given (topo::default_table_max_checks)
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
@@ -147,6 +147,12 @@ void stage_fields(OutputTransaction& outputs, const Options& o, const topo::Exac
   const std::string label = "step " + std::to_string(step + 1);
   outputs.stage(o.fields, field_name(step, "pressure"), pgm_bytes(pressure, map.nx, map.ny, max_pressure, label + " pressure"));
   outputs.stage(o.fields, field_name(step, "gap"), pgm_bytes(gap, map.nx, map.ny, top_gap, label + " gap"));
+}
+
+// What was solved, for the outputs' descriptions: "elastic", or with the hardness.
+std::string contact_model_words(const topo::ExactContactOptions& options) {
+  return topo::is_plastic(options) ? "elastic-perfectly-plastic (hardness " + format_double(options.hardness) + " Pa)"
+                                   : "elastic";
 }
 
 // The contact-curves table of the solved nodes (with the solves between them that measure its
@@ -264,7 +270,8 @@ std::string stage_card(OutputTransaction& outputs, const Options& o, const CLI::
   const TabulatedCard card = tabulate_points(points, card_max_points(o.max_points, card_format), card_datum,
                                              shift - summit);  // the flat at the mean summit height
   std::ostringstream description, notes;
-  description << "asperity " ASPERITY_VERSION_STRING ": the exact elastic contact of a measured surface with a flat\n"
+  description << "asperity " ASPERITY_VERSION_STRING ": the exact " << contact_model_words(options)
+              << " contact of a measured surface with a flat\n"
               << "(boundary elements, " << boundary << " boundary, " << kernel << " kernel, E* "
               << format_double(options.contact_modulus) << " Pa)\n"
               << "map: " << map.source << " (" << map.nx << " x " << map.ny << " points)";
@@ -314,6 +321,10 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   options.max_iterations = static_cast<int>(o.max_iterations);
   options.stiffness = !o.no_stiffness;
   options.max_memory = topo::memory_limit_option(o.max_memory, "--max-memory");
+  if (given(o.hardness)) {
+    if (!(o.hardness > 0)) usage("--hardness must be positive [Pa]");
+    options.hardness = o.hardness;
+  }
   CardFormat card_format = CardFormat::calculix;
   CardUnits card_units = CardUnits::si;
   if (!o.card_format.empty() && !parse_card_format(o.card_format, card_format))
@@ -333,6 +344,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
   face_size_option(o.face_size, card_format, card_units, "--card-format");  // checked before any work
   const Steps steps = steps_from(o);
   if (o.table.empty() && given(o.table_safety)) usage("--table-safety goes with --table");
+  if (o.table.empty() && o.table_max_checks != 0) usage("--table-max-checks goes with --table");
   if (!o.table.empty()) {
     if (!steps.by_pressure) usage("--table needs the nodes as pressures: --pressure or --sweep pressure:FROM:TO:COUNT");
     if (steps.values.size() < 3) usage("--table needs at least 3 pressures");
@@ -340,11 +352,13 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
       if (!(steps.values[i] > steps.values[i - 1])) usage("--table needs the pressures in ascending order");
     topo::check_exact_contact_table_nodes(steps.values);
     if (o.no_stiffness) usage("--table needs the stiffness: leave out --no-stiffness");
+    if (given(o.hardness))
+      usage("--table is the elastic contact's (a contact-curves table serves loading and unloading alike): leave out "
+            "--hardness");
     if (given(o.table_safety) && !(o.table_safety >= 1 && o.table_safety <= 1000))
       usage("--table-safety must be from 1 to 1000");
   }
 
-  if (o.table.empty() && o.table_max_checks != 0) usage("--table-max-checks goes with --table");
   const OutputPlan plan = output_plan(o, steps.values.size());  // before any work
   topo::HeightMap map = topo::read_height_map(o.file, read_options(o.map));
   if (!o.no_level) topo::subtract_plane(map, topo::fit_plane(map));
@@ -418,8 +432,8 @@ void print_results(const Options& o, const topo::HeightMap& map, const topo::Exa
     std::cout << "# asperity exact-contact: " << terminal_text(quote_text(map.source, 4096)) << ", " << map.nx << " x "
               << map.ny << " points, dx " << format_double(map.dx) << " m, dy " << format_double(map.dy) << " m"
               << (o.no_level ? "" : ", leveled") << "\n"
-              << "# " << boundary << " boundary, " << kernel << " kernel, E* " << format_double(modulus)
-              << " Pa, tolerance " << format_double(options.tolerance) << "\n"
+              << "# " << contact_model_words(options) << ", " << boundary << " boundary, " << kernel
+              << " kernel, E* " << format_double(modulus) << " Pa, tolerance " << format_double(options.tolerance) << "\n"
               << "# datum: mean_gap_m is the separation of the flat from the mean plane of the map; the mean summit\n"
               << "# height is " << format_double(solver.mean_summit_height()) << " m above it ("
               << solver.summits() << " summits), the highest point " << format_double(solver.max_height()) << " m\n"
@@ -473,6 +487,10 @@ void add_exact_contact_command(CLI::App& app) {
   add_whole_number(*command, "--max-iterations", o.max_iterations, 1, 1000000,
                    "per solve; beyond them the command fails (default 20000)")
       ->group(solver);
+  add_number(*command, "--hardness", o.hardness,
+             "cap the contact pressure at H [Pa] on every point: elastic-perfectly-plastic (points at H are plastic; "
+             "plastic_area_fraction, plastic_points); default: elastic")
+      ->type_name("PA")->group(solver);
   command->add_flag("--no-stiffness", o.no_stiffness, "skip the incremental solve (stiffness 0)")->group(solver);
   add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(solver);
   add_quiet_option(*command, &o.quiet)->group(solver);
@@ -500,6 +518,10 @@ void add_exact_contact_command(CLI::App& app) {
   add_number(*command, "--table-safety", o.table_safety,
              "with --table: the stored error bound is the measured one times this (default 2)")
       ->type_name("FACTOR")->group(output);
+  add_whole_number(*command, "--table-max-checks", o.table_max_checks, 5, 1535,
+                   "with --table: at most N checks an interval, where its error estimate has not settled "
+                   "(default 47; the levels have 2, 5, 11, 23, 47, 95, ... checks)")
+      ->group(output);
   add_text(*command, "--card-format", o.card_format, "calculix (default), abaqus or csv")->type_name("FORMAT")->group(output);
   add_whole_number(*command, "--max-points", o.max_points, static_cast<long long>(card_points_min),
                    static_cast<long long>(card_points_max),
@@ -518,10 +540,6 @@ void add_exact_contact_command(CLI::App& app) {
              "with --card: solve more where the curve bends: between neighbouring solved points one more solve at "
              "the middle mean gap, split again where linear interpolation misses it by more than REL (relative, in "
              "pressure); the card's header states the solves added and the error measured")
-  add_whole_number(*command, "--table-max-checks", o.table_max_checks, 5, 1535,
-                   "with --table: at most N checks an interval, where its error estimate has not settled "
-                   "(default 47; the levels have 2, 5, 11, 23, 47, 95, ... checks)")
-      ->group(output);
       ->type_name("REL")->group(output);
   add_text(*command, "--units", o.units, "of the card: si (m, Pa; default) or mm (mm, MPa)")->type_name("UNITS")->group(output);
   command->footer(
@@ -529,7 +547,7 @@ void add_exact_contact_command(CLI::App& app) {
       "mean_gap_m (the separation of the flat from the map's mean plane: the mean gap), \n"
       "separation_from_mean_summit_m (less the mean summit height: the GW curves' datum), approach_m\n"
       "(the flat's rigid-body position), area_fraction, real_area_m2, contact_points, clusters (4-neighbour\n"
-      "patches), stiffness_N_per_m (-dP/d mean gap, from the incremental solve), stiffness_per_area_N_per_m3,\n"
+      "patches), plastic_area_fraction, plastic_points (at --hardness; 0 elastic), stiffness_N_per_m (-dP/d mean gap, from the incremental solve), stiffness_per_area_N_per_m3,\n"
       "approach_stiffness_N_per_m, max_pressure_Pa, iterations, solves, residual, stiffness_iterations,\n"
       "stiffness_residual; '#' lines first say what was solved (docs/exact-contact.md). A solve that does\n"
       "not converge is an error. Progress goes to standard error once a solve runs for 2 s.\n" +

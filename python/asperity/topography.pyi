@@ -376,6 +376,8 @@ class ContactStep:
     real_area: float
     contact_points: int
     clusters: int
+    plastic_area_fraction: float
+    plastic_points: int
     stiffness: float
     stiffness_per_area: float
     approach_stiffness: float
@@ -392,7 +394,7 @@ class ExactContact:
     def __init__(self, map: HeightMap, *, contact_modulus: float, boundary: str = "periodic", kernel: str = "fourier",
                  tolerance: float = 1e-8, max_iterations: int = 20000, love_aliases: int = 16, stiffness: bool = True,
                  threads: int = 0, solver: str = "preconditioned", coarse_start: bool = True,
-                 max_memory: Optional[int] = None) -> None: ...
+                 max_memory: Optional[int] = None, hardness: float = 0.0) -> None: ...
     def at_pressure(self, pressure: float) -> ContactStep: ...
     def at_mean_gap(self, mean_gap: float) -> ContactStep: ...
     def write_table(self, path: PathLike, pressures: Sequence[float], safety_factor: float = 2.0,
@@ -416,6 +418,8 @@ class ExactContact:
     def nominal_area(self) -> float: ...
     @property
     def full_contact_pressure(self) -> float: ...
+    @property
+    def plastic_limit(self) -> float: ...
     @property
     def memory_estimate(self) -> int: ...
 

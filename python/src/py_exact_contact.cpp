@@ -176,13 +176,16 @@ void bind_exact_contact(py::module_& m) {
       "estimate (its arrays, counted) exceeds it raises asperity.Error before anything is allocated, as running out\n"
       "of memory does, with the map's size and the estimate. A pressure below one node of contact or beyond the\n"
       "solver's numerical range raises asperity.Error before iterating, naming the bound; a periodic map without\n"
-      "missing points pressed flat (above its full-contact pressure, from one FFT) is answered in closed form.");
+      "missing points pressed flat (above its full-contact pressure, from one FFT) is answered in closed form.\n"
+      "hardness [Pa]: the pressure capped at it on every point (elastic-perfectly-plastic: points at it are\n"
+      "plastic, ContactStep.plastic_points; 0 or inf: elastic); a pressure at or above plastic_limit raises.");
   exact_contact
       .def(py::init([](const topo::HeightMap& map, double contact_modulus, const std::string& boundary,
                        const std::string& kernel, double tolerance, int max_iterations, int love_aliases,
                        bool stiffness, int threads, const std::string& solver, bool coarse_start,
-                       std::optional<std::size_t> max_memory) {
+                       std::optional<std::size_t> max_memory, double hardness) {
              topo::ExactContactOptions options;
+             options.hardness = hardness;
              options.contact_modulus = contact_modulus;
              if (!topo::parse_contact_boundary(boundary, options.boundary))
                throw py::value_error("boundary must be 'periodic' or 'padded', not '" + boundary + "'");
@@ -201,7 +204,8 @@ void bind_exact_contact(py::module_& m) {
            }),
            "map"_a, py::kw_only(), "contact_modulus"_a, "boundary"_a = "periodic", "kernel"_a = "fourier",
            "tolerance"_a = 1e-8, "max_iterations"_a = 20000, "love_aliases"_a = 16, "stiffness"_a = true,
-           "threads"_a = 0, "solver"_a = "preconditioned", "coarse_start"_a = true, "max_memory"_a = py::none());
+           "threads"_a = 0, "solver"_a = "preconditioned", "coarse_start"_a = true, "max_memory"_a = py::none(),
+           "hardness"_a = 0.0);
   bind_exact_contact_solves(exact_contact);
   exact_contact
       .def_property_readonly("nx", [](const ExactContactHandle& h) { return h.solver.nx(); })
@@ -209,6 +213,10 @@ void bind_exact_contact(py::module_& m) {
                              [](const ExactContactHandle& h) { return h.solver.pressure_range().full_contact; },
                              "The nominal pressure [Pa] above which the whole map touches (a periodic map without missing\n"
                              "points, from one FFT; inf otherwise): at_pressure answers above it in closed form.")
+      .def_property_readonly("plastic_limit",
+                             [](const ExactContactHandle& h) { return h.solver.pressure_range().plastic_limit; },
+                             "With a hardness, the nominal pressure [Pa] of the whole map plastic (refused at or above\n"
+                             "it); inf elastic.")
       .def_property_readonly("memory_estimate", [](const ExactContactHandle& h) { return h.solver.memory_estimate(); },
                              "The bytes the solver needs, as max_memory counts them.")
       .def_property_readonly("ny", [](const ExactContactHandle& h) { return h.solver.ny(); })

@@ -287,6 +287,8 @@ void check_contact_options(const ExactContactOptions& options) {
   if (options.max_iterations < 1) throw Error("max_iterations must be at least 1");
   if (options.love_aliases < 1 || options.love_aliases > 1000) throw Error("love_aliases must be from 1 to 1000");
   if (options.threads < 0 || options.threads > 1024) throw Error("threads must be from 0 to 1024");
+  if (std::isnan(options.hardness) || options.hardness < 0)
+    throw Error("the hardness must be 0 (elastic), positive or infinite (elastic) [Pa], got " + number(options.hardness));
 }
 
 // The map's valid heights: how many, their mean, their rms about it and the highest above it.
@@ -393,6 +395,8 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   map.validate();
   check_contact_options(options);
   const double modulus = options.contact_modulus;
+  plastic_ = is_plastic(options);
+  hardness_ = plastic_ ? options.hardness : HUGE_VAL;
   threads_ = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   nx_ = map.nx;
   ny_ = map.ny;
@@ -625,6 +629,7 @@ ExactContact::Sums3 ExactContact::precondition(const std::vector<double>& in, st
   const std::vector<double>& p = pressure_;
   const std::size_t nx = nx_, ny = ny_, sx = sx_, sy = sy_;
   const double centre = stencil_centre_, along_x = stencil_x_, along_y = stencil_y_, diagonal = stencil_diagonal_;
+  const double hardness = hardness_;
   const auto sums = over_rows(ny, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
     double sum = 0, product = 0, other_sum = 0;
     for (std::size_t j = first; j < end; ++j) {
@@ -636,7 +641,7 @@ ExactContact::Sums3 ExactContact::precondition(const std::vector<double>& in, st
       const double* down = below < ny ? &in[below * sx] : zero_row_.data();
       auto at = [nx](const double* row, std::size_t i) { return i < nx ? row[i] : 0.0; };
       for (std::size_t i = 0, k = j * sx; i < nx; ++i, ++k) {
-        if (!(p[k] > 0)) {
+        if (!(p[k] > 0 && p[k] < hardness)) {  // off the free set
           out[k] = 0;
           continue;
         }
@@ -715,14 +720,18 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     apply(p, displacement_);
     const PassSums placed = scale_and_sum_contact_gaps(scale);
     scale = 1;
-    const std::size_t contact = static_cast<std::size_t>(placed[1]);
+    const std::size_t contact = static_cast<std::size_t>(placed[1]);  // the free points (0 < p < hardness)
+    const std::size_t plastic = static_cast<std::size_t>(placed[2]);  // at the hardness
     double approach = target;
-    if (by_pressure) approach = contact > 0 ? -placed[0] / static_cast<double>(contact) : 0.0;
+    if (by_pressure)
+      approach = contact > 0 ? -placed[0] / static_cast<double>(contact) : plastic > 0 ? plastic_approach() : 0.0;
     // the gaps, and the residual; preconditioned, w takes the gap on the contact set (0 off it)
     const PassSums gaps = gaps_and_residual_sums(approach, preconditioned);
     const double weighted = gaps[0], load = gaps[1], squares = gaps[2], penetration = gaps[5];
-    const double residual =
+    double residual =
         std::max(load > 0 ? weighted / (load * rms_) : (contact == 0 ? 0.0 : INFINITY), penetration / rms_);
+    // capped, the load is the target only once the free points can carry what the plastic ones do not
+    if (plastic_ && by_pressure) residual = std::max(residual, std::fabs(load - total) / total);
     report(by_pressure ? "pressure" : "gap", iteration, residual, contact);
     if (residual <= tolerance) {
       solve.iterations = iteration;
@@ -734,7 +743,7 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     if (iteration >= options_.max_iterations)
       throw Error("the contact solve did not converge: " + std::to_string(iteration) + " iterations reached a residual of " +
                   number(residual) + " (tolerance " + number(tolerance) + ")");
-    if (contact == 0) {
+    if (contact == 0 && plastic == 0) {
       // nothing in contact yet something penetrates (by approach): start again from the overlap
       pressure_from_overlap(target);
       conjugate = false;
@@ -743,6 +752,13 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     if (residual <= 0.5 * reference) {
       reference = residual;
       reference_iteration = iteration;
+    } else if (plastic_ && by_pressure && iteration - reference_iteration >= stall_iterations) {
+      // the rescaling of a capped load can cycle (points pushed to the cap and scaled off it)
+      solve.iterations = iteration;
+      solve.residual = residual;
+      solve.approach = approach_ = approach;
+      solve.stalled = true;
+      return solve;
     } else if (growth_allowed > 0 && iteration - reference_iteration >= stall_iterations) {
       preconditioned = false;  // stalled: Polonsky and Keer from here
       growth_allowed = 0;
@@ -787,6 +803,8 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
       if (!(total_now > 0)) {
         seed_pressure(by_pressure, target, total);
         conjugate = false;
+      } else if (plastic_) {
+        rescale_capped(total);  // now: a capped scaling is not linear, G p is made anew next
       } else {
         scale = total / total_now;
       }
@@ -802,7 +820,9 @@ void ExactContact::seed_pressure(bool by_pressure, double target, double total) 
   if (by_pressure) {
     double sum = 0;
     for (std::size_t k = 0; k < points; ++k) sum += active_[k] ? p[k] : 0.0;
-    if (sum > 0) {
+    if (sum > 0 && plastic_) {
+      rescale_capped(total);
+    } else if (sum > 0) {
       for (double& value : p) value *= total / sum;
     } else {
       for (std::size_t k = 0; k < points; ++k)
@@ -821,56 +841,66 @@ void ExactContact::pressure_from_overlap(double target) {
   const std::size_t points = sx_ * sy_;
   std::vector<double>& p = pressure_;
   for (std::size_t k = 0; k < points; ++k)
-    p[k] = active_[k] ? std::max(heights_[k] - target, 0.0) / self_compliance_ : 0.0;
+    p[k] = active_[k] ? std::min(std::max(heights_[k] - target, 0.0) / self_compliance_, hardness_) : 0.0;
 }
 
 // The constrained solve's passes over the map's points (k = j * sx + i), their sums added in
 // over_rows' fixed order.
 
 // Pressure and displacement times `scale` (the load's rescaling); sums [0] the displacement
-// less the height over the contact set, [1] its points.
+// less the height over the contact set's free points (0 < p < hardness), [1] those points, [2]
+// the plastic ones (p = hardness).
 ExactContact::PassSums ExactContact::scale_and_sum_contact_gaps(double scale) {
   std::vector<double>& p = pressure_;
   std::vector<double>& u = displacement_;
   const std::size_t nx = nx_, sx = sx_;
+  const double hardness = hardness_;
   return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-    double sum = 0, contact = 0;
+    double sum = 0, contact = 0, plastic = 0;
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
         p[q] *= scale;
         u[q] *= scale;
-        const bool in = active_[q] && p[q] > 0;
+        const bool in = active_[q] && p[q] > 0 && p[q] < hardness;
         sum += in ? u[q] - heights_[q] : 0.0;
         contact += in;
+        plastic += p[q] >= hardness;
       }
     s[0] = sum;
     s[1] = contact;
+    s[2] = plastic;
   });
 }
 
-// The gaps g at the flat's `approach` (and, preconditioned, w: the gap on the contact set, 0
-// off it); sums [0] pressure times |gap|, [1] the load, [2] the squared gaps over the contact
-// set, [5] the largest penetration outside it.
+// The gaps g at the flat's `approach` (and, preconditioned, w: the gap on the free points, 0
+// off them); sums [0] pressure times |gap| and [2] the squared gaps over the free points, [1] the
+// load, [5] the largest violation: a penetration outside the contact set, or a plastic point's
+// gap above 0 (the flat has left it).
 ExactContact::PassSums ExactContact::gaps_and_residual_sums(double approach, bool preconditioned) {
   const std::vector<double>& p = pressure_;
   const std::vector<double>& u = displacement_;
   std::vector<double>& g = work_;
   std::vector<double>& w = increment_;
   const std::size_t nx = nx_, sx = sx_;
+  const double hardness = hardness_;
   return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
     double weighted = 0, load = 0, squares = 0, penetration = 0;
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
         const double gap = active_[q] ? u[q] - heights_[q] + approach : 0.0;
         g[q] = gap;
-        if (p[q] > 0) {
+        const bool free = p[q] > 0 && p[q] < hardness;
+        if (free) {
           weighted += p[q] * std::fabs(gap);
           load += p[q];
           squares += gap * gap;
+        } else if (p[q] > 0) {
+          load += p[q];
+          penetration = std::max(penetration, gap);
         } else if (active_[q]) {
           penetration = std::max(penetration, -gap);
         }
-        if (preconditioned) w[q] = p[q] > 0 ? gap : 0.0;
+        if (preconditioned) w[q] = free ? gap : 0.0;
       }
     s[0] = weighted;
     s[1] = load;
@@ -885,27 +915,29 @@ void ExactContact::set_direction(const std::vector<double>& source, double sourc
   const std::vector<double>& p = pressure_;
   std::vector<double>& t = direction_;
   const std::size_t nx = nx_, sx = sx_;
+  const double hardness = hardness_;
   over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
         const double value = source[q] - source_mean;
-        t[q] = p[q] > 0 ? (conjugate ? value + beta * t[q] : value) : 0.0;
+        t[q] = p[q] > 0 && p[q] < hardness ? (conjugate ? value + beta * t[q] : value) : 0.0;
       }
   });
 }
 
-// The step's sums over the contact set: [0] w, [1] t, [2] w t, [3] g t.
+// The step's sums over the free points: [0] w, [1] t, [2] w t, [3] g t.
 ExactContact::PassSums ExactContact::step_products() {
   const std::vector<double>& p = pressure_;
   const std::vector<double>& t = direction_;
   const std::vector<double>& g = work_;
   const std::vector<double>& w = increment_;
   const std::size_t nx = nx_, sx = sx_;
+  const double hardness = hardness_;
   return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
     double sum_w = 0, sum_t = 0, sum_wt = 0, numerator = 0;
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
-        if (p[q] > 0) {
+        if (p[q] > 0 && p[q] < hardness) {
           sum_w += w[q];
           sum_t += t[q];
           sum_wt += w[q] * t[q];
@@ -918,22 +950,30 @@ ExactContact::PassSums ExactContact::step_products() {
   });
 }
 
-// The pressure moved by -step t on the contact set, projected on p >= 0, and the points that
-// penetrate outside it added back with -overlap_step g; sums [0] the new load, [1] the points
-// added back.
+// The pressure moved by -step t on the free points, projected on 0 <= p <= hardness, the
+// points that penetrate outside the contact set added back with -overlap_step g and the plastic
+// points the flat has left (g > 0) released by as much; sums [0] the new load, [1] the points
+// added back or released.
 ExactContact::PassSums ExactContact::move_pressure(double step, double overlap_step) {
   std::vector<double>& p = pressure_;
   const std::vector<double>& t = direction_;
   const std::vector<double>& g = work_;
   const std::size_t nx = nx_, sx = sx_;
+  const double hardness = hardness_;
   return over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
     double total_now = 0, overlaps = 0;
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-        double value = p[q] > 0 ? std::max(p[q] - step * t[q], 0.0) : 0.0;
-        if (value == 0 && active_[q] && g[q] < 0) {
-          value = -overlap_step * g[q];
-          ++overlaps;
+        double value;
+        if (p[q] >= hardness) {
+          value = g[q] > 0 ? std::max(hardness - overlap_step * g[q], 0.0) : hardness;
+          overlaps += g[q] > 0;
+        } else {
+          value = p[q] > 0 ? std::min(std::max(p[q] - step * t[q], 0.0), hardness) : 0.0;
+          if (value == 0 && active_[q] && g[q] < 0) {
+            value = std::min(-overlap_step * g[q], hardness);
+            ++overlaps;
+          }
         }
         p[q] = value;
         total_now += value;
@@ -943,15 +983,86 @@ ExactContact::PassSums ExactContact::move_pressure(double step, double overlap_s
   });
 }
 
+void ExactContact::rescale_capped(double total) {
+  std::vector<double>& p = pressure_;
+  const std::size_t nx = nx_, sx = sx_;
+  const double hardness = hardness_;
+  // [0] the free points' load, [1] the plastic ones'
+  const PassSums loads = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double free_load = 0, held = 0;
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+        if (p[q] >= hardness) held += p[q];
+        else if (p[q] > 0) free_load += p[q];
+      }
+    s[0] = free_load;
+    s[1] = held;
+  });
+  const bool hold = loads[0] > 0 && total - loads[1] > 0;  // the free points carry the rest
+  const double target = hold ? total - loads[1] : total;
+  const double lower = hold ? 0.0 : 1.0;  // the points scaled: p > 0 and p < hardness, or every p > 0
+  // the factor f with sum min(f p, hardness) = target: that sum is concave and increasing in f,
+  // so Newton's steps from f = target / sum p (at or below the root) climb to it without passing it
+  double factor = target / (hold ? loads[0] : loads[0] + loads[1]);
+  double carried = 0;
+  for (int pass = 0; pass < 100; ++pass) {
+    const PassSums sums = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+      double carried = 0, slope = 0;
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
+          if (!(p[q] > 0 && (p[q] < hardness || lower > 0))) continue;
+          const double value = factor * p[q];
+          carried += std::min(value, hardness);
+          slope += value < hardness ? p[q] : 0.0;
+        }
+      s[0] = carried;
+      s[1] = slope;
+    });
+    carried = sums[0];
+    const double excess = carried - target;
+    if (std::fabs(excess) <= 1e-15 * total || !(sums[1] > 0)) break;  // exact, or every point capped
+    factor -= excess / sums[1];
+  }
+  over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+        if (p[q] > 0 && (p[q] < hardness || lower > 0)) p[q] = std::min(factor * p[q], hardness);
+  });
+  // every point capped and the load still short: the rest on the points out of contact that the
+  // flat overlaps most (h - u largest), a pixel at most H each, so that some point is free again
+  double rest = target - carried;
+  for (int added = 0; rest > 1e-15 * total && added < 1000; ++added) {
+    std::size_t best = p.size();
+    for (std::size_t j = 0; j < ny_; ++j)
+      for (std::size_t k = j * sx, end = k + nx; k < end; ++k)
+        if (active_[k] && p[k] == 0 &&
+            (best == p.size() || heights_[k] - displacement_[k] > heights_[best] - displacement_[best]))
+          best = k;
+    if (best == p.size()) break;
+    p[best] = std::min(rest, hardness);
+    rest -= p[best];
+  }
+}
+
+double ExactContact::plastic_approach() const {
+  double approach = INFINITY;
+  for (std::size_t j = 0; j < ny_; ++j)
+    for (std::size_t k = j * sx_, end = k + nx_; k < end; ++k)
+      if (pressure_[k] >= hardness_) approach = std::min(approach, heights_[k] - displacement_[k]);
+  return std::isfinite(approach) ? approach : 0.0;
+}
+
 // The incremental problem: the flat moves by a unit approach with the contact set held; the
 // pressure increment x on the contact set C solves G_CC x = 1 (conjugate gradients,
 // preconditioned as the constrained solve is). The stiffness of a held contact set is the
 // tangent of the load-approach curve (Barber 2003: the contact set grows by a set of zero
 // pressure), so this is dP/d(approach) without the noise of a finite difference; the mean gap
-// moves by 1 - <G x> over the map.
+// moves by 1 - <G x> over the map. With a hardness the set held is the free points' (0 < p <
+// hardness): a plastic point's pressure cannot grow, and its gap (flattened to the flat) stays 0.
 void ExactContact::stiffness_of(ContactStep& step) {
-  if (step.contact_points == 0) return;
-  if (step.contact_points == sx_ * sy_) {  // periodic, full contact: no approach moves the flat
+  const std::size_t free_points = step.contact_points - step.plastic_points;
+  if (free_points == 0) return;  // no contact, or every contact point plastic: no load added
+  if (free_points == sx_ * sy_) {  // periodic, full contact: no approach moves the flat
     step.stiffness = step.stiffness_per_area = step.approach_stiffness = INFINITY;
     return;
   }
@@ -963,10 +1074,12 @@ void ExactContact::stiffness_of(ContactStep& step) {
   const bool preconditioned = options_.solver == ContactSolver::preconditioned && stencil_;
   const std::size_t nx = nx_, sx = sx_;
   const std::vector<double>& p = pressure_;
+  const double hardness = hardness_;
   // from an isolated pixel's increment (the last step's increments, tried, took more iterations)
   over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) x[q] = p[q] > 0 ? 1 / self_compliance_ : 0.0;
+      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+        x[q] = p[q] > 0 && p[q] < hardness ? 1 / self_compliance_ : 0.0;
   });
   apply(x, w);
   // r: the residual, 0 off the contact set (as precondition() wants it)
@@ -974,7 +1087,7 @@ void ExactContact::stiffness_of(ContactStep& step) {
     double sum = 0;
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-        r[q] = p[q] > 0 ? 1 - w[q] : 0.0;
+        r[q] = p[q] > 0 && p[q] < hardness ? 1 - w[q] : 0.0;
         sum += r[q] * r[q];
       }
     s[0] = sum;
@@ -985,7 +1098,7 @@ void ExactContact::stiffness_of(ContactStep& step) {
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) d[q] = source[q];
   });
-  const double norm = std::sqrt(static_cast<double>(step.contact_points));
+  const double norm = std::sqrt(static_cast<double>(free_points));
   int iteration = 0;
   for (;; ++iteration) {
     poll_interrupt();
@@ -1012,7 +1125,7 @@ void ExactContact::stiffness_of(ContactStep& step) {
       double sum = 0;
       for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
         for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
-          if (p[q] > 0) {
+          if (p[q] > 0 && p[q] < hardness) {
             x[q] += alpha * d[q];
             r[q] -= alpha * w[q];
             sum += r[q] * r[q];
@@ -1024,7 +1137,8 @@ void ExactContact::stiffness_of(ContactStep& step) {
     product = next;
     over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
       for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) d[q] = p[q] > 0 ? source[q] + beta * d[q] : 0.0;
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+          d[q] = p[q] > 0 && p[q] < hardness ? source[q] + beta * d[q] : 0.0;
     });
   }
   apply(x, w);
@@ -1033,13 +1147,14 @@ void ExactContact::stiffness_of(ContactStep& step) {
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
         increment += x[q];
-        moved += active_[q] ? w[q] : 0.0;
+        moved += active_[q] && p[q] < hardness ? w[q] : 0.0;
       }
     s[0] = increment;
     s[1] = moved;
   });
   const double mean_pressure = sums[0] / static_cast<double>(nx_ * ny_);
-  const double gap_change = 1 - sums[1] / static_cast<double>(valid_points_);
+  // (a plastic point's gap stays 0: it moves by 1 - w no more)
+  const double gap_change = 1 - (sums[1] + static_cast<double>(step.plastic_points)) / static_cast<double>(valid_points_);
   step.stiffness_iterations = iteration;
   step.stiffness_per_area = mean_pressure / gap_change;
   step.stiffness = step.stiffness_per_area * nominal_area_;
@@ -1057,6 +1172,7 @@ ContactStep ExactContact::describe(const Solve& solve) {
       if (pressure_[k] > 0) {
         contact[j * nx_ + i] = 1;
         ++step.contact_points;
+        step.plastic_points += pressure_[k] >= hardness_;
         load += pressure_[k];
         highest = std::max(highest, pressure_[k]);
       } else {
@@ -1071,6 +1187,7 @@ ContactStep ExactContact::describe(const Solve& solve) {
   step.approach = solve.approach;
   step.area_fraction = static_cast<double>(step.contact_points) / map_points;
   step.real_area = step.area_fraction * nominal_area_;
+  step.plastic_area_fraction = static_cast<double>(step.plastic_points) / map_points;
   step.max_pressure = highest;
   step.clusters = count_clusters(contact, nx_, ny_, options_.boundary == ContactBoundary::periodic);
   step.iterations = solve.iterations;
@@ -1111,11 +1228,16 @@ void ExactContact::find_pressure_range() {
   largest_compliance_ = compliance;
   range_.numerical_limit = resolved / (8 * std::numeric_limits<double>::epsilon() * compliance);
   range_.full_contact = INFINITY;
+  range_.plastic_limit = plastic_ ? hardness_ * static_cast<double>(valid_points_) / map_points : INFINITY;
   if (options_.boundary == ContactBoundary::periodic && valid_points_ == nx_ * ny_) {
     stiffness_times_heights(work_);
-    double least = INFINITY;
-    for (std::size_t k = 0; k < nx_ * ny_; ++k) least = std::min(least, work_[k]);
+    double least = INFINITY, most = -INFINITY;
+    for (std::size_t k = 0; k < nx_ * ny_; ++k) {
+      least = std::min(least, work_[k]);
+      most = std::max(most, work_[k]);
+    }
     range_.full_contact = std::max(-least, 0.0);
+    flattening_peak_ = most;
     std::fill(work_.begin(), work_.end(), 0.0);
   }
 }
@@ -1123,9 +1245,13 @@ void ExactContact::find_pressure_range() {
 void ExactContact::check_pressure(double pressure) const {
   if (!(std::isfinite(pressure) && pressure >= 0))
     throw Error("the mean pressure must be finite and non-negative, got " + number(pressure));
-  if (pressure == 0 || pressure > range_.full_contact) return;
   const double modulus = options_.contact_modulus;
   const std::string asked = "the mean pressure " + number(pressure) + " Pa (p/E* " + number(pressure / modulus) + ")";
+  if (pressure >= range_.plastic_limit)
+    throw Error(asked + " is at or beyond what the map can carry at the hardness " + number(hardness_) +
+                " Pa: every point plastic carries " + number(range_.plastic_limit) +
+                " Pa (the hardness times the valid points' share of the map); ask for less, or check the hardness [Pa]");
+  if (pressure == 0 || closed_form_full_contact(pressure)) return;
   if (pressure < range_.one_node)
     throw Error(asked + " is below one node of contact: the whole load on the map's highest point would deflect it by " +
                 number(self_compliance_ * pressure * static_cast<double>(nx_ * ny_)) +
@@ -1170,7 +1296,7 @@ ContactStep ExactContact::at_pressure(double pressure) {
     return describe(none);
   }
   try {
-    return pressure > range_.full_contact ? full_contact(pressure) : solve_pressure(pressure);
+    return closed_form_full_contact(pressure) ? full_contact(pressure) : solve_pressure(pressure);
   } catch (const std::bad_alloc&) {
     out_of_memory("solving at " + number(pressure) + " Pa");
   }
@@ -1197,12 +1323,56 @@ ContactStep ExactContact::solve_pressure(double pressure) {
     }
   }
   const Solve solve = constrained(true, pressure);
+  if (solve.stalled) {
+    ContactStep step = plastic_pressure_search(pressure, solve.approach, solve.iterations);
+    step.coarse_iterations = coarse_iterations;
+    return step;
+  }
   ContactStep step = describe(solve);
   // the pressures' mean is the target by construction (each iteration rescales them to it); the
   // sum in describe() differs from it by rounding, in the order of the threads' blocks
   step.pressure = pressure;
   step.load = pressure * nominal_area_;
   step.coarse_iterations = coarse_iterations;
+  if (options_.stiffness) stiffness_of(step);
+  return step;
+}
+
+ContactStep ExactContact::plastic_pressure_search(double pressure, double approach, int iterations) {
+  const double tolerance = options_.tolerance * pressure;
+  double low = -INFINITY, high = INFINITY;  // positions with too much load, too little
+  double unbracketed = 1e-3 * rms_;         // the step while a side is missing, doubled each time
+  ContactStep step;
+  for (int solves = 1;; ++solves) {
+    const Solve solve = constrained(false, approach);
+    iterations += solve.iterations;
+    step = describe(solve);
+    const double excess = step.pressure - pressure;
+    if (std::fabs(excess) <= tolerance) {
+      step.solves = solves;
+      break;
+    }
+    if (solves >= 60)
+      throw Error("the capped contact's search for the load did not converge: " + std::to_string(solves) +
+                  " solves left a pressure error of " + number(excess) + " Pa");
+    if (excess > 0) low = std::max(low, approach);
+    else high = std::min(high, approach);
+    stiffness_of(step);  // -dp/d(approach) with the free points held
+    const double slope = step.approach_stiffness / nominal_area_;
+    double next = slope > 0 ? approach + excess / slope : NAN;
+    if (!(next > low && next < high)) {
+      if (std::isfinite(low) && std::isfinite(high)) {
+        next = 0.5 * (low + high);
+      } else {
+        next = approach + (excess > 0 ? unbracketed : -unbracketed);
+        unbracketed *= 2;
+      }
+    }
+    approach = next;
+  }
+  step.iterations = iterations;
+  step.pressure = pressure;  // within the tolerance of it
+  step.load = pressure * nominal_area_;
   if (options_.stiffness) stiffness_of(step);
   return step;
 }
@@ -1229,6 +1399,11 @@ ContactStep ExactContact::solve_mean_gap(double mean_gap) {
   // map without missing points (one solve), otherwise a secant search on the approach (the
   // mean gap grows with it), bracketed once the target is passed.
   const double tolerance = 10 * options_.tolerance * rms_;
+  if (mean_gap <= tolerance && closed_form_full_contact(std::nextafter(range_.full_contact, INFINITY))) {
+    // closed within what the search resolves: full contact (its closed form, mean gap 0), which
+    // the search would only approach, a point at a time, over thousands of iterations
+    return full_contact(std::nextafter(range_.full_contact, INFINITY));
+  }
   bool had_contact = false;
   for (std::size_t k = 0; k < pressure_.size(); ++k)
     if (pressure_[k] > 0) had_contact = true;

@@ -36,6 +36,7 @@ std::string exact_contact_json(const HeightMap& map, bool leveled, const ExactCo
         {"algorithm", contact_solver_name(options.solver)},
         {"coarse_start", options.coarse_start},
         {"tolerance", options.tolerance},
+        {"hardness_Pa", is_plastic(options) ? json(options.hardness) : json(nullptr)},
         {"driven_by", by_pressure ? "pressure" : "mean_gap"}}},
       {"steps", steps_json}};
   return document.dump(2, ' ', false, json::error_handler_t::replace);

@@ -6,6 +6,13 @@
 // neglects nothing a Greenwood-Williamson model neglects (coalescence, interaction, the bulk): it
 // is the reference the asperity models of the same map are judged against.
 //
+// Elastic-perfectly-plastic (ExactContactOptions::hardness > 0): the same half-space with the
+// contact pressure capped at the hardness H on every pixel, 0 <= p <= H (the saturation model of
+// Almqvist et al. 2007, tamaas' "saturated" solvers): a point at p = H is plastic, its gap may be
+// negative (the plastic interference, flattened to the flat: its gap counts 0 in the mean gap)
+// and it carries no incremental load. It neglects hardening, the plastic zone below the surface
+// and its interaction with the elastic field, and unloading (the flattening is not kept).
+//
 // Assumptions: small slopes (half-space theory), frictionless, linear elastic, no adhesion; the
 // map is sampled on its grid, the pressure constant over each pixel (love) or band-limited
 // (fourier); missing points (NaN) never touch and are left out of the mean gap.
@@ -34,6 +41,7 @@
 // iteration costs two convolutions (O(N log N)) and a few passes over the points (O(N)).
 #pragma once
 #include <array>
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <functional>
@@ -96,7 +104,15 @@ struct ExactContactOptions {
   // Bytes the solver may allocate (exact_contact_memory below); 0: no limit. A map whose
   // estimate exceeds it is refused before anything is allocated.
   std::size_t max_memory = 0;
+  // The hardness H [Pa]: the pressure no pixel exceeds (elastic-perfectly-plastic, above);
+  // 0 or +inf: elastic (the default; its answers unchanged).
+  double hardness = 0;
 };
+
+// True when the options ask for the capped pressure (a finite hardness > 0).
+inline bool is_plastic(const ExactContactOptions& options) {
+  return options.hardness > 0 && options.hardness < HUGE_VAL;
+}
 
 // What one solver of an nx x ny map needs [bytes], counted from its arrays: on the solve grid
 // (the map's, or four times it padded) 8 arrays of doubles, a mask, the kernel and one complex
@@ -144,6 +160,8 @@ inline constexpr const char* max_memory_help =
   X(double, real_area, "real_area_m2", "[m^2]")                                                                \
   X(std::size_t, contact_points, "contact_points", "map points in contact")                                    \
   X(std::size_t, clusters, "clusters", "connected contact patches (4-neighbour; wrapped when periodic)")       \
+  X(double, plastic_area_fraction, "plastic_area_fraction", "plastic points (p = hardness) / map points; 0 elastic") \
+  X(std::size_t, plastic_points, "plastic_points", "map points at the hardness")                              \
   X(double, stiffness, "stiffness_N_per_m", "-dP/d(mean gap) [N/m], 0 without contact")                        \
   X(double, stiffness_per_area, "stiffness_per_area_N_per_m3", "-dp/d(mean gap) [N/m^3]")                      \
   X(double, approach_stiffness, "approach_stiffness_N_per_m",                                                  \
@@ -178,13 +196,16 @@ struct ContactPressureRange {
   // lower bound of the hopeless: solves within about 30 times below it may still not converge
   // (docs/exact-contact.md), none above it does.
   double numerical_limit = 0;
+  // With a hardness H: the mean pressure of the whole map plastic, H times the valid points'
+  // share of the map; refused at or above it (no load beyond it can be carried). +inf elastic.
+  double plastic_limit = 0;
 };
 
 class ExactContact {
  public:
   // Throws asperity::Error for a bad map (HeightMap::validate), a modulus not finite and > 0, a
   // tolerance outside [min_contact_tolerance, max_contact_tolerance], max_iterations < 1,
-  // love_aliases outside [1, 1000], a solve grid beyond max_contact_points, a map whose valid
+  // love_aliases outside [1, 1000], a hardness negative or NaN, a solve grid beyond max_contact_points, a map whose valid
   // heights are all equal, or a memory estimate beyond options.max_memory (the figure named);
   // running out of memory (std::bad_alloc) is an asperity::Error naming the map and the estimate.
   ExactContact(const HeightMap& map, const ExactContactOptions& options);
@@ -192,8 +213,9 @@ class ExactContact {
   // The contact at a mean nominal pressure [Pa] > 0 (0: no contact), from the last solution
   // (a warm start). Above pressure_range().full_contact the closed form (every point in contact,
   // infinite stiffness, no iteration). Throws asperity::Error for a pressure not finite and >= 0,
-  // one below pressure_range().one_node or above its numerical_limit (the bound and what to do
-  // named, before any iteration), no convergence, or no memory.
+  // one below pressure_range().one_node, above its numerical_limit or at or above its
+  // plastic_limit (the bound and what to do named, before any iteration), no convergence, or no
+  // memory. With a hardness the closed form of full contact is used only where it stays below it.
   ContactStep at_pressure(double pressure);
   // The checks at_pressure makes before iterating: throws its asperity::Error for a pressure it
   // would refuse (so that a sweep is checked before its first solve); nothing else.
@@ -233,6 +255,7 @@ class ExactContact {
   struct Solve {
     int iterations = 0;
     double residual = 0, approach = 0;
+    bool stalled = false;  // capped, by pressure: stopped improving (plastic_pressure_search takes over)
   };
   Solve constrained(bool by_pressure, double target);
   // constrained's parts (exact_contact.cpp): its start, and its passes over the map's points,
@@ -243,6 +266,11 @@ class ExactContact {
   PassSums scale_and_sum_contact_gaps(double scale);
   PassSums gaps_and_residual_sums(double approach, bool preconditioned);
   void set_direction(const std::vector<double>& source, double source_mean, bool conjugate, double beta);
+  // With a hardness: the pressures scaled to the load `total`, each capped at it (the scale
+  // solved for, the plastic points held while the free ones can carry the rest); the flat's
+  // position when no point is free (the highest that keeps every plastic point's gap <= 0).
+  void rescale_capped(double total);
+  double plastic_approach() const;
   PassSums step_products();
   PassSums move_pressure(double step, double overlap_step);
   void stiffness_of(ContactStep& step);
@@ -252,7 +280,16 @@ class ExactContact {
   void find_pressure_range();  // range_, from the kernel and the heights
   void stiffness_times_heights(std::vector<double>& out);  // K[h] on the solve grid (periodic)
   ContactStep full_contact(double pressure);  // the closed form above range_.full_contact
+  // Whether `pressure` is answered by full_contact: above range_.full_contact, and with a
+  // hardness, the flattened map's peak pressure at most the hardness.
+  bool closed_form_full_contact(double pressure) const noexcept {
+    return pressure > range_.full_contact && pressure + flattening_peak_ <= hardness_;
+  }
   ContactStep solve_pressure(double pressure);
+  // With a hardness, by pressure when the load's rescaling stalls: the flat's position whose
+  // capped solve carries the load, by Newton's steps on the incremental stiffness (the tangent of
+  // load against position) kept within the bracket found; from `approach`.
+  ContactStep plastic_pressure_search(double pressure, double approach, int iterations);
   ContactStep solve_mean_gap(double mean_gap);
   [[noreturn]] void out_of_memory(const std::string& doing) const;
   // the constructor's parts (exact_contact.cpp)
@@ -279,6 +316,9 @@ class ExactContact {
   bool stencil_ = false;
   double approach_ = 0;              // the last solution's rigid-body position
   ContactPressureRange range_;
+  double hardness_ = HUGE_VAL;       // the cap on the pressure (+inf elastic)
+  bool plastic_ = false;             // a finite hardness
+  double flattening_peak_ = 0;       // max K[h] (periodic, no missing points): full contact's peak less its mean
   double largest_compliance_ = 0;    // of the kernel [m/Pa]: the displacements' scale
   std::size_t memory_ = 0;           // exact_contact_memory of the map and options
   std::unique_ptr<ExactContact> coarse_;  // the map coarsened 2 x 2, for the coarse start
