@@ -185,6 +185,24 @@ def test_hopeless_pressures_refused_with_the_bound():
         solver.at_pressure(1e-300)
 
 
+def test_hardness_caps_the_pressure():
+    # Westergaard's wavy surface at half its full-contact pressure: the elastic peak is above the
+    # mean contact pressure, so a hardness between them makes the crests plastic
+    modulus, wavelength, amplitude = 1e11, 1e-3, 1e-6
+    full = math.pi * modulus * amplitude / wavelength
+    elastic = topography.ExactContact(wavy(128), contact_modulus=modulus).at_pressure(0.5 * full)
+    assert elastic.plastic_points == 0 and elastic.plastic_area_fraction == 0
+    hardness = 0.9 * elastic.max_pressure
+    solver = topography.ExactContact(wavy(128), contact_modulus=modulus, hardness=hardness)
+    step = solver.at_pressure(0.5 * full)
+    assert step.plastic_points > 0 and step.max_pressure == hardness
+    assert step.plastic_area_fraction == step.plastic_points / (128 * 4)
+    assert np.max(solver.pressure_field()) == hardness
+    assert solver.plastic_limit == hardness
+    with pytest.raises(asperity.Error, match="every point plastic carries"):
+        solver.at_pressure(hardness)
+
+
 def test_max_memory_refused_before_allocating():
     with pytest.raises(asperity.Error, match=r"\(64 x 64 points, padded to a 128 x 128 solve grid\) needs about "
                                              r"[0-9.]+ MB, more than the 1 MB allowed"):
