@@ -396,7 +396,8 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                                                : ", summit count " + approximately(data.summit_count_max_rel_error)) +
                     (curves.has_tension() ? " (pressure and stiffness relative to the gross, compressive + tensile; " : " (") +
                     approximately(data.safety_factor) + " x the largest measured at " +
-                    std::to_string(data.check_points) + " exact solves between the nodes; solver tolerance " +
+                    std::to_string(data.check_points) + " exact solves between the nodes, method " +
+                    to_string(data.bound_method) + "; solver tolerance " +
                     approximately(data.solver_tolerance) + ")");
   if (curves.has_tension()) {
     // the branch, as the table's description says (the generator's words: law_curves.cpp's describe)
