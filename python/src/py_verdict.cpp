@@ -185,8 +185,9 @@ void bind_fits(py::module_& m) {
 }
 
 void bind_assessment(py::module_& m) {
-  py::class_<topo::AssessmentOptions>(m, "AssessmentOptions", "The bootstrap and the tests of assess_sample.")
-      .def(py::init([](int bootstrap, std::uint64_t seed, int threads, double confidence, double significance,
+  py::class_<topo::AssessmentOptions> assessment_options(m, "AssessmentOptions",
+                                                         "The bootstrap and the tests of assess_sample.");
+  assessment_options.def(py::init([](int bootstrap, std::uint64_t seed, int threads, double confidence, double significance,
                        const std::optional<topo::FitOptions>& fit) {
              topo::AssessmentOptions options;
              options.bootstrap = bootstrap;
@@ -200,13 +201,8 @@ void bind_assessment(py::module_& m) {
            "bootstrap"_a = topo::AssessmentOptions{}.bootstrap, "seed"_a = 1, "threads"_a = 0, "confidence"_a = 0.95, "significance"_a = 0.05,
            "fit"_a = py::none(),
            "bootstrap: B parametric-bootstrap samples (0: no p-values, no intervals); seed: reproducible; threads:\n"
-           "0 for all cores; confidence of the intervals; significance of the tests for the verdict.")
-      .def_readwrite("bootstrap", &topo::AssessmentOptions::bootstrap)
-      .def_readwrite("seed", &topo::AssessmentOptions::seed)
-      .def_readwrite("threads", &topo::AssessmentOptions::threads)
-      .def_readwrite("confidence", &topo::AssessmentOptions::confidence)
-      .def_readwrite("significance", &topo::AssessmentOptions::significance)
-      .def_readwrite("fit", &topo::AssessmentOptions::fit);
+           "0 for all cores; confidence of the intervals; significance of the tests for the verdict.");
+  def_record_fields(assessment_options, true);
   // each result record's attributes from its one list (record_fields.hpp), its meanings the docstrings
   py::class_<topo::Interval> interval(
       m, "Interval", "A bootstrap interval [lo, hi] (ModelAssessment.shape_interval says how it was made).");
@@ -225,12 +221,9 @@ void bind_assessment(py::module_& m) {
       });
   py::class_<topo::Verdict> verdict(m, "Verdict", "Which model the evidence favours, and the evidence in words.");
   def_record_fields(verdict);
-  py::class_<topo::SampleAssessment>(m, "SampleAssessment", "The three models fitted to one sample, and a verdict.")
-      .def_readonly("name", &topo::SampleAssessment::name)
-      .def_readonly("n", &topo::SampleAssessment::n)
-      .def_readonly("models", &topo::SampleAssessment::models, "In HeightModel order: gaussian, weibull_tail, weibull_bounded.")
-      .def_readonly("verdict", &topo::SampleAssessment::verdict)
-      .def_readonly("options", &topo::SampleAssessment::options)
+  py::class_<topo::SampleAssessment> sample_assessment(m, "SampleAssessment",
+                                                       "The three models fitted to one sample, and a verdict.");
+  def_record_fields(sample_assessment)
       .def("model", [](const topo::SampleAssessment& a, const py::object& model) { return a.model(to_model(model)); },
            "model"_a, "The assessment of one model.");
   m.def(

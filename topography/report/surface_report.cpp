@@ -54,17 +54,15 @@ ordered_json assessment_json(const SampleAssessment& a) {
     mj["interval_shape"] = {number(m.shape.lo), number(m.shape.hi)};
     models.push_back(std::move(mj));
   }
-  return ordered_json{{"sample", a.name},
-                      {"n", a.n},
-                      {"surrogates", a.options.bootstrap},
-                      {"seed", a.options.seed},
-                      {"confidence", a.options.confidence},
-                      {"significance", a.options.significance},
-                      {"null_distributions", "from surrogate surfaces of the map's own spectrum with each model's "
-                                             "marginal, every statistic computed on them as on the map"},
-                      {"intervals", interval_method(a.model(HeightModel::weibull_tail).shape_interval)},
-                      {"models", models},
-                      {"verdict", record_json<ordered_json>(a.verdict)}};
+  // the sample's fields (its verdict's object among them), its options', how it was tested, its models
+  ordered_json sample = record_json<ordered_json>(a);
+  add_record_json(sample, a.options);
+  sample["null_distributions"] =
+      "from surrogate surfaces of the map's own spectrum with each model's marginal, every statistic computed on them "
+      "as on the map";
+  sample["intervals"] = interval_method(a.model(HeightModel::weibull_tail).shape_interval);
+  sample["models"] = models;
+  return sample;
 }
 
 ordered_json histogram_json(const HeightMap& map, int bins) {

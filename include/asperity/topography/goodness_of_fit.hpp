@@ -43,15 +43,19 @@ FitStatistics fit_statistics(const HeightDistribution& distribution, const std::
 // an option cannot make the assessment's time unbounded.
 inline constexpr int max_bootstrap = 100000;
 
+// B: bootstrap samples (assess_sample) or surrogate surfaces (the surface analysis), 0 to
+// max_bootstrap; 0: no p-values and no intervals (no test: the verdict says so). Its fields defined
+// once (record_fields.hpp): report.json's fits.* give B, the seed and the levels
+#define ASPERITY_ASSESSMENT_OPTIONS_FIELDS(X)                                                              \
+  X(int, bootstrap, "surrogates", "B, the bootstrap samples or surrogate surfaces (0: no test)", 99)      \
+  X(std::uint64_t, seed, "seed", "the ensemble's seed (reproducible)", 1)                                 \
+  X(int, threads, nullptr, "threads (0: the hardware's)")                                                 \
+  X(double, confidence, "confidence", "the intervals' confidence", 0.95)                                  \
+  X(double, significance, "significance", "the tests' significance, for the verdict", 0.05)              \
+  X(FitOptions, fit, nullptr, "the Weibull shape's search range of the fits")
+
 struct AssessmentOptions {
-  // B, bootstrap samples (assess_sample) or surrogate surfaces (the surface analysis), 0 to
-  // max_bootstrap; 0: no p-values and no intervals (no test: the verdict says so)
-  int bootstrap = 99;
-  std::uint64_t seed = 1;
-  int threads = 0;             // 0: the hardware's
-  double confidence = 0.95;    // of the intervals
-  double significance = 0.05;  // of the tests, for the verdict
-  FitOptions fit;
+  ASPERITY_ASSESSMENT_OPTIONS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 #define ASPERITY_INTERVAL_FIELDS(X)          \
@@ -129,12 +133,16 @@ struct Verdict {
   ASPERITY_VERDICT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
+// report.json's fits.summit_heights and fits.heights: these fields, the options' and the models'
+#define ASPERITY_SAMPLE_ASSESSMENT_FIELDS(X)                                                          \
+  X(std::string, name, "sample", "the sample: \"summit heights\", \"heights (thinned)\"")              \
+  X(std::size_t, n, "n", "its size")                                                                 \
+  X(std::vector<ModelAssessment>, models, nullptr, "in HeightModel order: gaussian, weibull_tail, weibull_bounded") \
+  X(Verdict, verdict, "verdict", "which model the evidence favours")                                \
+  X(AssessmentOptions, options, nullptr, "the bootstrap and the tests")
+
 struct SampleAssessment {
-  std::string name;          // "summit heights", "heights (thinned)"
-  std::size_t n = 0;
-  std::vector<ModelAssessment> models;  // in all_height_models order
-  Verdict verdict;
-  AssessmentOptions options;
+  ASPERITY_SAMPLE_ASSESSMENT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
   const ModelAssessment& model(HeightModel m) const { return models[static_cast<int>(m)]; }
 };
 
@@ -177,4 +185,6 @@ namespace asperity {
 ASPERITY_DEFINE_RECORD(topography::Interval, ASPERITY_INTERVAL_FIELDS)
 ASPERITY_DEFINE_RECORD(topography::ModelAssessment, ASPERITY_MODEL_ASSESSMENT_FIELDS)
 ASPERITY_DEFINE_RECORD(topography::Verdict, ASPERITY_VERDICT_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::AssessmentOptions, ASPERITY_ASSESSMENT_OPTIONS_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::SampleAssessment, ASPERITY_SAMPLE_ASSESSMENT_FIELDS)
 }  // namespace asperity
