@@ -246,7 +246,9 @@ TEST(ExactContactPlastic, ComplementarityWithDirectDisplacements) {
   std::printf("complementarity (in rms heights): free |gap| %.2e, open penetration %.2e, plastic gap %.2e; "
               "%zu plastic of %zu in contact\n",
               worst_free / rms, worst_open / rms, worst_plastic / rms, s.plastic_points, s.contact_points);
-  EXPECT_NEAR(load / static_cast<double>(n * n) / pressure, 1, 1e-12);
+  // the load as asked: to rounding by the rescaling (measured 1e-12), to 10 times the tolerance by
+  // the search on the position that takes over where the rescaling stalls
+  EXPECT_NEAR(load / static_cast<double>(n * n) / pressure, 1, 10 * options.tolerance);
   EXPECT_LT(worst_free / rms, 1e-6);
   EXPECT_LT(worst_open / rms, 1e-6);
   EXPECT_LT(worst_plastic / rms, 1e-6);

@@ -1339,7 +1339,8 @@ ContactStep ExactContact::solve_pressure(double pressure) {
 }
 
 ContactStep ExactContact::plastic_pressure_search(double pressure, double approach, int iterations) {
-  const double tolerance = options_.tolerance * pressure;
+  // as the mean-gap search: ten times the solves' own tolerance, which their load carries as noise
+  const double tolerance = 10 * options_.tolerance * pressure;
   double low = -INFINITY, high = INFINITY;  // positions with too much load, too little
   double unbracketed = 1e-3 * rms_;         // the step while a side is missing, doubled each time
   ContactStep step;
