@@ -61,7 +61,8 @@ set(allowed_white_box ${runtime_public} detail generator ${topography_groups})
 # The private headers tests, benchmarks and fuzzers may use (their CMake targets say so too:
 # asperity_runtime_test_seams, asperity_topography_test_seams).
 # A seam is included by its name, or (the topography's) as "PART/name.hpp".
-set(seams runtime/table/replace_file.hpp runtime/core/kernel/kernels.hpp topography/input/md5.hpp
+set(seams runtime/table/replace_file.hpp runtime/core/kernel/kernels.hpp runtime/core/kernel/exp_x86.hpp
+    topography/input/md5.hpp
     topography/verdict/spacing_fit.hpp topography/verdict/vector_math.hpp topography/statistics/fft.hpp
     apps/asperity/eval_csv.hpp
     apps/asperity/law_options.hpp tests/reference.hpp
