@@ -13,6 +13,7 @@
 
 #include "asperity/curve.hpp"
 #include "reference.hpp"
+#include "test_subsample.hpp"
 
 namespace asperity::test {
 
@@ -27,12 +28,6 @@ struct Probe {
   bool closed_form = false;
 };
 
-// ASPERITY_TEST_SUBSAMPLE=k: the sweeps keep every k-th point. The sanitizer pass of CI uses it
-// (it checks memory and undefined behaviour; the full numerical sweep runs in the optimized pass).
-inline std::size_t subsample_stride() {
-  const char* text = std::getenv("ASPERITY_TEST_SUBSAMPLE");
-  return text ? static_cast<std::size_t>(std::max(1L, std::strtol(text, nullptr, 10))) : 1;
-}
 
 // Fills reference, value and error of every probe (relative error |X/X_ref - 1|, from logs),
 // every subsample_stride()-th probe only where that is above 1.
