@@ -158,27 +158,28 @@ void to_weibull_marginal(HeightMap& map, double shape, bool bounded) {
                       (bounded ? ", mirrored (bounded above)" : ", tail up"));
 }
 
-HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, double dy, CorrelationFunction function,
-                                double correlation_length, std::uint64_t seed) {
-  check_intervals(dx, dy);
-  if (nx < 3 || ny < 3 || nx > max_field_points / ny)
-    throw Error("spectral_random_field: needs 3 x 3 points and at most " + std::to_string(max_field_points));
-  if (!(correlation_length > 0 && correlation_length <= max_field_correlation))
-    throw Error("spectral_random_field: the correlation length must lie in (0, 65536] points");
-  const std::size_t px = 2 * nx, py = 2 * ny, half = px / 2 + 1;
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// A Gaussian field drawn on a periodic px x py grid and cut to its first nx x ny points, of unit
+// variance in expectation: each half-plane Fourier coefficient a complex normal (one mt19937_64, in
+// row order) of variance power(kx, ky), kx = 2 pi i / px and ky = 2 pi j / py radians a point (ky
+// signed: j above py / 2 is j - py), the origin's power 0. What spectral_random_field and
+// self_affine_random_field share; their spectra are the `power` they pass.
+template <class Power>
+HeightMap field_from_spectrum(std::size_t nx, std::size_t ny, double dx, double dy, std::size_t px, std::size_t py,
+                              Power power_at, std::uint64_t seed, std::string source) {
+  const std::size_t half = px / 2 + 1;
   std::vector<detail::Complex> coefficients(py * half);
   std::mt19937_64 engine(seed);
-  const double pi = 3.14159265358979323846, xi = correlation_length;
   double total = 0;  // the spectrum's sum over the full plane: the field's variance before scaling
   for (std::size_t j = 0; j < py; ++j)
     for (std::size_t i = 0; i < half; ++i) {
-      const double qx = 2 * pi * static_cast<double>(i) / static_cast<double>(px);
-      const double qy = 2 * pi * static_cast<double>(j <= py / 2 ? j : py - j) / static_cast<double>(py) *
+      const double kx = 2 * pi * static_cast<double>(i) / static_cast<double>(px);
+      const double ky = 2 * pi * static_cast<double>(j <= py / 2 ? j : py - j) / static_cast<double>(py) *
                         (j <= py / 2 ? 1.0 : -1.0);
-      const double q2 = qx * qx + qy * qy;
-      const double power = (i == 0 && j == 0) ? 0
-                           : function == CorrelationFunction::gaussian ? std::exp(-q2 * xi * xi / 4)
-                                                                       : std::pow(1 + q2 * xi * xi, -1.5);
+      const double power = (i == 0 && j == 0) ? 0 : power_at(kx, ky);
       // each half-plane coefficient stands for itself and its conjugate (but for the self-conjugate columns)
       const bool self_conjugate = i == 0 || (px % 2 == 0 && i == px / 2);
       total += self_conjugate ? power : 2 * power;
@@ -196,12 +197,31 @@ HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, doubl
   map.dx = dx;
   map.dy = dy;
   map.format = "synthetic";
-  map.source = std::string("synthetic ") + (function == CorrelationFunction::gaussian ? "Gaussian" : "exponential") +
-               "-correlated field";
+  map.source = std::move(source);
   map.heights.resize(nx * ny);
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) map.heights[j * nx + i] = scale * padded[j * px + i];
   return map;
+}
+
+}  // namespace
+
+HeightMap spectral_random_field(std::size_t nx, std::size_t ny, double dx, double dy, CorrelationFunction function,
+                                double correlation_length, std::uint64_t seed) {
+  check_intervals(dx, dy);
+  if (nx < 3 || ny < 3 || nx > max_field_points / ny)
+    throw Error("spectral_random_field: needs 3 x 3 points and at most " + std::to_string(max_field_points));
+  if (!(correlation_length > 0 && correlation_length <= max_field_correlation))
+    throw Error("spectral_random_field: the correlation length must lie in (0, 65536] points");
+  const double xi = correlation_length;
+  const auto power = [&](double kx, double ky) {
+    const double q2 = kx * kx + ky * ky;
+    return function == CorrelationFunction::gaussian ? std::exp(-q2 * xi * xi / 4) : std::pow(1 + q2 * xi * xi, -1.5);
+  };
+  return field_from_spectrum(nx, ny, dx, dy, 2 * nx, 2 * ny, power, seed,
+                             std::string("synthetic ") +
+                                 (function == CorrelationFunction::gaussian ? "Gaussian" : "exponential") +
+                                 "-correlated field");
 }
 
 HeightMap self_affine_random_field(std::size_t nx, std::size_t ny, double dx, double dy, double hurst,
@@ -214,40 +234,15 @@ HeightMap self_affine_random_field(std::size_t nx, std::size_t ny, double dx, do
   if (side > max_field_noise_points / side)
     throw Error("self_affine_random_field: a draw of " + std::to_string(side) + " x " + std::to_string(side) +
                 " points is more than " + std::to_string(max_field_noise_points));
-  const std::size_t px = side, py = side, half = px / 2 + 1;
-  std::vector<detail::Complex> coefficients(py * half);
-  std::mt19937_64 engine(seed);
-  const double pi = 3.14159265358979323846;
-  double total = 0;  // the spectrum's sum over the full plane: the field's variance before scaling
-  for (std::size_t j = 0; j < py; ++j)
-    for (std::size_t i = 0; i < half; ++i) {
-      const double qx = 2 * pi * static_cast<double>(i) / (static_cast<double>(px) * dx);
-      const double qy = 2 * pi * (j <= py / 2 ? static_cast<double>(j) : static_cast<double>(j) - static_cast<double>(py)) /
-                        (static_cast<double>(py) * dy);
-      const double q2 = qx * qx + qy * qy;
-      // C(q) = q^(-2(1 + H)), q in units of 1/dx (its scale is the normalization's): no power overflows
-      const double power = (i == 0 && j == 0) ? 0 : std::pow(q2 * dx * dx, -(1 + hurst));
-      const bool self_conjugate = i == 0 || (px % 2 == 0 && i == px / 2);
-      total += self_conjugate ? power : 2 * power;
-      const double a = normal(engine), b = normal(engine);
-      coefficients[j * half + i] = std::sqrt(power / 2) * detail::Complex(a, b);
-    }
-  detail::make_hermitian_columns(coefficients.data(), py, px);
-  std::vector<double> padded(px * py);
-  detail::inverse_2d(coefficients.data(), padded.data(), py, px);
-  const double scale = static_cast<double>(px) * static_cast<double>(py) / std::sqrt(total);
-  HeightMap map;
-  map.nx = nx;
-  map.ny = ny;
-  map.dx = dx;
-  map.dy = dy;
-  map.format = "synthetic";
-  map.source = "synthetic self-affine field (H " + std::to_string(hurst) + ", no roll-off, cut from a draw " +
-               std::to_string(oversize) + " times the map)";
-  map.heights.resize(nx * ny);
-  for (std::size_t j = 0; j < ny; ++j)
-    for (std::size_t i = 0; i < nx; ++i) map.heights[j * nx + i] = scale * padded[j * px + i];
-  return map;
+  // C(q) = q^(-2(1 + H)), q in units of 1/dx (its scale is the normalization's): no power overflows
+  const double aspect = dx / dy;
+  const auto power = [&](double kx, double ky) {
+    const double ky_dx = ky * aspect;  // the y wavenumber in radians per dx
+    return std::pow(kx * kx + ky_dx * ky_dx, -(1 + hurst));
+  };
+  return field_from_spectrum(nx, ny, dx, dy, side, side, power, seed,
+                             "synthetic self-affine field (H " + std::to_string(hurst) +
+                                 ", no roll-off, cut from a draw " + std::to_string(oversize) + " times the map)");
 }
 
 }  // namespace asperity::topography
