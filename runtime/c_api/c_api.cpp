@@ -65,8 +65,12 @@ namespace {
 // Whether every x[i] is finite: a bit test the compiler vectorizes (exponent field all ones ->
 // bit 63 of (bits & field) + 2^52), eight at a time, where a branch per separation was 8% of
 // asperity_eval_batch's samples (perf, bench_lookup BM_BatchCApi); on x86 built also for AVX2
-// and AVX-512, chosen at load time (6.6%, most of it the input's first trip from L2)
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+// and AVX-512, chosen at load time (6.6%, most of it the input's first trip from L2). Not under a
+// sanitizer: the clones' resolver runs while the dynamic loader relocates the library, before the
+// sanitizer's runtime is set up (ThreadSanitizer's test_hot_path crashed there, in
+// elf_machine_lazy_rel).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 bool all_finite(const double* x, size_t n) {
