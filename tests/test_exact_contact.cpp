@@ -19,6 +19,7 @@
 #include "asperity/error.hpp"
 #include "asperity/detail/table_schema.hpp"
 #include "asperity/topography/exact_contact.hpp"
+#include "exact_contact_shapes.hpp"
 #include "asperity/topography/exact_contact_table.hpp"
 #include "asperity/topography/self_affine.hpp"
 
@@ -26,22 +27,7 @@ namespace {
 using namespace asperity::topography;
 constexpr double pi = 3.14159265358979323846;
 
-// A paraboloid of radius R centred on the map: the gap of a sphere over a flat.
-HeightMap sphere(std::size_t n, double side, double radius) {
-  HeightMap map;
-  map.nx = map.ny = n;
-  map.dx = map.dy = side / static_cast<double>(n);
-  map.source = "sphere";
-  map.format = "synthetic";
-  map.heights.resize(n * n);
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double x = (static_cast<double>(i) + 0.5 - n / 2.0) * map.dx;
-      const double y = (static_cast<double>(j) + 0.5 - n / 2.0) * map.dy;
-      map.heights[j * n + i] = -(x * x + y * y) / (2 * radius);
-    }
-  return map;
-}
+using asperity::test::sphere_map;  // a paraboloid of radius R: the gap of a sphere over a flat
 
 // g cos(2 pi x / lambda), one wavelength across nx points, constant along y (4 rows): the
 // plane-strain wavy surface.
@@ -72,7 +58,7 @@ HertzErrors hertz(std::size_t n, ContactKernel kernel) {
   options.contact_modulus = modulus;
   options.boundary = ContactBoundary::padded;
   options.kernel = kernel;
-  ExactContact solver(sphere(n, side, radius), options);
+  ExactContact solver(sphere_map(n, side, radius), options);
   const ContactStep step = solver.at_pressure(load / (side * side));
   EXPECT_LE(step.residual, options.tolerance);
   EXPECT_EQ(step.clusters, 1u);

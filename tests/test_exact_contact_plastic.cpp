@@ -14,6 +14,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/topography/exact_contact.hpp"
+#include "exact_contact_shapes.hpp"
 #include "asperity/topography/self_affine.hpp"
 
 namespace {
@@ -22,21 +23,7 @@ constexpr double pi = 3.14159265358979323846;
 constexpr double modulus = 1e11, radius = 1e-2, side = 1e-3;
 
 // A paraboloid of radius R centred on the map: the gap of a sphere over a flat.
-HeightMap sphere(std::size_t n) {
-  HeightMap map;
-  map.nx = map.ny = n;
-  map.dx = map.dy = side / static_cast<double>(n);
-  map.source = "sphere";
-  map.format = "synthetic";
-  map.heights.resize(n * n);
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double x = (static_cast<double>(i) + 0.5 - n / 2.0) * map.dx;
-      const double y = (static_cast<double>(j) + 0.5 - n / 2.0) * map.dy;
-      map.heights[j * n + i] = -(x * x + y * y) / (2 * radius);
-    }
-  return map;
-}
+HeightMap sphere(std::size_t n) { return asperity::test::sphere_map(n, side, radius); }
 
 // A flat-ended punch of radius a (the points whose centres are within it at 0, the rest `depth`
 // below): its contact never leaves the punch's face.
