@@ -378,6 +378,8 @@ class ContactStep:
     clusters: int
     plastic_area_fraction: float
     plastic_points: int
+    adhesive_pressure: float
+    adhesive_points: int
     stiffness: float
     stiffness_per_area: float
     approach_stiffness: float

@@ -151,8 +151,9 @@ std::size_t exact_contact_memory(std::size_t nx, std::size_t ny, const ExactCont
   // the transforms' per-thread rows and columns
   const double threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   bytes += threads * (sx + sy) * sizeof(std::complex<double>);
+  if (is_adhesive(options)) bytes += solve_points * (sizeof(double) + 1);  // the map's own heights, the cohesive zone
   double total = bytes;
-  if (options.coarse_start && nx >= 2 * coarse_start_points && ny >= 2 * coarse_start_points) {
+  if (options.coarse_start && !is_adhesive(options) && nx >= 2 * coarse_start_points && ny >= 2 * coarse_start_points) {
     ExactContactOptions coarse = options;
     coarse.stiffness = false;
     const std::size_t cx = (nx + 1) / 2, cy = (ny + 1) / 2;
@@ -289,6 +290,16 @@ void check_contact_options(const ExactContactOptions& options) {
   if (options.threads < 0 || options.threads > 1024) throw Error("threads must be from 0 to 1024");
   if (std::isnan(options.hardness) || options.hardness < 0)
     throw Error("the hardness must be 0 (elastic), positive or infinite (elastic) [Pa], got " + number(options.hardness));
+  const double work = options.work_of_adhesion, stress = options.adhesive_stress;
+  if (!(std::isfinite(work) && work >= 0))
+    throw Error("the work of adhesion must be 0 (no adhesion) or finite and positive [J/m^2], got " + number(work));
+  if (!(std::isfinite(stress) && stress >= 0))
+    throw Error("the adhesive stress must be 0 (no adhesion) or finite and positive [Pa], got " + number(stress));
+  if ((work > 0) != (stress > 0))
+    throw Error("adhesion needs both the work of adhesion [J/m^2] and the adhesive (Dugdale) stress [Pa], positive: got " +
+                number(work) + " and " + number(stress));
+  if (work > 0 && is_plastic(options))
+    throw Error("adhesion with a hardness is not solved: give one of them");
 }
 
 // The map's valid heights: how many, their mean, their rms about it and the highest above it.
@@ -397,6 +408,11 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   const double modulus = options.contact_modulus;
   plastic_ = is_plastic(options);
   hardness_ = plastic_ ? options.hardness : HUGE_VAL;
+  adhesive_ = is_adhesive(options);
+  if (adhesive_) {
+    adhesive_stress_ = options.adhesive_stress;
+    adhesive_range_ = options.work_of_adhesion / options.adhesive_stress;
+  }
   threads_ = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   nx_ = map.nx;
   ny_ = map.ny;
@@ -437,11 +453,16 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   else
     make_spectral_kernel(modulus);
   make_preconditioner_stencil();
+  if (adhesive_) {
+    base_heights_ = heights_;
+    cohesive_.assign(heights_.size(), 0);
+  }
 
   // The coarse start: the map coarsened 2 x 2 (each coarse point the mean of the valid points of
   // its block; an odd last row or column a block of its own), solved with the same options less
   // the stiffness and to a looser tolerance, itself started from a coarser map.
-  if (options_.coarse_start && nx_ >= 2 * coarse_start_points && ny_ >= 2 * coarse_start_points) {
+  // (not with adhesion: each step continues the last one's cohesive zone, its branch)
+  if (options_.coarse_start && !adhesive_ && nx_ >= 2 * coarse_start_points && ny_ >= 2 * coarse_start_points) {
     const HeightMap coarse = coarsened_2x2(map);
     const ExactContactOptions coarse_options = coarse_start_options(options);
     try {
@@ -1190,6 +1211,16 @@ ContactStep ExactContact::describe(const Solve& solve) {
   step.plastic_area_fraction = static_cast<double>(step.plastic_points) / map_points;
   step.max_pressure = highest;
   step.clusters = count_clusters(contact, nx_, ny_, options_.boundary == ContactBoundary::periodic);
+  if (adhesive_) {
+    // the tension sigma0 on the cohesive zone (every contact point is in it: its gap is 0)
+    for (std::size_t j = 0; j < ny_; ++j)
+      for (std::size_t i = 0; i < nx_; ++i) step.adhesive_points += cohesive_[j * sx_ + i];
+    step.adhesive_pressure = adhesive_stress_ * static_cast<double>(step.adhesive_points) / map_points;
+    step.pressure -= step.adhesive_pressure;
+    step.load = step.pressure * nominal_area_;
+    step.max_pressure = step.contact_points > 0 ? highest - adhesive_stress_
+                                                : (step.adhesive_points > 0 ? -adhesive_stress_ : 0.0);
+  }
   step.iterations = solve.iterations;
   step.solves = 1;
   step.residual = solve.residual;
@@ -1243,6 +1274,7 @@ void ExactContact::find_pressure_range() {
 }
 
 void ExactContact::check_pressure(double pressure) const {
+  if (adhesive_) refuse_pressure_with_adhesion(pressure);
   if (!(std::isfinite(pressure) && pressure >= 0))
     throw Error("the mean pressure must be finite and non-negative, got " + number(pressure));
   const double modulus = options_.contact_modulus;
@@ -1381,7 +1413,13 @@ ContactStep ExactContact::plastic_pressure_search(double pressure, double approa
 ContactStep ExactContact::at_mean_gap(double mean_gap) {
   if (!(std::isfinite(mean_gap) && mean_gap > 0))
     throw Error("the mean gap must be finite and positive, got " + number(mean_gap));
+  if (adhesive_ && !(options_.boundary == ContactBoundary::periodic && valid_points_ == nx_ * ny_))
+    throw Error("adhesive contact is solved at the flat's positions (at_approach; by mean gap only on a periodic map "
+                "without missing points, where the mean gap is the position): the mean gap of a " +
+                std::string(valid_points_ < nx_ * ny_ ? "map with missing points" : "padded map") +
+                " jumps with the contact (jump-in, pull-off) and is searched for by no solve");
   try {
+    if (adhesive_) return solve_adhesive(mean_gap);  // periodic, no missing points: the mean gap is the position
     return solve_mean_gap(mean_gap);
   } catch (const std::bad_alloc&) {
     out_of_memory("solving at a mean gap of " + number(mean_gap) + " m");
@@ -1471,7 +1509,10 @@ ContactStep ExactContact::solve_mean_gap(double mean_gap) {
 std::vector<double> ExactContact::pressure_field() const {
   std::vector<double> field(nx_ * ny_);
   for (std::size_t j = 0; j < ny_; ++j)
-    for (std::size_t i = 0; i < nx_; ++i) field[j * nx_ + i] = pressure_[j * sx_ + i];
+    for (std::size_t i = 0; i < nx_; ++i) {
+      const std::size_t k = j * sx_ + i;
+      field[j * nx_ + i] = pressure_[k] - (adhesive_ && cohesive_[k] ? adhesive_stress_ : 0.0);  // net: tension < 0
+    }
   return field;
 }
 

@@ -13,7 +13,14 @@
 // and it carries no incremental load. It neglects hardening, the plastic zone below the surface
 // and its interaction with the elastic field, and unloading (the flattening is not kept).
 //
-// Assumptions: small slopes (half-space theory), frictionless, linear elastic, no adhesion; the
+// Adhesive (ExactContactOptions::work_of_adhesion > 0): the Maugis-Dugdale cohesive zone on every
+// pixel: a tension sigma0 (adhesive_stress) wherever the gap is at most the range
+// h0 = work_of_adhesion / sigma0, in contact or not, besides the contact pressure p >= 0 where the
+// gap is 0. Solved at given positions of the flat (at_approach; at_mean_gap on a periodic map
+// without missing points), each step from the last step's contact and cohesive zone, so that
+// loading and unloading follow their own branches (jump-in, pull-off). Not with a hardness.
+//
+// Assumptions: small slopes (half-space theory), frictionless, linear elastic; the
 // map is sampled on its grid, the pressure constant over each pixel (love) or band-limited
 // (fourier); missing points (NaN) never touch and are left out of the mean gap.
 //
@@ -107,12 +114,22 @@ struct ExactContactOptions {
   // The hardness H [Pa]: the pressure no pixel exceeds (elastic-perfectly-plastic, above);
   // 0 or +inf: elastic (the default; its answers unchanged).
   double hardness = 0;
+  // Adhesion (Maugis-Dugdale, above): the work of adhesion [J/m^2] and the Dugdale stress sigma0
+  // [Pa], both positive or both 0 (no adhesion, the default; its answers unchanged). The range
+  // h0 = work_of_adhesion / adhesive_stress must be resolved by the grid: the cohesive zone's width
+  // (on a sphere about 0.75 a_s / lambda^2 at large Maugis parameter lambda) a few pixels at least
+  // (docs/exact-contact.md, "Adhesive contact").
+  double work_of_adhesion = 0;
+  double adhesive_stress = 0;
 };
 
 // True when the options ask for the capped pressure (a finite hardness > 0).
 inline bool is_plastic(const ExactContactOptions& options) {
   return options.hardness > 0 && options.hardness < HUGE_VAL;
 }
+
+// True when the options ask for adhesion (a work of adhesion > 0).
+inline bool is_adhesive(const ExactContactOptions& options) { return options.work_of_adhesion > 0; }
 
 // What one solver of an nx x ny map needs [bytes], counted from its arrays: on the solve grid
 // (the map's, or four times it padded) 8 arrays of doubles, a mask, the kernel and one complex
@@ -162,6 +179,10 @@ inline constexpr const char* max_memory_help =
   X(std::size_t, clusters, "clusters", "connected contact patches (4-neighbour; wrapped when periodic)")       \
   X(double, plastic_area_fraction, "plastic_area_fraction", "plastic points (p = hardness) / map points; 0 elastic") \
   X(std::size_t, plastic_points, "plastic_points", "map points at the hardness")                              \
+  X(double, adhesive_pressure, "adhesive_pressure_Pa",                                                         \
+    "the cohesive zone's tension over the map's area [Pa] (pressure includes it, less); 0 without adhesion")    \
+  X(std::size_t, adhesive_points, "adhesive_points",                                                           \
+    "map points under the adhesive stress: gap at most its range, in contact or not; 0 without adhesion")       \
   X(double, stiffness, "stiffness_N_per_m", "-dP/d(mean gap) [N/m], 0 without contact")                        \
   X(double, stiffness_per_area, "stiffness_per_area_N_per_m3", "-dp/d(mean gap) [N/m^3]")                      \
   X(double, approach_stiffness, "approach_stiffness_N_per_m",                                                  \
@@ -227,6 +248,12 @@ class ExactContact {
   // highest point: no contact), from the last solution. Throws asperity::Error for a gap not
   // finite and > 0, or no convergence.
   ContactStep at_mean_gap(double mean_gap);
+  // The contact with the flat at `approach` [m] above the mean plane (the rigid-body position:
+  // ContactStep::approach; for a padded Love solve from the far field), from the last solution.
+  // With adhesion, the cohesive zone and the contact are continued from the last step's (loading
+  // and unloading follow their branches). Throws asperity::Error for a position not finite, or no
+  // convergence.
+  ContactStep at_approach(double approach);
 
   std::size_t nx() const noexcept { return nx_; }
   std::size_t ny() const noexcept { return ny_; }
@@ -291,6 +318,11 @@ class ExactContact {
   // load against position) kept within the bracket found; from `approach`.
   ContactStep plastic_pressure_search(double pressure, double approach, int iterations);
   ContactStep solve_mean_gap(double mean_gap);
+  // With adhesion (exact_contact_adhesion.cpp): the flat at `approach`, the cohesive zone found by
+  // fixed-point passes (each a contact solve of the heights less the zone's displacement).
+  ContactStep solve_adhesive(double approach);
+  void set_adhesive_heights();  // heights_ = base_heights_ + G[sigma0 on the cohesive zone]
+  [[noreturn]] void refuse_pressure_with_adhesion(double pressure) const;
   [[noreturn]] void out_of_memory(const std::string& doing) const;
   // the constructor's parts (exact_contact.cpp)
   void allocate_solve_grid(const HeightMap& map, double mean);
@@ -318,6 +350,10 @@ class ExactContact {
   ContactPressureRange range_;
   double hardness_ = HUGE_VAL;       // the cap on the pressure (+inf elastic)
   bool plastic_ = false;             // a finite hardness
+  bool adhesive_ = false;            // a work of adhesion (Maugis-Dugdale)
+  double adhesive_stress_ = 0, adhesive_range_ = 0;  // sigma0 [Pa], h0 [m]
+  std::vector<double> base_heights_;   // adhesive: the map's heights on the solve grid (heights_ less the zone's pull)
+  std::vector<unsigned char> cohesive_;  // adhesive: the points under sigma0 (gap <= h0)
   double flattening_peak_ = 0;       // max K[h] (periodic, no missing points): full contact's peak less its mean
   double largest_compliance_ = 0;    // of the kernel [m/Pa]: the displacements' scale
   std::size_t memory_ = 0;           // exact_contact_memory of the map and options
