@@ -469,7 +469,7 @@ TEST(TopographyHostile, CorrelationLengthsByFft) {
   t::AnalysisOptions options;
   options.assessment.bootstrap = 0;
   options.fit_heights = false;
-  options.max_fit_sample = 5000;
+  options.max_fit_sample = 5000 / asperity::test::subsample_stride();  // the strip's summits still exceed it
   const auto start = std::chrono::steady_clock::now();
   const t::SurfaceAnalysis a = t::analyse_height_map(std::move(strip), options);
   std::printf("the 3 x %zu strip analysed in %.2f s\n", strip_length,
