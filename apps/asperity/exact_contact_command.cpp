@@ -41,7 +41,7 @@ struct Options {
       overclosure_datum;
   MapOptions map;             // how the map is read (map_options.hpp)
   MaterialOptions material;   // --modulus, or --e1 --nu1 --e2 --nu2
-  double tolerance = not_given, hardness = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
+  double tolerance = not_given, hardness = not_given, work_of_adhesion = not_given, adhesive_stress = not_given, table_safety = not_given, face_size = not_given, card_tolerance = not_given;
   long long max_iterations = 20000, max_points = 0;  // max_points 0: not given
   long long table_max_checks = 0;                    // 0: not given (topo::default_table_max_checks)
   std::string max_memory;  // empty: the memory available (topo::memory_limit_option)
@@ -149,10 +149,36 @@ void stage_fields(OutputTransaction& outputs, const Options& o, const topo::Exac
   outputs.stage(o.fields, field_name(step, "gap"), pgm_bytes(gap, map.nx, map.ny, top_gap, label + " gap"));
 }
 
-// What was solved, for the outputs' descriptions: "elastic", or with the hardness.
+// What was solved, for the outputs' descriptions: "elastic", or with the hardness, or the adhesion.
 std::string contact_model_words(const topo::ExactContactOptions& options) {
+  if (topo::is_adhesive(options))
+    return "adhesive (Maugis-Dugdale: work of adhesion " + format_double(options.work_of_adhesion) +
+           " J/m^2, adhesive stress " + format_double(options.adhesive_stress) + " Pa, range " +
+           format_double(options.work_of_adhesion / options.adhesive_stress) + " m)";
   return topo::is_plastic(options) ? "elastic-perfectly-plastic (hardness " + format_double(options.hardness) + " Pa)"
                                    : "elastic";
+}
+
+// --work-of-adhesion and --adhesive-stress: both or neither, and what adhesion is solved with.
+void adhesion_options(const Options& o, topo::ExactContactOptions& options, bool by_pressure) {
+  if (!given(o.work_of_adhesion) && !given(o.adhesive_stress)) return;
+  if (!given(o.work_of_adhesion) || !given(o.adhesive_stress))
+    usage("adhesion needs both --work-of-adhesion [J/m^2] and --adhesive-stress [Pa] (its range is their ratio)");
+  if (!(o.work_of_adhesion > 0) || !(o.adhesive_stress > 0))
+    usage("--work-of-adhesion and --adhesive-stress must be positive");
+  if (given(o.hardness)) usage("adhesion with --hardness is not solved: give one of them");
+  if (by_pressure)
+    usage("adhesive contact is solved at mean gaps (--gap or --sweep gap:FROM:TO:COUNT, loading then unloading in "
+          "the order given): its load is not monotone in the gap (pull-off), so a pressure can have two solutions "
+          "or none");
+  if (options.boundary != topo::ContactBoundary::periodic)
+    usage("adhesive contact by mean gap is solved on the periodic boundary (where the mean gap is the flat's "
+          "position); leave out --boundary padded");
+  if (!o.table.empty() || !o.card.empty())
+    usage("--table and --card hold the elastic contact's curves (no tension, one branch): leave them out with "
+          "adhesion");
+  options.work_of_adhesion = o.work_of_adhesion;
+  options.adhesive_stress = o.adhesive_stress;
 }
 
 // The contact-curves table of the solved nodes (with the solves between them that measure its
@@ -343,6 +369,7 @@ int run_exact_contact(const Options& o, const CLI::App& command) {
           "point, the default), mean-summit (the map's mean summit height) or mean-plane (the map's mean plane)");
   face_size_option(o.face_size, card_format, card_units, "--card-format");  // checked before any work
   const Steps steps = steps_from(o);
+  adhesion_options(o, options, steps.by_pressure);
   if (o.table.empty() && given(o.table_safety)) usage("--table-safety goes with --table");
   if (o.table.empty() && o.table_max_checks != 0) usage("--table-max-checks goes with --table");
   if (!o.table.empty()) {
@@ -491,6 +518,16 @@ void add_exact_contact_command(CLI::App& app) {
              "cap the contact pressure at H [Pa] on every point: elastic-perfectly-plastic (points at H are plastic; "
              "plastic_area_fraction, plastic_points); default: elastic")
       ->type_name("PA")->group(solver);
+  add_number(*command, "--work-of-adhesion", o.work_of_adhesion,
+             "with --adhesive-stress: adhesive contact, the Maugis-Dugdale cohesive zone: the tension of "
+             "--adhesive-stress on every point whose gap is within the range W / stress (adhesive_pressure_Pa, "
+             "adhesive_points); by mean gap, each step from the last (loading then unloading: the order given), "
+             "periodic. W [J/m^2]; default: no adhesion")
+      ->type_name("J/M2")->group(solver);
+  add_number(*command, "--adhesive-stress", o.adhesive_stress,
+             "the Dugdale stress sigma0 [Pa] of --work-of-adhesion (the range W / sigma0 should span a few pixels "
+             "of the cohesive zone: docs/exact-contact.md)")
+      ->type_name("PA")->group(solver);
   command->add_flag("--no-stiffness", o.no_stiffness, "skip the incremental solve (stiffness 0)")->group(solver);
   add_text(*command, "--max-memory", o.max_memory, topo::max_memory_help)->type_name("SIZE")->group(solver);
   add_quiet_option(*command, &o.quiet)->group(solver);
@@ -547,7 +584,9 @@ void add_exact_contact_command(CLI::App& app) {
       "mean_gap_m (the separation of the flat from the map's mean plane: the mean gap), \n"
       "separation_from_mean_summit_m (less the mean summit height: the GW curves' datum), approach_m\n"
       "(the flat's rigid-body position), area_fraction, real_area_m2, contact_points, clusters (4-neighbour\n"
-      "patches), plastic_area_fraction, plastic_points (at --hardness; 0 elastic), stiffness_N_per_m (-dP/d mean gap, from the incremental solve), stiffness_per_area_N_per_m3,\n"
+      "patches), plastic_area_fraction, plastic_points (at --hardness; 0 elastic),\n"
+      "adhesive_pressure_Pa, adhesive_points (the cohesive zone's tension and points; 0 without adhesion),\n"
+      "stiffness_N_per_m (-dP/d mean gap, from the incremental solve), stiffness_per_area_N_per_m3,\n"
       "approach_stiffness_N_per_m, max_pressure_Pa, iterations, solves, residual, stiffness_iterations,\n"
       "stiffness_residual; '#' lines first say what was solved (docs/exact-contact.md). A solve that does\n"
       "not converge is an error. Progress goes to standard error once a solve runs for 2 s.\n" +

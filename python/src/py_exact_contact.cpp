@@ -65,6 +65,17 @@ void bind_exact_contact_solves(py::class_<ExactContactHandle>& exact_contact) {
           },
           "mean_gap"_a, "The contact at a mean gap [m] > 0 (the separation from the mean plane).")
       .def(
+          "at_approach",
+          [](ExactContactHandle& h, double approach) {
+            return without_gil([&] {
+              std::lock_guard<std::mutex> guard(h.lock);
+              return h.solver.at_approach(approach);
+            });
+          },
+          "approach"_a,
+          "The contact with the flat at `approach` [m] above the mean plane (ContactStep.approach; padded Love: from\n"
+          "the far field), from the last solution; with adhesion the cohesive zone continues the last step's.")
+      .def(
           "write_table",
           [](ExactContactHandle& h, const PathName& path, const std::vector<double>& pressures, double safety_factor,
              const std::string& description, bool overwrite, std::size_t max_checks) {
@@ -178,14 +189,21 @@ void bind_exact_contact(py::module_& m) {
       "solver's numerical range raises asperity.Error before iterating, naming the bound; a periodic map without\n"
       "missing points pressed flat (above its full-contact pressure, from one FFT) is answered in closed form.\n"
       "hardness [Pa]: the pressure capped at it on every point (elastic-perfectly-plastic: points at it are\n"
-      "plastic, ContactStep.plastic_points; 0 or inf: elastic); a pressure at or above plastic_limit raises.");
+      "plastic, ContactStep.plastic_points; 0 or inf: elastic); a pressure at or above plastic_limit raises.\n"
+      "work_of_adhesion [J/m^2] with adhesive_stress [Pa]: adhesive (the Maugis-Dugdale cohesive zone: the tension\n"
+      "adhesive_stress wherever the gap is within work_of_adhesion / adhesive_stress; ContactStep.adhesive_pressure,\n"
+      "adhesive_points), solved by at_approach (or at_mean_gap, periodic without missing points), each step from\n"
+      "the last (loading and unloading follow their branches); at_pressure raises.");
   exact_contact
       .def(py::init([](const topo::HeightMap& map, double contact_modulus, const std::string& boundary,
                        const std::string& kernel, double tolerance, int max_iterations, int love_aliases,
                        bool stiffness, int threads, const std::string& solver, bool coarse_start,
-                       std::optional<std::size_t> max_memory, double hardness) {
+                       std::optional<std::size_t> max_memory, double hardness, double work_of_adhesion,
+                       double adhesive_stress) {
              topo::ExactContactOptions options;
              options.hardness = hardness;
+             options.work_of_adhesion = work_of_adhesion;
+             options.adhesive_stress = adhesive_stress;
              options.contact_modulus = contact_modulus;
              if (!topo::parse_contact_boundary(boundary, options.boundary))
                throw py::value_error("boundary must be 'periodic' or 'padded', not '" + boundary + "'");
@@ -205,7 +223,7 @@ void bind_exact_contact(py::module_& m) {
            "map"_a, py::kw_only(), "contact_modulus"_a, "boundary"_a = "periodic", "kernel"_a = "fourier",
            "tolerance"_a = 1e-8, "max_iterations"_a = 20000, "love_aliases"_a = 16, "stiffness"_a = true,
            "threads"_a = 0, "solver"_a = "preconditioned", "coarse_start"_a = true, "max_memory"_a = py::none(),
-           "hardness"_a = 0.0);
+           "hardness"_a = 0.0, "work_of_adhesion"_a = 0.0, "adhesive_stress"_a = 0.0);
   bind_exact_contact_solves(exact_contact);
   exact_contact
       .def_property_readonly("nx", [](const ExactContactHandle& h) { return h.solver.nx(); })

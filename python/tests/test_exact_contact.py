@@ -203,6 +203,33 @@ def test_hardness_caps_the_pressure():
         solver.at_pressure(hardness)
 
 
+def test_adhesion_loading_and_unloading():
+    # Westergaard's wavy surface with a Maugis-Dugdale zone: approached by mean gap down then up,
+    # the unloading carries tension where the loading, at the same gap, carried less (hysteresis)
+    modulus, wavelength, amplitude = 1e9, 1e-3, 1e-6
+    work, stress = 2.0, 1e7   # range 0.2 um; Johnson's (1995) alpha = (2 w L / (pi^2 E* g^2))^1/2 = 0.64
+    solver = topography.ExactContact(wavy(64), contact_modulus=modulus, work_of_adhesion=work, adhesive_stress=stress)
+    gaps = [3e-6, 2e-6, 1.2e-6, 0.8e-6]
+    loading = [solver.at_mean_gap(g) for g in gaps]
+    unloading = [solver.at_mean_gap(g) for g in reversed(gaps)]
+    assert loading[0].adhesive_points == 0 and loading[0].pressure == 0
+    assert all(s.adhesive_points >= s.contact_points for s in loading + unloading)
+    for s in loading + unloading:
+        assert s.load == pytest.approx(s.pressure * solver.nominal_area)
+        assert s.adhesive_pressure == pytest.approx(stress * s.adhesive_points / (64 * 4))
+    # at each gap at least the loading's tension on unloading, and more at some
+    differences = [u.pressure - l.pressure for u, l in zip(reversed(unloading), loading)]
+    assert max(differences) <= 1e-9 * stress and min(differences) < -0.05 * stress
+    assert loading[1].contact_points == 0 and unloading[-2].contact_points > 0  # at 2e-6 m: the contact kept
+    with pytest.raises(asperity.Error, match="adhesive contact is solved at the flat's positions"):
+        solver.at_pressure(1e5)
+    fresh = topography.ExactContact(wavy(64), contact_modulus=modulus, work_of_adhesion=work, adhesive_stress=stress)
+    step = fresh.at_approach(0.8e-6)
+    assert step.approach == 0.8e-6 and step.adhesive_points >= step.contact_points > 0
+    field = fresh.pressure_field()  # the net pressure: tension at the contact's edge, at most the adhesive stress
+    assert -stress <= np.min(field) < -0.5 * stress and step.max_pressure == pytest.approx(np.max(field))
+
+
 def test_max_memory_refused_before_allocating():
     with pytest.raises(asperity.Error, match=r"\(64 x 64 points, padded to a 128 x 128 solve grid\) needs about "
                                              r"[0-9.]+ MB, more than the 1 MB allowed"):

@@ -37,6 +37,8 @@ std::string exact_contact_json(const HeightMap& map, bool leveled, const ExactCo
         {"coarse_start", options.coarse_start},
         {"tolerance", options.tolerance},
         {"hardness_Pa", is_plastic(options) ? json(options.hardness) : json(nullptr)},
+        {"work_of_adhesion_J_per_m2", is_adhesive(options) ? json(options.work_of_adhesion) : json(nullptr)},
+        {"adhesive_stress_Pa", is_adhesive(options) ? json(options.adhesive_stress) : json(nullptr)},
         {"driven_by", by_pressure ? "pressure" : "mean_gap"}}},
       {"steps", steps_json}};
   return document.dump(2, ' ', false, json::error_handler_t::replace);
