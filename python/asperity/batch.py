@@ -102,7 +102,8 @@ def _record_key(record, field):
 
 
 # The keys a writer composes around a record's fields (not a record's field: a count, a derived
-# value, a name that stands for none), and the document's own
+# value, a name that stands for none; summits_fitted and surrogates are SurfaceAnalysis's fields,
+# written inside the fits and ensemble objects the writer composes), and the document's own
 _COMPOSED_PATHS = {
     **{key: ("surface", key) for key in ("nx", "ny", "dx_m", "dy_m")},
     "isotropic": ("spectral_moments", "isotropic"),
@@ -125,6 +126,11 @@ _MODEL_KEYS = {
     "shape_identified": _record_key(_topography.ModelAssessment, "shape_identified"),
 }
 _MODEL_NAME_KEY = _record_key(_topography.HeightDistribution, "model")
+# the contact comparison's (contact) and each model's (contact.models[]) keys, from their records' lists
+_CONTACT_KEYS = {field: _record_key(_topography.ContactComparison, field)
+                 for field in ("pressures", "measured_summits_in_contact", "models", "closest", "headline")}
+_MODEL_CONTACT_KEYS = {field: _record_key(_topography.ModelContact, field)
+                       for field in ("kind", "served", "at_pressures")}
 
 
 # ---- options: a plain, picklable description of an AnalysisOptions, and its fingerprint ----
@@ -385,35 +391,39 @@ def row_from_json(document, source=None, name=None) -> dict:
     if contact:
         # None where no model is named (too few measured summits in contact at every pressure), as
         # the CSV reads an empty cell back
-        row["contact_closest_model"] = contact["closest_fitted_model"] or None
-        row["contact_headline"] = contact["headline"]
+        row["contact_closest_model"] = contact[_CONTACT_KEYS["closest"]] or None
+        row["contact_headline"] = contact[_CONTACT_KEYS["headline"]]
+        # the keys the writer composes around the comparison's fields (the references, the spread)
+        # and into each model's states at the pressures of interest (its ratios)
         references = contact.get("references", {})
         exact_solved = bool(references.get("exact")) and _models_served(contact, _EXACT)
         row["contact_closest_to_exact"] = references.get("closest_to_exact") or None
-        models = {m["model"]: m for m in contact["models"]}
+        name, served, at_pressures = (_MODEL_CONTACT_KEYS[f] for f in ("kind", "served", "at_pressures"))
+        models = {m[name]: m for m in contact[_CONTACT_KEYS["models"]]}
         spread = contact["measured_summits_spread"]["stiffness_relative"]
-        in_contact = contact.get("measured_summits_in_contact", [])
-        for k, pressure in enumerate(contact["pressures_Pa"]):
+        in_contact = contact.get(_CONTACT_KEYS["measured_summits_in_contact"], [])
+        for k, pressure in enumerate(contact[_CONTACT_KEYS["pressures"]]):
             row[f"pressure_{k}_Pa"] = pressure
             row[f"measured_summits_stiffness_spread_{k}"] = spread[k] if k < len(spread) else None
             row[f"measured_summits_in_contact_{k}"] = in_contact[k] if k < len(in_contact) else None
             for label in _CONTACT_MODELS:
-                at = models.get(label, {}).get("at_pressures", [])
-                value = at[k].get("stiffness_over_measured_summits") if k < len(at) and models[label]["served"] else None
+                at = models.get(label, {}).get(at_pressures, [])
+                value = at[k].get("stiffness_over_measured_summits") if k < len(at) and models[label][served] else None
                 row[f"stiffness_over_measured_{k}_{label}"] = value
             if not exact_solved:
                 continue
             for label in _EXACT_MODELS:
-                at = models.get(label, {}).get("at_pressures", [])
-                served = k < len(at) and models[label]["served"]
-                row[f"stiffness_over_exact_{k}_{label}"] = at[k].get("stiffness_over_exact") if served else None
-                row[f"area_over_exact_{k}_{label}"] = at[k].get("area_over_exact") if served else None
+                at = models.get(label, {}).get(at_pressures, [])
+                is_served = k < len(at) and models[label][served]
+                row[f"stiffness_over_exact_{k}_{label}"] = at[k].get("stiffness_over_exact") if is_served else None
+                row[f"area_over_exact_{k}_{label}"] = at[k].get("area_over_exact") if is_served else None
     return row
 
 
 def _models_served(contact, label):
     """Whether the contact block holds a served curve of that label."""
-    return any(m["model"] == label and m["served"] for m in contact["models"])
+    name, served = _MODEL_CONTACT_KEYS["kind"], _MODEL_CONTACT_KEYS["served"]
+    return any(m[name] == label and m[served] for m in contact[_CONTACT_KEYS["models"]])
 
 
 def _failed_row(source, name, error, seconds=None):

@@ -103,30 +103,11 @@ void bind_report(py::module_& m) {
     return py::str("NoiseFloor(reached={!r}, resolution={!r})").format(f.reached, f.resolution);
   });
 
-  py::class_<topo::SurfaceAnalysis>(m, "SurfaceAnalysis",
+  py::class_<topo::SurfaceAnalysis> analysis(m, "SurfaceAnalysis",
                                     "A measured surface analysed: the map as analysed, statistics, moments, summits, the fits\n"
                                     "with their evidence, and the contact curves. to_dict() gives all of it as the JSON document\n"
-                                    "(its schema: SURFACE_JSON_SCHEMA) that `asperity surface --json` writes.")
-      .def_readonly("map", &topo::SurfaceAnalysis::map, "The map as analysed (leveled when asked).")
-      .def_readonly("leveled", &topo::SurfaceAnalysis::leveled)
-      .def_readonly("plane", &topo::SurfaceAnalysis::plane, "The plane subtracted.")
-      .def_readonly("statistics", &topo::SurfaceAnalysis::statistics)
-      .def_readonly("moments", &topo::SurfaceAnalysis::moments)
-      .def_readonly("correlation", &topo::SurfaceAnalysis::correlation)
-      .def_readonly("summits", &topo::SurfaceAnalysis::summits)
-      .def_readonly("sampling", &topo::SurfaceAnalysis::sampling, "Summits and moments at 1, 2, 4 times dx.")
-      .def_readonly("noise_floor", &topo::SurfaceAnalysis::noise_floor,
-                    "Whether the roughness is at the level of the heights' quantization (then no summits, fits\n"
-                    "or contact curves follow the statistics).")
-      .def_readonly("summit_heights", &topo::SurfaceAnalysis::summit_heights, "The fits of the summit heights.")
-      .def_readonly("summits_fitted", &topo::SurfaceAnalysis::summits_fitted,
-                    "The summit heights fitted (all, or a random subsample of AnalysisOptions.max_fit_sample).")
-      .def_readonly("heights", &topo::SurfaceAnalysis::heights,
-                    "The fits of the heights (a fixed random sample of points), or None.")
-      .def_readonly("surrogates", &topo::SurfaceAnalysis::surrogates, "The ensemble's size.")
-      .def_readonly("verdict", &topo::SurfaceAnalysis::verdict)
-      .def_readonly("contact", &topo::SurfaceAnalysis::contact, "The contact curves, or None (no contact modulus).")
-      .def_readonly("options", &topo::SurfaceAnalysis::options)
+                                    "(its schema: SURFACE_JSON_SCHEMA) that `asperity surface --json` writes.");
+  def_record_fields(analysis)  // its fields from its list (analysis.hpp), each with its meaning
       .def("to_dict", [](const topo::SurfaceAnalysis& a) {
         return py::module_::import("json").attr("loads")(path_text(topo::analysis_json(a)));
       }, "The analysis as a dict: the JSON document (schema SURFACE_JSON_SCHEMA); NaN is None.")

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "record_bindings.hpp"
 #include "topography_helpers.hpp"
 #include "asperity/topography/contact_comparison.hpp"
 #include "asperity/topography/persson_contact.hpp"
@@ -40,23 +41,11 @@ py::object states_record(py::handle type, const std::vector<PhysicalState>& stat
 
 void bind_persson_contact(py::module_& m) {
   // ---- Persson's theory of a map's spectrum (persson_contact.hpp) ----
-  py::class_<topo::RadialPowerSpectrum>(
+  py::class_<topo::RadialPowerSpectrum> spectrum(
       m, "RadialPowerSpectrum",
       "The isotropic power spectral density C(q) of a map [m^4] (integral d^2q C = variance), constant over\n"
-      "annuli [edges[k], edges[k + 1]) one wavenumber step 2 pi / L wide.")
-      .def_property_readonly("edges", [](const topo::RadialPowerSpectrum& s) { return to_array(s.edges); }, "[1/m]")
-      .def_property_readonly("density", [](const topo::RadialPowerSpectrum& s) { return to_array(s.density); }, "[m^4]")
-      .def_property_readonly("points", [](const topo::RadialPowerSpectrum& s) { return to_array(s.points); })
-      .def_property_readonly("edges_treatment",
-                             [](const topo::RadialPowerSpectrum& s) {
-                               return s.edges_treatment == topo::SpectrumEdges::none ? "none"
-                                      : s.edges_treatment == topo::SpectrumEdges::hann ? "hann"
-                                                                                         : "periodic_component";
-                             })
-      .def_readonly("map_variance", &topo::RadialPowerSpectrum::map_variance, "[m^2]")
-      .def_readonly("variance", &topo::RadialPowerSpectrum::variance, "2 pi integral q C dq [m^2]")
-      .def_readonly("mean_square_gradient", &topo::RadialPowerSpectrum::mean_square_gradient,
-                    "2 pi integral q^3 C dq");
+      "annuli [edges[k], edges[k + 1]) one wavenumber step 2 pi / L wide.");
+  def_record_fields(spectrum);  // its fields from its list (persson_contact.hpp)
   m.def(
       "radial_power_spectrum",
       [](const topo::HeightMap& map, const std::string& edges) {
@@ -172,37 +161,32 @@ void bind_contact_comparison(py::module_& m) {
           })
       .def_readwrite("exact_points", &topo::ContactOptions::exact_points)
       .def_readwrite("exact_tolerance", &topo::ContactOptions::exact_tolerance);
-  py::class_<topo::ModelContact>(m, "ModelContact", "The contact curve of one height model.")
+  // ModelContact's, SamplingContact's and ContactComparison's attributes from their lists
+  // (contact_comparison.hpp), each with its meaning; the states as one asperity.PhysicalState of
+  // arrays, the note as a path's text, the summits in contact as a list (as before the lists)
+  py::class_<topo::ModelContact> model_contact(m, "ModelContact", "The contact curve of one height model.");
+  model_contact
       .def_property_readonly("label", &topo::ModelContact::label,
                     "Its kind's name: measured-summits, measured-summits-own-radii, gaussian-moments, gaussian, weibull-tail,\n"
                     "weibull-bounded, persson or exact.")
-      .def_readonly("served", &topo::ModelContact::served)
       .def_property_readonly("note", [](const topo::ModelContact& c) { return path_text(c.note); },
-                             "The table that served it, or why there is no curve.")
-      .def_readonly("surface", &topo::ModelContact::surface)
-      .def_readonly("mean_summit_height", &topo::ModelContact::mean_summit_height, "[m], in the map's height frame.")
+                             record_meaning<topo::ModelContact>("note"))
       .def_property_readonly("curve", [](const topo::ModelContact& c) {
         return states_record(physical_state_type, c.curve);
-      }, "asperity.PhysicalState of arrays over the pressure range.")
+      }, record_meaning<topo::ModelContact>("curve"))
       .def_property_readonly("at_pressures", [](const topo::ModelContact& c) {
         return states_record(physical_state_type, c.at_pressures);
-      }, "asperity.PhysicalState of arrays at the pressures of interest.")
-      .def_property_readonly("stiffness_over_measured", [](const topo::ModelContact& c) { return to_array(c.stiffness_over_measured); })
-      .def_property_readonly("separation_minus_measured", [](const topo::ModelContact& c) { return to_array(c.separation_minus_measured); }, "[m]")
-      .def_property_readonly("stiffness_over_exact", [](const topo::ModelContact& c) { return to_array(c.stiffness_over_exact); })
-      .def_property_readonly("area_over_exact", [](const topo::ModelContact& c) { return to_array(c.area_over_exact); })
-      .def_property_readonly("separation_minus_exact", [](const topo::ModelContact& c) { return to_array(c.separation_minus_exact); }, "[m]");
-  py::class_<topo::ContactComparison>(m, "ContactComparison", "The contact curves of the fits side by side.")
-      .def_readonly("options", &topo::ContactComparison::options)
-      .def_property_readonly("pressures", [](const topo::ContactComparison& c) { return to_array(c.pressures); })
-      .def_readonly("pressure_min", &topo::ContactComparison::pressure_min)
-      .def_readonly("pressure_max", &topo::ContactComparison::pressure_max)
-      .def_readonly("nominal_area", &topo::ContactComparison::nominal_area)
-      .def_readonly("models", &topo::ContactComparison::models)
+      }, record_meaning<topo::ModelContact>("at_pressures"));
+  def_record_fields(model_contact);
+  py::class_<topo::SamplingContact> sampling_contact(
+      m, "SamplingContact", "The measured-summit answer at a coarser sampling (every factor-th point).");
+  def_record_fields(sampling_contact);
+  py::class_<topo::ContactComparison> comparison(m, "ContactComparison", "The contact curves of the fits side by side.");
+  comparison
       .def_property_readonly(
           "measured_summits_in_contact",
           [](const topo::ContactComparison& c) { return std::vector<std::size_t>(c.measured_summits_in_contact); },
-          "The measured summits in contact at each pressure (not scaled to the nominal area).")
+          record_meaning<topo::ContactComparison>("measured_summits_in_contact"))
       .def_property_readonly(
           "compared_at_pressures",
           [](const topo::ContactComparison& c) {
@@ -210,15 +194,8 @@ void bind_contact_comparison(py::module_& m) {
             for (std::size_t k = 0; k < c.pressures.size(); ++k) compared.push_back(c.compared_at(k));
             return compared;
           },
-          "At each pressure: at least MIN_SUMMITS_TO_COMPARE measured summits in contact, so models are compared there.")
-      .def_property_readonly(
-          "closest", [](const topo::ContactComparison& c) { return topo::contact_model_name(c.closest); },
-          "The fitted model nearest the measured summits at the pressures compared ('' where none is).")
-      .def_readonly("headline", &topo::ContactComparison::headline)
-      .def_readonly("exact_method", &topo::ContactComparison::exact_method, "How the exact contact was solved.")
-      .def_property_readonly("closest_to_exact",
-                             [](const topo::ContactComparison& c) { return topo::contact_model_name(c.closest_to_exact); })
-      .def_readonly("exact_headline", &topo::ContactComparison::exact_headline)
+          "At each pressure: at least MIN_SUMMITS_TO_COMPARE measured summits in contact, so models are compared there.");
+  def_record_fields(comparison)
       .def(
           "find",
           [](const topo::ContactComparison& c, const std::string& label) -> std::optional<topo::ModelContact> {

@@ -2,14 +2,22 @@
 // an attribute of its name with its meaning as the docstring, and the list itself as the class's
 // _record_fields (name, JSON key or None, meaning), which asperity.topography.record_fields(cls)
 // returns. A number, bool, string or nested record is read as itself, an enum bound in Python as
-// its member (else by its name), an optional enum by its name or "" (none), a fixed array as a tuple.
+// its member (else by its name), an optional enum by its name or "" (none), a fixed array as a tuple,
+// a vector of numbers as a new 1-d array (NumPy), another vector as a list. A field the class binds
+// itself before (a conversion of its own: a vector of states as one record of arrays, a text that
+// may not be UTF-8) is left as bound, its doc the list's meaning (record_meaning), and is listed.
 #pragma once
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "asperity/record_fields.hpp"
 
@@ -24,7 +32,19 @@ template <class T>
 struct optional_of<std::optional<T>> {
   using type = T;
 };
+template <class T>
+struct number_vector : std::false_type {};
+template <class T, class Allocator>
+struct number_vector<std::vector<T, Allocator>> : std::is_arithmetic<T> {};
 }  // namespace record_detail
+
+// A field's meaning from its record's list (the docstring of a field a binding converts itself)
+template <class Record>
+const char* record_meaning(const char* name) {
+  for (const RecordField& field : RecordFields<Record>::fields)
+    if (std::strcmp(field.name, name) == 0) return field.meaning;
+  throw std::logic_error(std::string("record_meaning: no field ") + name);
+}
 
 // Every field of Record's list on cls: read-only, or read-write (writable: an input record's)
 template <class Record, class... Options>
@@ -37,7 +57,18 @@ pybind11::class_<Record, Options...>& def_record_fields(pybind11::class_<Record,
     using Optional = typename record_detail::optional_of<T>::type;
     fields.append(py::make_tuple(field.name, field.column ? py::object(py::str(field.column)) : py::object(py::none()),
                                  field.meaning));
-    if constexpr (std::is_array_v<T>) {
+    if (py::hasattr(cls, field.name)) return;  // bound by the caller, its own conversion
+    if constexpr (record_detail::number_vector<T>::value) {
+      cls.def_property_readonly(
+          field.name,
+          [member](const Record& record) {
+            const T& values = record.*member;
+            py::array_t<typename T::value_type> out(static_cast<py::ssize_t>(values.size()));
+            std::copy(values.begin(), values.end(), out.mutable_data());
+            return out;
+          },
+          field.meaning);
+    } else if constexpr (std::is_array_v<T>) {
       cls.def_property_readonly(
           field.name,
           [member](const Record& record) {

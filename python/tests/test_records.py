@@ -5,16 +5,21 @@
 # each with its meaning as the docstring.
 import math
 
+import numpy as np
 import pytest
 
+import asperity
 from asperity import topography
 
 
 @pytest.fixture(scope="module")
 def analysis():
+    # with contact curves (the exact contact of the 64 x 64 map solved: its ratios too)
     field = topography.gaussian_random_field(64, 64, 1e-6, 1e-6, [topography.SpectrumComponent(2.0, 1e-16)], seed=3)
     return topography.analyse_height_map(field, topography.AnalysisOptions(
-        assessment=topography.AssessmentOptions(bootstrap=40, threads=2), max_height_sample=500))
+        assessment=topography.AssessmentOptions(bootstrap=40, threads=2), max_height_sample=500,
+        contact=topography.ContactOptions(contact_modulus=1e11, pressures=[1e6, 1e7], curve_points=5,
+                                          exact_points=2)))
 
 
 def written(record):
@@ -27,9 +32,26 @@ def as_json(value):
         return None
     if hasattr(type(value), "__members__"):
         return value.name.replace("_", "-")
-    if isinstance(value, tuple):
+    if isinstance(value, (tuple, list)):
         return [as_json(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return [as_json(v.item()) for v in value]
     return value
+
+
+def is_record_value(value):
+    """A nested record, a list of records or a record of arrays (the states): checked as its own record."""
+    if isinstance(value, list) and value:
+        value = value[0]
+    return hasattr(type(value), "_record_fields") or hasattr(type(value), "_fields")
+
+
+def same(a, b):
+    if isinstance(b, float):
+        return a == pytest.approx(b, rel=1e-15)
+    if isinstance(b, list):
+        return isinstance(a, list) and len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+    return a == b
 
 
 # (the record, its object in the document, its Python object(s), the keys composed around its fields)
@@ -57,6 +79,16 @@ def objects(a, d):
         ((topography.HeightDistribution, topography.FitResult, topography.ModelAssessment), models[1],
          [a.summit_heights.models[1].fit.distribution, a.summit_heights.models[1].fit, a.summit_heights.models[1]],
          model_keys),
+        # the document itself: the analysis's written records, and the sections composed around them
+        (topography.SurfaceAnalysis, d, [a],
+         {"schema", "surface", "leveling", "spectral_moments", "summits", "height_histogram", "ensemble", "fits",
+          "verdict", "contact", "next_steps"}),
+        (topography.ContactComparison, d["contact"], [a.contact],
+         {"contact_modulus_Pa", "compared_at_pressures", "min_measured_summits_to_compare", "pressure_range_Pa",
+          "tables", "measured_summits_spread", "references"}),
+        *[(topography.ModelContact, m, [a.contact.models[k]], set()) for k, m in enumerate(d["contact"]["models"])],
+        (topography.SamplingContact, d["contact"]["measured_summits_sampling_dependence"][0], [a.contact.sampling[0]],
+         set()),
     ]
 
 
@@ -69,25 +101,42 @@ def test_the_documents_objects_are_the_records_lists(analysis):
             for name, key in written(record).items():
                 assert key not in keys, f"{record.__name__}.{name}: key {key} twice"
                 keys.add(key)
-                expected = as_json(getattr(value, name))
-                if hasattr(type(expected), "_record_fields"):
-                    continue  # a nested record: its own object, checked as its own record
-                if isinstance(expected, float):
-                    assert obj[key] == pytest.approx(expected, rel=1e-15), f"{record.__name__}.{name}"
-                else:
-                    assert obj[key] == expected, f"{record.__name__}.{name}"
+                attribute = getattr(value, name)
+                if is_record_value(attribute):
+                    continue  # a nested record (or a list of them): its own object, checked as its own record
+                if isinstance(attribute, asperity.RoughSurface):  # a model's surface: its scales
+                    assert same(obj[key]["summit_radius_m"], as_json(attribute.summit_radius)), f"{record.__name__}.{name}"
+                    continue
+                assert same(obj[key], as_json(attribute)), f"{record.__name__}.{name}"
         assert not keys & composed
         assert set(obj) == keys | composed, f"{records[0].__name__}: {set(obj) ^ (keys | composed)}"
+
+
+def test_the_models_states_and_ratios(analysis):
+    """A model's states at the pressures of interest are its record's, given their ratios by the writer."""
+    document = analysis.to_dict()
+    for model, obj in zip(analysis.contact.models, document["contact"]["models"]):
+        assert obj["model"] == model.label
+        if not model.served:
+            continue
+        assert [s["nominal_pressure_Pa"] for s in obj["at_pressures"]] == pytest.approx(list(model.at_pressures.pressure))
+        assert len(obj["curve"]) == len(model.curve.pressure)
+        if len(model.stiffness_over_exact):
+            assert [s["stiffness_over_exact"] for s in obj["at_pressures"]] == pytest.approx(
+                list(model.stiffness_over_exact))
 
 
 # the Python attributes besides a record's fields: derived, per-summit arrays, methods
 DERIVED = {
     "Summits": {"i", "j", "heights", "mean_curvatures", "kappa1", "kappa2"},
     "ModelAssessment": {"interval_method"},
+    "ModelContact": {"label"},
+    "ContactComparison": {"compared_at_pressures"},
 }
 RECORDS = ["HeightStatistics", "SpectralMoments", "CorrelationLengths", "Summits", "SamplingRow", "NoiseFloor",
            "SurfaceVerdict", "Verdict", "NextSteps", "HeightDistribution", "FitResult", "ModelAssessment", "Interval",
-           "SampleAssessment", "AssessmentOptions"]
+           "SampleAssessment", "AssessmentOptions", "SurfaceAnalysis", "ContactComparison", "ModelContact",
+           "SamplingContact", "RadialPowerSpectrum"]
 
 
 @pytest.mark.parametrize("name", RECORDS)

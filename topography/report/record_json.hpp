@@ -1,7 +1,9 @@
 // A result record's JSON object, made from its list (asperity/record_fields.hpp): one key a
 // written field (its column), the member's own type (integers stay integers, bools bools); JSON has
 // no NaN or infinity: null for those; an enum by its name (to_string's, found beside the enum), an
-// optional enum by its name or "" (none), a fixed array as an array, a nested record as its object.
+// optional enum by its name or "" (none), a fixed array or a vector as an array (a vector of records:
+// an array of their objects), a nested record as its object, a model's surface (asperity::
+// RoughSurface) as rough_surface_json writes it.
 // The topography's JSON writers use it (nlohmann::json stays here: the runtime, where the lists
 // are, does not depend on it).
 #pragma once
@@ -9,8 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <type_traits>
+#include <vector>
 
 #include "asperity/record_fields.hpp"
+#include "asperity/surface.hpp"
 
 namespace asperity::topography {
 
@@ -19,13 +23,40 @@ struct is_optional_value : std::false_type {};
 template <class T>
 struct is_optional_value<std::optional<T>> : std::true_type {};
 
+template <class T>
+struct is_vector_value : std::false_type {};
+template <class T, class Allocator>
+struct is_vector_value<std::vector<T, Allocator>> : std::true_type {};
+
 template <class Json, class Record>
 void add_record_json(Json& object, const Record& record);
 
-// A member of a kind that has a JSON form (a field kept in memory only may have none)
+// A model's rough surface: its distribution and side by name, its Weibull shape (null for a
+// Gaussian, which has none), its height scale, summit radius and density
+template <class Json>
+Json rough_surface_json(const RoughSurface& surface) {
+  const auto number = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  Json object = Json::object();
+  object["distribution"] = to_string(surface.distribution);
+  object["side"] = to_string(surface.side);
+  object["shape"] = number(surface.distribution == Distribution::weibull ? surface.shape : NAN);
+  object["height_scale_m"] = number(surface.height_scale);
+  object["summit_radius_m"] = number(surface.summit_radius);
+  object["summit_density_per_m2"] = number(surface.summit_density);
+  return object;
+}
+
+// A member of a kind that has a JSON form (a field kept in memory only may have none; a vector
+// has one where its elements have)
 template <class Json, class T>
-constexpr bool json_writable = std::is_arithmetic_v<T> || std::is_enum_v<T> || is_optional_value<T>::value ||
-                               std::is_array_v<T> || is_record<T>::value || std::is_constructible_v<Json, const T&>;
+struct json_writable_type
+    : std::bool_constant<std::is_arithmetic_v<T> || std::is_enum_v<T> || is_optional_value<T>::value ||
+                         std::is_array_v<T> || is_record<T>::value || std::is_same_v<T, RoughSurface> ||
+                         std::is_constructible_v<Json, const T&>> {};
+template <class Json, class T, class Allocator>
+struct json_writable_type<Json, std::vector<T, Allocator>> : json_writable_type<Json, T> {};
+template <class Json, class T>
+constexpr bool json_writable = json_writable_type<Json, T>::value;
 
 // One field's value as JSON
 template <class Json, class T>
@@ -40,6 +71,12 @@ Json record_value_json(const T& value) {
     Json array = Json::array();
     for (const auto& element : value) array.push_back(record_value_json<Json>(element));
     return array;
+  } else if constexpr (is_vector_value<T>::value) {
+    Json array = Json::array();
+    for (const auto& element : value) array.push_back(record_value_json<Json, typename T::value_type>(element));
+    return array;
+  } else if constexpr (std::is_same_v<T, RoughSurface>) {
+    return rough_surface_json<Json>(value);
   } else if constexpr (is_record<T>::value) {
     Json object = Json::object();
     add_record_json(object, value);

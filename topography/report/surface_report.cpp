@@ -283,15 +283,14 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
   j["surface"] = {{"source", map.source},   {"format", map.format},     {"nx", map.nx},
                   {"ny", map.ny},           {"dx_m", map.dx},           {"dy_m", map.dy},
                   {"width_m", map.width()}, {"length_m", map.length()}, {"notes", map.notes}};
-  // each object a record's fields (its list, record_fields.hpp) and the keys composed around them
-  j["noise_floor"] = record_json<ordered_json>(a.noise_floor);
+  // each object a record's fields (its list, record_fields.hpp: SurfaceAnalysis's written records
+  // are in j already) and the keys composed around them
   j["noise_floor"]["rule"] = "Sq under 10 times the rms of rounding to the heights' quantization step (q / sqrt(12))";
   j["leveling"] = {{"leveled", a.leveled},
                    {"method", a.leveled ? "least-squares plane subtracted" : "none: the heights as read"},
                    {"offset_m", a.plane.offset},
                    {"slope_x", a.plane.slope_x},
                    {"slope_y", a.plane.slope_y}};
-  j["statistics"] = record_json<ordered_json>(a.statistics);
   ordered_json moments{
       {"method",
        "slopes by forward differences, curvatures by second differences (one discrete wavenumber); m2, m4 "
@@ -300,7 +299,6 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
   moments["isotropic"] = a.moments.anisotropy <= max_isotropic_anisotropy;
   moments["isotropy_limit"] = max_isotropic_anisotropy;
   j["spectral_moments"] = moments;
-  j["correlation"] = record_json<ordered_json>(a.correlation);
   j["correlation"]["lag_x_m"] = static_cast<double>(a.correlation.x) * map.dx;
   j["correlation"]["lag_y_m"] = static_cast<double>(a.correlation.y) * map.dy;
   const Summits& su = a.summits;
@@ -312,9 +310,6 @@ void describe_surface(const SurfaceAnalysis& a, ordered_json& j) {
   add_record_json(summits, su);
   summits["radius_method"] = "1 / mean over summits of -(h_xx + h_yy)/2 (3-point second differences)";
   j["summits"] = summits;
-  ordered_json sampling = ordered_json::array();
-  for (const SamplingRow& r : a.sampling) sampling.push_back(record_json<ordered_json>(r));
-  j["sampling_dependence"] = sampling;
   j["height_histogram"] = histogram_json(map, 60);
   j["ensemble"] = {{"surrogates", a.surrogates},
                    {"padded_grid", {a.padded_nx, a.padded_ny}},
@@ -335,24 +330,13 @@ ordered_json verdict_json(const SurfaceVerdict& v) {
   return verdict;
 }
 
-// one model's contact: its surface, its states at the asked pressures with its ratios to the
-// references, and its curve
-ordered_json model_contact_json(const ModelContact& mc, const ContactComparison& c) {
+// a model's states at the pressures of interest (its record's at_pressures, written from its list)
+// given their stiffness per area and their ratios to the Gaussian fit, the measured summits and the
+// exact contact
+void add_ratios(ordered_json& at, const ModelContact& mc, const ContactComparison& c) {
   const ModelContact* gaussian = c.find(ContactModelKind::gaussian);
-  ordered_json mj{{"model", mc.label()},
-                  {"mean_summit_height_m", number(mc.mean_summit_height)},
-                  {"served", mc.served},
-                  {"note", mc.note},
-                  {"surface",
-                   {{"distribution", asperity::to_string(mc.surface.distribution)},
-                    {"side", asperity::to_string(mc.surface.side)},
-                    {"shape", number(mc.surface.distribution == Distribution::weibull ? mc.surface.shape : NAN)},
-                    {"height_scale_m", mc.surface.height_scale},
-                    {"summit_radius_m", mc.surface.summit_radius},
-                    {"summit_density_per_m2", mc.surface.summit_density}}}};
-  ordered_json at = ordered_json::array();
   for (std::size_t k = 0; k < mc.at_pressures.size(); ++k) {
-    ordered_json sj = state_json(mc.at_pressures[k]);
+    ordered_json& sj = at[k];
     sj["stiffness_per_area_N_per_m3"] = number(mc.at_pressures[k].stiffness / c.nominal_area);
     if (gaussian && gaussian->served && k < gaussian->at_pressures.size()) {
       const PhysicalState& ref = gaussian->at_pressures[k];
@@ -369,13 +353,7 @@ ordered_json model_contact_json(const ModelContact& mc, const ContactComparison&
       sj["area_over_exact"] = number(mc.area_over_exact[k]);
       sj["mean_separation_minus_exact_m"] = number(mc.separation_minus_exact[k]);
     }
-    at.push_back(sj);
   }
-  mj["at_pressures"] = at;
-  ordered_json curve = ordered_json::array();
-  for (const PhysicalState& st : mc.curve) curve.push_back(state_json(st));
-  mj["curve"] = curve;
-  return mj;
 }
 
 // which tables served the fitted models' curves, as compare_contact chooses them
@@ -387,41 +365,30 @@ std::string tables_text(const ContactOptions& options) {
          "shape (shapes " + format_double(weibull_shape_min) + "-" + format_double(weibull_shape_max) + ")";
 }
 
-// the contact comparison: every model's curves beside the measured summits' (and the exact's)
+// the contact comparison: its record's written fields (every model's object among them, their
+// states at the pressures of interest given their ratios) and the keys composed from the others
 ordered_json contact_json(const ContactComparison& c) {
-  ordered_json models = ordered_json::array();
-  for (const ModelContact& mc : c.models) models.push_back(model_contact_json(mc, c));
+  ordered_json contact{{"contact_modulus_Pa", c.options.contact_modulus}};
+  add_record_json(contact, c);
+  for (std::size_t m = 0; m < c.models.size(); ++m) add_ratios(contact["models"][m]["at_pressures"], c.models[m], c);
   // at each pressure: enough measured summits in contact to name a closest model there
   std::vector<bool> compared;
   for (std::size_t k = 0; k < c.pressures.size(); ++k) compared.push_back(c.compared_at(k));
-  ordered_json contact{{"contact_modulus_Pa", c.options.contact_modulus},
-                       {"nominal_area_m2", c.nominal_area},
-                       {"pressures_Pa", c.pressures},
-                       {"measured_summits_in_contact", c.measured_summits_in_contact},
-                       {"compared_at_pressures", compared},
-                       {"min_measured_summits_to_compare", min_summits_to_compare},
-                       {"pressure_range_Pa", {c.pressure_min, c.pressure_max}},
-                       {"tables", tables_text(c.options)},
-                       {"models", models},
-                       {"measured_summits_spread",
-                        {{"meaning",
-                          "relative standard deviation of the measured-summit stiffness, and the standard "
-                          "deviation of its mean separation [m], over the surrogate ensemble: the "
-                          "uncertainty of every ratio to it"},
-                         {"stiffness_relative", c.measured_stiffness_spread},
-                         {"mean_separation_m", c.measured_separation_spread}}},
-                       {"closest_fitted_model", contact_model_name(c.closest)},
-                       {"headline", c.headline},
-                       {"references",
-                        {{"persson", c.options.persson},
-                         {"exact", c.find(ContactModelKind::exact) != nullptr},
-                         {"exact_method", c.exact_method},
-                         {"closest_to_exact", contact_model_name(c.closest_to_exact)},
-                         {"exact_headline", c.exact_headline}}}};
-  ordered_json sampling_contact = ordered_json::array();
-  for (const SamplingContact& r : c.sampling)
-    sampling_contact.push_back({{"factor", r.factor}, {"stiffness_over_finest", r.stiffness_over_finest}});
-  contact["measured_summits_sampling_dependence"] = sampling_contact;
+  contact["compared_at_pressures"] = compared;
+  contact["min_measured_summits_to_compare"] = min_summits_to_compare;
+  contact["pressure_range_Pa"] = {c.pressure_min, c.pressure_max};
+  contact["tables"] = tables_text(c.options);
+  contact["measured_summits_spread"] = {
+      {"meaning",
+       "relative standard deviation of the measured-summit stiffness, and the standard deviation of its mean "
+       "separation [m], over the surrogate ensemble: the uncertainty of every ratio to it"},
+      {"stiffness_relative", c.measured_stiffness_spread},
+      {"mean_separation_m", c.measured_separation_spread}};
+  contact["references"] = {{"persson", c.options.persson},
+                           {"exact", c.find(ContactModelKind::exact) != nullptr},
+                           {"exact_method", c.exact_method},
+                           {"closest_to_exact", contact_model_name(c.closest_to_exact)},
+                           {"exact_headline", c.exact_headline}};
   return contact;
 }
 
@@ -454,50 +421,41 @@ ordered_json law_json(const LawContact& law, const ContactComparison& c) {
                   {"area_over_elastic", number(law.area_over_elastic[k])},
                   {"stiffness_over_elastic", number(law.stiffness_over_elastic[k])}});
   }
-  ordered_json curve = ordered_json::array();
-  for (const PhysicalState& st : law.curve) curve.push_back(state_json(st));
-  return ordered_json{
-      {"law", law.law},
-      {"model", to_string(law.fit)},
-      {"model_reason", law.model_reason},
-      {"parameters", law_parameters_json(law)},
-      {"plasticity",
-       {{"summit_height_standard_deviation_m", number(law.summit_height_sd)},
-        {"summit_radius_m", number(law.summit_radius)},
-        {"contact_modulus_Pa", number(law.contact_modulus)},
-        {"hardness_Pa", number(law.hardness)},
-        {"critical_interference_m", number(law.critical_interference)},
-        {"valid_up_to_m", number(law.valid_up_to)},
-        {"psi", number(law.plasticity_index)},
-        {"psi_definition",
-         "(sigma_s / omega_c)^1/2 with the law's omega_c (Kogut-Etsion 2003's with the CEB/KE "
-         "omega_c; Jackson-Green's with theirs)"},
-        {"psi_gw", number(law.gw_plasticity_index)},
-        {"psi_gw_definition",
-         "(E*/H)(sigma_s/R)^1/2 (Greenwood-Williamson 1966; H: the law's hardness, "
-         "Kogut-Etsion's 2.8 Y)"},
-        {"regime", law.regime}}},
-      {"adhesion",
-       law.adhesive
-           ? ordered_json{{"adhesion_parameter", number(law.adhesion_parameter)},
-                          {"adhesion_parameter_definition",
-                           "sigma_s / delta_c, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (Fuller-Tabor 1975)"},
-                          {"length_scale_m", number(law.adhesion_length)},
-                          {"branch", "approach (loading)"},
-                          {"pull_off_pressure_Pa", number(law.pull_off_pressure)},
-                          {"pull_off_mean_separation_m", number(law.pull_off_mean_separation)}}
-           : ordered_json(nullptr)},
-      {"served", law.served},
-      {"note", law.note},
-      {"separation_range", {number(law.separation_min), number(law.separation_max)}},
-      {"nodes", law.nodes},
-      {"max_rel_error",
-       {{"pressure", number(law.max_rel_error[0])},
-        {"stiffness", number(law.max_rel_error[1])},
-        {"area_fraction", number(law.max_rel_error[2])}}},
-      {"at_pressures", at},
-      {"curve", curve},
-      {"warnings", law.warnings}};
+  // its record's written fields (law, model, model_reason, served, note, nodes, curve, warnings),
+  // then the nested objects composed from the others
+  ordered_json j = record_json<ordered_json>(law);
+  j["parameters"] = law_parameters_json(law);
+  j["plasticity"] = {
+      {"summit_height_standard_deviation_m", number(law.summit_height_sd)},
+      {"summit_radius_m", number(law.summit_radius)},
+      {"contact_modulus_Pa", number(law.contact_modulus)},
+      {"hardness_Pa", number(law.hardness)},
+      {"critical_interference_m", number(law.critical_interference)},
+      {"valid_up_to_m", number(law.valid_up_to)},
+      {"psi", number(law.plasticity_index)},
+      {"psi_definition",
+       "(sigma_s / omega_c)^1/2 with the law's omega_c (Kogut-Etsion 2003's with the CEB/KE "
+       "omega_c; Jackson-Green's with theirs)"},
+      {"psi_gw", number(law.gw_plasticity_index)},
+      {"psi_gw_definition",
+       "(E*/H)(sigma_s/R)^1/2 (Greenwood-Williamson 1966; H: the law's hardness, "
+       "Kogut-Etsion's 2.8 Y)"},
+      {"regime", law.regime}};
+  j["adhesion"] = law.adhesive
+                      ? ordered_json{{"adhesion_parameter", number(law.adhesion_parameter)},
+                                     {"adhesion_parameter_definition",
+                                      "sigma_s / delta_c, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (Fuller-Tabor 1975)"},
+                                     {"length_scale_m", number(law.adhesion_length)},
+                                     {"branch", "approach (loading)"},
+                                     {"pull_off_pressure_Pa", number(law.pull_off_pressure)},
+                                     {"pull_off_mean_separation_m", number(law.pull_off_mean_separation)}}
+                      : ordered_json(nullptr);
+  j["separation_range"] = {number(law.separation_min), number(law.separation_max)};
+  j["max_rel_error"] = {{"pressure", number(law.max_rel_error[0])},
+                        {"stiffness", number(law.max_rel_error[1])},
+                        {"area_fraction", number(law.max_rel_error[2])}};
+  j["at_pressures"] = at;
+  return j;
 }
 
 }  // namespace
@@ -505,6 +463,7 @@ ordered_json law_json(const LawContact& law, const ContactComparison& c) {
 std::string analysis_json(const SurfaceAnalysis& a) {
   ordered_json j;
   j["schema"] = surface_json_schema;
+  add_record_json(j, a);  // its written records (noise_floor, statistics, correlation, sampling_dependence)
   describe_surface(a, j);
   j["fits"]["summit_heights"] = assessment_json(a.summit_heights);
   j["fits"]["summits_fitted"] = a.summits_fitted;

@@ -75,25 +75,38 @@ struct NoiseFloor {
   ASPERITY_NOISE_FLOOR_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
+// A surface analysed; its fields defined once (a record's list, record_fields.hpp): report.json
+// holds its written records as their objects (noise_floor, statistics, correlation,
+// sampling_dependence), and the writer composes the others' (the surface, the leveling, the
+// spectral moments, the summits, the fits, the ensemble, the verdict, the contact curves)
+#define ASPERITY_SURFACE_ANALYSIS_FIELDS(X)                                                              \
+  X(HeightMap, map, nullptr, "the map as analysed (leveled when asked)")                                \
+  X(NoiseFloor, noise_floor, "noise_floor",                                                              \
+    "whether the roughness is at the level of the heights' quantization (then no summits, fits or contact " \
+    "curves follow the statistics)")                                                                     \
+  X(bool, leveled, nullptr, "whether the least-squares plane was subtracted", false)                    \
+  X(Plane, plane, nullptr, "the plane subtracted")                                                       \
+  X(HeightStatistics, statistics, "statistics", "the heights' statistics")                              \
+  X(SpectralMoments, moments, nullptr, "the spectral moments")                                           \
+  X(CorrelationLengths, correlation, "correlation", "the correlation lengths")                          \
+  X(Summits, summits, nullptr, "the summits")                                                            \
+  X(std::vector<SamplingRow>, sampling, "sampling_dependence", "summits and moments at 1, 2, 4 times dx") \
+  X(SampleAssessment, summit_heights, nullptr, "the fits of the summit heights")                        \
+  X(std::size_t, summits_fitted, nullptr,                                                                \
+    "the summit heights fitted (all, or a random subsample of AnalysisOptions.max_fit_sample)", 0)       \
+  X(std::optional<SampleAssessment>, heights, nullptr,                                                   \
+    "the fits of the heights (a fixed random sample of points), or none")                                \
+  X(std::size_t, surrogates, nullptr, "the ensemble's size", 0)                                          \
+  X(std::size_t, padded_nx, nullptr, "the ensemble's fields' grid before cutting: points along x", 0)   \
+  X(std::size_t, padded_ny, nullptr, "the ensemble's fields' grid before cutting: points along y", 0)   \
+  X(SurfaceVerdict, verdict, nullptr, "the verdict")                                                     \
+  X(std::optional<ContactComparison>, contact, nullptr, "the contact curves, or none (no contact modulus)") \
+  X(AnalysisOptions, options, nullptr, "the options it was made with")
+
 struct SurfaceAnalysis {
-  HeightMap map;                   // as analysed (leveled when asked)
-  NoiseFloor noise_floor;          // reached: what follows the statistics is empty
-  bool leveled = false;
-  Plane plane;                     // the plane subtracted
-  HeightStatistics statistics;
-  SpectralMoments moments;
-  CorrelationLengths correlation;
-  Summits summits;
-  std::vector<SamplingRow> sampling;
-  SampleAssessment summit_heights;
-  std::size_t summits_fitted = 0;  // of summits.list (AnalysisOptions::max_fit_sample)
-  std::optional<SampleAssessment> heights;
-  std::size_t surrogates = 0;      // the ensemble's size
-  std::size_t padded_nx = 0, padded_ny = 0;  // its fields' grid before cutting
-  SurfaceVerdict verdict;
-  std::optional<ContactComparison> contact;
-  std::optional<LawContact> law;   // with AnalysisOptions::law
-  AnalysisOptions options;
+  ASPERITY_SURFACE_ANALYSIS_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
+  // with AnalysisOptions::law (kept off the list: report.json's contact.law, law_contact.hpp)
+  std::optional<LawContact> law;
 };
 
 // The verdict of an analysis (surface_verdict.hpp: its tests, and its contact curves when there are any).
@@ -110,4 +123,5 @@ SurfaceAnalysis analyse_surface_file(const std::string& path, const AnalysisOpti
 namespace asperity {
 ASPERITY_DEFINE_RECORD(topography::SamplingRow, ASPERITY_SAMPLING_ROW_FIELDS)
 ASPERITY_DEFINE_RECORD(topography::NoiseFloor, ASPERITY_NOISE_FLOOR_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::SurfaceAnalysis, ASPERITY_SURFACE_ANALYSIS_FIELDS)
 }  // namespace asperity

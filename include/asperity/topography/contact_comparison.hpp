@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "asperity/contact_model.hpp"
+#include "asperity/record_fields.hpp"
 #include "asperity/topography/exact_contact.hpp"
 #include "asperity/topography/height_map.hpp"
 #include "asperity/topography/goodness_of_fit.hpp"
@@ -108,62 +109,86 @@ std::string contact_model_name(const std::optional<ContactModelKind>& kind);
 ContactModelKind contact_model_kind(HeightModel model) noexcept;  // a fitted height model's curve
 bool is_fitted(ContactModelKind kind) noexcept;  // a law fitted to the map: gaussian-moments and the height models
 
+// One curve of a comparison; its fields defined once (a record's list, record_fields.hpp): the
+// JSON object of a model (contact.models[]) is made from it, its states at the pressures of
+// interest given their ratios to the references by the writer (report.json), which the ratios
+// here (not written as fields) hold
+#define ASPERITY_MODEL_CONTACT_FIELDS(X)                                                                   \
+  X(ContactModelKind, kind, "model", "which curve: its one name (to_string, the label)",                  \
+    ContactModelKind::measured_summits)                                                                    \
+  X(double, mean_summit_height, "mean_summit_height_m", "[m], in the map's height frame (leveled)", 0)   \
+  X(bool, served, "served", "whether it has a curve", false)                                              \
+  X(std::string, note, "note", "the table that served it, or why there is no curve")                    \
+  X(RoughSurface, surface, "surface", "its surface (distribution, side, shape, scales)")                   \
+  X(std::vector<PhysicalState>, at_pressures, "at_pressures", "its states at the pressures of interest")  \
+  X(std::vector<PhysicalState>, curve, "curve", "its states over [pressure_min, pressure_max]")           \
+  X(std::vector<double>, stiffness_over_measured, nullptr, "its stiffness over measured-summits' at each pressure") \
+  X(std::vector<double>, separation_minus_measured, nullptr,                                             \
+    "its mean separation less measured-summits' at each pressure [m]")                                   \
+  X(std::vector<double>, stiffness_over_exact, nullptr,                                                  \
+    "its stiffness over the exact contact's at each pressure (empty without it)")                         \
+  X(std::vector<double>, area_over_exact, nullptr,                                                       \
+    "its real area over the exact contact's at each pressure (empty without it)")                        \
+  X(std::vector<double>, separation_minus_exact, nullptr,                                                \
+    "its mean separation less the exact contact's at each pressure [m] (empty without it)")
+
 struct ModelContact {
-  ContactModelKind kind = ContactModelKind::measured_summits;
+  ASPERITY_MODEL_CONTACT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
   // its name in the outputs, kind's one spelling (to_string(ContactModelKind))
   const char* label() const noexcept { return to_string(kind); }
-  bool served = false;
-  std::string note;                // the table that served it, or why there is no curve
-  RoughSurface surface;
-  double mean_summit_height = 0;   // [m], in the map's height frame (leveled)
-  std::vector<PhysicalState> curve;         // over [pressure_min, pressure_max]
-  std::vector<PhysicalState> at_pressures;  // at ContactComparison::pressures
-  // against measured-summits at each pressure: stiffness ratio, mean separation difference [m]
-  std::vector<double> stiffness_over_measured, separation_minus_measured;
-  // against the exact contact at each pressure (empty without it): stiffness and real area
-  // ratios, mean separation difference [m]
-  std::vector<double> stiffness_over_exact, area_over_exact, separation_minus_exact;
 };
 
 // The measured-summit answer at a coarser sampling (every k-th point): its stiffness at each
-// pressure over the answer at the file's sampling.
+// pressure over the answer at the file's sampling (report.json's
+// contact.measured_summits_sampling_dependence)
+#define ASPERITY_SAMPLING_CONTACT_FIELDS(X)                                           \
+  X(std::size_t, factor, "factor", "every factor-th point in x and y", 1)             \
+  X(std::vector<double>, stiffness_over_finest, "stiffness_over_finest",              \
+    "the measured-summit stiffness at each pressure over the answer at the file's sampling")
+
 struct SamplingContact {
-  std::size_t factor = 1;
-  std::vector<double> stiffness_over_finest;
+  ASPERITY_SAMPLING_CONTACT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
+// The curves side by side; its fields defined once (a record's list): the JSON object of the
+// comparison (report.json's contact) holds its written fields and the keys the writer composes
+// from the others (the pressure range, the spread, the references)
+#define ASPERITY_CONTACT_COMPARISON_FIELDS(X)                                                              \
+  X(ContactOptions, options, nullptr, "the options it was made with")                                     \
+  X(std::vector<double>, pressures, "pressures_Pa", "the pressures of interest [Pa]")                      \
+  X(double, pressure_min, nullptr, "the curves' lowest pressure [Pa]", 0)                                 \
+  X(double, pressure_max, nullptr, "the curves' highest pressure [Pa]", 0)                                \
+  X(double, nominal_area, "nominal_area_m2", "A0 [m^2]", 0)                                                \
+  X(std::vector<std::size_t>, measured_summits_in_contact, "measured_summits_in_contact",                  \
+    "the measured summits in contact at each pressure (not scaled to the nominal area)")                   \
+  X(std::vector<ModelContact>, models, "models", "every curve")                                            \
+  X(std::vector<double>, measured_stiffness_spread, nullptr,                                               \
+    "the relative standard deviation of the measured-summit stiffness over the surrogate ensemble, at each " \
+    "pressure: the uncertainty of every ratio to it (empty without an ensemble)")                           \
+  X(std::vector<double>, measured_separation_spread, nullptr,                                              \
+    "the standard deviation of the measured-summit mean separation over the ensemble, at each pressure [m]") \
+  X(std::optional<ContactModelKind>, closest, "closest_fitted_model",                                      \
+    "the fitted model nearest the measured summits at the pressures compared ('' where none is)")           \
+  X(std::string, headline, "headline", "the comparison in words")                                          \
+  X(std::string, exact_method, nullptr, "how the exact contact was solved")                                \
+  X(std::optional<ContactModelKind>, closest_to_exact, nullptr,                                            \
+    "the curve nearest the exact contact, of all ('' where none is)")                                       \
+  X(std::string, exact_headline, nullptr,                                                                  \
+    "the comparison with the exact contact in words, or, where the map's size alone left it out, that and how to ask") \
+  X(std::vector<SamplingContact>, sampling, "measured_summits_sampling_dependence",                         \
+    "the measured-summit answer at coarser samplings")                                                      \
+  X(std::size_t, map_nx, nullptr, "the map add_reference_contact was given: points along x (0: none)", 0)  \
+  X(std::size_t, map_ny, nullptr, "the map add_reference_contact was given: points along y (0: none)", 0)
+
 struct ContactComparison {
-  ContactOptions options;
-  std::vector<double> pressures;   // the pressures of interest [Pa]
-  double pressure_min = 0, pressure_max = 0;
-  double nominal_area = 0;
-  std::vector<ModelContact> models;
-  // How much the measured-summit answer varies between surfaces of the same statistics (its
-  // relative standard deviation over the surrogate ensemble, stiffness; separation in metres):
-  // the uncertainty of every ratio to it. Empty without an ensemble.
-  std::vector<double> measured_stiffness_spread, measured_separation_spread;
-  std::vector<SamplingContact> sampling;
-  // The measured summits in contact at each pressure of interest (GW on the measured summits with
-  // GW's one radius; not scaled to the nominal area): how many carry the answer there. Empty
-  // without that curve.
-  std::vector<std::size_t> measured_summits_in_contact;
+  ASPERITY_CONTACT_COMPARISON_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
   // At least min_summits_to_compare measured summits are in contact at pressure k: the models are
-  // compared there.
+  // compared there (closest: the fitted model nearest to the measured summits at the pressures
+  // compared, largest |ln stiffness ratio| smallest; the headline says how many summits are in
+  // contact at each pressure and why no model is named where too few are).
   bool compared_at(std::size_t k) const noexcept {
     return k < measured_summits_in_contact.size() && measured_summits_in_contact[k] >= min_summits_to_compare;
   }
-  // The fitted model nearest to the measured summits at the pressures of interest compared
-  // (compared_at; largest |ln stiffness ratio| smallest), none where none is; and the headline in
-  // words, which says how many summits are in contact at each pressure and why no model is named
-  // where too few are.
-  std::optional<ContactModelKind> closest;
-  std::string headline;
-  // Against the exact contact (when solved): how it was solved, the curve nearest to it (of all,
-  // the measured summits and Persson included) and the headline in words.
-  std::string exact_method;
-  std::optional<ContactModelKind> closest_to_exact;
-  std::string exact_headline;  // or, where the map's size alone left it out, that and how to ask
-  std::size_t map_nx = 0, map_ny = 0;  // the map add_reference_contact was given (0: none)
   const ModelContact* find(ContactModelKind kind) const;
   const ModelContact* find(const std::string& label) const;  // by to_string(kind); nullptr for another name
 };
@@ -195,3 +220,9 @@ ContactComparison compare_contact(const SampleAssessment& summit_fit, const Summ
                                   const SpectralMoments& moments, double measured_area, const ContactOptions& options);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::ModelContact, ASPERITY_MODEL_CONTACT_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::SamplingContact, ASPERITY_SAMPLING_CONTACT_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::ContactComparison, ASPERITY_CONTACT_COMPARISON_FIELDS)
+}  // namespace asperity

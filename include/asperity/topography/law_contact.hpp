@@ -28,6 +28,7 @@
 
 #include "asperity/contact_law_registry.hpp"
 #include "asperity/contact_model.hpp"
+#include "asperity/record_fields.hpp"
 #include "asperity/scene.hpp"
 #include "asperity/surface.hpp"
 #include "asperity/topography/contact_comparison.hpp"
@@ -48,46 +49,54 @@ struct LawParameterValue {
   double value;
 };
 
+// The law on a fit; its fields defined once (a record's list, record_fields.hpp): report.json's
+// contact.law object holds the written fields, and the writer composes the others into its nested
+// objects (parameters, plasticity, adhesion, separation_range, max_rel_error, at_pressures)
+#define ASPERITY_LAW_CONTACT_FIELDS(X)                                                                      \
+  X(std::string, law, "law", "its name (asperity::contact_law_name)")                                      \
+  X(HeightModel, fit, "model", "the fit the curves are of", HeightModel::gaussian)                        \
+  X(std::string, model_reason, "model_reason", "why that fit")                                             \
+  X(std::vector<LawParameterValue>, parameters, nullptr,                                                   \
+    "every parameter the law takes, in the registry's order for the law (Hertz: none)")                   \
+  X(std::string, parameters_text, nullptr, "the same in words (asperity::law_parameters_text)")          \
+  X(RoughSurface, surface, nullptr, "the fit's surface (the elastic curves' too)")                        \
+  X(double, summit_height_sd, nullptr, "sigma_s: standard deviation of the measured summit heights [m]", 0) \
+  X(double, summit_radius, nullptr, "R, the measured summit radius [m]", 0)                              \
+  X(double, contact_modulus, nullptr, "E* [Pa]", 0)                                                        \
+  X(double, hardness, nullptr, "H of GW's psi [Pa]; NaN: the law has none (JG, Hertz)", 0.0 / 0.0)        \
+  X(double, critical_interference, nullptr, "the law's omega_c of first yield at R [m]; NaN: none (Hertz)", \
+    0.0 / 0.0)                                                                                             \
+  X(double, plasticity_index, nullptr, "(sigma_s / omega_c)^1/2", 0.0 / 0.0)                               \
+  X(double, gw_plasticity_index, nullptr, "(E*/H)(sigma_s/R)^1/2", 0.0 / 0.0)                              \
+  X(double, valid_up_to, nullptr, "the largest interference the law's source supports [m] (inf: every one)", 0) \
+  X(std::string, regime, nullptr, "what psi says, in words, naming the definition")                       \
+  X(bool, adhesive, nullptr, "an adhesive law (DMT, JKR, Maugis-Dugdale; the approach branch)", false)     \
+  X(double, adhesion_parameter, nullptr, "Fuller-Tabor's sigma_s / delta_c; NaN where not adhesive", 0.0 / 0.0) \
+  X(double, adhesion_length, nullptr, "the law's length scale (Maugis' d_s) [m]; NaN where not adhesive",  \
+    0.0 / 0.0)                                                                                             \
+  X(double, pull_off_pressure, nullptr, "the curves' greatest tension [Pa]; NaN where not adhesive or not served", \
+    0.0 / 0.0)                                                                                             \
+  X(double, pull_off_mean_separation, nullptr,                                                             \
+    "where: mean separation from the fit's mean summit height [m]; NaN where not adhesive or not served", 0.0 / 0.0) \
+  X(bool, served, "served", "whether the law's curves were tabulated", false)                             \
+  X(std::string, note, "note", "the table made (nodes, stored error bound) or why there are none")       \
+  X(double, separation_min, nullptr, "the lowest dimensionless separation tabulated", 0)                  \
+  X(double, separation_max, nullptr, "the highest dimensionless separation tabulated", 0)                 \
+  X(int, nodes, "nodes", "the table's nodes", 0)                                                           \
+  X(double[3], max_rel_error, nullptr, "stored bound: pressure, stiffness, area fraction")                \
+  X(std::vector<PhysicalState>, curve, "curve", "the law's states over the comparison's curve pressures")  \
+  X(std::vector<PhysicalState>, at_pressures, nullptr,                                                     \
+    "the law's states at the pressures of interest (count NaN: the law's table does not hold it)")        \
+  X(std::vector<PhysicalState>, elastic_at_pressures, nullptr, "the same fit's elastic (Hertz) states there") \
+  X(std::vector<double>, area_over_elastic, nullptr, "at each pressure of interest, the law's area over the elastic") \
+  X(std::vector<double>, stiffness_over_elastic, nullptr, "the law's stiffness over the elastic")         \
+  X(std::vector<double>, separation_minus_elastic, nullptr, "the law's mean separation less the elastic [m]") \
+  X(std::vector<std::string>, warnings, "warnings", "e.g. an area fraction past GW's sparse-contact limit")
+
+// Separations are every model's (mean_separation from the fit's mean summit height, separation in
+// the origin convention).
 struct LawContact {
-  std::string law;                 // its name (asperity::contact_law_name)
-  // every parameter the law takes, in the registry's order for the law (Hertz: none), and the
-  // same in words ("Y = 1e+09 Pa, nu = 0.3": asperity::law_parameters_text)
-  std::vector<LawParameterValue> parameters;
-  std::string parameters_text;
-  HeightModel fit = HeightModel::gaussian;  // the fit the curves are of (to_string: its name in the outputs)
-  std::string model_reason;        // why that fit
-  RoughSurface surface;            // its surface (the elastic curves' too)
-  // the plasticity index from the measured summits
-  double summit_height_sd = 0;     // sigma_s: standard deviation of the measured summit heights [m]
-  double summit_radius = 0;        // R [m]
-  double contact_modulus = 0;      // E* [Pa]
-  double hardness = 0.0 / 0.0;     // H of GW's psi [Pa]; NaN: the law has none (JG, Hertz)
-  double critical_interference = 0.0 / 0.0;  // the law's omega_c of first yield at R [m]; NaN: none (Hertz)
-  double plasticity_index = 0.0 / 0.0;       // (sigma_s / omega_c)^1/2
-  double gw_plasticity_index = 0.0 / 0.0;    // (E*/H)(sigma_s/R)^1/2
-  double valid_up_to = 0;          // the largest interference the law's source supports [m] (inf: every one)
-  std::string regime;              // what psi says, in words, naming the definition
-  // an adhesive law (DMT, JKR, Maugis-Dugdale; the approach branch): Fuller-Tabor's adhesion
-  // parameter sigma_s / delta_c (asperity::adhesion_parameter), the law's length scale (Maugis'
-  // d_s), and the pull-off of its curves: the greatest tension [Pa] and where (mean separation
-  // from the fit's mean summit height [m]); NaN where not adhesive or not served
-  bool adhesive = false;
-  double adhesion_parameter = 0.0 / 0.0, adhesion_length = 0.0 / 0.0;
-  double pull_off_pressure = 0.0 / 0.0, pull_off_mean_separation = 0.0 / 0.0;
-  // the curves
-  bool served = false;
-  std::string note;                // the table made (nodes, stored error bound) or why there are none
-  double separation_min = 0, separation_max = 0;  // dimensionless separations tabulated
-  int nodes = 0;
-  double max_rel_error[3] = {0, 0, 0};  // stored bound: pressure, stiffness, area fraction
-  // the law's states over the comparison's curve pressures and at its pressures of interest
-  // (count NaN: the law's table does not hold it); separations as every model's (mean_separation
-  // from the fit's mean summit height, separation in the origin convention)
-  std::vector<PhysicalState> curve, at_pressures;
-  std::vector<PhysicalState> elastic_at_pressures;  // the same fit's elastic (Hertz) states
-  // at each pressure of interest, the law against the elastic curve
-  std::vector<double> area_over_elastic, stiffness_over_elastic, separation_minus_elastic;
-  std::vector<std::string> warnings;  // e.g. an area fraction past GW's sparse-contact limit
+  ASPERITY_LAW_CONTACT_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // The law on `model`'s fit of the comparison (served: its elastic curves are the comparison's).
@@ -97,3 +106,7 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
                        const std::string& model_reason, const LawSceneMaker& make);
 
 }  // namespace asperity::topography
+
+namespace asperity {
+ASPERITY_DEFINE_RECORD(topography::LawContact, ASPERITY_LAW_CONTACT_FIELDS)
+}  // namespace asperity

@@ -48,16 +48,26 @@ inline constexpr double yang_persson_gamma = 0.42;
 // edges).
 enum class SpectrumEdges { none, hann, periodic_component };
 
+// Its name (Python's edges_treatment, the option's value): "none", "hann", "periodic_component"
+inline const char* to_string(SpectrumEdges edges) noexcept {
+  return edges == SpectrumEdges::none ? "none" : edges == SpectrumEdges::hann ? "hann" : "periodic_component";
+}
+
+// The isotropic power spectrum: annulus k covers [edges[k], edges[k + 1]), density[k] is C there
+// [m^4], the periodogram's power in the annulus over the annulus' area (its integral of C is the
+// power on the grid); its fields defined once (a record's list, record_fields.hpp; not written)
+#define ASPERITY_RADIAL_POWER_SPECTRUM_FIELDS(X)                                                          \
+  X(std::vector<double>, edges, nullptr, "[1/m], ascending, one more than density")                     \
+  X(std::vector<double>, density, nullptr, "[m^4]")                                                      \
+  X(std::vector<std::size_t>, points, nullptr, "periodogram points (whole plane) in each annulus")       \
+  X(SpectrumEdges, edges_treatment, nullptr, "how the periodogram treated the edges: none, hann or periodic_component", \
+    SpectrumEdges::none)                                                                                 \
+  X(double, map_variance, nullptr, "the heights' variance (valid points) [m^2]")                        \
+  X(double, variance, nullptr, "2 pi integral q C dq over the annuli [m^2]")                            \
+  X(double, mean_square_gradient, nullptr, "2 pi integral q^3 C dq: <|grad h|^2> of the spectrum")
+
 struct RadialPowerSpectrum {
-  // Annulus k covers [edges[k], edges[k + 1]); density[k] is C there [m^4]: the periodogram's power
-  // in the annulus over the annulus' area (its integral of C is the power on the grid).
-  std::vector<double> edges;    // [1/m], ascending, density.size() + 1 of them
-  std::vector<double> density;  // [m^4]
-  std::vector<std::size_t> points;  // periodogram points (whole plane) in each annulus
-  SpectrumEdges edges_treatment = SpectrumEdges::none;
-  double map_variance = 0;       // the heights' variance (valid points) [m^2]
-  double variance = 0;           // 2 pi integral q C dq over the annuli [m^2]
-  double mean_square_gradient = 0;  // 2 pi integral q^3 C dq: <|grad h|^2> of the spectrum
+  ASPERITY_RADIAL_POWER_SPECTRUM_FIELDS(ASPERITY_RECORD_MEMBER_INIT)
 };
 
 // The radial power spectrum of a map about its mean (missing points set to the mean). Throws
@@ -104,4 +114,5 @@ double persson_gap_kernel(double x, double gamma) noexcept;
 
 namespace asperity {
 ASPERITY_DEFINE_RECORD(topography::PerssonState, ASPERITY_PERSSON_STATE_FIELDS)
+ASPERITY_DEFINE_RECORD(topography::RadialPowerSpectrum, ASPERITY_RADIAL_POWER_SPECTRUM_FIELDS)
 }  // namespace asperity
