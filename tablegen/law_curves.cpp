@@ -479,18 +479,21 @@ std::vector<double> starting_nodes(const SceneLaw& law) {
 // density's edge (z^(a-1) there) meets first contact or the law's switch point omega_k (a load
 // or a slope that jumps at omega_k). A jump J in the asperity's load there puts J phi(z_k) / sigma_s
 // into the stiffness, z_k the edge's distance, linear in s: a power |s - s_k|^(a-1), unbounded for
-// a < 1 and with an infinite slope for a < 2, which no cubic Hermite interval resolves.
+// a < 1, a jump at a = 1 (the density's edge is 1 there), with an infinite slope for a < 2, which
+// no cubic Hermite interval resolves. The text ends with what may be done: at a load jump with
+// a <= 1 no tolerance helps (the stiffness is unbounded, or jumps by a share no cubic follows).
 std::string singular_point(const SceneLaw& law, double s) {
   std::ostringstream text;
   text.precision(6);
   const double kink = withdrawal_kink(law);
   if (law.withdrawal() && std::fabs(s - kink) < 1e-6 * (law.range_max - law.range_min)) {
     text << "at s = " << kink << " the withdrawal's kink, where summits start to leave at the law's lowest "
-         << "interference (the stiffness jumps there, and varies as (s_k - s)^(1/2) on its left)";
+         << "interference (the stiffness jumps there, and varies as (s_k - s)^(1/2) on its left); exclude it from "
+            "the separation range or ask a larger tolerance";
     return text.str();
   }
   if (law.distribution != Distribution::weibull) {
-    text << "the curves have a singular point there";
+    text << "the curves have a singular point there; exclude it from the separation range or ask a larger tolerance";
     return text.str();
   }
   double knot = 0;  // first contact at the density's edge
@@ -502,12 +505,26 @@ std::string singular_point(const SceneLaw& law, double s) {
   }
   text << "at s = " << knot << " the Weibull density's edge, where it behaves as z^(a-1) with a = " << law.shape
        << ", meets ";
-  if (nearest < 0)
-    text << "first contact" << (is_adhesive(law.law.kind) ? ", where each summit's load jumps from 0 (adhesion)" : "");
-  else
-    text << "the law's switch point omega_" << nearest + 1 << " = " << points.interference[nearest]
-         << " m (s = -omega / sigma_s), where its load or its slope jumps";
+  bool load_jumps = nearest < 0 && is_adhesive(law.law.kind) && !law.withdrawal();
+  if (nearest < 0) {
+    text << "first contact" << (load_jumps ? ", where each summit's load jumps from 0 (adhesion)" : "");
+  } else {
+    const double omega = points.interference[nearest], inf = std::numeric_limits<double>::infinity();
+    const double above = asperity_response(law.law, std::nextafter(omega, inf)).load;
+    const double below = asperity_response(law.law, std::nextafter(omega, -inf)).load;
+    load_jumps = std::fabs(above - below) > 1e-9 * std::max(std::fabs(above), std::fabs(below));
+    text << "the law's switch point omega_" << nearest + 1 << " = " << omega << " m (s = -omega / sigma_s), where its "
+         << (load_jumps ? "load" : "slope") << " jumps";
+  }
   text << ": the curves vary as a power of |s - " << knot << "| there";
+  if (load_jumps && law.shape < 1)
+    text << ", the stiffness unbounded (a load jump on a density that is infinite at its edge): no tolerance "
+            "resolves it; exclude it from the separation range";
+  else if (load_jumps && law.shape == 1)
+    text << ", the stiffness jumping (a load jump on the density's edge value 1): a tolerance resolves it only "
+            "above the jump's share of the stiffness; exclude it from the separation range";
+  else
+    text << "; exclude it from the separation range or ask a larger tolerance";
   return text.str();
 }
 
@@ -560,6 +577,8 @@ void describe(const SceneLaw& law, const std::string& generator_options, Contact
   data.safety_factor = safety_factor;
   data.contact_modulus = law.law.modulus;
   data.nominal_area = law.nominal_area;
+  // the branch as asked (DMT's withdrawal too, whose curves are its approach's): stated in the table
+  if (is_adhesive(law.law.kind) && law.withdrawal()) data.approach_separation = sigma * law.approach_separation;
   if (law.distribution == Distribution::gaussian) {
     data.mean_summit_height = 0;
   } else {
@@ -710,7 +729,7 @@ LawCurvesResult generate_law_curves(const SceneLaw& asked, const std::string& ge
         std::ostringstream message;
         message << name << ": the curves are not smooth enough near s = " << nodes[i]
                 << " to be tabulated to max_rel_error " << tolerance << " (intervals of 1e-9 of the range still miss it: "
-                << singular_point(law, nodes[i]) << "); exclude it from the separation range or ask a larger tolerance";
+                << singular_point(law, nodes[i]) << ")";
         throw Error(message.str());
       }
       if (split) halves.push_back(nodes[i] + 0.5 * h);

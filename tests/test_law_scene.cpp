@@ -223,7 +223,23 @@ separation = [0.0, 4.0]
     EXPECT_NE(std::string(error.what()).find("with a = 1.5, meets the law's switch point omega_1"), std::string::npos)
         << error.what();
     EXPECT_EQ(std::string(error.what()).find("a < 1?"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("or ask a larger tolerance"), std::string::npos) << error.what();
   }
+  // ... and the advice is true: at 1e-4 the same range is served (the power's slope resolved)
+  EXPECT_NO_THROW(generator::generate_law_curves(scene_law(chang_etsion_bogy_law(radius, modulus, hardness, 0.3),
+                                                           Distribution::weibull, Side::bounded, 1.5, -1.0, -0.001, 1e-4)));
+  // at a <= 1 a load jump makes the stiffness jump (a = 1) or unbounded (a < 1) there: no tolerance is
+  // advised (1e-2, the largest, is refused too)
+  for (double shape : {1.0, 0.5})
+    try {
+      generator::generate_law_curves(scene_law(chang_etsion_bogy_law(radius, modulus, hardness, 0.3),
+                                               Distribution::weibull, Side::bounded, shape, -1.0, -0.001, 1e-2));
+      ADD_FAILURE() << "a load jump at the density's edge was tabulated, a = " << shape;
+    } catch (const Error& error) {
+      const std::string what = error.what();
+      EXPECT_NE(what.find(shape == 1 ? "the stiffness jumping" : "no tolerance resolves it"), std::string::npos) << what;
+      EXPECT_EQ(what.find("ask a larger tolerance"), std::string::npos) << what;
+    }
   // an area fraction beyond 1 inside the range is refused by the generator, with the fix
   SceneLaw crowded = scene_law(hertz_law(radius, modulus), Distribution::gaussian, Side::tail, 2, -3.0, 1.0, 1e-6);
   crowded.summit_density = 1e10;

@@ -45,8 +45,8 @@ t::LawSceneMaker maker(const std::string& name, double yield_strength = NAN, dou
   law.law = name;
   law.material.set(asperity::LawParameter::yield_strength, yield_strength);
   law.material.set(asperity::LawParameter::poisson, poisson);
-  return [law](const asperity::RoughSurface& surface, double s_min, double s_max) {
-    return asperity::cli::law_scene(law, surface, s_min, s_max, "test");
+  return [law](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+    return asperity::cli::law_scene(law, surface, s_min, s_max, "test", approach);
   };
 }
 
@@ -114,8 +114,8 @@ TEST(LawContact, EveryParameterTheLawTakes) {
   options.choice[static_cast<int>(asperity::LawParameter::geometric_hardness)] = "exponential";
   const t::LawContact law =
       t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test",
-                     [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
-                       return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
+                     [options](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+                       return asperity::cli::law_scene(options, surface, s_min, s_max, "test", approach);
                      });
   const asperity::ContactLawDescriptor* jg = asperity::find_contact_law("jackson-green");
   ASSERT_TRUE(jg);
@@ -147,8 +147,8 @@ TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
     asperity::cli::LawOptions options;
     options.law = "jkr";
     options.material.set(asperity::LawParameter::work_of_adhesion, 0.5);
-    const t::LawSceneMaker weak = [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
-      return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
+    const t::LawSceneMaker weak = [options](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+      return asperity::cli::law_scene(options, surface, s_min, s_max, "test", approach);
     };
     const t::LawContact law = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", weak);
     ASSERT_TRUE(law.served) << law.note;
@@ -161,8 +161,8 @@ TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
   asperity::cli::LawOptions options;
   options.law = "jkr";
   options.material.set(asperity::LawParameter::work_of_adhesion, dgamma);
-  const t::LawSceneMaker jkr = [options](const asperity::RoughSurface& surface, double s_min, double s_max) {
-    return asperity::cli::law_scene(options, surface, s_min, s_max, "test");
+  const t::LawSceneMaker jkr = [options](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+    return asperity::cli::law_scene(options, surface, s_min, s_max, "test", approach);
   };
   const t::LawContact law = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", jkr);
   ASSERT_TRUE(law.served) << law.note;
@@ -192,6 +192,40 @@ TEST(LawContact, AdhesiveLawAgainstTheReferenceWithItsPullOff) {
   EXPECT_LT(std::fabs(p0 - law.pull_off_pressure), 1e-6 * std::fabs(law.pull_off_pressure));
   for (double offset : {-1e-2, -1e-3, 1e-3, 1e-2})
     EXPECT_GE(net_pressure(u + offset * heights.scale), p0 - 1e-9 * std::fabs(p0)) << offset;
+
+  // The withdrawal branch (asperity surface --approach-separation, issue 41 item 2): after an approach
+  // 0.2 below the approach curves' first separation, at the same positive pressures, each against the
+  // reference's fixed-grips quadrature after that approach; more tension, a greater pull-off
+  const double s0 = law.separation_min - 0.2;
+  const t::LawContact back = t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", jkr, s0);
+  ASSERT_TRUE(back.served) << back.note;
+  EXPECT_EQ(back.approach_separation, s0);
+  // from where its pressure covers the largest compared (the approach's start, or nearer s0), not below s0
+  EXPECT_GE(back.separation_min, s0);
+  EXPECT_LE(back.separation_min, law.separation_min);
+  EXPECT_NE(back.regime.find("the withdrawal branch after an approach to s0"), std::string::npos) << back.regime;
+  EXPECT_NE(back.note.find("the withdrawal after an approach to s0"), std::string::npos) << back.note;
+  const asperity::test::ContactHistory history{true, s0};
+  const auto withdrawn_pressure = [&](double separation) {
+    return density * asperity::test::law_integrals(exact_law, heights, separation / heights.scale, history).load;
+  };
+  for (std::size_t k = 0; k < back.at_pressures.size(); ++k) {
+    const asperity::PhysicalState& state = back.at_pressures[k];
+    EXPECT_LT(relative(withdrawn_pressure(state.separation), state.pressure), 1e-6) << state.pressure << " Pa";
+    EXPECT_LT(state.separation, law.at_pressures[k].separation);  // more tension: closer for the same pressure
+  }
+  ASSERT_TRUE(std::isfinite(back.pull_off_pressure));
+  EXPECT_LT(back.pull_off_pressure, law.pull_off_pressure);
+  const double uw = back.pull_off_mean_separation + mean_summit;
+  EXPECT_LT(std::fabs(withdrawn_pressure(uw) - back.pull_off_pressure), 1e-6 * std::fabs(back.pull_off_pressure));
+  // an approach that does not reach the largest pressure compared: the reason, no curves
+  const t::LawContact shallow =
+      t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", jkr, law.separation_max);
+  EXPECT_FALSE(shallow.served);
+  EXPECT_NE(shallow.note.find("approach further"), std::string::npos) << shallow.note;
+  // a law without adhesion has no withdrawal branch: refused before any work
+  EXPECT_THROW(t::compare_law(*a.contact, a.summits, t::HeightModel::gaussian, "test", maker("hertz"), s0),
+               asperity::Error);
 }
 
 TEST(LawContact, RefusalsAndLimits) {

@@ -74,8 +74,8 @@ const t::SurfaceAnalysis& law_analysis() {
     law.law = "kogut-etsion";
     law.material.set(asperity::LawParameter::yield_strength, 1e9);
     law.material.set(asperity::LawParameter::poisson, 0.3);
-    return small_analysis(1, 0, [law](const asperity::RoughSurface& surface, double s_min, double s_max) {
-      return asperity::cli::law_scene(law, surface, s_min, s_max, "test");
+    return small_analysis(1, 0, [law](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+      return asperity::cli::law_scene(law, surface, s_min, s_max, "test", approach);
     });
   }();
   return a;
@@ -474,8 +474,8 @@ TEST(TopographyReport, AnAdhesiveLawReportsItsAdhesionNotPlasticity) {
   jkr.law = "jkr";
   jkr.material.set(asperity::LawParameter::work_of_adhesion, 0.5);
   const t::SurfaceAnalysis adhesive =
-      small_analysis(1, 0, [jkr](const asperity::RoughSurface& surface, double s_min, double s_max) {
-        return asperity::cli::law_scene(jkr, surface, s_min, s_max, "test");
+      small_analysis(1, 0, [jkr](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+        return asperity::cli::law_scene(jkr, surface, s_min, s_max, "test", approach);
       });
   ASSERT_TRUE(adhesive.law.has_value());
   ASSERT_TRUE(adhesive.law->served) << adhesive.law->note;
@@ -503,8 +503,8 @@ TEST(TopographyReport, AnElasticLawSaysWhatItDoesNotUse) {
   asperity::cli::LawOptions hertz;
   hertz.law = "hertz";
   const t::SurfaceAnalysis elastic =
-      small_analysis(1, 0, [hertz](const asperity::RoughSurface& surface, double s_min, double s_max) {
-        return asperity::cli::law_scene(hertz, surface, s_min, s_max, "test");
+      small_analysis(1, 0, [hertz](const asperity::RoughSurface& surface, double s_min, double s_max, double approach) {
+        return asperity::cli::law_scene(hertz, surface, s_min, s_max, "test", approach);
       });
   ASSERT_TRUE(elastic.law.has_value());
   const std::string dir = folder("elastic-law");

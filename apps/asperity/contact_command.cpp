@@ -34,7 +34,6 @@ struct Options {
   std::string table, dist, side, moments, sweep, export_format, pressure_range, units, overclosure_datum, datum;
   LawOptions law;         // a contact law's curves, tabulated on the fly (docs/contact-laws.md section 8)
   std::string law_range;  // the separations they are tabulated over
-  double approach_separation = not_given;  // an adhesive law's withdrawal after an approach to it
   double shape = not_given, sigma = not_given, rms = not_given, radius = not_given, density = not_given,
          count = not_given, area = not_given;
   MaterialOptions material;  // --modulus, or --e1 --nu1 --e2 --nu2
@@ -337,7 +336,7 @@ int run_contact_law(const Options& options, const CLI::App& command) {
   std::string given_scale;
   const RoughSurface surface = surface_from(options, given_scale);
   const SceneLaw law =
-      law_scene(options.law, surface, lo, hi, "asperity contact --law", options.approach_separation);
+      law_scene(options.law, surface, lo, hi, "asperity contact --law", options.law.approach_separation);
   if (!given_scale.empty()) note(command, given_scale);
   const std::string name = contact_law_name(law.law.kind);
   switch (find_contact_law(law.law.kind)->family) {  // the regime's figure (contact_law_registry.hpp)
@@ -400,9 +399,9 @@ int serve_contact_curves(const Options& options, const CLI::App& command, const 
                     to_string(data.bound_method) + "; solver tolerance " +
                     approximately(data.solver_tolerance) + ")");
   if (curves.has_tension()) {
-    // the branch, as the table's description says (the generator's words: law_curves.cpp's describe)
-    const std::string branch = data.description.find("the withdrawal (unloading") != std::string::npos
-                                   ? "withdrawal branch"
+    // the branch, as the table states it (its approach_separation)
+    const std::string branch = data.withdrawal()
+                                   ? "withdrawal branch after an approach to " + number(data.approach_separation) + " m"
                                    : "approach branch";
     if (std::isnan(curves.pull_off_pressure()))
       note(command, "adhesive curves (" + branch + "): the pull-off (greatest tension) is not inside their range; "
@@ -502,7 +501,6 @@ int run_contact(const Options& options, const CLI::App& command) {
   if (!options.law.law.empty()) return run_contact_law(options, command);
   check_no_law_options(options.law, options.law_range.empty() ? "" : "--law-range, ");
   if (!options.law_range.empty()) usage("--law-range goes with --law");
-  if (given(options.approach_separation)) usage("--approach-separation goes with --law (an adhesive law's)");
   // A table alone, no surface: it may be a measured surface's or a law scene's (its kind read only
   // then, so that a GW table is not read twice); with a surface, a contact-curves table is refused
   // on opening.
@@ -609,15 +607,13 @@ void add_contact_command(CLI::App& app) {
            "a Gaussian surface from its profile's spectral moments (Nayak-McCool: sets sigma, radius, density)")
       ->type_name("M0,M2,M4")->group("Surface (SI units)");
   add_law_options(*command, o.law, "a contact law's curves instead of Hertz's",
-                  " (an adhesive law's approach branch), tabulated now on the surface given (docs/contact-laws.md "
-                  "section 8); queries --separation, --pressure, --sweep separation|pressure, --export");
+                  " (an adhesive law's approach branch, or its withdrawal with --approach-separation), tabulated now "
+                  "on the surface given (docs/contact-laws.md section 8); queries --separation, --pressure, --sweep "
+                  "separation|pressure, --export",
+                  "at or below --law-range's SMIN");
   add_text(*command, "--law-range", o.law_range,
            "with --law: the dimensionless separations s tabulated (origin convention; required)")
       ->type_name("SMIN:SMAX")->group("Contact law");
-  add_number(*command, "--approach-separation", o.approach_separation,
-             "with --law dmt, jkr or maugis-dugdale: the withdrawal (unloading) branch after an approach to this "
-             "dimensionless separation s0 (at or below SMIN; default: the approach branch)")
-      ->type_name("S0")->group("Contact law");
   add_numbers(*command, "--separation", o.separations, "at separations [m] from the datum (--datum), comma-separated")
       ->type_name("M[,M...]")->group("Query (one)");
   add_numbers(*command, "--load", o.loads, "at loads [N], comma-separated")->type_name("N[,N...]")->group("Query (one)");

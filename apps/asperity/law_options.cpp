@@ -27,12 +27,16 @@ LawValues given_values(const LawOptions& o) {
 bool any_given(const LawOptions& o) {
   for (int k = 0; k < law_parameter_count; ++k)
     if (o.material.given(static_cast<LawParameter>(k)) || !o.choice[k].empty()) return true;
-  return !std::isnan(o.tolerance);
+  return !std::isnan(o.tolerance) || !std::isnan(o.approach_separation);
 }
+
+// --approach-separation, as the scene key's table names it (asperity/scene.hpp)
+std::string approach_option() { return scene_law_key_name("approach_separation", LawNaming::option); }
 
 }  // namespace
 
-void add_law_options(CLI::App& command, LawOptions& o, const std::string& lead, const std::string& tail) {
+void add_law_options(CLI::App& command, LawOptions& o, const std::string& lead, const std::string& tail,
+                     const std::string& approach_help) {
   const char* group = "Contact law";
   add_text(command, "--law", o.law, lead + ": " + contact_law_names() + tail)->type_name("NAME")->group(group);
   for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p) {
@@ -45,6 +49,11 @@ void add_law_options(CLI::App& command, LawOptions& o, const std::string& lead, 
   }
   add_number(command, "--law-tolerance", o.tolerance, "with --law: the curves' relative error (default 1e-6)")
       ->type_name("REL")->group(group);
+  add_number(command, approach_option(), o.approach_separation,
+             "with --law " + laws_taking(LawParameter::work_of_adhesion) +
+                 ": the withdrawal (unloading, fixed grips) branch after an approach to this dimensionless separation "
+                 "s0 (" + approach_help + "; default: the approach branch)")
+      ->type_name("S0")->group(group);
 }
 
 void check_no_law_options(const LawOptions& o, const std::string& also) {
@@ -52,7 +61,7 @@ void check_no_law_options(const LawOptions& o, const std::string& also) {
   std::string options;
   for (const LawParameterInfo* p = law_parameters_begin(); p != law_parameters_end(); ++p)
     options += std::string(p->option) + ", ";
-  usage(also + options.substr(0, options.size() - 2) + " and --law-tolerance go with --law");
+  usage(also + options + "--law-tolerance and " + approach_option() + " go with --law");
 }
 
 ContactLawKind law_kind(const LawOptions& o) {

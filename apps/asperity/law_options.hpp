@@ -17,14 +17,17 @@ struct LawOptions {
   LawValues material;                     // the numbers given (NaN: not given)
   std::string choice[law_parameter_count];  // a choice parameter's text as given ("" : not given)
   double tolerance = 0.0 / 0.0;           // --law-tolerance
+  double approach_separation = 0.0 / 0.0;  // --approach-separation: an adhesive law's withdrawal (NaN: approach)
 };
 
 // The curves' relative error when --law-tolerance is not given.
 inline constexpr double default_law_tolerance = 1e-6;
 
 // --law (its help: `lead`, the laws' names, then `tail`: what the command does with it), an option
-// per law parameter (the registry's) and --law-tolerance, in the group "Contact law".
-void add_law_options(CLI::App& command, LawOptions& options, const std::string& lead, const std::string& tail);
+// per law parameter (the registry's), --law-tolerance and --approach-separation (an adhesive law's
+// withdrawal branch: `approach_help` says what s0 is measured against), in the group "Contact law".
+void add_law_options(CLI::App& command, LawOptions& options, const std::string& lead, const std::string& tail,
+                     const std::string& approach_help);
 
 // With no --law, the material options are refused ("... go with --law"; `also` names the
 // command's own options that go with it too, e.g. "--law-range, "). With --law, its kind, or a

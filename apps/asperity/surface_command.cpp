@@ -217,10 +217,12 @@ int run_surface(const Options& o, const CLI::App& command) {
     const double a0 = given(o.area) ? o.area : map.width() * map.length();
     for (double load : loads) curves.pressures.push_back(nominal_pressure_from_load(load, a0));
     options.contact = curves;
-    if (!o.law.law.empty())
-      options.law = [law = o.law](const RoughSurface& surface, double s_min, double s_max) {
-        return law_scene(law, surface, s_min, s_max, "asperity surface --law");
+    if (!o.law.law.empty()) {
+      options.law = [law = o.law](const RoughSurface& surface, double s_min, double s_max, double approach) {
+        return law_scene(law, surface, s_min, s_max, "asperity surface --law", approach);
       };
+      options.law_approach_separation = o.law.approach_separation;
+    }
   }
   // progress on standard error for an ensemble that takes more than a second: a line that
   // rewrites itself on a terminal, a line every few seconds otherwise
@@ -348,7 +350,9 @@ void add_surface_command(CLI::App& app) {
   add_law_options(*command, o.law, "a contact law beside the elastic curves (with --modulus)",
                   " with its material; gives the regime of the measured summits (an elastic-plastic law's "
                   "plasticity index, an adhesive law's adhesion parameter) and the law's curves on the fit the "
-                  "verdict names (docs/surfaces.md)");
+                  "verdict names (docs/surfaces.md)",
+                  "in the fitted model's height scale, origin convention, as the report's law separations; the "
+                  "approach must reach the largest pressure compared");
   const char* output = "Output";
   add_text(*command, "--report", o.report,
            "write a report directory: report.md, report.json, curves.csv, summits.csv, plots")

@@ -123,6 +123,7 @@ module asperity
   public :: asperity_contact_curves_summit_count, asperity_contact_curves_has_tension
   public :: asperity_contact_curves_summit_count_max_rel_error
   public :: asperity_contact_curves_pull_off_pressure, asperity_contact_curves_pull_off_separation
+  public :: asperity_contact_curves_approach_separation
 
   interface
     ! Loads a table: path c_null_ptr for the default table ($ASPERITY_TABLE if set). Returns
@@ -505,6 +506,15 @@ module asperity
       import :: c_ptr, c_double
       type(c_ptr), value :: curves
       real(c_double) :: asperity_contact_curves_pull_off_separation
+    end function
+
+    ! the withdrawal branch's approach separation (m): finite for an adhesive law's withdrawal
+    ! (unloading) curves, NaN for the approach branch, curves without tension or a null handle
+    function asperity_contact_curves_approach_separation(curves) &
+        bind(c, name="asperity_contact_curves_approach_separation")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: curves
+      real(c_double) :: asperity_contact_curves_approach_separation
     end function
 
     function asperity_contact_curves_at_separation(curves, separation, out) &

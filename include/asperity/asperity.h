@@ -301,6 +301,12 @@ double asperity_contact_curves_summit_count_max_rel_error(const asperity_contact
 int asperity_contact_curves_has_tension(const asperity_contact_curves *curves);
 double asperity_contact_curves_pull_off_pressure(const asperity_contact_curves *curves);
 double asperity_contact_curves_pull_off_separation(const asperity_contact_curves *curves);
+/* The branch of adhesive curves: an adhesive law's withdrawal (unloading, fixed grips) branch after
+ * an approach to this separation (m, from the table's datum, at or below the first node served),
+ * or NaN for the approach (loading) branch, curves without tension and NULL. Finite: the pull-off
+ * above is the withdrawal's (Fuller-Tabor's). (A function: asperity_contact_curves_info's size is
+ * part of the ABI.) */
+double asperity_contact_curves_approach_separation(const asperity_contact_curves *curves);
 /* All four at a separation, or at a pressure. Return ASPERITY_OK, ASPERITY_BAD_HANDLE (NULL),
  * ASPERITY_BAD_SEPARATION (NaN input) or ASPERITY_OUTSIDE_RANGE (outside the range served: NaN
  * outputs). */

@@ -76,8 +76,13 @@ struct ContactCurvesData {
   // and its stored relative bound.
   std::vector<double> summit_count;
   double summit_count_max_rel_error = 0;
+  // Optional (NaN: not stated), only with a tensile part: an adhesive law's withdrawal (unloading,
+  // fixed grips) branch after an approach to this separation [m], at or below the first node
+  // (docs/contact-laws.md section 8); NaN: the approach (loading) branch, or no law's curves.
+  double approach_separation = 0.0 / 0.0;
 
   bool has_tension() const noexcept { return !tensile_pressure.empty(); }
+  bool withdrawal() const noexcept { return approach_separation == approach_separation; }
 
   // Throws Error (naming `context`) for sizes, order, values or text beyond table_schema.hpp's
   // limits: what the reader refuses and the writer never writes.

@@ -171,6 +171,11 @@ void bind_contact_curves_properties(py::class_<ContactCurves>& contact_curves) {
                              "not inside the range.")
       .def_property_readonly("pull_off_separation", &ContactCurves::pull_off_separation,
                              "Adhesive curves: the separation [m] of the greatest tension (the net stiffness 0).")
+      .def_property_readonly("approach_separation",
+                             [](const ContactCurves& c) { return c.data().approach_separation; },
+                             "Adhesive curves: the separation [m] of the approach their withdrawal (unloading, fixed\n"
+                             "grips) branch follows, at or below min_separation; NaN for the approach (loading)\n"
+                             "branch or curves without tension. Finite: the pull-off is the withdrawal's.")
       .def_property_readonly("limited_intervals", &ContactCurves::limited_intervals,
                              "Intervals whose Hermite slopes were limited to keep ln p monotone.")
       .def_property_readonly(

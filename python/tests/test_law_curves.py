@@ -164,6 +164,9 @@ def test_the_withdrawal_branch(tmp_path):
     assert "withdrawal (unloading, fixed grips) branch after an approach to s0 = -1" in withdrawal.description
     assert withdrawal.pull_off_pressure == pytest.approx(-47883.3048, rel=1e-8)
     assert withdrawal.pull_off_pressure < approach.pull_off_pressure < 0
+    # the branch as the table states it: sigma_s s0 [m], NaN on the approach branch
+    assert withdrawal.approach_separation == -1 * 2e-9 == withdrawal.min_separation
+    assert np.isnan(approach.approach_separation)
     # at s0 the summits' state is the approach's: the same curves there, within both bounds
     u0 = withdrawal.min_separation
     assert withdrawal.pressure(u0) == pytest.approx(approach.pressure(u0), rel=1e-5)
@@ -176,6 +179,7 @@ def test_the_withdrawal_branch(tmp_path):
     u = np.linspace(back.min_separation, back.max_separation, 33)
     assert np.array_equal(back.pressure(u), withdrawal.pressure(u))
     assert back.pull_off_separation == withdrawal.pull_off_separation
+    assert back.approach_separation == withdrawal.approach_separation
     # the inverse serves the stable part, up to the pull-off
     p = withdrawal.pressure(0.5 * (u0 + withdrawal.pull_off_separation))
     assert withdrawal.separation_at_pressure(p) == pytest.approx(0.5 * (u0 + withdrawal.pull_off_separation), rel=1e-9)

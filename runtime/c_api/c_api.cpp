@@ -616,6 +616,9 @@ double asperity_contact_curves_summit_count_max_rel_error(const asperity_contact
   if (!curves || curves->curves.data().summit_count.empty()) return not_a_number;
   return curves->curves.data().summit_count_max_rel_error;
 }
+double asperity_contact_curves_approach_separation(const asperity_contact_curves* curves) {
+  return curves ? curves->curves.data().approach_separation : not_a_number;
+}
 int asperity_contact_curves_has_tension(const asperity_contact_curves* curves) {
   return curves && curves->curves.has_tension() ? 1 : 0;
 }

@@ -138,6 +138,10 @@ void ContactCurvesData::validate(const std::string& context) const {
     fail("the mean summit height is not finite (or too large)");
   if (!std::isnan(max_height) && !(std::fabs(max_height) <= schema::max_contact_separation))
     fail("the highest point is not finite (or too large)");
+  if (withdrawal() && (tensile_pressure.empty() || !(approach_separation <= separation[0]) ||
+                       !(std::fabs(approach_separation) <= schema::max_contact_separation)))
+    fail("the approach separation (a withdrawal branch's) goes with a tensile part and must be finite, at or below "
+         "the first separation");
 }
 
 }  // namespace asperity

@@ -396,6 +396,8 @@ ContactCurvesData read_contact_curves_verified(const unsigned char* bytes, std::
     data.summit_count = in_group.doubles(g, schema::set_summit_count, {nodes});
     data.summit_count_max_rel_error = scalar(in_group, g, schema::set_summit_count_max_rel_error);
   }
+  if (in_group.has_link(g, schema::set_approach_separation))
+    data.approach_separation = scalar(in_group, g, schema::set_approach_separation);
   data.validate("table '" + name + "'");
   return data;
 }

@@ -177,6 +177,7 @@ void write_contact_curves_contents(hid_t file, const ContactCurvesData& data) {
     doubles(schema::set_summit_count, data.summit_count.data(), nodes);
     doubles(schema::set_summit_count_max_rel_error, &data.summit_count_max_rel_error, 1);
   }
+  if (data.withdrawal()) doubles(schema::set_approach_separation, &data.approach_separation, 1);
 }
 
 // The file's bytes: HDF5 in memory with the user block, `write` filling it, the header sealed.

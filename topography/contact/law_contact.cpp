@@ -51,7 +51,7 @@ PhysicalState law_state(const ContactCurves& curves, double p, double area) {
 }  // namespace
 
 LawContact compare_law(const ContactComparison& comparison, const Summits& summits, HeightModel model,
-                       const std::string& model_reason, const LawSceneMaker& make) {
+                       const std::string& model_reason, const LawSceneMaker& make, double approach_separation) {
   const ModelContact* elastic = comparison.find(to_string(model));
   if (!elastic || !elastic->served || elastic->at_pressures.size() != comparison.pressures.size())
     throw Error(std::string("contact law: the ") + to_string(model) + " fit has no elastic curves to set the law beside");
@@ -75,7 +75,15 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   double s_lo = elastic->curve.back().separation / scale, s_hi = elastic->curve.front().separation / scale;
   out.separation_min = s_lo;
   out.separation_max = s_hi;
-  SceneLaw law = make(surface, s_lo, s_hi);  // the material's errors, before any work
+  const double nan = std::numeric_limits<double>::quiet_NaN(), s0 = approach_separation;
+  const bool withdrawal = !std::isnan(s0);
+  SceneLaw law = make(surface, s_lo, s_hi, nan);  // the material's errors, before any work
+  // and the approach separation's: the law's refusal without adhesion, then s0's own (finite, below 0
+  // on the bounded side) over a range it starts; whether the approach reaches the pressures is the
+  // curves' question (below)
+  if (withdrawal && !is_adhesive(law.law.kind)) make(surface, s_lo, s_hi, s_lo);
+  if (withdrawal && s0 < s_hi) make(surface, s0, s_hi, s0);
+  out.approach_separation = s0;
   out.law = contact_law_name(law.law.kind);
   if (const ContactLawDescriptor* descriptor = find_contact_law(law.law.kind))
     for (int k = 0; k < descriptor->parameter_count; ++k) {
@@ -94,8 +102,9 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   if (out.adhesive) {
     out.adhesion_parameter = adhesion_parameter(law.law, out.summit_height_sd);
     out.adhesion_length = law.law.critical_interference;
-    out.regime = "adhesive (" + out.law + ", the approach branch): Fuller-Tabor's adhesion parameter sigma_s/delta_c = " +
-                 g(out.adhesion_parameter) +
+    out.regime = "adhesive (" + out.law + ", " +
+                 (withdrawal ? "the withdrawal branch after an approach to s0 = " + g(s0, 6) : "the approach branch") +
+                 "): Fuller-Tabor's adhesion parameter sigma_s/delta_c = " + g(out.adhesion_parameter) +
                  " (Fuller & Tabor 1975: the larger, the less of the smooth surfaces' adhesion survives the roughness; "
                  "docs/contact-laws.md section 5)";
   } else if (std::isfinite(out.gw_plasticity_index))
@@ -109,7 +118,8 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
   // Widen the range until the law's pressure covers the comparison's (the law is softer or
   // stiffer than Hertz past omega_c): its exact pressure by the generator's own quadrature
   const double density = surface.summit_density, p_min = comparison.pressure_min, p_max = comparison.pressure_max;
-  const auto pressure = [&](double s) { return density * generator::law_means(law, s).load; };
+  SceneLaw branch = law;  // the curves' branch: the approach, or the withdrawal after s0 (from s0 on)
+  const auto pressure = [&](double s) { return density * generator::law_means(branch, s).load; };
   const bool bounded = surface.distribution == Distribution::weibull && surface.side == Side::bounded;
   try {
     double step = 0.02 * std::max(s_hi - s_lo, 0.05);
@@ -117,6 +127,20 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
       s_hi = bounded ? s_hi + std::min(step, -s_hi / 2) : s_hi + step;
     step = 0.02 * std::max(s_hi - s_lo, 0.05);
     for (int k = 0; k < 80 && !(pressure(s_lo) > p_max * (1 + 1e-3)) && s_lo > -1e3; ++k, step *= 1.5) s_lo -= step;
+    if (withdrawal) {
+      // the withdrawal starts at s0 with the approach's pressure there, and falls from it
+      const double reached = pressure(s0);
+      if (s0 > s_lo && !(reached > p_max))
+        throw Error("the approach to s0 = " + g(s0, 6) + " reaches " + g(reached) + " Pa, not the " + g(p_max) +
+                    " Pa the curves are compared up to: approach further (a lower approach separation) or ask lower "
+                    "pressures");
+      s_lo = std::max(s_lo, s0);  // below s_hi: the pressure there is above p_max, at s_hi below p_min
+      branch = make(surface, s0, s_hi, s0);
+      // the withdrawal's tension lowers the pressure: from s_lo down towards s0 until it covers p_max
+      step = 0.02 * std::max(s_hi - s_lo, 0.05);
+      for (int k = 0; k < 80 && s_lo > s0 && !(pressure(s_lo) > p_max * (1 + 1e-3)); ++k, step *= 1.5)
+        s_lo = std::max(s0, s_lo - step);
+    }
     if (out.adhesive) {
       // on past the greatest tension: the net pressure falls below 0 and rises back towards it
       // (only while the pressure stays within a table's range: where the tension shows only
@@ -137,7 +161,7 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
     if (!(pressure(out.separation_min) > p_max) || !(pressure(out.separation_max) < p_min))
       throw Error("no separation within a scene's range [-1e3, 1e3] gives the law's pressures " + g(p_min) + " to " +
                   g(p_max) + " Pa");
-    law = make(surface, out.separation_min, out.separation_max);
+    law = make(surface, out.separation_min, out.separation_max, withdrawal ? s0 : nan);
     const generator::LawCurvesResult result = generator::generate_law_curves(law, "asperity surface --law");
     out.nodes = result.nodes;
     for (int k = 0; k < 3; ++k) out.max_rel_error[k] = result.data.max_rel_error[k];
@@ -155,7 +179,8 @@ LawContact compare_law(const ContactComparison& comparison, const Summits& summi
     out.served = true;
     std::ostringstream note;
     note.precision(2);
-    note << "law scene table: separations s = " << g(out.separation_min, 4) << " to " << g(out.separation_max, 4)
+    note << "law scene table" << (withdrawal ? " (the withdrawal after an approach to s0 = " + g(s0, 6) + ")" : "")
+         << ": separations s = " << g(out.separation_min, 4) << " to " << g(out.separation_max, 4)
          << " (origin convention, in units of the fit's scale " << g(scale) << " m), " << result.nodes
          << " nodes, stored relative error bound " << out.max_rel_error[0] << " (pressure), " << out.max_rel_error[1]
          << " (stiffness), " << out.max_rel_error[2] << " (area fraction)";

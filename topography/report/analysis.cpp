@@ -179,7 +179,8 @@ void add_contact_law(SurfaceAnalysis& analysis, const HeightMap& map, const Anal
     reason = "no model is named by the verdict: the fit of the lowest AIC with elastic curves";
   }
   if (model < 0) throw Error(map.source + ": contact law: no fitted model has elastic curves to set the law beside");
-  analysis.law = compare_law(*analysis.contact, analysis.summits, static_cast<HeightModel>(model), reason, options.law);
+  analysis.law = compare_law(*analysis.contact, analysis.summits, static_cast<HeightModel>(model), reason, options.law,
+                             options.law_approach_separation);
 }
 
 }  // namespace

@@ -75,6 +75,9 @@
 //                            p_c + p_t and k_c + k_t. Absent: p_t = 0 (every other table)
 //       summit_count    [N]  optional: summits in contact per m^2 of nominal area, > 0, never rising
 //       summit_count_max_rel_error [1]  with summit_count: its stored bound (relative)
+//       approach_separation [1]  optional, only with a tensile part: m, at or below the first
+//                            node: the curves are an adhesive law's withdrawal (unloading, fixed
+//                            grips) branch after an approach to it; absent: the approach branch
 //   Served between the first and last node (outside: NaN); between nodes by a cubic Hermite in
 //   ln p with the stored stiffness as slope (-k/p), limited to stay monotone (Fritsch-Carlson),
 //   and by Steffen's monotone cubic in ln(area fraction); the stiffness is -p d(ln p)/du of the
@@ -161,6 +164,7 @@ inline constexpr const char* set_tensile_pressure = "tensile_pressure";
 inline constexpr const char* set_tensile_stiffness = "tensile_stiffness";
 inline constexpr const char* set_summit_count = "summit_count";
 inline constexpr const char* set_summit_count_max_rel_error = "summit_count_max_rel_error";
+inline constexpr const char* set_approach_separation = "approach_separation";
 // What a reader accepts: bounds that keep every served quantity and its logarithm's slope
 // finite, far beyond a physical surface's (separations of micrometres, pressures of kPa to GPa).
 inline constexpr int min_contact_curve_nodes = 3, max_contact_curve_nodes = 65536;
