@@ -446,7 +446,11 @@ ordered_json law_json(const LawContact& law, const ContactComparison& c) {
                                      {"adhesion_parameter_definition",
                                       "sigma_s / delta_c, delta_c = (3/4)(pi^2 dgamma^2 R / E*^2)^1/3 (Fuller-Tabor 1975)"},
                                      {"length_scale_m", number(law.adhesion_length)},
-                                     {"branch", "approach (loading)"},
+                                     {"branch", std::isnan(law.approach_separation)
+                                                    ? std::string("approach (loading)")
+                                                    : "withdrawal (unloading, fixed grips) after an approach to s0 = " +
+                                                          format_double(law.approach_separation)},
+                                     {"approach_separation", number(law.approach_separation)},
                                      {"pull_off_pressure_Pa", number(law.pull_off_pressure)},
                                      {"pull_off_mean_separation_m", number(law.pull_off_mean_separation)}}
                       : ordered_json(nullptr);
@@ -694,7 +698,10 @@ void markdown_law(std::ostream& md, const LawContact& law, const ContactComparis
   if (law.adhesive) {
     md << "| adhesion parameter σs/δc (Fuller–Tabor 1975) | " << g(law.adhesion_parameter, 3) << " |\n";
     md << "| the law's length scale | " << g(law.adhesion_length) << " m |\n";
-    md << "| pull-off: greatest tension of the approach branch | "
+    md << "| pull-off: greatest tension of the "
+       << (std::isnan(law.approach_separation) ? std::string("approach branch")
+                                               : "withdrawal after an approach to s0 = " + g(law.approach_separation))
+       << " | "
        << (std::isfinite(law.pull_off_pressure)
                ? g(law.pull_off_pressure) + " Pa at mean separation " + g(law.pull_off_mean_separation) + " m"
                : std::string("none measurable (see the warning below)"))

@@ -38,6 +38,9 @@ struct AnalysisOptions {
   // A contact law beside the elastic curves (with `contact`): its plasticity index and its
   // curves on the fit the verdict names (law_contact.hpp); empty: none
   LawSceneMaker law;
+  // with `law`, an adhesive law's withdrawal branch after an approach to this dimensionless
+  // separation (the fit's scale, origin convention: law_contact.hpp's compare_law); NaN: approach
+  double law_approach_separation = 0.0 / 0.0;
   EnsembleProgress progress;              // the ensemble's progress (surrogates done of total)
   ExactProgress exact_progress;           // the exact contact's (load steps done of total)
 };

@@ -38,9 +38,12 @@
 namespace asperity::topography {
 
 // The user's law and material on `surface` over the dimensionless separations [s_min, s_max]
-// (origin convention) as a law scene; throws asperity::Error for a material the law lacks or
-// does not take (`asperity surface --law`: the command's options through the scene's checks).
-using LawSceneMaker = std::function<SceneLaw(const RoughSurface& surface, double s_min, double s_max)>;
+// (origin convention) as a law scene, an adhesive law's withdrawal branch after an approach to
+// approach_separation (s0 <= s_min; NaN: the approach branch); throws asperity::Error for a
+// material the law lacks or does not take, or an s0 it refuses (`asperity surface --law`: the
+// command's options through the scene's checks).
+using LawSceneMaker =
+    std::function<SceneLaw(const RoughSurface& surface, double s_min, double s_max, double approach_separation)>;
 
 // One material parameter of the law (the registry's, contact_law_registry.hpp) and the value the
 // law was made with (its default where not given; a choice parameter: its index).
@@ -70,7 +73,10 @@ struct LawParameterValue {
   X(double, gw_plasticity_index, nullptr, "(E*/H)(sigma_s/R)^1/2", 0.0 / 0.0)                              \
   X(double, valid_up_to, nullptr, "the largest interference the law's source supports [m] (inf: every one)", 0) \
   X(std::string, regime, nullptr, "what psi says, in words, naming the definition")                       \
-  X(bool, adhesive, nullptr, "an adhesive law (DMT, JKR, Maugis-Dugdale; the approach branch)", false)     \
+  X(bool, adhesive, nullptr, "an adhesive law (DMT, JKR, Maugis-Dugdale)", false)                         \
+  X(double, approach_separation, nullptr,                                                                  \
+    "an adhesive law's withdrawal branch after an approach to this dimensionless separation (the fit's "   \
+    "scale, origin convention); NaN: the approach branch", 0.0 / 0.0)                                      \
   X(double, adhesion_parameter, nullptr, "Fuller-Tabor's sigma_s / delta_c; NaN where not adhesive", 0.0 / 0.0) \
   X(double, adhesion_length, nullptr, "the law's length scale (Maugis' d_s) [m]; NaN where not adhesive",  \
     0.0 / 0.0)                                                                                             \
@@ -100,10 +106,15 @@ struct LawContact {
 };
 
 // The law on `model`'s fit of the comparison (served: its elastic curves are the comparison's).
-// Throws asperity::Error from `make` (the material), or for a model without elastic curves; a
-// law whose curves cannot be tabulated gets its plasticity index and the reason (served false).
+// Throws asperity::Error from `make` (the material, an approach separation it refuses), or for a
+// model without elastic curves; a law whose curves cannot be tabulated gets its plasticity index
+// and the reason (served false). With approach_separation s0 (an adhesive law's; dimensionless in
+// the fit's scale, origin convention) the curves are the withdrawal branch after an approach to
+// s0, from where its pressure covers the comparison's largest (at or above s0) on; an approach
+// that does not reach that pressure is the reason (served false).
 LawContact compare_law(const ContactComparison& comparison, const Summits& summits, HeightModel model,
-                       const std::string& model_reason, const LawSceneMaker& make);
+                       const std::string& model_reason, const LawSceneMaker& make,
+                       double approach_separation = 0.0 / 0.0);
 
 }  // namespace asperity::topography
 
