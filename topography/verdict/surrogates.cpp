@@ -66,109 +66,6 @@ std::size_t largest_lag(std::size_t points, std::size_t length) {
                                            S::largest_lag_lengths * std::max<std::size_t>(1, length)));
 }
 
-
-struct LowWavenumberFit {
-  bool steep = false;
-  double log_amplitude = 0, slope = 0;  // ln S = log_amplitude + slope ln |q|, |q| in cycles per point
-};
-
-// The spectrum of an autocovariance laid on a cx x cy grid (zero beyond its largest lag, which
-// is under half the grid), on a gx x gy grid at least as large: the same estimate sampled finer.
-// Real parts, gy x (gx/2 + 1).
-std::vector<double> spectrum_on_grid(const std::vector<double>& covariance, std::size_t cx, std::size_t cy,
-                                     std::size_t gx, std::size_t gy) {
-  std::vector<double> laid(gx * gy, 0.0);
-  for (std::size_t j = 0; j < cy; ++j)
-    for (std::size_t i = 0; i < cx; ++i) {
-      const double c = covariance[j * cx + i];
-      if (c == 0) continue;
-      const std::size_t ti = i <= cx / 2 ? i : gx - (cx - i), tj = j <= cy / 2 ? j : gy - (cy - j);
-      laid[tj * gx + ti] = c;
-    }
-  std::vector<detail::Complex> transformed(gy * (gx / 2 + 1));
-  detail::forward_2d(laid.data(), transformed.data(), gy, gx);
-  std::vector<double> spectrum(transformed.size());
-  for (std::size_t k = 0; k < spectrum.size(); ++k) spectrum[k] = transformed[k].real();
-  return spectrum;
-}
-
-// A wavevector of a gx x gy grid's half plane: (i, j) as cycles per point along x and y
-struct Wavevector {
-  double fx, fy;
-};
-Wavevector wavevector(std::size_t i, std::size_t j, std::size_t gx, std::size_t gy) {
-  const double ky = j <= gy / 2 ? static_cast<double>(j) : static_cast<double>(j) - static_cast<double>(gy);
-  return {static_cast<double>(i) / static_cast<double>(gx), ky / static_cast<double>(gy)};
-}
-
-// The spectrum's power law over the lowest wavenumbers the estimate resolves: ln S against
-// ln |q| (cycles per point) over the wavevectors between continued_below and fit_to times it
-// cycles per map (elliptical: rho = |(fx nx, fy ny)|), each of fit_bins logarithmic bins of rho
-// weighted alike. Steep: the slope is at most steep_slope (no roll-off resolved in the map).
-LowWavenumberFit fit_low_wavenumbers(const std::vector<double>& spectrum, std::size_t gx, std::size_t gy,
-                                     std::size_t nx, std::size_t ny) {
-  using S = SurrogateSpectrum;
-  const std::size_t half = gx / 2 + 1;
-  const double lo = std::log(S::continued_below), hi = std::log(S::continued_below * S::fit_to);
-  const auto bin_of = [&](const Wavevector& f) {
-    const double rho = std::hypot(f.fx * static_cast<double>(nx), f.fy * static_cast<double>(ny));
-    if (!(rho >= S::continued_below && rho < S::continued_below * S::fit_to)) return -1;
-    return std::min(S::fit_bins - 1, static_cast<int>(S::fit_bins * (std::log(rho) - lo) / (hi - lo)));
-  };
-  int in_bin[S::fit_bins] = {};
-  for (std::size_t j = 0; j < gy; ++j)
-    for (std::size_t i = 0; i < half; ++i) {
-      const int b = bin_of(wavevector(i, j, gx, gy));
-      if (b >= 0 && spectrum[j * half + i] > 0) ++in_bin[b];
-    }
-  double w = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t j = 0; j < gy; ++j)
-    for (std::size_t i = 0; i < half; ++i) {
-      const Wavevector f = wavevector(i, j, gx, gy);
-      const int b = bin_of(f);
-      if (b < 0 || !(spectrum[j * half + i] > 0)) continue;
-      const double weight = 1.0 / in_bin[b], x = std::log(std::hypot(f.fx, f.fy)), y = std::log(spectrum[j * half + i]);
-      w += weight;
-      sx += weight * x;
-      sy += weight * y;
-      sxx += weight * x * x;
-      sxy += weight * x * y;
-    }
-  LowWavenumberFit fit;
-  const double det = w * sxx - sx * sx;
-  if (!(w > 0 && det > 0)) return fit;
-  fit.slope = (w * sxy - sx * sy) / det;
-  fit.log_amplitude = (sy - fit.slope * sx) / w;
-  fit.steep = fit.slope <= S::steep_slope;
-  return fit;
-}
-
-// Below continued_below cycles per map the estimate is replaced by the fitted power law, each
-// wavevector's cell averaged over sub x sub points (the law is steep: a cell's centre is not
-// its mean); q = 0 (the mean, which the analysis removes) carries nothing.
-void continue_power_law(std::vector<double>& spectrum, std::size_t gx, std::size_t gy, std::size_t nx,
-                        std::size_t ny, const LowWavenumberFit& fit) {
-  constexpr int sub = 8;
-  const std::size_t half = gx / 2 + 1;
-  const double cell_x = 1.0 / static_cast<double>(gx), cell_y = 1.0 / static_cast<double>(gy);
-  for (std::size_t j = 0; j < gy; ++j)
-    for (std::size_t i = 0; i < half; ++i) {
-      const Wavevector f = wavevector(i, j, gx, gy);
-      const double rho = std::hypot(f.fx * static_cast<double>(nx), f.fy * static_cast<double>(ny));
-      if (!(rho < SurrogateSpectrum::continued_below)) continue;
-      if (i == 0 && j == 0) {
-        spectrum[0] = 0;
-        continue;
-      }
-      double sum = 0;
-      for (int a = 0; a < sub; ++a)
-        for (int b = 0; b < sub; ++b) {
-          const double qx = f.fx + ((a + 0.5) / sub - 0.5) * cell_x, qy = f.fy + ((b + 0.5) / sub - 0.5) * cell_y;
-          sum += std::exp(fit.log_amplitude + 0.5 * fit.slope * std::log(qx * qx + qy * qy));
-        }
-      spectrum[j * half + i] = sum / (sub * sub);
-    }
-}
 }  // namespace
 
 double surrogate_lag_window(double u) noexcept {
@@ -190,12 +87,8 @@ std::string surrogate_method() {
          text(S::window_flat) + " of the largest lag, a cosine taper to 0 at it; the largest lag " +
          std::to_string(S::largest_lag_lengths) + " correlation lengths, at most " +
          std::to_string(S::largest_lag_map_numerator) + "/" + std::to_string(S::largest_lag_map_denominator) +
-         " of the map), on a grid the map plus the largest lag wide, cut to the map; where that spectrum's log-log "
-         "slope between " +
-         text(S::continued_below) + " and " + text(S::continued_below * S::fit_to) +
-         " cycles per map is at most " + text(S::steep_slope) + " (no roll-off in the map), below " +
-         text(S::continued_below) + " cycles per map the fitted power law instead, on a grid " +
-         std::to_string(S::continued_grid_maps) + " times the map; each model's marginal by F^-1(Phi(g))";
+         " of the map), on a grid the map plus the largest lag wide, cut to the map; each model's marginal by "
+         "F^-1(Phi(g))";
 }
 
 double normal_quantile(double p) { return -std::sqrt(2.0) * boost::math::erfc_inv(2 * p); }
@@ -373,6 +266,7 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
     for (double& v : lost) v = std::isfinite(v) ? std::max(0.0, v) : 0.0;
   }
   // the windowed autocovariance on the surrogates' grid
+  const std::size_t half = px_ / 2 + 1;
   std::vector<double> covariance(px_ * py_, 0.0);
   for (long ry = -static_cast<long>(lag_y); ry <= static_cast<long>(lag_y); ++ry)
     for (long rx = -static_cast<long>(lag_x); rx <= static_cast<long>(lag_x); ++rx) {
@@ -392,39 +286,27 @@ SurrogateFields::SurrogateFields(const HeightMap& map, const CorrelationLengths&
       for (int k = 0; k < basis; ++k) restored += lost[k] * mu[static_cast<std::size_t>(k)][sy * ax + sx] / pairs;
       covariance[ty * px_ + tx] = window * restored;
     }
-  // the spectrum (real: the autocovariance is even; a negative value is estimation noise)
-  std::vector<double> spectrum = spectrum_on_grid(covariance, px_, py_, px_, py_);
-  const LowWavenumberFit fit = fit_low_wavenumbers(spectrum, px_, py_, nx_, ny_);
-  continued_ = fit.steep;
-  low_wavenumber_slope_ = fit.slope;
-  if (continued_) {  // the same estimate on the larger grid, sampled finer, then continued below
-    const std::size_t gx = smooth(std::max(px_, SurrogateSpectrum::continued_grid_maps * nx_));
-    const std::size_t gy = smooth(std::max(py_, SurrogateSpectrum::continued_grid_maps * ny_));
-    spectrum = spectrum_on_grid(covariance, px_, py_, gx, gy);
-    px_ = gx;
-    py_ = gy;
-  }
-  const std::size_t grid_half = px_ / 2 + 1;
+  std::vector<detail::Complex> transformed(py_ * half);
+  detail::forward_2d(covariance.data(), transformed.data(), py_, px_);
+  // the spectrum is real (the autocovariance is even); a negative value is estimation noise
+  amplitude_.assign(py_ * half, 0.0);
+  for (std::size_t k = 0; k < amplitude_.size(); ++k) amplitude_[k] = std::sqrt(std::max(0.0, transformed[k].real()));
   // The scale that gives the field unit variance in expectation over the padded grid (the map's
   // normal scores have unit variance). Not each surrogate's own: a realization's mean and variance
   // over the map fluctuate as the measured map's do, and a Weibull marginal turns that
   // fluctuation into one of the shape (standardizing each surrogate made its intervals too narrow).
   // A coefficient is a complex normal of variance amplitude^2; it and its conjugate make the
   // field's sum, but in the columns kx = 0 and Nyquist (self-conjugate after the transform along
-  // y), where only the real part counts. A continued spectrum keeps the estimate's scale: what the
-  // continuation adds is variance the estimate lacked.
+  // y), where only the real part counts.
   double total = 0;
   for (std::size_t j = 0; j < py_; ++j)
-    for (std::size_t i = 0; i < grid_half; ++i) {
-      const bool self_conjugate = i == 0 || (px_ % 2 == 0 && i == grid_half - 1);
-      const double amplitude = std::sqrt(std::max(0.0, spectrum[j * grid_half + i]));
-      total += (self_conjugate ? 1.0 : 2.0) * amplitude * amplitude;
+    for (std::size_t i = 0; i < half; ++i) {
+      const bool self_conjugate = i == 0 || (px_ % 2 == 0 && i == half - 1);
+      total += (self_conjugate ? 1.0 : 2.0) * amplitude_[j * half + i] * amplitude_[j * half + i];
     }
-  if (continued_) continue_power_law(spectrum, px_, py_, nx_, ny_, fit);
   const double points = static_cast<double>(px_) * static_cast<double>(py_);
   const double scale = total > 0 ? points / std::sqrt(total) : 0;
-  amplitude_.assign(py_ * grid_half, 0.0);
-  for (std::size_t k = 0; k < amplitude_.size(); ++k) amplitude_[k] = scale * std::sqrt(std::max(0.0, spectrum[k]));
+  for (double& a : amplitude_) a *= scale;
 }
 
 void SurrogateFields::generate(std::uint64_t seed, std::size_t index, std::vector<double>& field) const {

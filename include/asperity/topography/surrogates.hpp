@@ -12,10 +12,7 @@
 // flat-topped lag window (Tukey's: 1 to half the largest lag, a cosine taper to 0 at it) to six
 // correlation lengths (at most three quarters of the map), laid on a grid the map plus that lag
 // wide (so a surrogate is not periodic across the map) and transformed (surrogates.cpp says why
-// each step). A map that resolves no roll-off (a self-affine one: the estimate steep down to the
-// lowest wavenumbers it resolves) has the estimate continued below them by its fitted power law,
-// on a grid larger than the map: the window would otherwise take the long wavelengths' variance
-// from its surrogates (docs/surfaces.md, "Steep spectra"). The constants below are what the code reads, and surrogate_method() the words every
+// each step). The constants below are what the code reads, and surrogate_method() the words every
 // output gives for it, made from them.
 // A surrogate is a Gaussian random field with that spectrum (complex normal Fourier
 // coefficients, one inverse FFT), of unit variance in expectation, cut to the map's grid, and
@@ -28,8 +25,7 @@
 // Theiler et al. (1992) and Schreiber & Schmitz (2000). A monotone map keeps every summit where it
 // is, so the summits are found once per surrogate, on g.
 //
-// Cost: one FFT of the padded grid a surrogate (a continued spectrum's: twice the map each way),
-// O(N log N); reproducible for every thread count
+// Cost: one FFT of the padded grid a surrogate, O(N log N); reproducible for every thread count
 // (surrogate k of seed s is the same however the ensemble is split).
 #pragma once
 #include <complex>
@@ -51,13 +47,6 @@ struct SurrogateSpectrum {
   static constexpr std::size_t largest_lag_map_numerator = 3, largest_lag_map_denominator = 4;
   // Tukey's lag window is 1 up to this fraction of the largest lag
   static constexpr double window_flat = 0.5;
-  // Steep spectra (issue 40, item 1): when the estimate's log-log slope between continued_below and
-  // fit_to times it cycles per map (fit_bins logarithmic bins) is at most steep_slope, the map
-  // resolves no roll-off, and below continued_below cycles per map the spectrum is that power law,
-  // on a grid continued_grid_maps times the map along each axis
-  static constexpr double continued_below = 1.5, fit_to = 4, steep_slope = -2.5;
-  static constexpr int fit_bins = 6;
-  static constexpr std::size_t continued_grid_maps = 2;
 };
 
 // The lag window at u = the lag's elliptical radius over the largest lag ((rx/Lx)^2 + (ry/Ly)^2)^1/2:
@@ -87,15 +76,9 @@ class SurrogateFields {
   std::size_t ny() const noexcept { return ny_; }
   std::size_t padded_nx() const noexcept { return px_; }
   std::size_t padded_ny() const noexcept { return py_; }
-  // the spectrum was continued below the lags the window resolves (SurrogateSpectrum), and the
-  // slope of its lowest wavenumbers, d ln S / d ln q
-  bool continued() const noexcept { return continued_; }
-  double low_wavenumber_slope() const noexcept { return low_wavenumber_slope_; }
 
  private:
   std::size_t nx_ = 0, ny_ = 0, px_ = 0, py_ = 0;
-  bool continued_ = false;
-  double low_wavenumber_slope_ = 0;
   std::vector<double> amplitude_;  // py x (px/2 + 1), the coefficients' standard deviation
   std::vector<double> scores_;
   std::vector<char> valid_;
