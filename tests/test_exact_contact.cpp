@@ -477,6 +477,31 @@ TEST(ExactContactRange, ClosedMeanGapAnsweredAsFullContact) {
   EXPECT_EQ(iterations, 0);
 }
 
+// A padded map pressed flat (no closed form: iterated): the mean gap is 0 and stays 0 as the load
+// grows, so -dP/d(mean gap) is infinite; the rough punch's approach still moves, linearly (the
+// contact set is fixed), so its stiffness is the finite difference of two solves'. Before, the
+// stiffness CG's residual on the contact points was taken for the gap's change: -1.68e15 N/m at
+// 1e12 and 1e13 Pa on the AFM map padded (issue 42).
+TEST(ExactContactRange, PaddedFullContactStiffnessInfinite) {
+  const HeightMap map = rough_map(64, 0.5, 7);
+  for (ContactKernel kernel : {ContactKernel::fourier, ContactKernel::love}) {
+    ExactContactOptions options;
+    options.contact_modulus = 1e11;
+    options.boundary = ContactBoundary::padded;
+    options.kernel = kernel;
+    ExactContact solver(map, options);
+    const ContactStep a = solver.at_pressure(1e12);
+    ASSERT_EQ(a.contact_points, 64u * 64u) << contact_kernel_name(kernel);
+    EXPECT_EQ(a.mean_gap, 0.0);
+    EXPECT_TRUE(std::isinf(a.stiffness) && a.stiffness > 0) << a.stiffness;
+    EXPECT_TRUE(std::isinf(a.stiffness_per_area) && a.stiffness_per_area > 0) << a.stiffness_per_area;
+    const ContactStep b = solver.at_pressure(1.01e12);
+    ASSERT_EQ(b.contact_points, 64u * 64u);
+    const double difference = (b.load - a.load) / (a.approach - b.approach);
+    EXPECT_NEAR(difference / a.approach_stiffness, 1, 1e-5) << contact_kernel_name(kernel);
+  }
+}
+
 TEST(ExactContactMemory, RefusedBeyondTheLimitBeforeAllocating) {
   const HeightMap map = rough_map(128, 0.5, 1);
   ExactContactOptions options;

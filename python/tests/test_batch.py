@@ -373,6 +373,35 @@ def test_options_cross_to_the_workers_whole():
             == batch._plain_options(None, seed=7, contact_modulus=1e11, pressures=[1e6]))
 
 
+def test_exact_contact_options_reach_the_workers(tmp_path, tcp_cluster):
+    """Many maps and pressures with the exact contact through the batch (issue 42): its options
+    (boundary, kernel, load steps, tolerance) cross to the workers, enter the fingerprint, and the
+    solve each JSON describes is the one asked."""
+    maps = [tmp_path / f"m{k}.gsf" for k in range(3)]
+    for k, path in enumerate(maps):
+        write_map(path, 48, 1.5, 10 + k)
+    contact = topography.ContactOptions(1e11, pressures=[1e6, 3e6, 1e7], exact=True, exact_boundary="periodic",
+                                        exact_kernel="fourier", exact_points=3, exact_tolerance=1e-9)
+    options = topography.AnalysisOptions(contact=contact, assessment=topography.AssessmentOptions(bootstrap=0))
+    padded = topography.AnalysisOptions(contact=topography.ContactOptions(1e11, pressures=[1e6, 3e6, 1e7], exact=True),
+                                        assessment=topography.AssessmentOptions(bootstrap=0))
+    assert batch.options_fingerprint(options) != batch.options_fingerprint(padded)
+    plain = batch._plain_options(options)
+    made = batch._options_from_plain(plain).contact
+    assert (made.exact, made.exact_boundary, made.exact_kernel, made.exact_points, made.exact_tolerance) == (
+        True, "periodic", "fourier", 3, 1e-9)
+    rows = batch.analyse_files([str(p) for p in maps], tmp_path / "out", options, scheduler=tcp_cluster.scheduler_address,
+                               progress=False)
+    assert [row["status"] for row in rows] == ["analysed"] * 3, [row["error"] for row in rows]
+    for row in rows:
+        for k in range(3):
+            ratio = row[f"stiffness_over_exact_{k}_gaussian"]
+            assert ratio is not None and math.isfinite(ratio) and ratio > 0
+        text = (tmp_path / "out" / f"{row['name']}.json").read_text()
+        assert "48 x 48 points, periodic boundary, fourier kernel, tolerance 1e-09" in text
+        assert re.search(r"periodic boundary, fourier kernel, tolerance 1e-09; \d+ load steps", text)
+
+
 def test_bad_calls_fail_before_any_analysis(tmp_path):
     with pytest.raises(ValueError, match="contact_modulus"):
         batch.analyse_files(["a.x3p"], tmp_path, pressures=[1e6])

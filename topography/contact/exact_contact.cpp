@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -135,31 +136,59 @@ const char* contact_solver_name(ContactSolver solver) {
   return solver == ContactSolver::preconditioned ? "preconditioned" : "polonsky-keer";
 }
 
-std::size_t exact_contact_memory(std::size_t nx, std::size_t ny, const ExactContactOptions& options) {
-  // in doubles: a size past SIZE_MAX saturates instead of wrapping
+namespace {
+
+// One level's arrays [bytes] (in doubles: a size past SIZE_MAX saturates instead of wrapping):
+// `kept` from one step to the next (the heights, the pressure, the displacement, the mask, the
+// kernel's half), `work` the work arrays (made at each solve; a coarse level's released between its
+// solves, a finer level's while the coarser one solves), `setup` what only the constructor adds.
+struct LevelMemory {
+  double kept = 0, work = 0, setup = 0;
+};
+
+LevelMemory level_memory(std::size_t nx, std::size_t ny, const ExactContactOptions& options, bool coarse_level) {
   const double factor = options.boundary == ContactBoundary::padded ? 2 : 1;
-  const double map_points = static_cast<double>(nx) * static_cast<double>(ny);
   const double sx = factor * static_cast<double>(nx), sy = factor * static_cast<double>(ny);
   const double solve_points = sx * sy, half_points = sy * (std::floor(sx / 2) + 1);
-  // 8 arrays of doubles and the mask; the spectrum (complex) and the kernel (real) on half the grid
-  double bytes = solve_points * (8 * sizeof(double) + 1) + half_points * (sizeof(std::complex<double>) + sizeof(double));
+  const double kernel_points = (std::floor(sy / 2) + 1) * (std::floor(sx / 2) + 1);
+  LevelMemory level;
+  level.kept = solve_points * (3 * sizeof(double) + 1) + kernel_points * sizeof(double);
+  // the direction, the gap, the convolution of the direction (and the stiffness increment, but on
+  // a coarse level), the complex spectrum on half the grid
+  const double work_arrays = !coarse_level || is_plastic(options) ? 4 : 3;
+  level.work = solve_points * work_arrays * sizeof(double) + half_points * sizeof(std::complex<double>);
   if (options.kernel == ContactKernel::love && options.boundary == ContactBoundary::padded)
-    bytes += solve_points * sizeof(double);  // the real-space coefficients, while the kernel is made
-  // the map's grid: the centred copy, the summit search's marks and missing-point counts, at most
-  // a summit in four points; each step's contact mask and cluster labels
-  bytes += map_points * (sizeof(double) + 1 + sizeof(std::size_t) + sizeof(Summit) / 4.0 + 1 + sizeof(std::size_t));
+    level.setup = solve_points * sizeof(double);  // the real-space coefficients, while the kernel is made
+  return level;
+}
+
+}  // namespace
+
+std::size_t exact_contact_memory(std::size_t nx, std::size_t ny, const ExactContactOptions& options) {
+  const double map_points = static_cast<double>(nx) * static_cast<double>(ny);
+  const double factor = options.boundary == ContactBoundary::padded ? 2 : 1;
+  const double sx = factor * static_cast<double>(nx), sy = factor * static_cast<double>(ny);
+  const double solve_points = sx * sy;
+  LevelMemory fine = level_memory(nx, ny, options, false);
+  double bytes = fine.kept;
+  if (is_adhesive(options)) bytes += solve_points * (sizeof(double) + 1);  // the map's own heights, the cohesive zone
+  // the coarse start's levels: their kept arrays (their work arrays are released while this map solves)
+  if (options.coarse_start && !is_adhesive(options) && nx >= 2 * coarse_start_points && ny >= 2 * coarse_start_points) {
+    for (std::size_t cx = (nx + 1) / 2, cy = (ny + 1) / 2;; cx = (cx + 1) / 2, cy = (cy + 1) / 2) {
+      bytes += level_memory(cx, cy, options, true).kept;
+      if (!(cx >= 2 * coarse_start_points && cy >= 2 * coarse_start_points)) break;
+    }
+  }
   // the transforms' per-thread rows and columns
   const double threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  bytes += threads * (sx + sy) * sizeof(std::complex<double>);
-  if (is_adhesive(options)) bytes += solve_points * (sizeof(double) + 1);  // the map's own heights, the cohesive zone
-  double total = bytes;
-  if (options.coarse_start && !is_adhesive(options) && nx >= 2 * coarse_start_points && ny >= 2 * coarse_start_points) {
-    ExactContactOptions coarse = options;
-    coarse.stiffness = false;
-    const std::size_t cx = (nx + 1) / 2, cy = (ny + 1) / 2;
-    total += static_cast<double>(cx) * static_cast<double>(cy) * sizeof(double) +  // the coarsened map
-             static_cast<double>(exact_contact_memory(cx, cy, coarse));
-  }
+  const double rows = threads * (sx + sy) * sizeof(std::complex<double>);
+  // the largest of: a step (the work arrays, and on the map's grid the contact mask and the
+  // clusters' 32-bit labels), the constructor's kernel, the summit search before the solve grid
+  // (the centred copy, the marks and missing-point counts, at most a summit in four points)
+  const double step = bytes + fine.work + rows + map_points * (1 + sizeof(std::uint32_t));
+  const double setup = bytes + fine.work + rows + fine.setup;
+  const double summits = map_points * (sizeof(double) + 1 + sizeof(std::size_t) + sizeof(Summit) / 4.0);
+  const double total = std::max({step, setup, summits});
   const double most = static_cast<double>(std::numeric_limits<std::size_t>::max());
   return total >= most ? std::numeric_limits<std::size_t>::max() : static_cast<std::size_t>(total);
 }
@@ -438,14 +467,15 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   rms_ = heights.rms;
   max_height_ = heights.max_height;
 
-  // (centred and found live on to the end, as the memory estimate counts them)
-  HeightMap centred = map;
-  for (double& h : centred.heights) h -= heights.mean;
-  const Summits found = find_summits(centred);
-  summits_ = found.list.size();
-  double summit_sum = 0;
-  for (const Summit& s : found.list) summit_sum += s.height;
-  mean_summit_ = summits_ > 0 ? summit_sum / static_cast<double>(summits_) : std::numeric_limits<double>::quiet_NaN();
+  {  // (centred and found are gone before the solve grid is made: the memory estimate counts the larger)
+    HeightMap centred = map;
+    for (double& h : centred.heights) h -= heights.mean;
+    const Summits found = find_summits(centred);
+    summits_ = found.list.size();
+    double summit_sum = 0;
+    for (const Summit& s : found.list) summit_sum += s.height;
+    mean_summit_ = summits_ > 0 ? summit_sum / static_cast<double>(summits_) : std::numeric_limits<double>::quiet_NaN();
+  }
 
   allocate_solve_grid(map, heights.mean);
   if (options.kernel == ContactKernel::love && options.boundary == ContactBoundary::padded)
@@ -463,13 +493,17 @@ ExactContact::ExactContact(const HeightMap& map, const ExactContactOptions& opti
   // the stiffness and to a looser tolerance, itself started from a coarser map.
   // (not with adhesion: each step continues the last one's cohesive zone, its branch)
   if (options_.coarse_start && !adhesive_ && nx_ >= 2 * coarse_start_points && ny_ >= 2 * coarse_start_points) {
+    release_scratch();  // while the coarse levels are made
     const HeightMap coarse = coarsened_2x2(map);
     const ExactContactOptions coarse_options = coarse_start_options(options);
     try {
       coarse_ = std::make_unique<ExactContact>(coarse, coarse_options);
+      coarse_->coarse_level_ = true;
+      coarse_->release_scratch();
     } catch (const Error&) {
       // a coarse map the solver refuses (its heights all equal, its pixels too large): no coarse start
     }
+    ensure_scratch();
   }
   find_pressure_range();
 } catch (const std::bad_alloc&) {
@@ -494,18 +528,36 @@ void ExactContact::allocate_solve_grid(const HeightMap& map, double mean) {
     }
   pressure_.assign(points, 0.0);
   displacement_.assign(points, 0.0);
-  direction_.assign(points, 0.0);
-  work_.assign(points, 0.0);
-  increment_.assign(points, 0.0);
-  stiffness_x_.assign(points, 0.0);
-  preconditioned_.assign(points, 0.0);
+  ensure_scratch();
   zero_row_.assign(sx_, 0.0);
   partial_sums_.assign(row_blocks(ny_) * sums_per_block, 0.0);
   // the passes over the points share the threads from 256^2 points (below, starting the
   // threads would cost more than the pass)
   loop_threads_ = nx_ * ny_ >= (std::size_t{1} << 16) ? threads_ : 1;
-  spectrum_.assign(sy_ * half, {0.0, 0.0});
-  kernel_.assign(sy_ * half, 0.0);
+  kernel_.assign((sy_ / 2 + 1) * half, 0.0);  // even in q_y: rows sy - ky are rows ky's
+}
+
+// The work arrays (zero), if released: the constrained solve's three, the stiffness solve's fourth
+// (not on a coarse level, which solves none, unless capped: its search for the load does), and the
+// spectrum.
+void ExactContact::ensure_scratch() {
+  const std::size_t points = sx_ * sy_, half = sx_ / 2 + 1;
+  if (direction_.size() != points) direction_.assign(points, 0.0);
+  if (work_.size() != points) work_.assign(points, 0.0);
+  if (increment_.size() != points) increment_.assign(points, 0.0);
+  if (stiffness_x_.size() != points && (!coarse_level_ || plastic_)) stiffness_x_.assign(points, 0.0);
+  if (spectrum_.size() != sy_ * half) spectrum_.assign(sy_ * half, {0.0, 0.0});
+}
+
+// While a coarser level solves (and a coarse level between its solves) the work arrays are
+// returned to the system: the largest use is then one level's work arrays and every level's
+// solution, not every level's work arrays at once.
+void ExactContact::release_scratch() {
+  std::vector<double>().swap(direction_);
+  std::vector<double>().swap(work_);
+  std::vector<double>().swap(increment_);
+  std::vector<double>().swap(stiffness_x_);
+  std::vector<std::complex<double>>().swap(spectrum_);
 }
 
 // The padded Love kernel_ and self_compliance_.
@@ -524,7 +576,7 @@ void ExactContact::make_padded_love_kernel(double modulus) {
   }
   self_compliance_ = coefficients[0];
   detail::forward_2d(coefficients.data(), spectrum_.data(), sy_, sx_);
-  for (std::size_t k = 0; k < kernel_.size(); ++k) kernel_[k] = spectrum_[k].real();
+  for (std::size_t k = 0; k < kernel_.size(); ++k) kernel_[k] = spectrum_[k].real();  // rows 0 to sy/2
 }
 
 // kernel_ and self_compliance_ made in Fourier space: the Fourier kernel, or the periodic Love
@@ -547,7 +599,7 @@ void ExactContact::make_spectral_kernel(double modulus) {
       x_factor[kx * width + m + aliases] = sinc(q * dx_ / 2);
       x_squared[kx * width + m + aliases] = q * q;
     }
-  // rows ky and sy - ky have the same kernel (it is even in qy): the first half, mirrored
+  // rows ky and sy - ky have the same kernel (it is even in qy): the first half, kept
   const std::size_t rows = sy_ / 2 + 1;
   in_parallel(threads_, rows, [&](std::size_t first, std::size_t count) {
     std::vector<double> y_factor(width), y_squared(width);
@@ -570,7 +622,6 @@ void ExactContact::make_spectral_kernel(double modulus) {
           value = 2 / modulus * love_alias_sum(&x_factor[kx * width], &x_squared[kx * width], y_factor, y_squared, aliases);
         }
         kernel_[ky * half + kx] = value;
-        if (ky > 0 && sy_ - ky != ky) kernel_[(sy_ - ky) * half + kx] = value;
       }
     }
   });
@@ -579,7 +630,7 @@ void ExactContact::make_spectral_kernel(double modulus) {
   for (std::size_t ky = 0; ky < sy_; ++ky)
     for (std::size_t kx = 0; kx < half; ++kx) {
       const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
-      total += (single ? 1.0 : 2.0) * kernel_[ky * half + kx];
+      total += (single ? 1.0 : 2.0) * kernel_[kernel_row(ky) * half + kx];
     }
   self_compliance_ = total / static_cast<double>(points);
 }
@@ -596,7 +647,7 @@ void ExactContact::make_preconditioner_stencil() {
   double centre = 0, along_x = 0, along_y = 0, diagonal = 0;
   for (std::size_t ky = 0; ky < sy_; ++ky)
     for (std::size_t kx = 0; kx < half; ++kx) {
-      const double g = kernel_[ky * half + kx];
+      const double g = kernel_[kernel_row(ky) * half + kx];
       if (!(g > 0)) continue;
       const bool single = kx == 0 || (sx_ % 2 == 0 && kx == sx_ / 2);
       const double k = (single ? 1.0 : 2.0) / g;
@@ -637,7 +688,7 @@ void ExactContact::apply(const std::vector<double>& in, std::vector<double>& out
   in_parallel(threads_, half, [&](std::size_t first, std::size_t count) {
     detail::transform_columns(spectrum, sy_, half, first, count, true);
     for (std::size_t r = 0; r < sy_; ++r)
-      for (std::size_t c = first; c < first + count; ++c) spectrum[r * half + c] *= kernel_[r * half + c];
+      for (std::size_t c = first; c < first + count; ++c) spectrum[r * half + c] *= kernel_[kernel_row(r) * half + c];
     detail::transform_columns(spectrum, sy_, half, first, count, false);
   });
   in_parallel(threads_, ny_, [&](std::size_t first, std::size_t count) {
@@ -645,37 +696,49 @@ void ExactContact::apply(const std::vector<double>& in, std::vector<double>& out
   });
 }
 
-ExactContact::Sums3 ExactContact::precondition(const std::vector<double>& in, std::vector<double>& out,
-                                               const std::vector<double>& other) {
+// M in over the free points of rows [first, end): visit(k, value) for each, skip(k) for the other
+// map points. The stencil's value is made here only, so that the sums over it and the direction
+// built from it (each pass computing it again: no array holds M in) see the same numbers.
+template <class Visit, class Skip>
+void ExactContact::over_stencil(const std::vector<double>& in, std::size_t first, std::size_t end, Visit&& visit,
+                                Skip&& skip) const {
   const std::vector<double>& p = pressure_;
   const std::size_t nx = nx_, ny = ny_, sx = sx_, sy = sy_;
   const double centre = stencil_centre_, along_x = stencil_x_, along_y = stencil_y_, diagonal = stencil_diagonal_;
   const double hardness = hardness_;
-  const auto sums = over_rows(ny, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-    double sum = 0, product = 0, other_sum = 0;
-    for (std::size_t j = first; j < end; ++j) {
-      // the neighbouring rows and columns, wrapped across the solve grid: on a padded grid
-      // the wrapped neighbours of the map's edges are the padding's zeros
-      const std::size_t above = (j + sy - 1) % sy, below = (j + 1) % sy;
-      const double* middle = &in[j * sx];
-      const double* up = above < ny ? &in[above * sx] : zero_row_.data();
-      const double* down = below < ny ? &in[below * sx] : zero_row_.data();
-      auto at = [nx](const double* row, std::size_t i) { return i < nx ? row[i] : 0.0; };
-      for (std::size_t i = 0, k = j * sx; i < nx; ++i, ++k) {
-        if (!(p[k] > 0 && p[k] < hardness)) {  // off the free set
-          out[k] = 0;
-          continue;
-        }
-        const std::size_t left = i == 0 ? sx - 1 : i - 1, right = i + 1 == sx ? 0 : i + 1;
-        const double value = centre * middle[i] + along_x * (at(middle, left) + at(middle, right)) +
-                             along_y * (up[i] + down[i]) +
-                             diagonal * (at(up, left) + at(up, right) + at(down, left) + at(down, right));
-        out[k] = value;
-        sum += value;
-        product += value * other[k];
-        other_sum += other[k];
+  for (std::size_t j = first; j < end; ++j) {
+    // the neighbouring rows and columns, wrapped across the solve grid: on a padded grid
+    // the wrapped neighbours of the map's edges are the padding's zeros
+    const std::size_t above = (j + sy - 1) % sy, below = (j + 1) % sy;
+    const double* middle = &in[j * sx];
+    const double* up = above < ny ? &in[above * sx] : zero_row_.data();
+    const double* down = below < ny ? &in[below * sx] : zero_row_.data();
+    auto at = [nx](const double* row, std::size_t i) { return i < nx ? row[i] : 0.0; };
+    for (std::size_t i = 0, k = j * sx; i < nx; ++i, ++k) {
+      if (!(p[k] > 0 && p[k] < hardness)) {  // off the free set
+        skip(k);
+        continue;
       }
+      const std::size_t left = i == 0 ? sx - 1 : i - 1, right = i + 1 == sx ? 0 : i + 1;
+      const double value = centre * middle[i] + along_x * (at(middle, left) + at(middle, right)) +
+                           along_y * (up[i] + down[i]) +
+                           diagonal * (at(up, left) + at(up, right) + at(down, left) + at(down, right));
+      visit(k, value);
     }
+  }
+}
+
+ExactContact::Sums3 ExactContact::precondition(const std::vector<double>& in, const std::vector<double>& other) {
+  const auto sums = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
+    double sum = 0, product = 0, other_sum = 0;
+    over_stencil(
+        in, first, end,
+        [&](std::size_t k, double value) {
+          sum += value;
+          product += value * other[k];
+          other_sum += other[k];
+        },
+        [](std::size_t) {});
     s[0] = sum;
     s[1] = product;
     s[2] = other_sum;
@@ -720,7 +783,6 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
   std::vector<double>& t = direction_;
   std::vector<double>& g = work_;
   std::vector<double>& w = increment_;
-  std::vector<double>& z = preconditioned_;
   const double map_points = static_cast<double>(nx_ * ny_);
   const double total = by_pressure ? target * map_points : 0.0;
   const double tolerance = options_.tolerance;
@@ -788,14 +850,14 @@ ExactContact::Solve ExactContact::constrained(bool by_pressure, double target) {
     // the direction's source: g, or M g (less its mean over the set, by pressure)
     double source_product = squares, source_mean = 0;
     if (preconditioned) {
-      const Sums3 m = precondition(w, z, g);
+      const Sums3 m = precondition(w, g);
       source_mean = by_pressure ? m.out / static_cast<double>(contact) : 0.0;
       source_product = m.out_other - source_mean * m.other;
     }
     if (!(previous > 0 && source_product > 0)) conjugate = false;
     const double beta = conjugate ? source_product / previous : 0.0;
     previous = source_product;
-    set_direction(preconditioned ? z : g, source_mean, conjugate, beta);
+    set_direction(preconditioned, source_mean, conjugate, beta);
     apply(t, w);
     // step = sum g t / sum (w - mean w) t over the contact set (by pressure the mean of w is the
     // flat's move); sum t is near zero, so w's mean enters through a small product
@@ -930,17 +992,29 @@ ExactContact::PassSums ExactContact::gaps_and_residual_sums(double approach, boo
   });
 }
 
-// The direction t on the contact set (0 off it): source less source_mean, plus beta times the
-// last direction when `conjugate`.
-void ExactContact::set_direction(const std::vector<double>& source, double source_mean, bool conjugate, double beta) {
+// The direction t on the contact set (0 off it): the source (the gap g, or preconditioned M w,
+// w the gap on the free points) less source_mean, plus beta times the last direction when
+// `conjugate`.
+void ExactContact::set_direction(bool preconditioned, double source_mean, bool conjugate, double beta) {
   const std::vector<double>& p = pressure_;
+  const std::vector<double>& g = work_;
   std::vector<double>& t = direction_;
   const std::size_t nx = nx_, sx = sx_;
   const double hardness = hardness_;
   over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+    if (preconditioned) {
+      over_stencil(
+          increment_, first, end,
+          [&](std::size_t k, double source) {
+            const double value = source - source_mean;
+            t[k] = conjugate ? value + beta * t[k] : value;
+          },
+          [&](std::size_t k) { t[k] = 0.0; });
+      return;
+    }
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
-        const double value = source[q] - source_mean;
+        const double value = g[q] - source_mean;
         t[q] = p[q] > 0 && p[q] < hardness ? (conjugate ? value + beta * t[q] : value) : 0.0;
       }
   });
@@ -1091,7 +1165,6 @@ void ExactContact::stiffness_of(ContactStep& step) {
   std::vector<double>& w = increment_;
   std::vector<double>& r = work_;
   std::vector<double>& d = direction_;
-  std::vector<double>& z = preconditioned_;
   const bool preconditioned = options_.solver == ContactSolver::preconditioned && stencil_;
   const std::size_t nx = nx_, sx = sx_;
   const std::vector<double>& p = pressure_;
@@ -1113,12 +1186,21 @@ void ExactContact::stiffness_of(ContactStep& step) {
       }
     s[0] = sum;
   })[0];
-  double product = preconditioned ? precondition(r, z, r).out_other : squares;  // r . z
-  const std::vector<double>& source = preconditioned ? z : r;
-  over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
-    for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-      for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) d[q] = source[q];
-  });
+  double product = preconditioned ? precondition(r, r).out_other : squares;  // r . z, z = M r
+  // d = z + beta d on the free points, 0 off them (z = M r preconditioned, else r)
+  const auto set_search_direction = [&](double beta) {
+    over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
+      if (preconditioned) {
+        over_stencil(
+            r, first, end, [&](std::size_t k, double z) { d[k] = z + beta * d[k]; }, [&](std::size_t k) { d[k] = 0.0; });
+        return;
+      }
+      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
+        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
+          d[q] = p[q] > 0 && p[q] < hardness ? r[q] + beta * d[q] : 0.0;
+    });
+  };
+  set_search_direction(0.0);
   const double norm = std::sqrt(static_cast<double>(free_points));
   int iteration = 0;
   for (;; ++iteration) {
@@ -1153,29 +1235,30 @@ void ExactContact::stiffness_of(ContactStep& step) {
           }
       s[0] = sum;
     })[0];
-    const double next = preconditioned ? precondition(r, z, r).out_other : squares;
+    const double next = preconditioned ? precondition(r, r).out_other : squares;
     const double beta = next / product;
     product = next;
-    over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double*) {
-      for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
-        for (std::size_t q = k, row_end = k + nx; q < row_end; ++q)
-          d[q] = p[q] > 0 && p[q] < hardness ? source[q] + beta * d[q] : 0.0;
-    });
+    set_search_direction(beta);
   }
   apply(x, w);
   const auto sums = over_rows(ny_, loop_threads_, partial_sums_, [&](std::size_t first, std::size_t end, double* s) {
-    double increment = 0, moved = 0;
+    double increment = 0, opened = 0;
     for (std::size_t k = first * sx, last = end * sx; k < last; k += sx)
       for (std::size_t q = k, row_end = k + nx; q < row_end; ++q) {
         increment += x[q];
-        moved += active_[q] && p[q] < hardness ? w[q] : 0.0;
+        opened += active_[q] && p[q] == 0 ? 1 - w[q] : 0.0;
       }
     s[0] = increment;
-    s[1] = moved;
+    s[1] = opened;
   });
   const double mean_pressure = sums[0] / static_cast<double>(nx_ * ny_);
-  // (a plastic point's gap stays 0: it moves by 1 - w no more)
-  const double gap_change = 1 - (sums[1] + static_cast<double>(step.plastic_points)) / static_cast<double>(valid_points_);
+  // Periodic without missing points the displacements have zero mean: the mean gap moves with
+  // the approach. Otherwise only the points out of contact move it (by 1 - w each): a contact
+  // point's gap stays 0 (its 1 - w is the CG's residual, which summed over a padded map in full
+  // contact was the whole change: a stiffness of -1.7e15 N/m), as does a plastic point's.
+  const bool moves_with_approach = options_.boundary == ContactBoundary::periodic && valid_points_ == nx_ * ny_ &&
+                                   step.plastic_points == 0;
+  const double gap_change = moves_with_approach ? 1.0 : std::max(sums[1], 0.0) / static_cast<double>(valid_points_);
   step.stiffness_iterations = iteration;
   step.stiffness_per_area = mean_pressure / gap_change;
   step.stiffness = step.stiffness_per_area * nominal_area_;
@@ -1241,7 +1324,11 @@ void ExactContact::start_from_coarse() {
 void ExactContact::stiffness_times_heights(std::vector<double>& out) {
   const std::size_t half = sx_ / 2 + 1;
   detail::forward_2d(heights_.data(), spectrum_.data(), sy_, sx_);
-  for (std::size_t k = 0; k < sy_ * half; ++k) spectrum_[k] *= kernel_[k] > 0 ? 1 / kernel_[k] : 0.0;
+  for (std::size_t ky = 0; ky < sy_; ++ky)
+    for (std::size_t kx = 0; kx < half; ++kx) {
+      const double g = kernel_[kernel_row(ky) * half + kx];
+      spectrum_[ky * half + kx] *= g > 0 ? 1 / g : 0.0;
+    }
   in_parallel(threads_, half, [&](std::size_t first, std::size_t count) {
     detail::transform_columns(spectrum_.data(), sy_, half, first, count, false);
   });
@@ -1320,6 +1407,11 @@ ContactStep ExactContact::full_contact(double pressure) {
 
 ContactStep ExactContact::at_pressure(double pressure) {
   check_pressure(pressure);
+  try {
+    ensure_scratch();  // a coarse level's were released after its last solve
+  } catch (const std::bad_alloc&) {
+    out_of_memory("solving at " + number(pressure) + " Pa");
+  }
   if (pressure == 0) {
     std::fill(pressure_.begin(), pressure_.end(), 0.0);
     std::fill(displacement_.begin(), displacement_.end(), 0.0);
@@ -1346,13 +1438,16 @@ ContactStep ExactContact::solve_pressure(double pressure) {
     }
   }
   if (coarse_answers) {
+    release_scratch();
     try {
       const ContactStep coarse = coarse_->at_pressure(pressure);
+      coarse_->release_scratch();
       coarse_iterations = coarse.iterations + coarse.coarse_iterations;
       start_from_coarse();
     } catch (const Error&) {
       coarse_.reset();  // the coarse start did not converge: the last solution is the start, now and after
     }
+    ensure_scratch();
   }
   const Solve solve = constrained(true, pressure);
   if (solve.stalled) {
@@ -1427,6 +1522,7 @@ ContactStep ExactContact::at_mean_gap(double mean_gap) {
 }
 
 ContactStep ExactContact::solve_mean_gap(double mean_gap) {
+  ensure_scratch();  // a coarse level's were released after its last solve
   if (mean_gap >= max_height_) {
     std::fill(pressure_.begin(), pressure_.end(), 0.0);
     std::fill(displacement_.begin(), displacement_.end(), 0.0);
@@ -1450,9 +1546,11 @@ ContactStep ExactContact::solve_mean_gap(double mean_gap) {
   int coarse_iterations = 0;
   bool coarse_started = false;
   if (coarse_) {
+    release_scratch();
     try {
       // the coarse map's offset between approach and mean gap, a good first guess
       const ContactStep coarse = coarse_->at_mean_gap(mean_gap);
+      coarse_->release_scratch();
       coarse_iterations = coarse.iterations + coarse.coarse_iterations;
       start_from_coarse();
       offset = coarse.approach - coarse.mean_gap;
@@ -1460,6 +1558,7 @@ ContactStep ExactContact::solve_mean_gap(double mean_gap) {
     } catch (const Error&) {
       coarse_.reset();
     }
+    ensure_scratch();
   }
   if (had_contact && !coarse_started) {
     // the offset between approach and mean gap of the last solution, a good first guess
@@ -1530,9 +1629,12 @@ std::vector<double> ExactContact::gap_field() const {
 
 std::size_t count_clusters(const std::vector<unsigned char>& contact, std::size_t nx, std::size_t ny, bool periodic) {
   if (contact.size() != nx * ny) throw Error("count_clusters: the mask is not nx x ny");
-  std::vector<std::size_t> parent(contact.size());
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  auto root = [&](std::size_t k) {
+  if (contact.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("count_clusters: more than 2^32 - 1 points");
+  // 32-bit labels: half the memory of size_t's, on a map of up to 2^32 - 1 points
+  std::vector<std::uint32_t> parent(contact.size());
+  std::iota(parent.begin(), parent.end(), std::uint32_t{0});
+  auto root = [&](std::size_t k) -> std::size_t {
     while (parent[k] != k) {
       parent[k] = parent[parent[k]];
       k = parent[k];
@@ -1543,7 +1645,7 @@ std::size_t count_clusters(const std::vector<unsigned char>& contact, std::size_
     if (!contact[a] || !contact[b]) return;
     a = root(a);
     b = root(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    if (a != b) parent[std::max(a, b)] = static_cast<std::uint32_t>(std::min(a, b));
   };
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) {

@@ -44,7 +44,8 @@
 // at most `tolerance` times the rms height and no point outside the contact penetrates the flat
 // by more than that; it never returns an unconverged answer: after max_iterations it throws
 // asperity::Error naming the iterations and the residual reached. Memory: a few arrays the size
-// of the solve grid (O(N)), and a third more for the coarsened maps of the coarse start; each
+// of the solve grid (O(N); exact_contact_memory), and a seventh more for the coarsened maps of the
+// coarse start (their solutions; their work arrays only while they solve); each
 // iteration costs two convolutions (O(N log N)) and a few passes over the points (O(N)).
 #pragma once
 #include <array>
@@ -131,12 +132,16 @@ inline bool is_plastic(const ExactContactOptions& options) {
 // True when the options ask for adhesion (a work of adhesion > 0).
 inline bool is_adhesive(const ExactContactOptions& options) { return options.work_of_adhesion > 0; }
 
-// What one solver of an nx x ny map needs [bytes], counted from its arrays: on the solve grid
-// (the map's, or four times it padded) 8 arrays of doubles, a mask, the kernel and one complex
-// spectrum of half the grid (about 77 bytes a point; the padded Love kernel's coefficients 8 more
-// while they are made), on the map's grid a centred copy, the summits and, in each step, the
-// contact mask and the clusters' labels (about 26 bytes a point); and the coarse start's levels
-// (a third more). Throws nothing; saturates at SIZE_MAX.
+// What one solver of an nx x ny map needs at most [bytes], counted from its arrays: on the solve
+// grid (the map's, or four times it padded) the heights, the pressure, the displacement and a mask
+// (25 bytes a point), the kernel's even half (4), and while a step solves its work arrays (the
+// direction, the gap, the direction's convolution, the stiffness increment: 32) and the complex
+// spectrum of half the grid (8): about 69 bytes a point; each coarse start level keeps its 29
+// bytes a point (about 10 over all levels, a third of the map's points), its work arrays released
+// between its solves (and the finer level's while it solves); on the map's grid a step's contact
+// mask and clusters' labels (5 bytes a point). The largest of that, the constructor's (the padded
+// Love kernel's coefficients, 8 bytes a point more while they are made) and the summit search's.
+// Throws nothing; saturates at SIZE_MAX.
 std::size_t exact_contact_memory(std::size_t nx, std::size_t ny, const ExactContactOptions& options);
 
 // Memory as text for messages: "1.2 GB", "340 MB", "12 kB", "512 bytes" (SI prefixes).
@@ -273,12 +278,15 @@ class ExactContact {
   // out = G in on the solve grid; `in` is zero outside the map (a padded grid's other three
   // quarters), and `out` is written on the map's rows only.
   void apply(const std::vector<double>& in, std::vector<double>& out);
-  // out = M in on the contact set (0 elsewhere), M the preconditioner's stencil; `in` is zero
-  // off the contact set. Returns the sums over the contact set of out, out * other and other.
+  // M in on the contact set, M the preconditioner's stencil; `in` is zero off the contact set.
+  // Returns the sums over the contact set of M in, M in * other and other. (M in is not stored:
+  // over_stencil gives it to each pass that needs it.)
   struct Sums3 {
     double out = 0, out_other = 0, other = 0;
   };
-  Sums3 precondition(const std::vector<double>& in, std::vector<double>& out, const std::vector<double>& other);
+  Sums3 precondition(const std::vector<double>& in, const std::vector<double>& other);
+  template <class Visit, class Skip>
+  void over_stencil(const std::vector<double>& in, std::size_t first, std::size_t end, Visit&& visit, Skip&& skip) const;
   struct Solve {
     int iterations = 0;
     double residual = 0, approach = 0;
@@ -292,7 +300,7 @@ class ExactContact {
   void pressure_from_overlap(double target);
   PassSums scale_and_sum_contact_gaps(double scale);
   PassSums gaps_and_residual_sums(double approach, bool preconditioned);
-  void set_direction(const std::vector<double>& source, double source_mean, bool conjugate, double beta);
+  void set_direction(bool preconditioned, double source_mean, bool conjugate, double beta);
   // With a hardness: the pressures scaled to the load `total`, each capped at it (the scale
   // solved for, the plastic points held while the free ones can carry the rest); the flat's
   // position when no point is free (the highest that keeps every plastic point's gap <= 0).
@@ -329,16 +337,22 @@ class ExactContact {
   void make_padded_love_kernel(double modulus);
   void make_spectral_kernel(double modulus);  // Fourier, or periodic Love
   void make_preconditioner_stencil();
+  void ensure_scratch();   // the work arrays, made again if released
+  void release_scratch();  // the work arrays returned to the system (a coarse level between solves)
+  std::size_t kernel_row(std::size_t ky) const noexcept { return ky <= sy_ / 2 ? ky : sy_ - ky; }  // kernel_ is even in q_y
 
   ExactContactOptions options_;
   std::size_t nx_ = 0, ny_ = 0, sx_ = 0, sy_ = 0;  // map grid; solve grid
   double dx_ = 0, dy_ = 0, rms_ = 0, max_height_ = 0, mean_summit_ = 0, nominal_area_ = 0, self_compliance_ = 0;
   std::size_t summits_ = 0, valid_points_ = 0;
   int threads_ = 1, loop_threads_ = 1;  // the FFTs'; the passes over the points'
-  std::vector<double> kernel_;       // the real spectrum of G on the solve grid (sy x (sx/2 + 1))
+  std::vector<double> kernel_;       // the real spectrum of G, rows 0 to sy/2 ((sy/2 + 1) x (sx/2 + 1)): even in q_y
   std::vector<unsigned char> active_;  // on the solve grid: may carry pressure (a valid map point)
   std::vector<double> heights_;      // on the solve grid, about the mean plane (0 where inactive)
-  std::vector<double> pressure_, displacement_, direction_, work_, increment_, stiffness_x_, preconditioned_;  // solve grid
+  std::vector<double> pressure_, displacement_;  // solve grid: the solution
+  // solve grid: the solves' work arrays (scratch: a coarse level's are released between its
+  // solves, and this map's while its coarse level solves; ensure_scratch makes them again)
+  std::vector<double> direction_, work_, increment_, stiffness_x_;
   std::vector<std::complex<double>> spectrum_;  // sy x (sx/2 + 1)
   std::vector<double> partial_sums_;  // per block of rows, for the passes' sums
   std::vector<double> zero_row_;      // sx zeros: the padding's rows, for the preconditioner
@@ -358,6 +372,7 @@ class ExactContact {
   double largest_compliance_ = 0;    // of the kernel [m/Pa]: the displacements' scale
   std::size_t memory_ = 0;           // exact_contact_memory of the map and options
   std::unique_ptr<ExactContact> coarse_;  // the map coarsened 2 x 2, for the coarse start
+  bool coarse_level_ = false;        // this solver is another's coarse start (no stiffness solves)
 };
 
 // Connected contact patches of a contact mask (nx x ny, x fastest; nonzero: in contact), by
