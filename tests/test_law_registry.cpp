@@ -208,8 +208,12 @@ TEST(LawRegistry, ANewLawReachesEveryReader) {
   // the command line's options and help (apps/asperity/law_options.hpp) take it too
   CLI::App app;
   cli::LawOptions options;
-  cli::add_law_options(app, options, "a law", "");
+  cli::add_law_options(app, options, "a law", "", "at or below the range's start");
   const std::string help = app.help();
+  // --approach-separation's help names the adhesive laws from the registry (the work of adhesion's takers)
+  EXPECT_NE(help.find("with --law dmt, jkr or maugis-dugdale: the withdrawal (unloading, fixed grips) branch"),
+            std::string::npos)
+      << help;
   EXPECT_NE(help.find("maugis-dugdale or abbott-firestone"), std::string::npos) << help;
   EXPECT_NE(help.find("with --law chang-etsion-bogy, zhao-maietta-chang or abbott-firestone: hardness H [Pa]"),
             std::string::npos)
