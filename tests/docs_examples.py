@@ -36,7 +36,7 @@ What does not run
                                   need an install prefix (P);
       pkg-config                  needs asperity installed (the cmake --install above, skipped);
       ctest                       the whole suite, this test among it;
-      build-fuzz/..., build/bench/..., bench/...: fuzzing (10 min) and benchmarks (timing runs);
+      build-fuzz/..., build/bench/..., bench/..., scripts/bench-*.sh: fuzzing (10 min) and benchmarks (timing runs);
       topography/scripts/...      regenerates the docs' figures into the source tree;
       a command with a placeholder (FILE, MAP, DIR, INPUT.csv, CORPUS_COPY, MAIN/, a lone P or P/)
       or a synopsis (`[--option ...]`): not a command as written.
@@ -69,6 +69,7 @@ SKIPPED_COMMANDS = [
     (r"pkg-config\b", "pkg-config: needs asperity installed (cmake --install, skipped)"),
     (r"^build-fuzz/", "fuzzing: ten minutes a target"),
     (r"^(build/)?bench/|^\S*python3?\s+bench/", "a benchmark: timing runs, minutes"),
+    (r"^([A-Z_]+=\S*\s+)*(bash\s+)?scripts/bench-[\w-]+\.sh\b", "a benchmark: timing runs against other builds, minutes"),
     (r"^(bash\s+)?topography/scripts/", "regenerates the docs' figures into the source tree"),
     (r"\[--", "a synopsis, not a command"),
     (r"(^|[\s/=])(FILE|MAP|DIR|INPUT\.csv|CORPUS_COPY|MAIN/\S*|P/\S*|P)(?=$|[\s,/;)])",
