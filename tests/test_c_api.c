@@ -6,14 +6,7 @@
 
 #include "asperity/asperity.h"
 
-static int failures = 0;
-#define CHECK(condition)                                                   \
-  do {                                                                     \
-    if (!(condition)) {                                                    \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-      ++failures;                                                          \
-    }                                                                      \
-  } while (0)
+#include "c_check.h"
 
 /* The default table's bytes, or NULL. */
 static char *read_file(const char *path, size_t *size) {

@@ -11,14 +11,7 @@
 
 #include "asperity/asperity.h"
 
-static int failures = 0;
-#define CHECK(condition)                                                   \
-  do {                                                                     \
-    if (!(condition)) {                                                    \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-      ++failures;                                                          \
-    }                                                                      \
-  } while (0)
+#include "c_check.h"
 
 int main(int argc, char **argv) {
   asperity_contact_curves *curves = NULL;

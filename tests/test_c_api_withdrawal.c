@@ -14,14 +14,7 @@
 
 #include "asperity/asperity.h"
 
-static int failures = 0;
-#define CHECK(condition)                                                            \
-  do {                                                                              \
-    if (!(condition)) {                                                             \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-      ++failures;                                                                   \
-    }                                                                               \
-  } while (0)
+#include "c_check.h"
 
 /* the scenes' surface and material (tables/scenes/jkr.toml) */
 static const double modulus = 1.13e11, work = 0.5, radius = 1e-4, sigma = 2e-9, density = 4e8, s0 = -1;
