@@ -41,6 +41,7 @@ fuzz_target() {
 # once take the wall time of one, CI's time, docs/architecture.md); a failure is reported when
 # its batch ends.
 jobs_at_once="$(nproc)"
+summary=""
 # shellcheck disable=SC2086
 set -- $targets
 while [ "$#" -gt 0 ]; do
