@@ -15,22 +15,15 @@
 // makes the surface jump in, and unloading keeps the contact until its branch ends (pull-off).
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 #include <string>
 
 #include "asperity/error.hpp"
 #include "asperity/interrupt.hpp"
+#include "asperity/number_text.hpp"
 #include "asperity/topography/exact_contact.hpp"
 
 namespace asperity::topography {
 namespace {
-
-std::string number(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << value;
-  return text.str();
-}
 
 // Passes of the fixed point before it is declared not converging (each is a contact solve,
 // warm-started; a jump into contact on the tests' spheres takes up to about 40).
@@ -41,7 +34,7 @@ constexpr double loose_adhesive_tolerance = 1e-5;
 }  // namespace
 
 void ExactContact::refuse_pressure_with_adhesion(double pressure) const {
-  throw Error("adhesive contact is solved at the flat's positions, not at a pressure (" + number(pressure) +
+  throw Error("adhesive contact is solved at the flat's positions, not at a pressure (" + format_double(pressure) +
               " Pa asked): its load is not monotone in the position (it falls to the pull-off and a load can have "
               "two solutions or none); give mean gaps (--gap, at_mean_gap) on a periodic map without missing "
               "points, or positions (at_approach)");
@@ -102,8 +95,8 @@ ContactStep ExactContact::solve_adhesive(double approach) {
     }
     if (passes >= max_adhesive_passes)
       throw Error("the adhesive contact's cohesive zone did not settle: " + std::to_string(passes) +
-                  " passes at the flat's position " + number(approach) + " m, " + std::to_string(changed) +
-                  " points still changing (the adhesive range " + number(adhesive_range_) +
+                  " passes at the flat's position " + format_double(approach) + " m, " + std::to_string(changed) +
+                  " points still changing (the adhesive range " + format_double(adhesive_range_) +
                   " m against the pixels: see docs/exact-contact.md, Adhesive contact)");
   }
   options_.tolerance = tolerance;
@@ -115,7 +108,7 @@ ContactStep ExactContact::solve_adhesive(double approach) {
 }
 
 ContactStep ExactContact::at_approach(double approach) {
-  if (!std::isfinite(approach)) throw Error("the flat's position must be finite, got " + number(approach));
+  if (!std::isfinite(approach)) throw Error("the flat's position must be finite, got " + format_double(approach));
   try {
     if (adhesive_) return solve_adhesive(approach);
     const Solve solve = constrained(false, approach);
@@ -123,7 +116,7 @@ ContactStep ExactContact::at_approach(double approach) {
     if (options_.stiffness) stiffness_of(step);
     return step;
   } catch (const std::bad_alloc&) {
-    out_of_memory("solving at the flat's position " + number(approach) + " m");
+    out_of_memory("solving at the flat's position " + format_double(approach) + " m");
   }
 }
 
